@@ -1,0 +1,188 @@
+// Commands about the machine itself: topo (interconnect parameters and mappings), bcast (the
+// thesis's broadcast experiment) and bench ring (kernel throughput).
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "apps/cli/broadcast_experiment.hpp"
+#include "apps/cli/commands.hpp"
+#include "apps/cli/ring_program.hpp"
+#include "apps/cli/run_support.hpp"
+#include "machine/mesh.hpp"
+#include "machine/topology.hpp"
+
+namespace gcsim::cli {
+namespace {
+
+std::string formula(double v) { return std::isnan(v) ? "-" : fmt::format("{:.2f}", v); }
+
+void add_topo(CommandGroups& g) {
+  struct Options {
+    std::string config, topology = "mesh", json;
+    int nodes = 64;
+  };
+  auto o = std::make_shared<Options>();
+  CLI::App* cmd = g.app->add_subcommand(
+      "topo",
+      "Interconnect parameters of a virtual topology (thesis table 2.1), computed exactly on its graph\n"
+      "next to the thesis's formulas, and the dilation and congestion of its mapping onto the mesh.\n"
+      "D = maximum, d = mean processor distance (hops); R = maximum, r = mean relay load (shortest\n"
+      "paths between other pairs through a processor); k = mean links per processor; B = broadcast\n"
+      "distance from the best-placed managing processor.");
+  cmd->add_option("--config", o->config, "Machine file; default: the built-in GC-PowerPlus")->check(CLI::ExistingFile);
+  cmd->add_option("--topology", o->topology, "mesh, torus, ring, tree or hypercube")
+      ->check(CLI::IsMember({"mesh", "torus", "ring", "tree", "hypercube"}))
+      ->capture_default_str();
+  cmd->add_option("--nodes", o->nodes, "Number of processors (hypercube: a power of two)")
+      ->check(CLI::Range(1, 1 << 16))
+      ->capture_default_str();
+  cmd->add_option("--json", o->json, "Write the parameters as JSON");
+  cmd->callback([o] {
+    machine::MachineConfig c = o->config.empty() ? machine::default_machine_config() : machine::load_machine_config(o->config);
+    c = machine::with_nodes(c, o->nodes);
+    const machine::TopologyKind kind = machine::parse_topology_kind(o->topology);
+    const machine::VirtualTopology t = machine::make_topology(kind, o->nodes);
+    const machine::TopologyMetrics exact = machine::exact_metrics(t);
+    const machine::TopologyMetrics thesis = machine::thesis_formulas(kind, o->nodes);
+    const machine::Mesh mesh(c.mesh_width, c.mesh_height);
+    const machine::MeshMapping map = machine::map_onto_mesh(t, mesh);
+
+    fmt::print("{} of {} processors on {} ({}x{} physical mesh)\n\n", o->topology, o->nodes, c.name, c.mesh_width,
+               c.mesh_height);
+    fmt::print("  parameter                 exact    thesis formula\n");
+    const struct {
+      const char* name;
+      double exact, thesis;
+    } rows[] = {{"D  max distance (hops)", exact.D, thesis.D},   {"d  mean distance", exact.d, thesis.d},
+                {"R  max relay load", exact.R, thesis.R},        {"r  mean relay load", exact.r, thesis.r},
+                {"k  mean links/processor", exact.k, thesis.k}, {"B  broadcast distance", exact.B, thesis.B}};
+    for (const auto& r : rows) fmt::print("  {:<24} {:>8.2f}  {:>12}\n", r.name, r.exact, formula(r.thesis));
+    fmt::print("\n  mapping onto the physical mesh: dilation {} (mean {:.2f} hops per virtual link), congestion {}\n",
+               map.dilation, map.mean_dilation, map.congestion);
+    if (!o->json.empty()) {
+      auto num = [](double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); };
+      nlohmann::json j{{"topology", o->topology},
+                       {"nodes", o->nodes},
+                       {"mesh", {c.mesh_width, c.mesh_height}},
+                       {"D", exact.D},
+                       {"d", exact.d},
+                       {"R", exact.R},
+                       {"r", exact.r},
+                       {"k", exact.k},
+                       {"B", exact.B},
+                       {"thesis", {{"D", num(thesis.D)}, {"d", num(thesis.d)}, {"R", num(thesis.R)},
+                                   {"r", num(thesis.r)}, {"k", num(thesis.k)}, {"B", num(thesis.B)}}},
+                       {"mapping", {{"dilation", map.dilation}, {"mean_dilation", map.mean_dilation},
+                                    {"congestion", map.congestion}, {"node_of", map.node_of}}}};
+      write_json_file(o->json, j);
+    }
+  });
+}
+
+parix::BcastAlgo parse_algo(const std::string& s) {
+  return s == "tree" ? parix::BcastAlgo::tree : parix::BcastAlgo::sequential;
+}
+
+void print_bcast_table(const MachineOptions& mo) {
+  fmt::print("One all-node broadcast (thesis 4.4.2), simulated ms next to the thesis's measured ms.\n");
+  fmt::print("A connection is opened for every message; every message carries SIZE bytes.\n\n");
+  const char* size_names[4] = {"connect", "1 KB", "4 KB", "16 KB"};
+  for (const char* algo : {"sequential", "tree"}) {
+    const auto* thesis = std::string_view(algo) == "tree" ? kThesisTreeBroadcast : kThesisSequentialBroadcast;
+    fmt::print("{} broadcast (thesis table {})\n", algo, std::string_view(algo) == "tree" ? "4.7" : "4.6");
+    fmt::print("  nodes");
+    for (const char* s : size_names) fmt::print(" | {:>7} sim  thesis", s);
+    fmt::print("\n");
+    for (int row = 0; row < 6; ++row) {
+      const int n = thesis[row].nodes;
+      fmt::print("  {:>5}", n);
+      for (int s = 0; s < 4; ++s) {
+        MachineOptions o = mo;
+        o.nodes = n;
+        o.trace.clear();
+        parix::SimulationOptions so = simulation_options(o, n);
+        const std::int64_t bytes = kThesisBroadcastSizes[s];
+        const parix::BcastAlgo a = parse_algo(algo);
+        parix::RunResult r = parix::run_simulated(so, [&](parix::Processor& p) { all_node_broadcast(p, bytes, a); });
+        fmt::print(" | {:>11.2f} {:>7.2f}", machine::to_milliseconds(r.makespan), thesis[row].ms[s]);
+      }
+      fmt::print("\n");
+    }
+    fmt::print("\n");
+  }
+}
+
+void add_bcast(CommandGroups& g) {
+  struct Options {
+    MachineOptions machine;
+    std::int64_t size = 16384;
+    std::string algo = "tree";
+    bool table = false;
+  };
+  auto o = std::make_shared<Options>();
+  CLI::App* cmd = g.app->add_subcommand(
+      "bcast",
+      "The thesis's broadcast experiment (section 4.4.2): one all-node broadcast, where every node's data\n"
+      "goes to the root (node 0) and the root sends back to every node. sequential: the nodes send to the\n"
+      "root in turn and the root answers each in turn (O(N) steps); tree: up a binary tree from the leaves\n"
+      "and back down (O(log N) steps). A connection (virtual link) is opened for every message.\n"
+      "Message size: every message carries exactly --size bytes; data is not merged on the way, as in the\n"
+      "thesis's measurements. --size 0 opens the connections and sends nothing (the 'connect only' column).");
+  add_machine_options(cmd, o->machine);
+  cmd->add_option("--size", o->size, "Bytes per message (suffixes: 1KB = 1024 bytes)")
+      ->transform(CLI::AsSizeValue(false))
+      ->capture_default_str();
+  cmd->add_option("--algo", o->algo, "sequential or tree")->check(CLI::IsMember({"sequential", "tree"}))->capture_default_str();
+  cmd->add_flag("--table", o->table, "Run the thesis's whole grid (N = 2..64; 0, 1, 4, 16 KB; both algorithms) and print it next to tables 4.6 and 4.7");
+  cmd->callback([o] {
+    if (o->table) {
+      print_bcast_table(o->machine);
+      return;
+    }
+    parix::SimulationOptions so = simulation_options(o->machine, 64);
+    const parix::BcastAlgo a = parse_algo(o->algo);
+    const std::int64_t bytes = o->size;
+    parix::RunResult r = parix::run_simulated(so, [&](parix::Processor& p) { all_node_broadcast(p, bytes, a); });
+    fmt::print("all-node broadcast, {} algorithm, {} bytes per message, {} nodes\n", o->algo, bytes, r.nodes);
+    report_run(r, o->machine, {{"experiment", "bcast"}, {"algo", o->algo}, {"size_bytes", bytes}});
+  });
+}
+
+void add_bench_ring(CommandGroups& g) {
+  struct Options {
+    MachineOptions machine;
+    int iterations = 2000;
+    std::int64_t size = 64;
+  };
+  auto o = std::make_shared<Options>();
+  CLI::App* cmd = g.bench->add_subcommand(
+      "ring",
+      "Kernel throughput: every processor sends --size bytes to its right neighbour and receives from its\n"
+      "left, --iterations times, over persistent links. Prints simulated messages per wall-clock second.");
+  add_machine_options(cmd, o->machine);
+  cmd->add_option("--iterations", o->iterations, "Messages each processor sends")->check(CLI::Range(1, 1 << 30))->capture_default_str();
+  cmd->add_option("--size", o->size, "Bytes per message")->transform(CLI::AsSizeValue(false))->capture_default_str();
+  cmd->callback([o] {
+    parix::SimulationOptions so = simulation_options(o->machine, 64);
+    const int iterations = o->iterations;
+    const std::int64_t bytes = o->size;
+    parix::RunResult r = parix::run_simulated(so, [&](parix::Processor& p) { ring_exchange(p, iterations, bytes); });
+    const double messages = static_cast<double>(r.total_messages());
+    fmt::print("ring of {} processors, {} iterations of {} bytes: {} messages\n", r.nodes, iterations, bytes, r.total_messages());
+    report_run(r, o->machine, {{"benchmark", "ring"}, {"messages_per_wall_s", messages / r.wall_seconds}});
+    fmt::print("rate      {:.0f} simulated messages per wall second ({:.0f} events/s)\n", messages / r.wall_seconds,
+               static_cast<double>(r.events) / r.wall_seconds);
+  });
+}
+
+}  // namespace
+
+void add_machine_commands(CommandGroups& g) {
+  add_topo(g);
+  add_bcast(g);
+  add_bench_ring(g);
+}
+
+}  // namespace gcsim::cli

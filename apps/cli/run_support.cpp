@@ -1,0 +1,61 @@
+#include "apps/cli/run_support.hpp"
+
+#include <fstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "machine/machine_config.hpp"
+#include "machine/network_model.hpp"
+#include "machine/trace.hpp"
+
+namespace gcsim::cli {
+
+void add_machine_options(CLI::App* cmd, MachineOptions& o) {
+  cmd->add_option("--config", o.config, "Machine file (configs/*.toml); default: the built-in GC-PowerPlus as published")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--nodes", o.nodes, "Use the first N nodes of the machine, in the GC's mesh shape (2=2x1, 4=2x2, 8=4x2, ...)")
+      ->check(CLI::Range(1, 1 << 20));
+  cmd->add_option("--model", o.model, "Network model: analytic (no contention) or flow (links shared); default: the config's")
+      ->check(CLI::IsMember({"analytic", "flow"}));
+  cmd->add_option("--trace", o.trace,
+                  "Write a trace of simulated events: FILE (Chrome trace-event JSON, opens in Perfetto) and FILE with .csv");
+  cmd->add_option("--trace-level", o.trace_level, "summary (totals only), messages (no link records) or full")
+      ->check(CLI::IsMember({"summary", "messages", "full"}))
+      ->capture_default_str();
+  cmd->add_option("--json", o.json, "Write the run's simulated and wall times and counters as JSON");
+}
+
+parix::SimulationOptions simulation_options(const MachineOptions& o, int default_nodes) {
+  parix::SimulationOptions s;
+  s.config = o.config.empty() ? machine::default_machine_config() : machine::load_machine_config(o.config);
+  const int n = o.nodes > 0 ? o.nodes : std::min(default_nodes, s.config.nodes);
+  s.config = machine::with_nodes(s.config, n);
+  s.nodes = n;
+  s.network_model = o.model;
+  s.trace.path = o.trace;
+  s.trace.level = machine::parse_trace_level(o.trace_level);
+  return s;
+}
+
+void write_json_file(const std::string& path, const nlohmann::json& j) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write JSON file '" + path + "'");
+  out << j.dump(2) << "\n";
+}
+
+void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohmann::json& extra) {
+  fmt::print("machine   {} ({} nodes, {} network)\n", r.config_name, r.nodes, r.model);
+  fmt::print("simulated {:12.6f} s   (compute {:.6f} s, communication {:.6f} s mean per processor)\n",
+             r.simulated_seconds(), r.mean_compute_seconds(), r.mean_comm_seconds());
+  fmt::print("wall      {:12.6f} s   ({} events, {} messages)\n", r.wall_seconds, r.events, r.total_messages());
+  if (!o.trace.empty()) fmt::print("trace     {} (and .csv)\n", o.trace);
+  if (!o.json.empty()) {
+    nlohmann::json j = r.to_json();
+    j.update(extra);
+    write_json_file(o.json, j);
+    fmt::print("json      {}\n", o.json);
+  }
+}
+
+}  // namespace gcsim::cli

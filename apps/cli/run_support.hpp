@@ -1,0 +1,31 @@
+#pragma once
+// Options and reporting shared by every command that runs something on the simulated machine.
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "parix/run_result.hpp"
+#include "parix/simulated_runtime.hpp"
+
+namespace gcsim::cli {
+
+struct MachineOptions {
+  std::string config;                 // "" : the built-in GC-PowerPlus (configs/gc-powerplus.toml)
+  int nodes = 0;                      // 0 : the command's default
+  std::string model;                  // "" : the config's network model
+  std::string trace;                  // trace file (.json, with .csv beside it)
+  std::string trace_level = "full";
+  std::string json;                   // where to write the run's JSON summary
+};
+
+// Adds --config, --nodes, --model, --trace, --trace-level and --json to cmd.
+void add_machine_options(CLI::App* cmd, MachineOptions& o);
+// Loads the config (or the built-in one) restricted to o.nodes (or default_nodes) nodes.
+parix::SimulationOptions simulation_options(const MachineOptions& o, int default_nodes);
+// Prints "simulated X s   wall Y s ..." and, with --json, writes result.to_json() merged with extra.
+void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohmann::json& extra = {});
+// Writes JSON to a file, failing with a clear message.
+void write_json_file(const std::string& path, const nlohmann::json& j);
+
+}  // namespace gcsim::cli

@@ -1,0 +1,51 @@
+#include "apps/common/image.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+
+#include <png.h>
+
+namespace gcsim::apps {
+namespace {
+
+std::uint8_t to_srgb8(float linear) {
+  if (!std::isfinite(linear)) linear = 0.0f;
+  float v = std::clamp(linear, 0.0f, 1.0f);
+  float s = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+  return static_cast<std::uint8_t>(std::lround(s * 255.0f));
+}
+
+}  // namespace
+
+void write_png(const std::filesystem::path& file, const Image& image, float exposure) {
+  std::unique_ptr<FILE, int (*)(FILE*)> fp(std::fopen(file.c_str(), "wb"), &std::fclose);
+  if (!fp) throw std::runtime_error("cannot write image '" + file.string() + "'");
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  if (!png || !info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    throw std::runtime_error("libpng failed writing '" + file.string() + "'");
+  }
+  png_init_io(png, fp.get());
+  png_set_IHDR(png, info, image.width(), image.height(), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_write_info(png, info);
+  std::vector<std::uint8_t> row(std::size_t(image.width()) * 3);
+  for (int y = 0; y < image.height(); ++y) {
+    for (int x = 0; x < image.width(); ++x) {
+      const glm::vec3 c = image.at(x, y) * exposure;
+      row[3 * x + 0] = to_srgb8(c.r);
+      row[3 * x + 1] = to_srgb8(c.g);
+      row[3 * x + 2] = to_srgb8(c.b);
+    }
+    png_write_row(png, row.data());
+  }
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+}
+
+}  // namespace gcsim::apps

@@ -1,0 +1,231 @@
+#include "machine/machine_config.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+namespace gcsim::machine {
+
+ConfigError::ConfigError(const std::string& f, int l, const std::string& what)
+    : std::runtime_error(f + (l > 0 ? ":" + std::to_string(l) : std::string()) + ": " + what), file(f), line(l) {}
+
+namespace {
+
+class Reader {
+ public:
+  Reader(const toml::table& root, std::string source) : root_(root), source_(std::move(source)) {}
+
+  int line_of(const toml::node& n) const { return static_cast<int>(n.source().begin.line); }
+
+  [[noreturn]] void fail(const toml::node* n, const std::string& what) const {
+    throw ConfigError(source_, n ? line_of(*n) : 0, what);
+  }
+
+  const toml::table& table(const toml::table& parent, std::string_view key, bool required = true) const {
+    static const toml::table empty;
+    const toml::node* n = parent.get(key);
+    if (!n) {
+      if (required) fail(&parent, "missing table [" + std::string(key) + "]");
+      return empty;
+    }
+    if (!n->is_table()) fail(n, "'" + std::string(key) + "' must be a table");
+    return *n->as_table();
+  }
+
+  // Rejects keys the format does not know, so a typo cannot silently fall back to a default.
+  void only_keys(const toml::table& t, const std::string& where, std::initializer_list<std::string_view> keys) const {
+    const std::set<std::string_view> known(keys);
+    for (const auto& [k, v] : t) {
+      if (!known.count(k.str())) {
+        std::string list;
+        for (auto key : keys) list += (list.empty() ? "" : ", ") + std::string(key);
+        fail(&v, "unknown key '" + std::string(k.str()) + "' in " + where + " (expected one of: " + list + ")");
+      }
+    }
+  }
+
+  double number(const toml::table& t, std::string_view key, const std::string& where, double lo, double hi,
+                std::optional<double> fallback = std::nullopt) const {
+    const toml::node* n = t.get(key);
+    if (!n) {
+      if (fallback) return *fallback;
+      fail(&t, "missing key '" + std::string(key) + "' in " + where);
+    }
+    double v;
+    if (auto i = n->as_integer()) v = static_cast<double>(i->get());
+    else if (auto f = n->as_floating_point()) v = f->get();
+    else fail(n, "'" + std::string(key) + "' in " + where + " must be a number");
+    if (!std::isfinite(v) || v < lo || v > hi) {
+      std::ostringstream os;
+      os << "'" << key << "' in " << where << " is " << v << "; expected a value in [" << lo << ", " << hi << "]";
+      fail(n, os.str());
+    }
+    return v;
+  }
+
+  int integer(const toml::table& t, std::string_view key, const std::string& where, int lo, int hi) const {
+    const toml::node* n = t.get(key);
+    if (!n) fail(&t, "missing key '" + std::string(key) + "' in " + where);
+    auto i = n->as_integer();
+    if (!i) fail(n, "'" + std::string(key) + "' in " + where + " must be an integer");
+    if (i->get() < lo || i->get() > hi) {
+      fail(n, "'" + std::string(key) + "' in " + where + " is " + std::to_string(i->get()) + "; expected an integer in [" +
+                  std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    }
+    return static_cast<int>(i->get());
+  }
+
+  std::string string(const toml::table& t, std::string_view key, const std::string& where,
+                     std::optional<std::string> fallback = std::nullopt) const {
+    const toml::node* n = t.get(key);
+    if (!n) {
+      if (fallback) return *fallback;
+      fail(&t, "missing key '" + std::string(key) + "' in " + where);
+    }
+    auto s = n->as_string();
+    if (!s) fail(n, "'" + std::string(key) + "' in " + where + " must be a string");
+    return s->get();
+  }
+
+  const toml::table& root() const { return root_; }
+  const std::string& source() const { return source_; }
+
+ private:
+  const toml::table& root_;
+  std::string source_;
+};
+
+constexpr double kMaxMicroseconds = 1e9;
+
+}  // namespace
+
+MachineConfig parse_machine_config(std::string_view text, const std::string& source) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw ConfigError(source, static_cast<int>(e.source().begin.line), std::string(e.description()));
+  }
+  Reader r(root, source);
+  r.only_keys(root, "the file", {"name", "topology", "node", "network", "ops"});
+
+  MachineConfig c;
+  c.source = source;
+  c.name = r.string(root, "name", "the file", std::string("unnamed machine"));
+
+  const toml::table& topo = r.table(root, "topology");
+  r.only_keys(topo, "[topology]", {"nodes", "mesh"});
+  c.nodes = r.integer(topo, "nodes", "[topology]", 1, 1 << 20);
+  const toml::node* mesh = topo.get("mesh");
+  if (!mesh) r.fail(&topo, "missing key 'mesh' in [topology] (expected mesh = [width, height])");
+  const toml::array* m = mesh->as_array();
+  if (!m || m->size() != 2 || !m->get(0)->is_integer() || !m->get(1)->is_integer()) {
+    r.fail(mesh, "'mesh' in [topology] must be [width, height], two positive integers");
+  }
+  c.mesh_width = static_cast<int>(m->get(0)->as_integer()->get());
+  c.mesh_height = static_cast<int>(m->get(1)->as_integer()->get());
+  if (c.mesh_width < 1 || c.mesh_height < 1) r.fail(mesh, "'mesh' in [topology] must be [width, height], two positive integers");
+  if (std::int64_t(c.mesh_width) * c.mesh_height != c.nodes) {
+    r.fail(mesh, "mesh " + std::to_string(c.mesh_width) + "x" + std::to_string(c.mesh_height) + " has " +
+                     std::to_string(std::int64_t(c.mesh_width) * c.mesh_height) + " nodes but [topology] nodes = " +
+                     std::to_string(c.nodes) + "; expected width * height == nodes");
+  }
+
+  const toml::table& node = r.table(root, "node");
+  r.only_keys(node, "[node]", {"cpus", "clock_mhz", "memory_mb", "comm_processors", "links_per_comm_processor"});
+  c.cpus_per_node = r.integer(node, "cpus", "[node]", 1, 1024);
+  c.clock_hz = r.number(node, "clock_mhz", "[node]", 1e-3, 1e7) * 1e6;
+  c.memory_bytes = static_cast<std::int64_t>(r.number(node, "memory_mb", "[node]", 1e-3, 1e9) * 1024 * 1024);
+  c.comm_processors = r.integer(node, "comm_processors", "[node]", 1, 64);
+  c.links_per_comm_processor = r.integer(node, "links_per_comm_processor", "[node]", 1, 64);
+  if (c.links_per_node() % 4 != 0) {
+    r.fail(node.get("links_per_comm_processor"), "comm_processors * links_per_comm_processor = " +
+                                                     std::to_string(c.links_per_node()) +
+                                                     "; expected a multiple of 4 (links are spread over the 4 mesh directions)");
+  }
+
+  const toml::table& net = r.table(root, "network");
+  r.only_keys(net, "[network]", {"model", "link_bandwidth_mbps", "message_setup_us", "network_latency_us",
+                                 "hop_latency_us", "connect_base_us", "connect_per_hop_us",
+                                 "connect_serialized"});
+  c.network_model = r.string(net, "model", "[network]", std::string("analytic"));
+  if (c.network_model != "analytic" && c.network_model != "flow") {
+    r.fail(net.get("model"), "'model' in [network] is '" + c.network_model + "'; expected \"analytic\" or \"flow\"");
+  }
+  c.link_bandwidth = r.number(net, "link_bandwidth_mbps", "[network]", 1e-9, 1e9) * 1e6;
+  auto us = [&](std::string_view key) {
+    return from_seconds(r.number(net, key, "[network]", 0.0, kMaxMicroseconds) * 1e-6);
+  };
+  c.message_setup = us("message_setup_us");
+  c.network_latency = us("network_latency_us");
+  c.hop_latency = us("hop_latency_us");
+  c.connect_base = us("connect_base_us");
+  c.connect_per_hop = us("connect_per_hop_us");
+  if (const toml::node* n = net.get("connect_serialized")) {
+    auto b = n->as_boolean();
+    if (!b) r.fail(n, "'connect_serialized' in [network] must be true or false");
+    c.connect_serialized = b->get();
+  }
+
+  const toml::table& ops = r.table(root, "ops", false);
+  for (const auto& [k, v] : ops) {
+    c.cycles_per_op[std::string(k.str())] = r.number(ops, k.str(), "[ops]", 0.0, 1e15);
+  }
+  return c;
+}
+
+MachineConfig load_machine_config(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw ConfigError(file.string(), 0, "cannot open machine file (does it exist?)");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse_machine_config(ss.str(), file.string());
+}
+
+MachineConfig default_machine_config() {
+  MachineConfig c = parse_machine_config(default_machine_config_text(), "<built-in configs/gc-powerplus.toml>");
+  return c;
+}
+
+MeshShape gc_mesh_shape(int n) {
+  if (n < 1) throw std::invalid_argument("node count must be positive");
+  int h = 1;
+  for (int d = 1; std::int64_t(d) * d <= n; ++d) {
+    if (n % d == 0) h = d;
+  }
+  return {n / h, h};
+}
+
+MachineConfig with_nodes(const MachineConfig& c, int n) {
+  if (n == c.nodes) return c;
+  if (n < 1 || n > c.nodes) {
+    throw ConfigError(c.source, 0, "--nodes " + std::to_string(n) + " does not fit: the machine has " +
+                                       std::to_string(c.nodes) + " nodes (expected 1.." + std::to_string(c.nodes) + ")");
+  }
+  const MeshShape s = gc_mesh_shape(n);
+  const bool fits = s.width <= c.mesh_width && s.height <= c.mesh_height;
+  const bool fits_turned = s.height <= c.mesh_width && s.width <= c.mesh_height;
+  if (!fits && !fits_turned) {
+    throw ConfigError(c.source, 0, "--nodes " + std::to_string(n) + " needs a " + std::to_string(s.width) + "x" +
+                                       std::to_string(s.height) + " mesh, which does not fit in the machine's " +
+                                       std::to_string(c.mesh_width) + "x" + std::to_string(c.mesh_height) + " mesh");
+  }
+  MachineConfig out = c;
+  out.nodes = n;
+  out.mesh_width = fits ? s.width : s.height;
+  out.mesh_height = fits ? s.height : s.width;
+  return out;
+}
+
+SimTime op_time(const MachineConfig& c, std::string_view op, std::int64_t count) {
+  auto it = c.cycles_per_op.find(op);
+  if (it == c.cycles_per_op.end()) {
+    throw std::out_of_range("operation '" + std::string(op) + "' has no cost in the [ops] table of " + c.source);
+  }
+  return from_seconds(it->second * static_cast<double>(count) / c.clock_hz);
+}
+
+}  // namespace gcsim::machine

@@ -1,0 +1,80 @@
+#pragma once
+// A machine described by a topology file (configs/*.toml). Every field is documented in
+// configs/gc-powerplus.toml; load_machine_config() rejects unknown keys, wrong types, impossible
+// values and meshes that do not match the node count, naming the file and line.
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "machine/sim_time.hpp"
+
+namespace gcsim::machine {
+
+struct MachineConfig {
+  std::string name;
+  std::string source;                  // file it came from ("<embedded>" for the built-in default)
+
+  // Topology
+  int nodes = 64;
+  int mesh_width = 8;                  // x extent of the physical 2D mesh
+  int mesh_height = 8;                 // y extent
+
+  // Node
+  int cpus_per_node = 2;
+  double clock_hz = 80e6;
+  std::int64_t memory_bytes = 32ll << 20;
+  int comm_processors = 4;             // T805 transputers per node
+  int links_per_comm_processor = 4;
+  std::map<std::string, double, std::less<>> cycles_per_op;
+
+  // Network
+  std::string network_model = "analytic";
+  double link_bandwidth = 35e6 / 16;   // bytes/s of one transputer link
+  SimTime message_setup = 5 * kMicrosecond;
+  SimTime network_latency = 60 * kMicrosecond;  // minimum: one hop, zero bytes
+  SimTime hop_latency = 1 * kMicrosecond;       // each further hop
+  SimTime connect_base = 550 * kMicrosecond;    // opening a virtual link
+  SimTime connect_per_hop = 240 * kMicrosecond;
+  // Connection set-ups are handled one at a time machine-wide (a single connection server),
+  // instead of concurrently by the nodes involved.
+  bool connect_serialized = false;
+
+  int links_per_node() const { return comm_processors * links_per_comm_processor; }
+  // The links of a node are spread evenly over its four mesh directions.
+  int links_per_direction() const { return links_per_node() / 4; }
+  double channel_bandwidth() const { return link_bandwidth * links_per_direction(); }
+  double node_bandwidth() const { return link_bandwidth * links_per_node(); }
+};
+
+// Where a configuration error was found.
+class ConfigError : public std::runtime_error {
+ public:
+  ConfigError(const std::string& file, int line, const std::string& what);
+  std::string file;
+  int line;
+};
+
+MachineConfig load_machine_config(const std::filesystem::path& file);
+MachineConfig parse_machine_config(std::string_view toml_text, const std::string& source_name);
+// The GC-PowerPlus as published (configs/gc-powerplus.toml, compiled into the binary).
+MachineConfig default_machine_config();
+std::string_view default_machine_config_text();
+
+// The mesh shape the GC uses for its first n nodes: 2=2x1, 4=2x2, 8=4x2, 16=4x4, 32=8x4, 64=8x8;
+// in general the most nearly square w x h with w >= h.
+struct MeshShape {
+  int width;
+  int height;
+};
+MeshShape gc_mesh_shape(int n);
+// The config restricted to its first n nodes in that shape; throws ConfigError if it does not fit.
+MachineConfig with_nodes(const MachineConfig& c, int n);
+
+// Simulated CPU time for count operations of the named kind on this machine.
+// Throws std::out_of_range naming the operation if the config has no cost for it.
+SimTime op_time(const MachineConfig& c, std::string_view op, std::int64_t count);
+
+}  // namespace gcsim::machine

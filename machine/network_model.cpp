@@ -1,0 +1,44 @@
+#include "machine/network_model.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "machine/analytic_network.hpp"
+#include "machine/flow_network.hpp"
+
+namespace gcsim::machine {
+
+SimTime NetworkModel::latency(int hops) const {
+  const MachineConfig& c = ctx_.config;
+  if (hops <= 0) return c.message_setup;
+  return c.message_setup + c.network_latency + SimTime(hops - 1) * c.hop_latency;
+}
+
+SimTime NetworkModel::serialization(std::int64_t bytes) const {
+  if (bytes <= 0) return 0;
+  return from_seconds(static_cast<double>(bytes) / ctx_.config.channel_bandwidth());
+}
+
+void NetworkModel::account(const std::vector<int>& route, std::int64_t bytes, SimTime start, SimTime end) {
+  if (channel_bytes_.empty()) {
+    channel_bytes_.assign(ctx_.mesh.channel_count(), 0);
+    channel_busy_.assign(ctx_.mesh.channel_count(), 0);
+  }
+  for (int ch : route) {
+    channel_bytes_[ch] += bytes;
+    channel_busy_[ch] += end - start;
+    if (ctx_.trace && ctx_.trace->level() == TraceLevel::full) {
+      const MeshChannel e = ctx_.mesh.channel_ends(ch);
+      ctx_.trace->record({TraceKind::link, e.from, e.to, start, end, bytes, ch, "link"});
+    }
+  }
+}
+
+std::unique_ptr<NetworkModel> make_network_model(std::string_view name, NetworkContext ctx) {
+  if (name == "analytic") return std::make_unique<AnalyticNetwork>(ctx);
+  if (name == "flow") return std::make_unique<FlowNetwork>(ctx);
+  throw std::invalid_argument("unknown network model '" + std::string(name) + "' (expected one of: " +
+                              std::string(kNetworkModelNames) + ")");
+}
+
+}  // namespace gcsim::machine

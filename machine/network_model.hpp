@@ -1,0 +1,60 @@
+#pragma once
+// How long a message takes to cross the physical mesh. Every model shares one interface so a run
+// can name the fidelity it wants; they agree exactly for a message alone on an idle network.
+//   analytic: set-up + latency + per-hop latency + size / channel bandwidth; no contention.
+//   flow:     the same latency, but each channel's bandwidth is shared max-min fairly among the
+//             messages crossing it at the same time (rates recomputed when a message starts or ends).
+#include <cstdint>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "machine/kernel.hpp"
+#include "machine/machine_config.hpp"
+#include "machine/mesh.hpp"
+#include "machine/trace.hpp"
+
+namespace gcsim::machine {
+
+struct NetworkContext {
+  Kernel& kernel;
+  const Mesh& mesh;
+  const MachineConfig& config;
+  TraceWriter* trace;  // may be null
+};
+
+class NetworkModel {
+ public:
+  explicit NetworkModel(NetworkContext ctx) : ctx_(ctx) {}
+  virtual ~NetworkModel() = default;
+  virtual std::string_view name() const = 0;
+
+  // Starts moving bytes from node src to node dst now; on_arrival runs when the last byte is there.
+  virtual void transfer(int src, int dst, std::int64_t bytes, Kernel::Action on_arrival) = 0;
+
+  // Set-up plus latency for a message over `hops` hops (zero hops: set-up only).
+  SimTime latency(int hops) const;
+  // Time to push bytes through one channel at full bandwidth.
+  SimTime serialization(std::int64_t bytes) const;
+  // What a message alone on the network takes.
+  SimTime uncontended_time(int hops, std::int64_t bytes) const { return latency(hops) + (hops > 0 ? serialization(bytes) : 0); }
+
+  std::uint64_t messages() const { return messages_; }
+  // Bytes and busy time per mesh channel (indexed like Mesh channels).
+  const std::vector<std::int64_t>& channel_bytes() const { return channel_bytes_; }
+  const std::vector<SimTime>& channel_busy() const { return channel_busy_; }
+
+ protected:
+  void account(const std::vector<int>& route, std::int64_t bytes, SimTime start, SimTime end);
+  NetworkContext ctx_;
+  std::uint64_t messages_ = 0;
+  std::vector<std::int64_t> channel_bytes_;
+  std::vector<SimTime> channel_busy_;
+};
+
+// Names the models a run may ask for.
+inline constexpr std::string_view kNetworkModelNames = "analytic, flow";
+// Throws std::invalid_argument listing the valid names if name is unknown.
+std::unique_ptr<NetworkModel> make_network_model(std::string_view name, NetworkContext ctx);
+
+}  // namespace gcsim::machine

@@ -1,0 +1,65 @@
+#pragma once
+// Trace of a simulated run: compute intervals, sends, receives, waits, connections and link use,
+// with simulated timestamps only, so a rerun writes byte-identical files. Written incrementally:
+// Chrome trace-event JSON (array form, whose closing bracket is optional, so an interrupted run
+// still loads in Perfetto) and CSV, flushed as the run goes.
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "machine/sim_time.hpp"
+
+namespace gcsim::machine {
+
+enum class TraceLevel {
+  summary,   // no per-event records, totals only
+  messages,  // compute, send, receive, wait and connection intervals, message arrows
+  full,      // and every link occupancy
+};
+TraceLevel parse_trace_level(std::string_view s);  // throws std::invalid_argument
+std::string_view to_string(TraceLevel l);
+
+struct TraceOptions {
+  std::string path;                // FILE.json (Chrome) with FILE.csv beside it; "" = no trace
+  TraceLevel level = TraceLevel::full;
+};
+
+enum class TraceKind { compute, send, recv, wait, connect, link, message };
+std::string_view to_string(TraceKind k);
+
+struct TraceRecord {
+  TraceKind kind;
+  int proc = -1;           // processor (or, for link records, the link's source node)
+  int peer = -1;           // other processor (or the link's destination node)
+  SimTime start = 0;
+  SimTime end = 0;
+  std::int64_t bytes = 0;
+  std::int64_t id = -1;    // message id, for arrows from send to receive
+  std::string_view label;  // operation or call name
+};
+
+class TraceWriter {
+ public:
+  TraceWriter(const TraceOptions& options, int processors, int mesh_width, int mesh_height);
+  ~TraceWriter();
+  TraceWriter(const TraceWriter&) = delete;
+  TraceWriter& operator=(const TraceWriter&) = delete;
+
+  bool enabled() const { return json_ != nullptr; }
+  TraceLevel level() const { return level_; }
+  void record(const TraceRecord& r);
+  void close();  // writes the closing bracket
+
+ private:
+  void flush_buffers();
+  TraceLevel level_;
+  std::FILE* json_ = nullptr;
+  std::FILE* csv_ = nullptr;
+  std::string json_buffer_;  // whole records only, so the files always end on a record boundary
+  std::string csv_buffer_;
+  int mesh_width_;
+};
+
+}  // namespace gcsim::machine

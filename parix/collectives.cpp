@@ -1,0 +1,159 @@
+#include "parix/collectives.hpp"
+
+#include <cstdint>
+
+namespace gcsim::parix {
+namespace {
+
+void send_to(Processor& p, int peer, std::span<const std::byte> data, const CollectiveOptions& o) {
+  if (o.connect_per_message) {
+    Link l = p.connect(peer, o.tag);
+    p.send(l, data);
+  } else {
+    p.send(p.persistent_link(peer, o.tag), data);
+  }
+}
+
+Bytes recv_from(Processor& p, int peer, const CollectiveOptions& o) {
+  if (o.connect_per_message) {
+    Link l = p.connect(peer, o.tag);
+    return p.recv(l);
+  }
+  return p.recv(p.persistent_link(peer, o.tag));
+}
+
+int rank_of(int id, int root, int n) { return (id - root + n) % n; }
+int id_of(int rank, int root, int n) { return (rank + root) % n; }
+
+// Packs contributions as [int32 id][int64 size][bytes]..., in the order given.
+void append_packet(Bytes& out, int id, std::span<const std::byte> data) {
+  const std::int32_t i = id;
+  const std::int64_t n = static_cast<std::int64_t>(data.size());
+  const auto* pi = reinterpret_cast<const std::byte*>(&i);
+  const auto* pn = reinterpret_cast<const std::byte*>(&n);
+  out.insert(out.end(), pi, pi + sizeof i);
+  out.insert(out.end(), pn, pn + sizeof n);
+  out.insert(out.end(), data.begin(), data.end());
+}
+
+void unpack(std::span<const std::byte> in, std::vector<Bytes>& out) {
+  std::size_t at = 0;
+  while (at < in.size()) {
+    std::int32_t i;
+    std::int64_t n;
+    if (in.size() - at < sizeof i + sizeof n) throw ParixError("gather: truncated packet");
+    std::memcpy(&i, in.data() + at, sizeof i);
+    std::memcpy(&n, in.data() + at + sizeof i, sizeof n);
+    at += sizeof i + sizeof n;
+    if (n < 0 || static_cast<std::size_t>(n) > in.size() - at || i < 0 || static_cast<std::size_t>(i) >= out.size()) {
+      throw ParixError("gather: corrupt packet");
+    }
+    out[i].assign(in.begin() + at, in.begin() + at + n);
+    at += n;
+  }
+}
+
+}  // namespace
+
+int tree_parent(int id, int root, int count) {
+  const int r = rank_of(id, root, count);
+  return r == 0 ? -1 : id_of((r - 1) / 2, root, count);
+}
+
+std::vector<int> tree_children(int id, int root, int count) {
+  const int r = rank_of(id, root, count);
+  std::vector<int> c;
+  for (int k = 2 * r + 1; k <= 2 * r + 2 && k < count; ++k) c.push_back(id_of(k, root, count));
+  return c;
+}
+
+Bytes broadcast(Processor& p, int root, Bytes data, const CollectiveOptions& o) {
+  const int n = p.count(), me = p.id();
+  if (n == 1) return data;
+  if (o.algo == BcastAlgo::sequential) {
+    if (me == root) {
+      for (int q = 0; q < n; ++q) {
+        if (q != root) send_to(p, q, data, o);
+      }
+      return data;
+    }
+    return recv_from(p, root, o);
+  }
+  if (me != root) data = recv_from(p, tree_parent(me, root, n), o);
+  for (int c : tree_children(me, root, n)) send_to(p, c, data, o);
+  return data;
+}
+
+std::vector<Bytes> gather(Processor& p, int root, std::span<const std::byte> mine, const CollectiveOptions& o) {
+  const int n = p.count(), me = p.id();
+  std::vector<Bytes> all;
+  if (o.algo == BcastAlgo::sequential) {
+    if (me != root) {
+      send_to(p, root, mine, o);
+      return all;
+    }
+    all.resize(n);
+    all[me].assign(mine.begin(), mine.end());
+    for (int q = 0; q < n; ++q) {
+      if (q != root) all[q] = recv_from(p, q, o);
+    }
+    return all;
+  }
+  // Tree: each processor forwards its own contribution and its subtree's, packed, to its parent.
+  Bytes packet;
+  append_packet(packet, me, mine);
+  for (int c : tree_children(me, root, n)) {
+    Bytes sub = recv_from(p, c, o);
+    packet.insert(packet.end(), sub.begin(), sub.end());
+  }
+  if (me != root) {
+    send_to(p, tree_parent(me, root, n), packet, o);
+    return all;
+  }
+  all.resize(n);
+  unpack(packet, all);
+  return all;
+}
+
+std::vector<Bytes> allgather(Processor& p, std::span<const std::byte> mine, const CollectiveOptions& o) {
+  const int n = p.count();
+  std::vector<Bytes> at_root = gather(p, 0, mine, o);
+  Bytes packed;
+  if (p.id() == 0) {
+    for (int q = 0; q < n; ++q) append_packet(packed, q, at_root[q]);
+  }
+  packed = broadcast(p, 0, std::move(packed), o);
+  std::vector<Bytes> all(n);
+  unpack(packed, all);
+  return all;
+}
+
+Bytes reduce(Processor& p, int root, Bytes mine, const CombineOp& op, const CollectiveOptions& o) {
+  const int n = p.count(), me = p.id();
+  if (o.algo == BcastAlgo::sequential) {
+    if (me != root) {
+      send_to(p, root, mine, o);
+      return {};
+    }
+    for (int q = 0; q < n; ++q) {
+      if (q != root) op(mine, recv_from(p, q, o));
+    }
+    return mine;
+  }
+  for (int c : tree_children(me, root, n)) op(mine, recv_from(p, c, o));
+  if (me != root) {
+    send_to(p, tree_parent(me, root, n), mine, o);
+    return {};
+  }
+  return mine;
+}
+
+Bytes allreduce(Processor& p, Bytes mine, const CombineOp& op, const CollectiveOptions& o) {
+  return broadcast(p, 0, reduce(p, 0, std::move(mine), op, o), o);
+}
+
+void barrier(Processor& p, const CollectiveOptions& o) {
+  allreduce(p, Bytes{}, [](Bytes&, std::span<const std::byte>) {}, o);
+}
+
+}  // namespace gcsim::parix

@@ -1,0 +1,205 @@
+#pragma once
+// The PARIX-like API seen by an application: one Processor per virtual processor, SPMD.
+//
+// Semantics (identical on every backend):
+//  - connect(peer, tag) opens a virtual link. Both ends must call it (with each other's id and
+//    the same tag); it returns when the link is up. Opening costs the configured connection time,
+//    which grows with the number of mesh hops between the two nodes. Links close when destroyed.
+//  - send() is synchronous: it returns once the receiver has the message. isend() returns at once;
+//    the message travels while the sender goes on. Messages on one link arrive in order.
+//  - recv() blocks until a message arrives on the link; irecv()/wait()/wait_any() split that up.
+//  - compute() charges simulated CPU time for counted operations (cycles per operation and clock
+//    rate come from the machine file), so that simulated time is deterministic.
+//  - spawn() starts a thread on the same node; it shares the node's CPUs and this processor's id.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <map>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+#include <cstring>
+#include <utility>
+
+#include "machine/sim_time.hpp"
+
+namespace gcsim::parix {
+
+using machine::SimTime;
+using Bytes = std::vector<std::byte>;
+
+// A number of named operations, charged as cycles_per_op[op] * count / clock.
+struct OpCount {
+  std::string_view op;
+  std::int64_t count;
+};
+
+class Processor;
+
+// One end of a virtual link. Move-only; closes the link when destroyed.
+class Link {
+ public:
+  Link() = default;
+  Link(Processor* owner, int peer, int tag, std::int64_t handle)
+      : owner_(owner), peer_(peer), tag_(tag), handle_(handle) {}
+  Link(Link&& o) noexcept { *this = std::move(o); }
+  Link& operator=(Link&& o) noexcept;
+  Link(const Link&) = delete;
+  Link& operator=(const Link&) = delete;
+  ~Link();
+
+  int peer() const { return peer_; }
+  int tag() const { return tag_; }
+  std::int64_t handle() const { return handle_; }
+  bool valid() const { return owner_ != nullptr; }
+
+ private:
+  Processor* owner_ = nullptr;
+  int peer_ = -1;
+  int tag_ = 0;
+  std::int64_t handle_ = -1;
+};
+
+// Shared state of an asynchronous send or receive; backends fill it in.
+struct RequestState {
+  bool done = false;
+  bool is_receive = false;
+  Bytes data;                  // received bytes once done (receives only)
+  std::int64_t link = -1;      // link handle
+  int peer = -1;
+  void* waiter = nullptr;      // backend-private: who to wake when done
+};
+
+// Handle to an asynchronous send or receive.
+class Request {
+ public:
+  Request() = default;
+  explicit Request(std::shared_ptr<RequestState> s) : state_(std::move(s)) {}
+  bool valid() const { return state_ != nullptr; }
+  bool done() const { return state_ && state_->done; }
+  // The received bytes (a completed receive); moves them out.
+  Bytes take() { return std::move(state_->data); }
+  RequestState* state() const { return state_.get(); }
+
+ private:
+  std::shared_ptr<RequestState> state_;
+};
+
+// A node-local thread started by Processor::spawn.
+class Thread {
+ public:
+  Thread() = default;
+  explicit Thread(std::function<void()> join) : join_(std::move(join)) {}
+  Thread(Thread&&) = default;
+  Thread& operator=(Thread&&) = default;
+  void join() {
+    if (join_) std::exchange(join_, nullptr)();
+  }
+  ~Thread() { join(); }
+
+ private:
+  std::function<void()> join_;
+};
+
+// Thrown into the application when the machine runs out of a resource (memory) or an API
+// call is misused (connecting to oneself, an unknown operation name).
+class ParixError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Processor {
+ public:
+  virtual ~Processor() = default;
+
+  virtual int id() const = 0;
+  virtual int count() const = 0;
+  virtual SimTime now() const = 0;
+  double now_seconds() const { return machine::to_seconds(now()); }
+
+  virtual void compute(std::span<const OpCount> ops) = 0;
+  void compute(std::initializer_list<OpCount> ops) { compute(std::span(ops.begin(), ops.size())); }
+  void compute(std::string_view op, std::int64_t count) { compute({OpCount{op, count}}); }
+
+  // Declares memory the application holds on this node (bytes may be negative to release).
+  // Throws ParixError when the node's memory would be exceeded.
+  virtual void use_memory(std::int64_t bytes) = 0;
+
+  virtual Link connect(int peer, int tag = 0) = 0;
+  virtual void send(Link& link, std::span<const std::byte> data) = 0;
+  virtual Bytes recv(Link& link) = 0;
+  virtual Request isend(Link& link, std::span<const std::byte> data) = 0;
+  virtual Request irecv(Link& link) = 0;
+  virtual void wait(Request& r) = 0;
+  // Blocks until one of the requests is done; returns its index (the lowest, if several are).
+  virtual std::size_t wait_any(std::span<Request* const> rs) = 0;
+
+  virtual Thread spawn(std::function<void(Processor&)> body) = 0;
+
+  // A link kept open for reuse with this peer and tag, opened (both ends call it) on first use.
+  Link& persistent_link(int peer, int tag = 0) {
+    auto it = persistent_.find({peer, tag});
+    if (it == persistent_.end()) it = persistent_.emplace(std::pair{peer, tag}, connect(peer, tag)).first;
+    return it->second;
+  }
+  // Closes the persistent links; backends call it before a processor goes away.
+  void drop_persistent_links() { persistent_.clear(); }
+
+  // Typed helpers for trivially copyable values and vectors of them.
+  template <class T>
+  void send_value(Link& l, const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    send(l, std::as_bytes(std::span(&v, 1)));
+  }
+  template <class T>
+  T recv_value(Link& l) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    Bytes b = recv(l);
+    if (b.size() != sizeof(T)) throw ParixError("recv_value: message size does not match the type");
+    T v;
+    std::memcpy(&v, b.data(), sizeof(T));
+    return v;
+  }
+  template <class T>
+  void send_vector(Link& l, std::span<const T> v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    send(l, std::as_bytes(v));
+  }
+  template <class T>
+  std::vector<T> recv_vector(Link& l) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    Bytes b = recv(l);
+    if (b.size() % sizeof(T) != 0) throw ParixError("recv_vector: message size is not a multiple of the element size");
+    std::vector<T> v(b.size() / sizeof(T));
+    if (!b.empty()) std::memcpy(v.data(), b.data(), b.size());
+    return v;
+  }
+
+ protected:
+  friend class Link;
+  virtual void close_link(std::int64_t handle) = 0;
+
+ private:
+  std::map<std::pair<int, int>, Link> persistent_;
+};
+
+inline Link& Link::operator=(Link&& o) noexcept {
+  if (this != &o) {
+    if (owner_) owner_->close_link(handle_);
+    owner_ = std::exchange(o.owner_, nullptr);
+    peer_ = o.peer_;
+    tag_ = o.tag_;
+    handle_ = o.handle_;
+  }
+  return *this;
+}
+inline Link::~Link() {
+  if (owner_) owner_->close_link(handle_);
+}
+
+}  // namespace gcsim::parix

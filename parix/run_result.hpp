@@ -1,0 +1,44 @@
+#pragma once
+// What a run reports: simulated time next to the host's wall-clock time, and the counters behind them.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "machine/sim_time.hpp"
+
+namespace gcsim::parix {
+
+struct ProcessorStats {
+  machine::SimTime finish = 0;    // when the processor's program returned
+  machine::SimTime compute = 0;   // time its CPU work took
+  machine::SimTime comm = 0;      // time blocked in connect/send/recv/wait
+  machine::SimTime connect = 0;   // of which opening connections
+  std::int64_t messages_sent = 0;
+  std::int64_t bytes_sent = 0;
+  std::int64_t connections = 0;
+  std::map<std::string, std::int64_t, std::less<>> ops;  // counted operations
+};
+
+struct RunResult {
+  std::string model;              // network model name
+  std::string config_name;
+  int nodes = 0;
+  machine::SimTime makespan = 0;  // simulated time of the whole run
+  double wall_seconds = 0;        // host time the simulation took
+  std::uint64_t events = 0;       // discrete events processed by the kernel
+  std::vector<ProcessorStats> processors;
+
+  double simulated_seconds() const { return machine::to_seconds(makespan); }
+  double mean_compute_seconds() const;
+  double mean_comm_seconds() const;
+  double max_comm_seconds() const;
+  std::int64_t total_messages() const;
+  std::map<std::string, std::int64_t, std::less<>> total_ops() const;
+  // {"simulated": {"total_s", "compute_s", "comm_s"}, "wall": {"total_s"}, "events", "nodes", "model", ...}
+  nlohmann::json to_json() const;
+};
+
+}  // namespace gcsim::parix
