@@ -1,0 +1,105 @@
+#include "apps/radiosity/accuracy.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "apps/radiosity/gauss_seidel.hpp"
+#include "apps/radiosity/hemicube.hpp"
+
+namespace gcsim::radiosity {
+
+double simulated_seconds(const OpCounts& ops, const machine::MachineConfig& m) {
+  const std::pair<const char*, std::int64_t> counts[] = {
+      {"polygon_project", ops.polygon_project}, {"hemicube_pixel", ops.hemicube_pixel},
+      {"hemicube_sample", ops.hemicube_sample}, {"form_factor_sum", ops.form_factor_sum},
+      {"element_update", ops.element_update},   {"patch_select", ops.patch_select}};
+  machine::SimTime t = 0;
+  for (const auto& [op, n] : counts)
+    if (n > 0) t += machine::op_time(m, op, n);
+  return machine::to_seconds(t);
+}
+
+namespace {
+double now_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+double row_sum(const std::vector<double>& row, const Scene& s, int patch) {
+  double f = 0;
+  const ScenePatch& p = s.patches[patch];
+  for (int e = p.first_element; e < p.first_element + p.element_count; ++e) f += row[e];
+  return f;
+}
+}  // namespace
+
+std::vector<FormFactorAccuracy> form_factor_accuracy(const std::vector<int>& resolutions,
+                                                     const machine::MachineConfig& m) {
+  std::vector<FormFactorAccuracy> out;
+  for (FormFactorCase c : {FormFactorCase::parallel_squares, FormFactorCase::perpendicular_squares,
+                           FormFactorCase::patch_to_disc})
+    for (int res : resolutions) {
+      FormFactorAccuracy a{c, res, 0, 0, 0, 0, 0, 0};
+      double t0 = now_seconds();
+      OpCounts ops;
+      HemicubeOptions ho;
+      ho.resolution = res;
+      ho.cells_per_side = 8;
+      {
+        FormFactorSetup one = form_factor_setup(c, 1.0, 1);
+        HemicubeRenderer r(one.scene, ho);
+        a.hemicube_point = row_sum(r.form_factor_row(0, ops), one.scene, one.receiver_patch);
+        a.exact_point = one.exact_point;
+      }
+      if (c == FormFactorCase::patch_to_disc) {
+        a.hemicube_area = a.hemicube_point;
+        a.exact_area = a.exact_point;
+      } else {
+        // F(A1 -> A2) = 1/A1 * integral over A1 of F(dA1 -> A2): the mean over a 4 x 4 grid of hemicubes.
+        const int n = 4;
+        FormFactorSetup grid = form_factor_setup(c, 1.0, n);
+        HemicubeRenderer r(grid.scene, ho);
+        double sum = 0;
+        for (int p = 0; p < n * n; ++p) sum += row_sum(r.form_factor_row(p, ops), grid.scene, grid.receiver_patch);
+        a.hemicube_area = sum / (n * n);
+        a.exact_area = grid.exact_area;
+      }
+      a.wall_seconds = now_seconds() - t0;
+      a.simulated_seconds = simulated_seconds(ops, m);
+      out.push_back(a);
+    }
+  return out;
+}
+
+std::vector<EnergyAccuracy> energy_accuracy(const Scene& scene, const SolverOptions& options,
+                                            const std::vector<double>& thresholds, const machine::MachineConfig& m) {
+  GaussSeidelResult ref = solve_gauss_seidel(scene, options.hemicube);
+  double mean_ref = 0, total_area = 0;
+  for (std::size_t e = 0; e < scene.elements.size(); ++e) {
+    mean_ref += channel_sum(ref.element_radiosity[e]) / 3 * scene.elements[e].area;
+    total_area += scene.elements[e].area;
+  }
+  mean_ref /= total_area;
+  std::vector<EnergyAccuracy> out;
+  std::size_t next = 0;
+  OpCounts ops;
+  double t0 = now_seconds();
+  auto measure = [&](const ProgressiveState& st, double threshold) {
+    double sq = 0, worst = 0;
+    const auto& b = st.element_radiosity();
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      Rgb d = glm::abs(b[e] - ref.element_radiosity[e]) / mean_ref;
+      double err = std::max({d.r, d.g, d.b});
+      sq += err * err * scene.elements[e].area;
+      worst = std::max(worst, err);
+    }
+    out.push_back({threshold, st.steps(), std::sqrt(sq / total_area), worst, simulated_seconds(ops, m),
+                   now_seconds() - t0});
+  };
+  SolverOptions o = options;
+  o.energy = thresholds.empty() ? 0.999 : thresholds.back();
+  solve_progressive(scene, o, &ops, [&](const StepRecord& rec, const ProgressiveState& st) {
+    while (next < thresholds.size() && rec.shot_fraction >= thresholds[next]) measure(st, thresholds[next++]);
+  });
+  return out;
+}
+
+}  // namespace gcsim::radiosity

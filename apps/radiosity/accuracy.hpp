@@ -1,0 +1,43 @@
+#pragma once
+// What accuracy costs: hemicube resolution against closed-form form factors, and the energy
+// threshold of progressive refinement against a converged (Gauss-Seidel) reference. Each row carries
+// the simulated seconds the work would take on one node of the machine (from counted operations)
+// and the host's wall seconds.
+#include <vector>
+
+#include "apps/radiosity/analytic_form_factors.hpp"
+#include "apps/radiosity/progressive_solver.hpp"
+#include "machine/machine_config.hpp"
+
+namespace gcsim::radiosity {
+
+struct FormFactorAccuracy {
+  FormFactorCase form_factor_case;
+  int resolution;
+  double hemicube_point, exact_point;  // from the centre of the source (one hemicube)
+  double hemicube_area, exact_area;    // area average over 4 x 4 hemicubes (squares only)
+  double simulated_seconds, wall_seconds;
+  double point_error() const { return std::abs(hemicube_point - exact_point) / exact_point; }
+  double area_error() const { return std::abs(hemicube_area - exact_area) / exact_area; }
+};
+
+std::vector<FormFactorAccuracy> form_factor_accuracy(const std::vector<int>& resolutions,
+                                                     const machine::MachineConfig& machine);
+
+struct EnergyAccuracy {
+  double threshold;
+  int steps;
+  double rms_relative_error;  // area-weighted RMS of |B - B_ref| / mean B_ref over elements
+  double max_relative_error;  // worst element, relative to the mean reference radiosity
+  double simulated_seconds, wall_seconds;
+};
+
+// One progressive run, measured as it passes each threshold (ascending), against Gauss-Seidel.
+std::vector<EnergyAccuracy> energy_accuracy(const Scene& scene, const SolverOptions& options,
+                                            const std::vector<double>& thresholds,
+                                            const machine::MachineConfig& machine);
+
+// Simulated seconds of counted work on one CPU of the machine.
+double simulated_seconds(const OpCounts& ops, const machine::MachineConfig& machine);
+
+}  // namespace gcsim::radiosity

@@ -1,0 +1,262 @@
+#include "apps/radiosity/hemicube.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace gcsim::radiosity {
+
+namespace {
+
+std::vector<HemicubeCell> make_cells(const HemicubeOptions& o) {
+  if (o.hierarchical_levels < 0 || o.hierarchical_levels > 8)
+    throw std::invalid_argument("hierarchical levels must be in [0, 8]");
+  int scale = 1 << o.hierarchical_levels;
+  if (o.resolution % (2 * scale) != 0)
+    throw std::invalid_argument(fmt::format("hemicube resolution {} must be a multiple of {} for {} hierarchical levels",
+                                            o.resolution, 2 * scale, o.hierarchical_levels));
+  auto cells = hemicube_cells(o.resolution / scale, o.cells_per_side);
+  for (auto& c : cells) c.i0 *= scale, c.j0 *= scale, c.i1 *= scale, c.j1 *= scale;
+  return cells;
+}
+
+// Face coordinates (a across, b up, d depth) from the shooter frame's (u, v, n) coordinates.
+Vec3 to_face(int face, const Vec3& l) {
+  switch (face) {
+    case kTopFace: return {l.x, l.y, l.z};
+    case kPlusU: return {l.y, l.z, l.x};
+    case kMinusU: return {-l.y, l.z, -l.x};
+    case kPlusV: return {-l.x, l.z, l.y};
+    default: return {l.x, l.z, -l.y};
+  }
+}
+
+// Sutherland-Hodgman against the plane f(q) >= 0.
+template <class F>
+int clip(const Vec3* in, int n, Vec3* out, F f) {
+  int m = 0;
+  for (int i = 0; i < n; ++i) {
+    const Vec3& a = in[i];
+    const Vec3& b = in[(i + 1) % n];
+    double fa = f(a), fb = f(b);
+    if (fa >= 0) out[m++] = a;
+    if ((fa >= 0) != (fb >= 0)) out[m++] = a + (b - a) * (fa / (fa - fb));
+  }
+  return m;
+}
+
+}  // namespace
+
+HemicubeRenderer::HemicubeRenderer(const Scene& scene, const HemicubeOptions& o)
+    : scene_(scene), options_(o), dff_(o.resolution), cells_(make_cells(o)), near_(1e-9 * scene.extent()) {
+  acc_.assign(scene.elements.size(), 0.0);
+}
+
+void HemicubeRenderer::project(int shooter, OpCounts& ops) {
+  shooter_ = shooter;
+  for (auto& f : faces_) f.clear();
+  const ScenePatch& sp = scene_.patches[shooter];
+  const Frame fr = Frame::from_normal(sp.normal);
+  const double r = options_.resolution, eps = 1e-12 * scene_.extent();
+  for (int e = 0; e < int(scene_.elements.size()); ++e) {
+    const SceneElement& el = scene_.elements[e];
+    if (el.patch == shooter) continue;
+    Vec3 local[4];
+    double max_up = -std::numeric_limits<double>::infinity();
+    for (int k = 0; k < el.count; ++k) {
+      local[k] = fr.to_local(el.polygon.v[k] - sp.center);
+      max_up = std::max(max_up, local[k].z);
+    }
+    if (max_up <= eps) continue;  // wholly behind the shooter's plane: never seen
+    Vec3 nl = fr.to_local(el.normal);
+    double k = glm::dot(nl, local[0]);
+    if (std::abs(k) <= eps) continue;  // its plane passes through the hemicube centre: seen edge-on
+    const bool front = k < 0;
+    ops.polygon_project += kHemicubeFaces;
+    for (int face = 0; face < kHemicubeFaces; ++face) {
+      Vec3 buf0[12], buf1[12];
+      int n = el.count;
+      for (int i = 0; i < n; ++i) buf0[i] = to_face(face, local[i]);
+      const double nr = near_;
+      n = clip(buf0, n, buf1, [nr](const Vec3& q) { return q.z - nr; });
+      n = clip(buf1, n, buf0, [](const Vec3& q) { return q.z - q.x; });
+      n = clip(buf0, n, buf1, [](const Vec3& q) { return q.z + q.x; });
+      n = clip(buf1, n, buf0, [](const Vec3& q) { return q.z - q.y; });
+      if (face == kTopFace)
+        n = clip(buf0, n, buf1, [](const Vec3& q) { return q.z + q.y; });
+      else
+        n = clip(buf0, n, buf1, [](const Vec3& q) { return q.y; });
+      if (n < 3) continue;
+      Projected p;
+      p.element = e;
+      p.front = front;
+      p.count = n;
+      p.plane_n = to_face(face, nl);
+      p.plane_k = k;
+      double area2 = 0;
+      double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+      for (int i = 0; i < n; ++i) {
+        double x = (buf1[i].x / buf1[i].z + 1) * r / 2;
+        double y = face == kTopFace ? (buf1[i].y / buf1[i].z + 1) * r / 2 : buf1[i].y / buf1[i].z * r / 2;
+        p.p[i] = {x, y};
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+      }
+      for (int i = 0; i < n; ++i) {
+        const auto& a = p.p[i];
+        const auto& b = p.p[(i + 1) % n];
+        area2 += a[0] * b[1] - a[1] * b[0];
+      }
+      if (std::abs(area2) < 1e-12) continue;  // degenerate after projection
+      p.edge_sign = area2 > 0 ? 1.0 : -1.0;
+      // Pixels whose centres can be inside: centre i + 0.5 in [x0, x1].
+      int h = dff_.height(face);
+      p.bx0 = std::max(0, int(std::ceil(x0 - 0.5)));
+      p.bx1 = std::min(options_.resolution, int(std::floor(x1 - 0.5)) + 1);
+      p.by0 = std::max(0, int(std::ceil(y0 - 0.5)));
+      p.by1 = std::min(h, int(std::floor(y1 - 0.5)) + 1);
+      // Hierarchical sampling also asks at pixel corners: keep a one-pixel margin of candidates.
+      faces_[face].push_back(p);
+    }
+  }
+}
+
+bool HemicubeRenderer::inside(const Projected& poly, double px, double py) const {
+  for (int i = 0; i < poly.count; ++i) {
+    const auto& a = poly.p[i];
+    const auto& b = poly.p[(i + 1) % poly.count];
+    double e = (b[0] - a[0]) * (py - a[1]) - (b[1] - a[1]) * (px - a[0]);
+    if (e * poly.edge_sign < 0) return false;
+  }
+  return true;
+}
+
+double HemicubeRenderer::depth(int face, const Projected& poly, double px, double py) const {
+  const double r = options_.resolution;
+  Vec3 ray{px * 2 / r - 1, face == kTopFace ? py * 2 / r - 1 : py * 2 / r, 1.0};
+  double den = glm::dot(poly.plane_n, ray);
+  if (den == 0) return std::numeric_limits<double>::infinity();
+  double t = poly.plane_k / den;
+  return t > 0 ? t : std::numeric_limits<double>::infinity();
+}
+
+CellFormFactors HemicubeRenderer::cell_form_factors(int cell, OpCounts& ops) {
+  if (shooter_ < 0) throw std::logic_error("HemicubeRenderer: project() before cell_form_factors()");
+  CellFormFactors out;
+  out.cell = cell;
+  touched_.clear();
+  const HemicubeCell& c = cells_.at(cell);
+  if (options_.hierarchical_levels > 0)
+    hierarchical_cell(c, out, ops);
+  else
+    fixed_cell(c, out, ops);
+  std::sort(touched_.begin(), touched_.end());
+  for (int e : touched_) {
+    out.element.push_back(e);
+    out.value.push_back(acc_[e]);
+    acc_[e] = 0;
+  }
+  ops.form_factor_sum += std::int64_t(out.element.size());
+  return out;
+}
+
+void HemicubeRenderer::fixed_cell(const HemicubeCell& c, CellFormFactors& out, OpCounts& ops) {
+  const int w = c.i1 - c.i0, h = c.j1 - c.j0;
+  zbuf_.assign(std::size_t(w) * h, std::numeric_limits<double>::infinity());
+  item_.assign(std::size_t(w) * h, -1);
+  for (const Projected& p : faces_[c.face]) {
+    int x0 = std::max(p.bx0, c.i0), x1 = std::min(p.bx1, c.i1);
+    int y0 = std::max(p.by0, c.j0), y1 = std::min(p.by1, c.j1);
+    if (x0 >= x1 || y0 >= y1) continue;
+    ops.hemicube_pixel += std::int64_t(x1 - x0) * (y1 - y0);
+    for (int j = y0; j < y1; ++j)
+      for (int i = x0; i < x1; ++i) {
+        double px = i + 0.5, py = j + 0.5;
+        if (!inside(p, px, py)) continue;
+        double z = depth(c.face, p, px, py);
+        std::size_t k = std::size_t(j - c.j0) * w + (i - c.i0);
+        if (z < zbuf_[k]) {
+          zbuf_[k] = z;
+          item_[k] = p.front ? p.element : -2;  // -2: hidden by the back of an element
+        }
+      }
+  }
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      int e = item_[std::size_t(j) * w + i];
+      if (e < 0) continue;
+      if (acc_[e] == 0) touched_.push_back(e);
+      acc_[e] += dff_.at(c.face, c.i0 + i, c.j0 + j);
+    }
+}
+
+int HemicubeRenderer::sample(int face, const std::vector<int>& candidates, double px, double py,
+                             OpCounts& ops) const {
+  double best = std::numeric_limits<double>::infinity();
+  int item = -1;
+  const auto& polys = faces_[face];
+  ops.hemicube_sample += std::int64_t(candidates.size());
+  for (int ci : candidates) {
+    const Projected& p = polys[ci];
+    if (!inside(p, px, py)) continue;
+    double z = depth(face, p, px, py);
+    if (z < best) {
+      best = z;
+      item = p.front ? p.element : -2;
+    }
+  }
+  return item;
+}
+
+void HemicubeRenderer::subdivide(int face, const std::vector<int>& candidates, int i0, int j0, int size,
+                                 OpCounts& ops) {
+  int centre = sample(face, candidates, i0 + size * 0.5, j0 + size * 0.5, ops);
+  bool uniform = size == 1;
+  if (!uniform) {
+    uniform = true;
+    const double cx[4] = {0.0, 1.0, 0.0, 1.0}, cy[4] = {0.0, 0.0, 1.0, 1.0};
+    for (int k = 0; k < 4 && uniform; ++k) {
+      // Corners pulled a hair inside so they belong to this pixel.
+      double px = i0 + (cx[k] == 0 ? 1e-6 : size - 1e-6), py = j0 + (cy[k] == 0 ? 1e-6 : size - 1e-6);
+      uniform = sample(face, candidates, px, py, ops) == centre;
+    }
+  }
+  if (uniform) {
+    if (centre >= 0) {
+      if (acc_[centre] == 0) touched_.push_back(centre);
+      acc_[centre] += dff_.rect_sum(face, i0, j0, i0 + size, j0 + size);
+    }
+    return;
+  }
+  int half = size / 2;
+  for (int q = 0; q < 4; ++q) subdivide(face, candidates, i0 + (q & 1) * half, j0 + (q >> 1) * half, half, ops);
+}
+
+void HemicubeRenderer::hierarchical_cell(const HemicubeCell& c, CellFormFactors& out, OpCounts& ops) {
+  const int size = 1 << options_.hierarchical_levels;
+  std::vector<int> candidates;
+  const auto& polys = faces_[c.face];
+  for (int k = 0; k < int(polys.size()); ++k) {
+    const Projected& p = polys[k];
+    // Widen the box by a pixel: corner samples may fall outside the centre-based bounding box.
+    if (p.bx1 + 1 <= c.i0 || p.bx0 - 1 >= c.i1 || p.by1 + 1 <= c.j0 || p.by0 - 1 >= c.j1) continue;
+    candidates.push_back(k);
+  }
+  for (int j = c.j0; j < c.j1; j += size)
+    for (int i = c.i0; i < c.i1; i += size) subdivide(c.face, candidates, i, j, size, ops);
+}
+
+std::vector<double> HemicubeRenderer::form_factor_row(int shooter, OpCounts& ops) {
+  project(shooter, ops);
+  std::vector<double> row(scene_.elements.size(), 0.0);
+  for (int c = 0; c < cell_count(); ++c) {
+    CellFormFactors cf = cell_form_factors(c, ops);
+    for (std::size_t k = 0; k < cf.element.size(); ++k) row[cf.element[k]] += cf.value[k];
+  }
+  ops.form_factor_sum += 0;
+  return row;
+}
+
+}  // namespace gcsim::radiosity

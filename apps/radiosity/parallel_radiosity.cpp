@@ -1,0 +1,201 @@
+#include "apps/radiosity/parallel_radiosity.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace gcsim::radiosity {
+
+ParallelAlgorithm parse_parallel_algorithm(const std::string& s) {
+  if (s == "hemicube-fixed") return ParallelAlgorithm::hemicube_fixed;
+  if (s == "hemicube-hierarchical") return ParallelAlgorithm::hemicube_hierarchical;
+  if (s == "patch") return ParallelAlgorithm::patch;
+  throw std::invalid_argument(
+      fmt::format("unknown parallel algorithm '{}': expected hemicube-fixed, hemicube-hierarchical or patch", s));
+}
+
+const char* to_string(ParallelAlgorithm a) {
+  switch (a) {
+    case ParallelAlgorithm::hemicube_fixed: return "hemicube-fixed";
+    case ParallelAlgorithm::hemicube_hierarchical: return "hemicube-hierarchical";
+    default: return "patch";
+  }
+}
+
+namespace {
+
+// Byte packing of plain values.
+struct Writer {
+  parix::Bytes bytes;
+  template <class T>
+  void put(const T& v) {
+    std::size_t at = bytes.size();
+    bytes.resize(at + sizeof(T));
+    std::memcpy(bytes.data() + at, &v, sizeof(T));
+  }
+};
+struct Reader {
+  const parix::Bytes& bytes;
+  std::size_t at = 0;
+  template <class T>
+  T get() {
+    if (at + sizeof(T) > bytes.size()) throw std::runtime_error("radiosity: truncated message");
+    T v;
+    std::memcpy(&v, bytes.data() + at, sizeof(T));
+    at += sizeof(T);
+    return v;
+  }
+};
+
+struct Proposal {
+  double energy;
+  std::int32_t patch;
+};
+
+// Per shooter, per cell: the cell's sparse form factor sums.
+void put_cell(Writer& w, const CellFormFactors& c) {
+  w.put<std::int32_t>(c.cell);
+  w.put<std::int32_t>(std::int32_t(c.element.size()));
+  for (std::size_t k = 0; k < c.element.size(); ++k) {
+    w.put<std::int32_t>(c.element[k]);
+    w.put<double>(c.value[k]);
+  }
+}
+CellFormFactors get_cell(Reader& r) {
+  CellFormFactors c;
+  c.cell = r.get<std::int32_t>();
+  int n = r.get<std::int32_t>();
+  c.element.resize(n);
+  c.value.resize(n);
+  for (int k = 0; k < n; ++k) {
+    c.element[k] = r.get<std::int32_t>();
+    c.value[k] = r.get<double>();
+  }
+  return c;
+}
+
+}  // namespace
+
+void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOptions& o, ParallelOutcome* outcome) {
+  const int id = p.id(), n = p.count();
+  const int np = int(scene.patches.size()), ne = int(scene.elements.size());
+  // The replica of the environment and of the solver state on this node.
+  const std::int64_t replica_bytes = std::int64_t(ne) * 176 + std::int64_t(np) * 120 +
+                                     std::int64_t(scene.vertices.size()) * 24;
+  p.use_memory(replica_bytes);
+
+  HemicubeOptions hc = o.solver.hemicube;
+  if (o.algorithm == ParallelAlgorithm::hemicube_hierarchical) hc.hierarchical_levels = o.hierarchical_levels;
+  HemicubeRenderer renderer(scene, hc);
+  const int cells = renderer.cell_count();
+  p.use_memory(std::int64_t(hc.resolution) * hc.resolution * 3 * 12);  // Z-buffer and item buffer
+
+  parix::CollectiveOptions coll;
+  coll.algo = o.bcast;
+  coll.connect_per_message = !o.aggregate;
+
+  ProgressiveState state(scene);
+  OpCounts ops;
+  std::vector<StepRecord> steps;
+  std::int64_t exchanged = 0;
+  const int k_shooters = o.solver.shooters;
+  if (k_shooters < 1) throw std::invalid_argument("shooters per step must be at least 1");
+
+  while (state.shot_fraction() < o.solver.energy && state.steps() < o.solver.max_steps) {
+    // 1. Choose the shooters.
+    std::vector<int> shooters;
+    if (o.aggregate) {
+      shooters = state.select_shooters(k_shooters, ops);
+      ops.charge(p);
+    } else {
+      // Each node proposes its own K best; the K best of all proposals are the global K best.
+      std::vector<Proposal> mine;
+      {
+        std::vector<int> own;
+        ops.patch_select += (np - id + n - 1) / n;
+        for (int q = id; q < np; q += n)
+          if (state.unshot_energy(q) > 0) own.push_back(q);
+        auto larger = [&](int a, int b) {
+          double ea = state.unshot_energy(a), eb = state.unshot_energy(b);
+          return ea != eb ? ea > eb : a < b;
+        };
+        int m = std::min<int>(k_shooters, int(own.size()));
+        std::partial_sort(own.begin(), own.begin() + m, own.end(), larger);
+        for (int i = 0; i < m; ++i) mine.push_back({state.unshot_energy(own[i]), own[i]});
+      }
+      ops.charge(p);
+      auto all = parix::allgather_vectors<Proposal>(p, std::span<const Proposal>(mine), coll);
+      exchanged += std::int64_t(mine.size() * sizeof(Proposal));
+      std::vector<Proposal> merged;
+      for (auto& v : all) merged.insert(merged.end(), v.begin(), v.end());
+      std::sort(merged.begin(), merged.end(), [](const Proposal& a, const Proposal& b) {
+        return a.energy != b.energy ? a.energy > b.energy : a.patch < b.patch;
+      });
+      ops.patch_select += std::int64_t(merged.size());
+      for (int i = 0; i < std::min<int>(k_shooters, int(merged.size())); ++i) shooters.push_back(merged[i].patch);
+    }
+    if (shooters.empty()) break;
+
+    // 2. This node's share of the form factors.
+    Writer w;
+    for (std::size_t k = 0; k < shooters.size(); ++k) {
+      int s = shooters[k];
+      if (o.algorithm == ParallelAlgorithm::patch) {
+        if (s % n != id) continue;
+        renderer.project(s, ops);
+        for (int c = 0; c < cells; ++c) {
+          w.put<std::int32_t>(std::int32_t(k));
+          put_cell(w, renderer.cell_form_factors(c, ops));
+        }
+      } else {
+        renderer.project(s, ops);
+        for (int c = id; c < cells; c += n) {
+          w.put<std::int32_t>(std::int32_t(k));
+          put_cell(w, renderer.cell_form_factors(c, ops));
+        }
+      }
+    }
+    ops.charge(p);
+
+    // 3. All-node exchange of the delta form factor sums.
+    exchanged += std::int64_t(w.bytes.size());
+    std::vector<parix::Bytes> all = parix::allgather(p, w.bytes, coll);
+
+    // 4. Every node assembles the rows, adding cells in the fixed cell order, and shoots.
+    std::vector<std::vector<CellFormFactors>> by_cell(shooters.size(), std::vector<CellFormFactors>(cells));
+    for (const parix::Bytes& b : all) {
+      Reader r{b};
+      while (r.at < b.size()) {
+        int k = r.get<std::int32_t>();
+        CellFormFactors c = get_cell(r);
+        if (k < 0 || k >= int(shooters.size()) || c.cell < 0 || c.cell >= cells)
+          throw std::runtime_error("radiosity: malformed form factor message");
+        by_cell[k][c.cell] = std::move(c);
+      }
+    }
+    std::vector<std::vector<double>> rows(shooters.size(), std::vector<double>(ne, 0.0));
+    for (std::size_t k = 0; k < shooters.size(); ++k)
+      for (int c = 0; c < cells; ++c) {
+        const CellFormFactors& cf = by_cell[k][c];
+        ops.form_factor_sum += std::int64_t(cf.element.size());
+        for (std::size_t i = 0; i < cf.element.size(); ++i) rows[k][cf.element[i]] += cf.value[i];
+      }
+    state.shoot(shooters, rows, ops);
+    ops.charge(p);
+    StepRecord rec{state.steps(), state.shot_fraction(), shooters};
+    if (id == 0) steps.push_back(std::move(rec));
+  }
+  ops.charge(p);
+  p.use_memory(-replica_bytes - std::int64_t(hc.resolution) * hc.resolution * 3 * 12);
+  if (id == 0 && outcome) {
+    outcome->element_radiosity = state.element_radiosity();
+    outcome->steps = std::move(steps);
+    outcome->energy = state.energy();
+    outcome->converged = state.shot_fraction() >= o.solver.energy;
+    outcome->exchanged_bytes = exchanged;
+  }
+}
+
+}  // namespace gcsim::radiosity

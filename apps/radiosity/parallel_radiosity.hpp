@@ -1,0 +1,51 @@
+#pragma once
+// Progressive refinement on the simulated GC (thesis chapter 4). Every node holds a replica of the
+// scene and of the solver state (as the thesis does, section 4.3.2), so after each exchange all nodes
+// apply the same shots in the same order and stay identical. The variants:
+//   hemicube-fixed (4.3)        each node proposes its K patches with the most unshot energy, the K
+//                               largest overall shoot, every node Z-buffers its share of the hemicube
+//                               cells (cell c belongs to node c mod N), the per-cell form factor sums
+//                               are exchanged by an all-node broadcast, every node updates.
+//   hemicube-hierarchical (4.5) the same with the adaptive hemicube (cells on element borders split
+//                               into four, recursively).
+//   patch (4.2.2)               patches belong to nodes (p mod N); the owner of a shooter computes
+//                               its whole hemicube; the rows are exchanged. The conventional baseline.
+// --aggregate (4.4.3) drops the proposal exchange (every replica can select the shooters itself),
+// so each loop has one exchange of larger messages, and keeps the links open between loops.
+// Form factors are summed cell by cell in the fixed cell order, so every node count gives radiosities
+// bit-identical to the sequential solver with the same K.
+#include <string>
+#include <vector>
+
+#include "apps/radiosity/progressive_solver.hpp"
+#include "parix/collectives.hpp"
+#include "parix/processor.hpp"
+
+namespace gcsim::radiosity {
+
+enum class ParallelAlgorithm { hemicube_fixed, hemicube_hierarchical, patch };
+ParallelAlgorithm parse_parallel_algorithm(const std::string& s);  // throws std::invalid_argument
+const char* to_string(ParallelAlgorithm a);
+
+struct ParallelOptions {
+  SolverOptions solver;
+  ParallelAlgorithm algorithm = ParallelAlgorithm::hemicube_fixed;
+  parix::BcastAlgo bcast = parix::BcastAlgo::sequential;
+  bool aggregate = false;
+  int hierarchical_levels = 2;  // for hemicube-hierarchical
+};
+
+// What processor 0 reports at the end of a run.
+struct ParallelOutcome {
+  std::vector<Rgb> element_radiosity;
+  std::vector<StepRecord> steps;
+  EnergyBalance energy;
+  bool converged = false;
+  std::int64_t exchanged_bytes = 0;  // bytes processor 0 contributed to the exchanges
+};
+
+// The SPMD program: run it on every processor; processor 0 fills *outcome.
+void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOptions& options,
+                       ParallelOutcome* outcome);
+
+}  // namespace gcsim::radiosity

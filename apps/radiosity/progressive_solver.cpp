@@ -1,0 +1,106 @@
+#include "apps/radiosity/progressive_solver.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+
+namespace gcsim::radiosity {
+
+ProgressiveState::ProgressiveState(const Scene& scene) : scene_(&scene) {
+  element_b_.resize(scene.elements.size());
+  unshot_.resize(scene.patches.size());
+  for (std::size_t e = 0; e < scene.elements.size(); ++e) element_b_[e] = scene.surface_of_element(int(e)).exitance;
+  for (std::size_t p = 0; p < scene.patches.size(); ++p) {
+    const ScenePatch& sp = scene.patches[p];
+    unshot_[p] = scene.surfaces[sp.surface].exitance;
+    energy_.emitted += unshot_[p] * sp.area;
+  }
+  energy_.unshot = energy_.emitted;
+  emitted_sum_ = channel_sum(energy_.emitted);
+}
+
+std::vector<int> ProgressiveState::select_shooters(int k, OpCounts& ops) const {
+  std::vector<int> order;
+  ops.patch_select += std::int64_t(unshot_.size());
+  for (int p = 0; p < int(unshot_.size()); ++p)
+    if (unshot_energy(p) > 0) order.push_back(p);
+  auto larger = [&](int a, int b) {
+    double ea = unshot_energy(a), eb = unshot_energy(b);
+    return ea != eb ? ea > eb : a < b;
+  };
+  int n = std::min<int>(k, int(order.size()));
+  std::partial_sort(order.begin(), order.begin() + n, order.end(), larger);
+  order.resize(n);
+  return order;
+}
+
+void ProgressiveState::shoot(std::span<const int> shooters, std::span<const std::vector<double>> rows,
+                             OpCounts& ops) {
+  if (shooters.size() != rows.size()) throw std::invalid_argument("shoot: one form factor row per shooter");
+  // Every shooter shoots what it had at the start of the step.
+  std::vector<Rgb> delta(shooters.size());
+  for (std::size_t k = 0; k < shooters.size(); ++k) {
+    delta[k] = unshot_[shooters[k]];
+    unshot_[shooters[k]] = Rgb(0.0);
+  }
+  for (std::size_t k = 0; k < shooters.size(); ++k) {
+    const ScenePatch& sp = scene_->patches[shooters[k]];
+    const std::vector<double>& f = rows[k];
+    const Rgb shot = delta[k] * sp.area;  // delta B_i * A_i
+    double caught = 0;
+    for (std::size_t e = 0; e < f.size(); ++e) {
+      if (f[e] == 0) continue;
+      ++ops.element_update;
+      const SceneElement& el = scene_->elements[e];
+      const Rgb rho = scene_->surfaces[scene_->patches[el.patch].surface].reflectance;
+      const Rgb received = shot * f[e];                 // energy reaching element e
+      const Rgb rad = rho * received / el.area;         // delta Rad = rho dB_i F_ie A_i / A_e
+      element_b_[e] += rad;
+      unshot_[el.patch] += rad * (el.area / scene_->patches[el.patch].area);
+      energy_.absorbed += (Rgb(1.0) - rho) * received;
+      caught += f[e];
+    }
+    energy_.escaped += shot * std::max(0.0, 1.0 - caught);
+  }
+  Rgb u(0.0);
+  for (std::size_t p = 0; p < unshot_.size(); ++p) u += unshot_[p] * scene_->patches[p].area;
+  energy_.unshot = u;
+  ++steps_;
+}
+
+double ProgressiveState::shot_fraction() const {
+  if (emitted_sum_ <= 0) return 1.0;
+  return 1.0 - channel_sum(energy_.unshot) / emitted_sum_;
+}
+
+std::vector<Rgb> ProgressiveState::patch_radiosity() const {
+  std::vector<Rgb> b(scene_->patches.size(), Rgb(0.0));
+  for (std::size_t e = 0; e < element_b_.size(); ++e) {
+    const SceneElement& el = scene_->elements[e];
+    b[el.patch] += element_b_[e] * (el.area / scene_->patches[el.patch].area);
+  }
+  return b;
+}
+
+SolveResult solve_progressive(const Scene& scene, const SolverOptions& o, OpCounts* ops_out,
+                              const std::function<void(const StepRecord&, const ProgressiveState&)>& on_step) {
+  if (o.shooters < 1) throw std::invalid_argument("shooters per step must be at least 1");
+  SolveResult r{ProgressiveState(scene), {}, false};
+  HemicubeRenderer hemicube(scene, o.hemicube);
+  OpCounts local;
+  OpCounts& ops = ops_out ? *ops_out : local;
+  while (r.state.shot_fraction() < o.energy && r.state.steps() < o.max_steps) {
+    std::vector<int> shooters = r.state.select_shooters(o.shooters, ops);
+    if (shooters.empty()) break;
+    std::vector<std::vector<double>> rows;
+    for (int s : shooters) rows.push_back(hemicube.form_factor_row(s, ops));
+    r.state.shoot(shooters, rows, ops);
+    StepRecord rec{r.state.steps(), r.state.shot_fraction(), shooters};
+    if (on_step) on_step(rec, r.state);
+    r.steps.push_back(std::move(rec));
+  }
+  r.converged = r.state.shot_fraction() >= o.energy;
+  return r;
+}
+
+}  // namespace gcsim::radiosity

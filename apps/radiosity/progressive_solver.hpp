@@ -1,0 +1,78 @@
+#pragma once
+// Progressive refinement radiosity (thesis section 3.5.2, after Cohen et al. 1988) with
+// substructuring: patches shoot, elements receive. Each step the K patches with the largest unshot
+// energy (delta B times A, summed over r, g, b) shoot; for shooter i and element e
+//     delta Rad_e = rho_e * delta B_i * F_ie * A_i / A_e,
+// and the element's patch gains delta Rad_e * A_e / A_p of unshot radiosity.
+// The state is plain data so that every node of a parallel run can hold a replica of it.
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "apps/radiosity/hemicube.hpp"
+#include "apps/radiosity/op_counts.hpp"
+#include "apps/radiosity/scene.hpp"
+
+namespace gcsim::radiosity {
+
+struct EnergyBalance {
+  Rgb emitted{0.0};   // sum of E * A
+  Rgb unshot{0.0};    // sum of delta B * A still to shoot
+  Rgb absorbed{0.0};  // (1 - rho) of what elements received
+  Rgb escaped{0.0};   // shot energy no element caught (open scenes)
+};
+
+class ProgressiveState {
+ public:
+  explicit ProgressiveState(const Scene& scene);
+
+  // The K patches with the largest unshot energy, largest first (ties: lower index); only patches
+  // with unshot energy > 0.
+  std::vector<int> select_shooters(int k, OpCounts& ops) const;
+  // Unshot energy of a patch (delta B * A summed over channels): what selection sorts by.
+  double unshot_energy(int patch) const { return channel_sum(unshot_[patch]) * scene_->patches[patch].area; }
+  // Shoots every patch in `shooters` with the unshot radiosity it had before the step, using
+  // rows[k][e] = F(shooters[k] -> e).
+  void shoot(std::span<const int> shooters, std::span<const std::vector<double>> rows, OpCounts& ops);
+
+  // 1 - unshot / emitted (channel sums): the fraction of the energy shot so far (table 4.2).
+  double shot_fraction() const;
+  const std::vector<Rgb>& element_radiosity() const { return element_b_; }
+  const std::vector<Rgb>& patch_unshot() const { return unshot_; }
+  std::vector<Rgb> patch_radiosity() const;  // area-weighted mean of its elements
+  const EnergyBalance& energy() const { return energy_; }
+  int steps() const { return steps_; }
+
+ private:
+  const Scene* scene_;
+  std::vector<Rgb> element_b_;
+  std::vector<Rgb> unshot_;  // per patch
+  EnergyBalance energy_;
+  double emitted_sum_ = 0;
+  int steps_ = 0;
+};
+
+struct SolverOptions {
+  HemicubeOptions hemicube;
+  int shooters = 2;          // K: patches shooting per step (the thesis uses 2)
+  double energy = 0.999;     // stop once this fraction of the energy has been shot
+  int max_steps = 1000000;   // safety net for reflectances near 1
+};
+
+struct StepRecord {
+  int step;                  // 1-based
+  double shot_fraction;      // after the step
+  std::vector<int> shooters;
+};
+
+struct SolveResult {
+  ProgressiveState state;
+  std::vector<StepRecord> steps;
+  bool converged = false;    // reached the energy threshold (false: max_steps or nothing left)
+};
+
+// The sequential solver: select, compute the hemicube rows, shoot, until the threshold.
+SolveResult solve_progressive(const Scene& scene, const SolverOptions& options, OpCounts* ops = nullptr,
+                              const std::function<void(const StepRecord&, const ProgressiveState&)>& on_step = {});
+
+}  // namespace gcsim::radiosity

@@ -1,0 +1,34 @@
+#pragma once
+// Reader for the thesis's environment format (figures 4.5 and 4.6): a WORLD file names ENTITY files,
+// each followed by its scaling, rotation (degrees about x, y, z) and translation vectors; an ENTITY
+// file has VERTEX, SURFACE (reflectance [r g b], initial exitance [r g b]), PATCH (surface index and
+// vertices) and ELEMENT (patch index and vertices) sections. Comments are /* ... */ and COMMENT lines.
+// As an extension a WORLD may hold `CAMERA < eye > < target > < up > fov_y_degrees` before END_FILE.
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "apps/radiosity/scene.hpp"
+
+namespace gcsim::radiosity {
+
+// A malformed file: what() reads "FILE:LINE: MESSAGE".
+class ParseError : public std::runtime_error {
+ public:
+  ParseError(std::string file, int line, const std::string& message);
+  std::string file;
+  int line;
+  std::string message;
+};
+
+World load_world(const std::filesystem::path& world_file);
+// Parses text already in memory; entity files are read relative to base_dir.
+World parse_world(std::string_view text, const std::string& file_name, const std::filesystem::path& base_dir);
+Entity parse_entity(std::string_view text, const std::string& file_name);
+
+// Writes the formats back (used to export the built-in scenes as files).
+std::string format_entity(const Entity& e);
+std::string format_world(const World& w, const std::vector<std::string>& entity_file_names);
+
+}  // namespace gcsim::radiosity
