@@ -37,6 +37,7 @@ struct Message {
   std::shared_ptr<RequestState> send;  // completed when received (synchronous) or delivered
   bool synchronous = false;
   std::int64_t id = 0;
+  std::int64_t link_seq = 0;  // position on its link: a link delivers in sending order
   int src = -1;
   machine::SimTime sent = 0;
 };
@@ -47,6 +48,9 @@ struct LinkEnd {
   int peer = -1;
   std::int64_t peer_end = -1;
   bool open = true;
+  std::int64_t sent = 0;                                 // messages sent from this end
+  std::int64_t delivered = 0;                            // messages delivered to this end
+  std::map<std::int64_t, Message> early;                 // arrived before a predecessor
   std::deque<Message> arrived;                           // delivered, not yet received
   std::deque<std::shared_ptr<RequestState>> receives;    // posted, waiting for a message
 };
@@ -141,6 +145,7 @@ class Simulation {
   }
 
   void deliver(std::int64_t end, Message&& m);
+  void accept(LinkEnd& e, Message&& m);
   void complete(const std::shared_ptr<RequestState>& r) {
     r->done = true;
     if (r->waiter) static_cast<SimProcess*>(r->waiter)->wake();
@@ -325,6 +330,7 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   m.send = req;
   m.synchronous = synchronous;
   m.id = sim_.next_message++;
+  m.link_seq = e.sent++;
   m.src = id_;
   m.sent = sim_.kernel.now();
   auto& s = sim_.stats[id_];
@@ -339,6 +345,22 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
 
 void Simulation::deliver(std::int64_t end, Message&& m) {
   LinkEnd& e = links[end];
+  if (m.link_seq != e.delivered) {
+    // A shorter message overtook a longer one in the network; the link keeps sending order.
+    e.early.emplace(m.link_seq, std::move(m));
+    return;
+  }
+  ++e.delivered;
+  accept(e, std::move(m));
+  for (auto it = e.early.find(e.delivered); it != e.early.end(); it = e.early.find(e.delivered)) {
+    Message next = std::move(it->second);
+    e.early.erase(it);
+    ++e.delivered;
+    accept(e, std::move(next));
+  }
+}
+
+void Simulation::accept(LinkEnd& e, Message&& m) {
   if (trace.enabled()) {
     trace.record({TraceKind::message, m.src, e.owner, m.sent, kernel.now(), static_cast<std::int64_t>(m.data.size()),
                   m.id, "message"});

@@ -1,0 +1,77 @@
+#include "machine/kernel.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <vector>
+
+namespace gcsim::machine {
+namespace {
+
+TEST(Kernel, RunsEventsInTimeOrder) {
+  Kernel k;
+  std::vector<int> order;
+  k.at(30, [&] { order.push_back(3); });
+  k.at(10, [&] { order.push_back(1); });
+  k.at(20, [&] { order.push_back(2); });
+  k.run();
+  EXPECT_EQ(order, (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(k.now(), 30);
+  EXPECT_EQ(k.events_processed(), 3u);
+}
+
+TEST(Kernel, BreaksTiesBySchedulingOrder) {
+  Kernel k;
+  std::vector<int> order;
+  for (int i = 0; i < 100; ++i) k.at(5, [&, i] { order.push_back(i); });
+  k.run();
+  ASSERT_EQ(order.size(), 100u);
+  for (int i = 0; i < 100; ++i) EXPECT_EQ(order[i], i);
+}
+
+TEST(Kernel, EventsScheduledDuringAnEventAtTheSameTimeRunAfterIt) {
+  Kernel k;
+  std::vector<int> order;
+  k.at(7, [&] {
+    order.push_back(1);
+    k.after(0, [&] { order.push_back(3); });
+  });
+  k.at(7, [&] { order.push_back(2); });
+  k.run();
+  EXPECT_EQ(order, (std::vector<int>{1, 2, 3}));
+}
+
+TEST(Kernel, RejectsEventsInThePast) {
+  Kernel k;
+  k.at(100, [] {});
+  k.step();
+  EXPECT_THROW(k.at(99, [] {}), std::logic_error);
+}
+
+TEST(Kernel, StepOnEmptyQueueReturnsFalse) {
+  Kernel k;
+  EXPECT_FALSE(k.step());
+  EXPECT_TRUE(k.idle());
+}
+
+TEST(Kernel, KeepsPicosecondResolutionOverLongRuns) {
+  // A simulated month in picoseconds is far below int64's range, and one picosecond still counts.
+  Kernel k;
+  const SimTime month = 31LL * 24 * 3600 * kSecond;
+  SimTime seen = 0;
+  k.at(month, [&] { k.after(1, [&] { seen = k.now(); }); });
+  k.run();
+  EXPECT_EQ(seen, month + 1);
+  EXPECT_LT(3 * month, std::numeric_limits<SimTime>::max());  // 106 days fit
+}
+
+TEST(SimTime, ConversionsRoundCostsUp) {
+  EXPECT_EQ(from_seconds(1e-12), 1);
+  EXPECT_EQ(from_seconds(0.4e-12), 1);  // a non-zero cost never becomes free
+  EXPECT_EQ(from_seconds(0), 0);
+  EXPECT_DOUBLE_EQ(to_seconds(kSecond), 1.0);
+  EXPECT_DOUBLE_EQ(to_milliseconds(3 * kMillisecond), 3.0);
+}
+
+}  // namespace
+}  // namespace gcsim::machine

@@ -1,0 +1,156 @@
+#include "machine/machine_config.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace gcsim::machine {
+namespace {
+
+const std::string kValid = R"(name = "tiny"
+[topology]
+nodes = 4
+mesh = [2, 2]
+[node]
+cpus = 1
+clock_mhz = 100
+memory_mb = 8
+comm_processors = 1
+links_per_comm_processor = 4
+[network]
+model = "flow"
+link_bandwidth_mbps = 1.0
+message_setup_us = 1
+network_latency_us = 10
+hop_latency_us = 1
+connect_base_us = 100
+connect_per_hop_us = 10
+[ops]
+cycle = 1
+)";
+
+// Replaces the first occurrence of `from` in the valid file.
+std::string with(const std::string& from, const std::string& to) {
+  std::string s = kValid;
+  s.replace(s.find(from), from.size(), to);
+  return s;
+}
+
+// The error message, which must name the file and a line.
+std::string error_of(const std::string& text) {
+  try {
+    parse_machine_config(text, "bad.toml");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(MachineConfig, BuiltInDefaultIsThePublishedGC) {
+  const MachineConfig c = default_machine_config();
+  EXPECT_EQ(c.nodes, 64);
+  EXPECT_EQ(c.mesh_width, 8);
+  EXPECT_EQ(c.mesh_height, 8);
+  EXPECT_EQ(c.cpus_per_node, 2);
+  EXPECT_DOUBLE_EQ(c.clock_hz, 80e6);
+  EXPECT_EQ(c.memory_bytes, 32LL << 20);
+  EXPECT_EQ(c.links_per_node(), 16);
+  EXPECT_NEAR(c.node_bandwidth(), 35e6, 1);
+  EXPECT_EQ(c.message_setup, 5 * kMicrosecond);
+  EXPECT_EQ(c.network_latency, 60 * kMicrosecond);
+}
+
+TEST(MachineConfig, ShippedFilesLoad) {
+  const std::string dir = GCSIM_SOURCE_DIR "/configs/";
+  for (const char* f : {"gc-powerplus.toml", "gc-powerplus-calibrated.toml", "whatif-1024-nodes.toml",
+                        "whatif-fast-links.toml"}) {
+    EXPECT_NO_THROW(load_machine_config(dir + f)) << f;
+  }
+  EXPECT_EQ(load_machine_config(dir + "whatif-1024-nodes.toml").nodes, 1024);
+}
+
+TEST(MachineConfig, ParsesAValidFile) {
+  const MachineConfig c = parse_machine_config(kValid, "tiny.toml");
+  EXPECT_EQ(c.name, "tiny");
+  EXPECT_EQ(c.network_model, "flow");
+  EXPECT_DOUBLE_EQ(c.channel_bandwidth(), 1e6);
+  EXPECT_EQ(op_time(c, "cycle", 100), 1 * kMicrosecond);
+}
+
+TEST(MachineConfig, UnknownKeyNamesFileLineAndExpectedKeys) {
+  const std::string e = error_of(with("cpus = 1", "cpus = 1\nclock_ghz = 1"));
+  EXPECT_NE(e.find("bad.toml:7"), std::string::npos) << e;
+  EXPECT_NE(e.find("unknown key 'clock_ghz'"), std::string::npos) << e;
+  EXPECT_NE(e.find("clock_mhz"), std::string::npos) << e;
+}
+
+TEST(MachineConfig, WrongTypeIsRejected) {
+  const std::string e = error_of(with("cpus = 1", "cpus = \"two\""));
+  EXPECT_NE(e.find("bad.toml:6"), std::string::npos) << e;
+  EXPECT_NE(e.find("must be an integer"), std::string::npos) << e;
+}
+
+TEST(MachineConfig, NegativeBandwidthIsRejected) {
+  const std::string e = error_of(with("link_bandwidth_mbps = 1.0", "link_bandwidth_mbps = -35"));
+  EXPECT_NE(e.find("bad.toml:13"), std::string::npos) << e;
+  EXPECT_NE(e.find("expected a value in"), std::string::npos) << e;
+}
+
+TEST(MachineConfig, MeshMustMatchNodeCount) {
+  const std::string e = error_of(with("mesh = [2, 2]", "mesh = [3, 2]"));
+  EXPECT_NE(e.find("bad.toml:4"), std::string::npos) << e;
+  EXPECT_NE(e.find("width * height == nodes"), std::string::npos) << e;
+}
+
+TEST(MachineConfig, MissingSectionAndSyntaxErrorsAreReported) {
+  EXPECT_NE(error_of("name = \"x\"\n").find("missing table [topology]"), std::string::npos);
+  const std::string e = error_of(with("cpus = 1", "cpus = = 1"));
+  EXPECT_NE(e.find("bad.toml:6"), std::string::npos) << e;
+}
+
+TEST(MachineConfig, UnknownNetworkModelIsRejected) {
+  EXPECT_NE(error_of(with("model = \"flow\"", "model = \"packet-ish\"")).find("expected \"analytic\" or \"flow\""),
+            std::string::npos);
+}
+
+TEST(MachineConfig, MissingFileIsAClearError) {
+  try {
+    load_machine_config("no/such/machine.toml");
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("no/such/machine.toml"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("cannot open"), std::string::npos);
+  }
+}
+
+TEST(MachineConfig, GcMeshShapes) {
+  const std::pair<int, std::pair<int, int>> expected[] = {
+      {1, {1, 1}}, {2, {2, 1}}, {4, {2, 2}}, {8, {4, 2}}, {16, {4, 4}}, {32, {8, 4}}, {64, {8, 8}}, {1024, {32, 32}}, {6, {3, 2}}};
+  for (auto [n, wh] : expected) {
+    const MeshShape s = gc_mesh_shape(n);
+    EXPECT_EQ(s.width, wh.first) << n;
+    EXPECT_EQ(s.height, wh.second) << n;
+  }
+}
+
+TEST(MachineConfig, WithNodesRestrictsTheMesh) {
+  const MachineConfig c = with_nodes(default_machine_config(), 32);
+  EXPECT_EQ(c.nodes, 32);
+  EXPECT_EQ(c.mesh_width, 8);
+  EXPECT_EQ(c.mesh_height, 4);
+  EXPECT_THROW(with_nodes(default_machine_config(), 65), ConfigError);
+  EXPECT_THROW(with_nodes(default_machine_config(), 0), ConfigError);
+  EXPECT_THROW(with_nodes(default_machine_config(), 13), ConfigError);  // 13x1 does not fit in 8x8
+}
+
+TEST(MachineConfig, UnknownOperationIsNamed) {
+  try {
+    op_time(default_machine_config(), "warp_drive", 1);
+    FAIL();
+  } catch (const std::out_of_range& e) {
+    EXPECT_NE(std::string(e.what()).find("warp_drive"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace gcsim::machine

@@ -1,0 +1,121 @@
+#include "machine/network_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "machine/flow_network.hpp"
+
+namespace gcsim::machine {
+namespace {
+
+struct Fixture {
+  explicit Fixture(const std::string& model) : config(with_nodes(default_machine_config(), 64)), mesh(8, 8) {
+    net = make_network_model(model, {kernel, mesh, config, nullptr});
+  }
+  MachineConfig config;
+  Kernel kernel;
+  Mesh mesh;
+  std::unique_ptr<NetworkModel> net;
+};
+
+TEST(Network, AnalyticTimeIsSetupLatencyHopsAndBandwidth) {
+  Fixture f("analytic");
+  SimTime arrived = -1;
+  const int dst = f.mesh.node_at(3, 2);  // 5 hops
+  f.net->transfer(0, dst, 16384, [&] { arrived = f.kernel.now(); });
+  f.kernel.run();
+  const SimTime expected = 5 * kMicrosecond + 60 * kMicrosecond + 4 * 2 * kMicrosecond +
+                           from_seconds(16384.0 / (4 * 35e6 / 16));
+  EXPECT_EQ(arrived, expected);
+}
+
+TEST(Network, ZeroHopMessagePaysOnlySetup) {
+  Fixture f("analytic");
+  SimTime arrived = -1;
+  f.net->transfer(5, 5, 1000, [&] { arrived = f.kernel.now(); });
+  f.kernel.run();
+  EXPECT_EQ(arrived, 5 * kMicrosecond);
+}
+
+TEST(Network, LoneMessageTakesTheSameTimeUnderFlowAndAnalytic) {
+  for (std::int64_t bytes : {0LL, 1LL, 1000LL, 16384LL, 1LL << 20}) {
+    for (int dst : {1, 9, 63}) {
+      Fixture a("analytic"), fl("flow");
+      SimTime ta = -1, tf = -1;
+      a.net->transfer(0, dst, bytes, [&] { ta = a.kernel.now(); });
+      fl.net->transfer(0, dst, bytes, [&] { tf = fl.kernel.now(); });
+      a.kernel.run();
+      fl.kernel.run();
+      EXPECT_EQ(ta, tf) << bytes << " bytes to node " << dst;
+    }
+  }
+}
+
+TEST(Network, EightMessagesOnOneLinkTakeLongerUnderFlow) {
+  const std::int64_t bytes = 16384;
+  auto last_arrival = [&](const std::string& model) {
+    Fixture f(model);
+    SimTime last = 0;
+    // Nodes 0..7 of row 0 all send to node 7's east neighbour... all routes share the channel
+    // into node 7 from node 6: senders 0..6 and one more from node 6 itself.
+    for (int src : {0, 1, 2, 3, 4, 5, 6, 6}) {
+      f.net->transfer(src, 7, bytes, [&] { last = std::max(last, f.kernel.now()); });
+    }
+    f.kernel.run();
+    return last;
+  };
+  const SimTime analytic = last_arrival("analytic");
+  const SimTime flow = last_arrival("flow");
+  EXPECT_GT(flow, analytic);
+  // Eight flows through one channel need at least eight serialization times in all.
+  Fixture f("flow");
+  EXPECT_GE(flow, 8 * f.net->serialization(bytes));
+}
+
+TEST(Network, FlowSharesMaxMinFairly) {
+  // Two flows on disjoint channels do not slow each other down.
+  Fixture f("flow");
+  SimTime t1 = -1, t2 = -1;
+  f.net->transfer(0, 1, 8750, [&] { t1 = f.kernel.now(); });
+  f.net->transfer(8, 9, 8750, [&] { t2 = f.kernel.now(); });
+  f.kernel.run();
+  EXPECT_EQ(t1, f.net->uncontended_time(1, 8750));
+  EXPECT_EQ(t2, t1);
+}
+
+TEST(Network, TwoEqualFlowsOnOneChannelFinishTogetherAtTwiceTheTime) {
+  Fixture f("flow");
+  SimTime t1 = -1, t2 = -1;
+  const std::int64_t bytes = 87500;  // 10 ms alone
+  f.net->transfer(0, 1, bytes, [&] { t1 = f.kernel.now(); });
+  f.net->transfer(0, 1, bytes, [&] { t2 = f.kernel.now(); });
+  f.kernel.run();
+  const SimTime alone = f.net->serialization(bytes);
+  EXPECT_NEAR(static_cast<double>(t1 - f.net->latency(1)), 2.0 * alone, 2.0);
+  EXPECT_NEAR(static_cast<double>(t2), static_cast<double>(t1), 2.0);
+}
+
+TEST(Network, CountsBytesPerChannel) {
+  Fixture f("analytic");
+  f.net->transfer(0, 2, 100, [] {});
+  f.kernel.run();
+  EXPECT_EQ(f.net->channel_bytes()[f.mesh.channel(0, Direction::east)], 100);
+  EXPECT_EQ(f.net->channel_bytes()[f.mesh.channel(1, Direction::east)], 100);
+  EXPECT_EQ(f.net->messages(), 1u);
+}
+
+TEST(Network, UnknownModelListsTheValidOnes) {
+  Kernel k;
+  Mesh m(2, 1);
+  MachineConfig c = with_nodes(default_machine_config(), 2);
+  try {
+    make_network_model("packet", {k, m, c, nullptr});
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("analytic, flow"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace gcsim::machine

@@ -1,0 +1,131 @@
+#include "parix/collectives.hpp"
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+#include "parix/simulated_runtime.hpp"
+
+namespace gcsim::parix {
+namespace {
+
+SimulationOptions on_nodes(int n) {
+  SimulationOptions o;
+  o.config = machine::default_machine_config();
+  o.nodes = n;
+  return o;
+}
+
+struct Case {
+  int nodes;
+  BcastAlgo algo;
+  bool per_message;
+};
+
+std::vector<Case> all_cases() {
+  std::vector<Case> cs;
+  for (int n : {1, 2, 3, 4, 5, 7, 8, 9, 16}) {
+    for (BcastAlgo a : {BcastAlgo::sequential, BcastAlgo::tree}) {
+      for (bool pm : {true, false}) cs.push_back({n, a, pm});
+    }
+  }
+  return cs;
+}
+
+std::string name(const Case& c) {
+  return std::to_string(c.nodes) + (c.algo == BcastAlgo::tree ? " tree" : " sequential") +
+         (c.per_message ? " per-message" : " persistent");
+}
+
+Bytes tagged(int id, int len) {
+  Bytes b(static_cast<std::size_t>(len));
+  for (int i = 0; i < len; ++i) b[i] = std::byte(id * 31 + i);
+  return b;
+}
+
+TEST(Collectives, TreeShapeCoversEveryProcessorOnce) {
+  for (int n = 1; n < 40; ++n) {
+    for (int root = 0; root < n; root += 3) {
+      std::vector<int> parents_of(n, 0);
+      for (int id = 0; id < n; ++id) {
+        for (int c : tree_children(id, root, n)) {
+          ++parents_of[c];
+          EXPECT_EQ(tree_parent(c, root, n), id);
+        }
+      }
+      for (int id = 0; id < n; ++id) EXPECT_EQ(parents_of[id], id == root ? 0 : 1);
+      EXPECT_EQ(tree_parent(root, root, n), -1);
+    }
+  }
+}
+
+TEST(Collectives, BroadcastDeliversTheRootsData) {
+  for (const Case& c : all_cases()) {
+    const int root = c.nodes / 2;
+    run_simulated(on_nodes(c.nodes), [&](Processor& p) {
+      CollectiveOptions o{c.algo, c.per_message};
+      Bytes got = broadcast(p, root, p.id() == root ? tagged(root, 300) : Bytes{}, o);
+      EXPECT_EQ(got, tagged(root, 300)) << name(c);
+    });
+  }
+}
+
+TEST(Collectives, GatherCollectsEveryContributionAtTheRoot) {
+  for (const Case& c : all_cases()) {
+    run_simulated(on_nodes(c.nodes), [&](Processor& p) {
+      CollectiveOptions o{c.algo, c.per_message};
+      const int root = c.nodes - 1;
+      auto all = gather(p, root, tagged(p.id(), p.id() + 1), o);
+      if (p.id() == root) {
+        ASSERT_EQ(static_cast<int>(all.size()), c.nodes) << name(c);
+        for (int q = 0; q < c.nodes; ++q) EXPECT_EQ(all[q], tagged(q, q + 1)) << name(c);
+      } else {
+        EXPECT_TRUE(all.empty());
+      }
+    });
+  }
+}
+
+TEST(Collectives, AllgatherGivesEveryoneEverything) {
+  for (const Case& c : all_cases()) {
+    run_simulated(on_nodes(c.nodes), [&](Processor& p) {
+      CollectiveOptions o{c.algo, c.per_message};
+      auto all = allgather(p, tagged(p.id(), 2 * p.id()), o);
+      ASSERT_EQ(static_cast<int>(all.size()), c.nodes);
+      for (int q = 0; q < c.nodes; ++q) EXPECT_EQ(all[q], tagged(q, 2 * q)) << name(c);
+    });
+  }
+}
+
+TEST(Collectives, ReduceAndAllreduceSum) {
+  for (const Case& c : all_cases()) {
+    run_simulated(on_nodes(c.nodes), [&](Processor& p) {
+      CollectiveOptions o{c.algo, c.per_message};
+      const long expected = static_cast<long>(c.nodes) * (c.nodes + 1) / 2;
+      EXPECT_EQ(allreduce_sum<long>(p, p.id() + 1, o), expected) << name(c);
+    });
+  }
+}
+
+TEST(Collectives, TypedAllgather) {
+  run_simulated(on_nodes(5), [](Processor& p) {
+    const std::vector<float> mine(static_cast<std::size_t>(p.id()), float(p.id()));
+    auto all = allgather_vectors<float>(p, mine);
+    for (int q = 0; q < 5; ++q) EXPECT_EQ(all[q], std::vector<float>(static_cast<std::size_t>(q), float(q)));
+  });
+}
+
+TEST(Collectives, BarrierWaitsForTheSlowest) {
+  for (const Case& c : all_cases()) {
+    std::vector<SimTime> after(c.nodes);
+    run_simulated(on_nodes(c.nodes), [&](Processor& p) {
+      p.compute("cycle", 80'000 * (p.id() + 1));  // processor i works i+1 ms
+      barrier(p, {c.algo, c.per_message});
+      after[p.id()] = p.now();
+    });
+    for (SimTime t : after) EXPECT_GE(t, machine::kMillisecond * c.nodes) << name(c);
+  }
+}
+
+}  // namespace
+}  // namespace gcsim::parix
