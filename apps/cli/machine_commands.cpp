@@ -177,12 +177,33 @@ void add_bench_ring(CommandGroups& g) {
   });
 }
 
+void add_demo(CommandGroups& g) {
+  auto machine = std::make_shared<MachineOptions>();
+  CLI::App* demo = g.app->add_subcommand("demo", "Small programs that show how the simulated runtime behaves");
+  demo->require_subcommand(1);
+  CLI::App* cmd = demo->add_subcommand(
+      "deadlock",
+      "Two processors open a link and both receive first, so neither ever sends. The run stops at once\n"
+      "with a report naming each blocked processor, its call and its peer, and exits with status 3.");
+  add_machine_options(cmd, *machine);
+  cmd->callback([machine] {
+    parix::SimulationOptions so = simulation_options(*machine, 2);
+    parix::run_simulated(so, [](parix::Processor& p) {
+      if (p.id() > 1) return;
+      parix::Link l = p.connect(1 - p.id());
+      p.recv(l);
+      p.send(l, {});
+    });
+  });
+}
+
 }  // namespace
 
 void add_machine_commands(CommandGroups& g) {
   add_topo(g);
   add_bcast(g);
   add_bench_ring(g);
+  add_demo(g);
 }
 
 }  // namespace gcsim::cli
