@@ -1,0 +1,141 @@
+#include "apps/raytrace/bvh.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <functional>
+
+#include "apps/raytrace/scene.hpp"
+
+namespace gcsim::raytrace {
+namespace {
+
+constexpr std::size_t kClusterGroupSize = 2048;
+
+struct Builder {
+  std::vector<BvhNode> nodes;  // in creation order
+  const std::vector<Bounds3>* prim_bounds = nullptr;
+
+  Bounds3 bounds_of(NodeRef r) const {
+    return is_primitive(r) ? (*prim_bounds)[primitive_of(r)] : nodes[r].box;
+  }
+  NodeRef make_node(NodeRef a, NodeRef b) {
+    nodes.push_back({union_of(bounds_of(a), bounds_of(b)), {a, b}});
+    return static_cast<NodeRef>(nodes.size() - 1);
+  }
+
+  // Agglomerative clustering of the given subtrees with nearest-neighbour chains.
+  NodeRef cluster(std::vector<NodeRef> refs) {
+    struct Cluster { Bounds3 box; NodeRef ref; };
+    std::vector<Cluster> pool;
+    pool.reserve(refs.size() * 2);
+    std::vector<int> active;
+    for (NodeRef r : refs) {
+      active.push_back(static_cast<int>(pool.size()));
+      pool.push_back({bounds_of(r), r});
+    }
+    std::vector<int> position(pool.capacity(), -1);
+    for (std::size_t i = 0; i < active.size(); ++i) position[active[i]] = static_cast<int>(i);
+    auto remove = [&](int c) {
+      const int at = position[c];
+      active[at] = active.back();
+      position[active[at]] = at;
+      active.pop_back();
+      position[c] = -1;
+    };
+    auto cost = [&](int a, int b) { return union_of(pool[a].box, pool[b].box).surface_area(); };
+
+    std::vector<int> chain;
+    while (active.size() > 1) {
+      if (chain.empty()) chain.push_back(active.front());
+      const int a = chain.back();
+      const int prev = chain.size() >= 2 ? chain[chain.size() - 2] : -1;
+      // Keeping prev on ties guarantees the chain ends in a reciprocal pair.
+      int best = prev;
+      float best_cost = prev >= 0 ? cost(a, prev) : kInfinity;
+      for (int c : active) {
+        if (c == a) continue;
+        const float d = cost(a, c);
+        if (d < best_cost) { best_cost = d; best = c; }
+      }
+      if (best == prev) {
+        chain.pop_back();
+        chain.pop_back();
+        remove(a);
+        remove(prev);
+        const NodeRef merged = make_node(pool[prev].ref, pool[a].ref);
+        const int c = static_cast<int>(pool.size());
+        pool.push_back({nodes[merged].box, merged});
+        position[c] = static_cast<int>(active.size());
+        active.push_back(c);
+      } else {
+        chain.push_back(best);
+      }
+    }
+    return pool[active.front()].ref;
+  }
+
+  // Top-down median splits until groups are small enough to cluster.
+  NodeRef build(std::vector<int>& prims, std::size_t begin, std::size_t end, const std::vector<glm::vec3>& centroid) {
+    if (end - begin <= kClusterGroupSize) {
+      std::vector<NodeRef> refs;
+      for (std::size_t i = begin; i < end; ++i) refs.push_back(primitive_ref(prims[i]));
+      return cluster(std::move(refs));
+    }
+    Bounds3 cb;
+    for (std::size_t i = begin; i < end; ++i) cb.extend(centroid[prims[i]]);
+    const glm::vec3 e = cb.extent();
+    const int axis = e.x > e.y ? (e.x > e.z ? 0 : 2) : (e.y > e.z ? 1 : 2);
+    const std::size_t mid = (begin + end) / 2;
+    std::nth_element(prims.begin() + begin, prims.begin() + mid, prims.begin() + end, [&](int a, int b) {
+      return centroid[a][axis] < centroid[b][axis] || (centroid[a][axis] == centroid[b][axis] && a < b);
+    });
+    const NodeRef l = build(prims, begin, mid, centroid);
+    const NodeRef r = build(prims, mid, end, centroid);
+    return make_node(l, r);
+  }
+};
+
+int depth_of(const Bvh& bvh, NodeRef r) {
+  if (is_primitive(r)) return 0;
+  return 1 + std::max(depth_of(bvh, bvh.nodes[r].child[0]), depth_of(bvh, bvh.nodes[r].child[1]));
+}
+
+}  // namespace
+
+int Bvh::depth() const { return depth_of(*this, root); }
+
+Bvh build_bvh_by_clustering(const Scene& scene) {
+  Bvh bvh;
+  const int n = scene.prim_count();
+  bvh.prim_bounds.resize(n);
+  std::vector<glm::vec3> centroid(n);
+  for (int i = 0; i < n; ++i) {
+    bvh.prim_bounds[i] = scene.prim_bounds(i);
+    centroid[i] = bvh.prim_bounds[i].center();
+  }
+  Builder b;
+  b.prim_bounds = &bvh.prim_bounds;
+  std::vector<int> prims(n);
+  std::iota(prims.begin(), prims.end(), 0);
+  const NodeRef root = n == 0 ? primitive_ref(0) : b.build(prims, 0, prims.size(), centroid);
+  if (is_primitive(root)) {
+    bvh.root = root;
+    return bvh;
+  }
+  // Lay the nodes out depth-first, so a descent walks forward through memory.
+  bvh.nodes.reserve(b.nodes.size());
+  std::function<NodeRef(NodeRef)> copy = [&](NodeRef r) -> NodeRef {
+    if (is_primitive(r)) return r;
+    const NodeRef at = static_cast<NodeRef>(bvh.nodes.size());
+    bvh.nodes.push_back(b.nodes[r]);
+    const NodeRef c0 = copy(b.nodes[r].child[0]);
+    const NodeRef c1 = copy(b.nodes[r].child[1]);
+    bvh.nodes[at].child[0] = c0;
+    bvh.nodes[at].child[1] = c1;
+    return at;
+  };
+  bvh.root = copy(root);
+  return bvh;
+}
+
+}  // namespace gcsim::raytrace

@@ -1,0 +1,50 @@
+#pragma once
+// Pinhole camera. Pixel (x, y) has its centre at image coordinates (x + 0.5, y + 0.5), y down.
+// Primary rays start at the eye with unit directions, so their t is the distance from the eye:
+// the uniformity test and ray classification compare it with box distances.
+#include <glm/glm.hpp>
+
+#include "apps/raytrace/ray.hpp"
+#include "apps/raytrace/scene.hpp"
+
+namespace gcsim::raytrace {
+
+// A plane through the eye, n . (p - eye) >= 0 on the inside.
+struct Plane {
+  glm::vec3 normal{0.0f};
+  float offset = 0.0f;  // n . p >= offset inside
+  float signed_distance(glm::vec3 p) const { return glm::dot(normal, p) - offset; }
+};
+
+class Camera {
+ public:
+  Camera(const CameraSpec& spec, int width, int height);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  glm::vec3 eye() const { return eye_; }
+
+  // Unit direction through image point (sx, sy) (pixel units, y down).
+  glm::vec3 direction(float sx, float sy) const {
+    const float u = (2.0f * sx / width_ - 1.0f) * half_w_;
+    const float v = (1.0f - 2.0f * sy / height_) * half_h_;
+    return glm::normalize(forward_ + u * right_ + v * up_);
+  }
+  Ray pixel_ray(int x, int y) const { return Ray(eye_, direction(x + 0.5f, y + 0.5f)); }
+
+  // The planes through the eye along pixel boundaries (section 2.2.1): the column boundary
+  // x = k with the inside to the right (larger x), and the row boundary y = j with the inside
+  // below (larger y). Flip the sign for the other side.
+  Plane column_plane(int k) const { return column_plane_at(float(k)); }
+  Plane row_plane(int j) const { return row_plane_at(float(j)); }
+  // The same through any image coordinate (e.g. pixel centres, x + 0.5).
+  Plane column_plane_at(float sx) const;
+  Plane row_plane_at(float sy) const;
+
+ private:
+  int width_, height_;
+  glm::vec3 eye_, forward_, right_, up_;
+  float half_w_, half_h_;
+};
+
+}  // namespace gcsim::raytrace

@@ -1,0 +1,21 @@
+#pragma once
+// The nearest hit along a ray. Ties (two primitives at exactly the same distance, as along a
+// shared mesh edge) go to the lower primitive id, so that every traversal order, and brute
+// force, report the same primitive.
+#include <cstdint>
+
+#include "apps/raytrace/float_util.hpp"
+
+namespace gcsim::raytrace {
+
+struct Hit {
+  float t = kInfinity;
+  std::int32_t prim = -1;  // -1: no hit
+  float b1 = 0, b2 = 0;    // barycentric coordinates (triangles)
+
+  bool valid() const { return prim >= 0; }
+  // Would a hit at distance t on primitive id replace this one?
+  bool improved_by(float t_new, std::int32_t id) const { return t_new < t || (t_new == t && id < prim); }
+};
+
+}  // namespace gcsim::raytrace

@@ -1,0 +1,205 @@
+#include "apps/raytrace/primary_tracer.hpp"
+
+#include <algorithm>
+#include <optional>
+
+#include "apps/raytrace/traversal.hpp"
+
+namespace gcsim::raytrace {
+
+// Hits of one tile while the uniformity test fills it in (A4).
+struct PrimaryTracer::Region {
+  int x0, y0, width;
+  std::vector<Hit>* hits;
+  std::vector<char> traced;
+  Hit& at(int x, int y) { return (*hits)[std::size_t(y - y0) * width + (x - x0)]; }
+  char& done(int x, int y) { return traced[std::size_t(y - y0) * width + (x - x0)]; }
+};
+
+PrimaryTracer::PrimaryTracer(const Scene& scene, const Bvh& bvh, const Camera& camera, Algorithm algorithm)
+    : scene_(scene), bvh_(bvh), camera_(camera), algorithm_(algorithm) {
+  if (algorithm == Algorithm::B1) classifier_ = std::make_unique<RayClassifier>(scene, bvh, camera);
+}
+
+void PrimaryTracer::trace_pixel(int x, int y, Hit& hit, TestTally& tally, TraceCounters& counters) {
+  const Ray ray = camera_.pixel_ray(x, y);
+  hit = Hit{};
+  switch (algorithm_) {
+    case Algorithm::A1: traverse_unordered(scene_, bvh_.nodes.data(), bvh_.root, ray, hit, tally); break;
+    case Algorithm::A2: traverse_ordered(scene_, bvh_.nodes.data(), bvh_.root, ray, hit, tally); break;
+    case Algorithm::A2p:
+      if (!subtree_.empty) traverse_unordered(scene_, subtree_.nodes.data(), subtree_.root, ray, hit, tally);
+      break;
+    case Algorithm::A3:
+    case Algorithm::A4:
+      if (!subtree_.empty) traverse_ordered(scene_, subtree_.nodes.data(), subtree_.root, ray, hit, tally);
+      break;
+    case Algorithm::B1: classifier_->trace(x, y, ray, hit, tally, counters); break;
+    case Algorithm::brute: intersect_brute_force(scene_, ray, hit, tally); break;
+  }
+}
+
+void PrimaryTracer::trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>& hits, TraceCounters& counters) {
+  const int w = x1 - x0, h = y1 - y0;
+  hits.assign(std::size_t(w) * h, Hit{});
+  TestTally tally;
+  if (uses_subtree(algorithm_)) {
+    if (y0 != row_y0_ || y1 != row_y1_) {  // a new row of subregions: its two shared planes
+      filter_by_two_planes(bvh_, camera_.row_plane(y0), flipped(camera_.row_plane(y1)), row_, counters);
+      row_y0_ = y0;
+      row_y1_ = y1;
+    }
+    subtree_from_filtered(bvh_, row_, camera_.column_plane(x0), flipped(camera_.column_plane(x1)), subtree_, counters);
+  }
+  if (algorithm_ == Algorithm::A4 && !subtree_.empty) {
+    Region r{x0, y0, w, &hits, std::vector<char>(std::size_t(w) * h, 0)};
+    trace_uniform_regions(r, x0, y0, x1 - 1, y1 - 1, tally, counters);
+  } else {
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) trace_pixel(x, y, hits[std::size_t(y - y0) * w + (x - x0)], tally, counters);
+  }
+  counters.primary_rays += std::int64_t(w) * h;
+  counters.primary_box_tests += tally.boxes;
+  counters.primary_prim_tests += tally.prims();
+  counters.sphere_tests += tally.spheres;
+  counters.triangle_tests += tally.triangles;
+  counters.child_sorts += tally.sorts;
+}
+
+// Section 2.2.3 on the pixel rectangle with corner pixels (rx0, ry0) and (rx1, ry1), inclusive.
+// The corner rays are traced; if they all hit the same primitive P and nothing in the subtree can
+// lie in front of P inside the region, every pixel sees P. Otherwise the region is halved along its
+// longer side, down to regions whose pixels are all corners.
+void PrimaryTracer::trace_uniform_regions(Region& r, int rx0, int ry0, int rx1, int ry1, TestTally& tally,
+                                          TraceCounters& counters) {
+  const int cx[4] = {rx0, rx1, rx0, rx1}, cy[4] = {ry0, ry0, ry1, ry1};
+  for (int i = 0; i < 4; ++i) {
+    if (!r.done(cx[i], cy[i])) {
+      trace_pixel(cx[i], cy[i], r.at(cx[i], cy[i]), tally, counters);
+      r.done(cx[i], cy[i]) = 1;
+    }
+  }
+  const int w = rx1 - rx0 + 1, h = ry1 - ry0 + 1;
+  if (w <= 2 && h <= 2) return;  // every pixel is a corner
+  ++counters.uniformity_tests;
+  const int p = r.at(rx0, ry0).prim;
+  bool same = p >= 0;
+  for (int i = 1; i < 4 && same; ++i) same = r.at(cx[i], cy[i]).prim == p;
+  if (same && nothing_in_front(p, farthest_possible_hit(p, r, rx0, ry0, rx1, ry1), rx0, ry0, rx1, ry1, counters.uniformity_box_checks)) {
+    ++counters.uniform_regions;
+    for (int y = ry0; y <= ry1; ++y)
+      for (int x = rx0; x <= rx1; ++x) {
+        if (r.done(x, y)) continue;
+        // Only P needs testing; its hit gives the distance and barycentrics for shading.
+        const Ray ray = camera_.pixel_ray(x, y);
+        Hit& hit = r.at(x, y);
+        hit = Hit{};
+        test_primitive(scene_, p, ray, hit, tally);
+        // Within rounding distance of P's edge a neighbour may tie or win in float: trace fully.
+        const bool near_edge = !scene_.is_sphere(p) && std::min({hit.b1, hit.b2, 1.0f - hit.b1 - hit.b2}) < 1e-4f;
+        if (!hit.valid() || near_edge) trace_pixel(x, y, hit, tally, counters);
+        else ++counters.uniform_pixels;
+        r.done(x, y) = 1;
+      }
+    return;
+  }
+  if (w >= h) {
+    const int mid = rx0 + (w - 1) / 2;
+    trace_uniform_regions(r, rx0, ry0, mid, ry1, tally, counters);
+    trace_uniform_regions(r, mid + 1, ry0, rx1, ry1, tally, counters);
+  } else {
+    const int mid = ry0 + (h - 1) / 2;
+    trace_uniform_regions(r, rx0, ry0, rx1, mid, tally, counters);
+    trace_uniform_regions(r, rx0, mid + 1, rx1, ry1, tally, counters);
+  }
+}
+
+// An upper bound of the distance at which any ray of the region meets P. For a triangle the hits
+// of the region's rays are convex combinations of the corner hits, and distance from the eye is
+// convex, so the farthest corner bounds them; for a sphere the near side is never farther than
+// the centre (eye outside), or than the centre plus the radius (eye inside).
+float PrimaryTracer::farthest_possible_hit(int prim, const Region& r, int rx0, int ry0, int rx1, int ry1) const {
+  float d;
+  if (scene_.is_sphere(prim)) {
+    const Sphere& s = scene_.spheres[prim];
+    const float to_center = glm::length(s.center - camera_.eye());
+    d = to_center > s.radius ? to_center : to_center + s.radius;
+  } else {
+    auto& rr = const_cast<Region&>(r);
+    d = std::max({rr.at(rx0, ry0).t, rr.at(rx1, ry0).t, rr.at(rx0, ry1).t, rr.at(rx1, ry1).t});
+  }
+  return d * (1.0f + 1e-5f);
+}
+
+// True if no primitive of the subtree other than P can be hit nearer than P by a ray of the region.
+// Every primitive that meets the subregion's pyramid is in the subtree. A box cannot hold such a
+// primitive if it is farther from the eye than P can be (max_distance), or, when P is a triangle,
+// if it lies wholly behind P's plane as seen from the eye; a triangle cannot if its three vertices
+// are behind or on that plane (P's neighbours across a convex fold of a mesh). Nor can a box
+// outside the pyramid of the region's corner rays.
+bool PrimaryTracer::nothing_in_front(int prim, float max_distance, int rx0, int ry0, int rx1, int ry1,
+                                     std::int64_t& checks) const {
+  if (is_primitive(subtree_.root)) return primitive_of(subtree_.root) == prim;
+  const glm::vec3 eye = camera_.eye();
+  std::optional<Plane> behind;  // inside = the side away from the eye
+  glm::dvec3 pn(0.0), p0(0.0);
+  double eye_side = 0;
+  if (!scene_.is_sphere(prim)) {
+    const Triangle& t = scene_.triangle(prim);
+    p0 = glm::dvec3(t.p0);
+    pn = glm::cross(glm::dvec3(t.p1) - p0, glm::dvec3(t.p2) - p0);
+    eye_side = glm::dot(pn, glm::dvec3(eye) - p0) > 0 ? 1.0 : -1.0;
+    const glm::vec3 n = glm::vec3(-eye_side * pn);
+    behind = Plane{n, glm::dot(n, t.p0)};
+  } else {
+    // The visible cap of a sphere seen from distance D lies in front of the plane at r^2/D from
+    // the centre towards the eye; a ray meets P there before it can reach anything behind it.
+    const Sphere& sp = scene_.spheres[prim];
+    const glm::vec3 to_eye = eye - sp.center;
+    const float d = glm::length(to_eye);
+    if (d > sp.radius) {
+      const glm::vec3 u = to_eye / d;
+      behind = Plane{-u, glm::dot(-u, sp.center + u * (sp.radius * sp.radius / d))};
+    }
+  }
+  // The pyramid of the region's own corner rays (pixel centres), tighter than the subtree's.
+  const Plane region[4] = {camera_.column_plane_at(rx0 + 0.5f), flipped(camera_.column_plane_at(rx1 + 0.5f)),
+                           camera_.row_plane_at(ry0 + 0.5f), flipped(camera_.row_plane_at(ry1 + 0.5f))};
+  auto cannot_occlude = [&](const Bounds3& box) {
+    if (box.distance_to(eye) > max_distance || (behind && classify(box, *behind) == Side::inside)) return true;
+    for (const Plane& pl : region)
+      if (classify(box, pl) == Side::outside) return true;
+    return false;
+  };
+  auto triangle_behind = [&](int q) {
+    if (scene_.is_sphere(q) || scene_.is_sphere(prim)) return false;
+    const Triangle& t = scene_.triangle(q);
+    const double scale = 1e-9 * glm::length(pn);
+    for (const glm::vec3& v : {t.p0, t.p1, t.p2}) {
+      const glm::dvec3 d = glm::dvec3(v) - p0;
+      if (eye_side * glm::dot(pn, d) > scale * glm::length(d)) return false;
+    }
+    return true;
+  };
+  NodeRef stack[256];
+  int top = 0;
+  stack[top++] = subtree_.root;
+  ++checks;
+  while (top > 0) {
+    const BvhNode& n = subtree_.nodes[stack[--top]];
+    for (int i = 0; i < 2; ++i) {
+      const NodeRef c = n.child[i];
+      if (is_primitive(c) && primitive_of(c) == prim) continue;
+      ++checks;
+      if (is_primitive(c)) {
+        if (!cannot_occlude(bvh_.prim_bounds[primitive_of(c)]) && !triangle_behind(primitive_of(c))) return false;
+      } else if (!cannot_occlude(subtree_.nodes[c].box)) {
+        if (top >= 256) return false;
+        stack[top++] = c;
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace gcsim::raytrace

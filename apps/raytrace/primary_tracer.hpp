@@ -1,0 +1,44 @@
+#pragma once
+// Nearest hits of the primary rays of one subregion (tile) with any of the paper's algorithms.
+// A tracer keeps per-row state (the two planes shared along a row of subregions, 2.2.1) and the
+// subtree of the last subregion, so tiles should be traced row by row, left to right.
+#include <memory>
+#include <vector>
+
+#include "apps/raytrace/algorithm.hpp"
+#include "apps/raytrace/bvh.hpp"
+#include "apps/raytrace/camera.hpp"
+#include "apps/raytrace/counters.hpp"
+#include "apps/raytrace/hit.hpp"
+#include "apps/raytrace/ray_classification.hpp"
+#include "apps/raytrace/subtree.hpp"
+
+namespace gcsim::raytrace {
+
+class PrimaryTracer {
+ public:
+  PrimaryTracer(const Scene& scene, const Bvh& bvh, const Camera& camera, Algorithm algorithm);
+
+  // Hits of the pixels of [x0, x1) x [y0, y1), row-major in `hits`.
+  void trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>& hits, TraceCounters& counters);
+
+  Algorithm algorithm() const { return algorithm_; }
+
+ private:
+  struct Region;
+  void trace_pixel(int x, int y, Hit& hit, TestTally& tally, TraceCounters& counters);
+  void trace_uniform_regions(Region& r, int rx0, int ry0, int rx1, int ry1, TestTally& tally, TraceCounters& counters);
+  bool nothing_in_front(int prim, float max_distance, int rx0, int ry0, int rx1, int ry1, std::int64_t& checks) const;
+  float farthest_possible_hit(int prim, const Region& r, int rx0, int ry0, int rx1, int ry1) const;
+
+  const Scene& scene_;
+  const Bvh& bvh_;
+  const Camera& camera_;
+  Algorithm algorithm_;
+  int row_y0_ = -1, row_y1_ = -1;
+  PlaneFilteredTree row_;
+  Subtree subtree_;
+  std::unique_ptr<RayClassifier> classifier_;
+};
+
+}  // namespace gcsim::raytrace

@@ -1,0 +1,25 @@
+#pragma once
+// What a render does: which primary-ray algorithm, subregion size, image size and shading.
+#include <string>
+#include <string_view>
+
+#include "apps/raytrace/algorithm.hpp"
+
+namespace gcsim::raytrace {
+
+enum class Shading {
+  local,    // primary rays only: Lambert and Phong from the lights, no shadows (the paper's table)
+  whitted,  // shadow rays, mirror reflection and refraction with Fresnel, recursively
+};
+
+struct RenderSettings {
+  Algorithm algorithm = Algorithm::A4;
+  int tile = 8;            // subregion size m (m x m pixels)
+  int width = 512;
+  int height = 512;
+  Shading shading = Shading::local;
+  bool pencils = true;     // whitted: first-generation secondary rays through pencil subtrees (2.3)
+  int max_depth = 5;       // whitted: reflection/refraction levels
+};
+
+}  // namespace gcsim::raytrace

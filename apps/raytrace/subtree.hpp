@@ -1,0 +1,58 @@
+#pragma once
+// The dynamic subtree of section 2.2.1: the part of the BVH whose boxes meet a pyramid (the eye
+// and a subregion's four corners) or any other region bounded by four planes (a pencil, 2.3).
+//
+// Each node gets four flags, one per plane: inside, outside or crossing. A node outside any
+// plane is dropped with its descendants; a node inside a plane passes that flag down, so its
+// descendants are never tested against that plane again. A node left with a single child is
+// replaced by that child (figure 2), which is why a subtree is much shallower than the tree.
+//
+// Along a row of subregions the top and bottom planes are the same, so they are evaluated once
+// per row (RowFilter) and only the left and right planes per subregion: 2(n/m + 1) planes for
+// an n x n image in m x m subregions.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "apps/raytrace/bvh.hpp"
+#include "apps/raytrace/camera.hpp"
+#include "apps/raytrace/counters.hpp"
+#include "apps/raytrace/plane_classification.hpp"
+
+namespace gcsim::raytrace {
+
+struct Subtree {
+  std::vector<BvhNode> nodes;
+  NodeRef root = 0;
+  bool empty = true;
+  int primitive_count = 0;
+};
+
+// The BVH filtered by two planes: the node and primitive entries not outside either, with the
+// mask of planes they are entirely inside.
+class PlaneFilteredTree {
+ public:
+  struct Entry {
+    NodeRef ref;            // BVH node or primitive
+    std::uint8_t inside;    // bit i: entirely inside plane i
+    std::int32_t child[2];  // entries; -1 where the child was dropped
+  };
+  std::vector<Entry> entries;
+  int root = -1;  // -1: nothing survives
+};
+
+// Filters the whole BVH by planes a and b (bits 0 and 1).
+void filter_by_two_planes(const Bvh& bvh, const Plane& a, const Plane& b, PlaneFilteredTree& out, TraceCounters& counters);
+
+// The subtree of the entries of `row` also inside planes c and d.
+void subtree_from_filtered(const Bvh& bvh, const PlaneFilteredTree& row, const Plane& c, const Plane& d, Subtree& out,
+                           TraceCounters& counters);
+
+// Both steps for an arbitrary four-plane region (pencils).
+void build_subtree(const Bvh& bvh, const std::array<Plane, 4>& planes, Subtree& out, TraceCounters& counters);
+
+// The planes of the pyramid through the eye and the pixel rectangle [x0, x1) x [y0, y1):
+// top, bottom (shared along a row), left, right.
+std::array<Plane, 4> pyramid_planes(const Camera& camera, int x0, int y0, int x1, int y1);
+
+}  // namespace gcsim::raytrace

@@ -1,0 +1,163 @@
+// Hard cases of the intersection routines: watertightness, axis-parallel rays, grazing hits,
+// degenerate triangles, tiny and huge spheres.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "apps/common/rng.hpp"
+#include "apps/raytrace/bounds.hpp"
+#include "apps/raytrace/sphere.hpp"
+#include "apps/raytrace/triangle.hpp"
+
+namespace gcsim::raytrace {
+namespace {
+
+// A unit square split into a fan of triangles around an interior vertex, and a grid of quads:
+// every ray aimed at the inside of the square must hit exactly one... or at least one triangle.
+std::vector<Triangle> fan(glm::vec3 centre, int n) {
+  std::vector<Triangle> out;
+  const glm::vec3 corners[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < n; ++k) {
+      const glm::vec3 a = glm::mix(corners[i], corners[(i + 1) % 4], float(k) / n);
+      const glm::vec3 b = glm::mix(corners[i], corners[(i + 1) % 4], float(k + 1) / n);
+      out.push_back({centre, a, b});
+    }
+  return out;
+}
+
+int hits(const std::vector<Triangle>& tris, const Ray& r) {
+  int count = 0;
+  for (const auto& t : tris) {
+    float th, b1, b2;
+    if (intersect_triangle(t, r, kInfinity, &th, &b1, &b2)) ++count;
+  }
+  return count;
+}
+
+TEST(Watertight, RaysThroughSharedVerticesAndEdgesNeverMiss) {
+  const auto tris = fan({0.37f, 0.61f, 0.0f}, 7);
+  apps::Rng rng(7);
+  // Aim exactly at the shared centre vertex and at points of shared edges from many origins.
+  for (int i = 0; i < 2000; ++i) {
+    const glm::vec3 o(rng.uniform(-3.0f, 4.0f), rng.uniform(-3.0f, 4.0f), rng.uniform(0.5f, 5.0f));
+    const auto& t = tris[i % tris.size()];
+    const float s = rng.uniform();
+    for (glm::vec3 target : {t.p0, t.p1, glm::mix(t.p0, t.p1, s), glm::mix(t.p0, t.p2, s)}) {
+      if (target.x <= 0 || target.x >= 1 || target.y <= 0 || target.y >= 1) continue;  // outer boundary
+      const Ray r(o, target - o);
+      EXPECT_GE(hits(tris, r), 1) << "crack at (" << target.x << ", " << target.y << ")";
+    }
+  }
+}
+
+TEST(Watertight, GridOfQuadsHasNoCracksForAxisParallelRays) {
+  std::vector<Triangle> tris;
+  const int n = 16;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const glm::vec3 p00(x / float(n), y / float(n), 0), p10((x + 1) / float(n), y / float(n), 0);
+      const glm::vec3 p01(x / float(n), (y + 1) / float(n), 0), p11((x + 1) / float(n), (y + 1) / float(n), 0);
+      tris.push_back({p00, p10, p11});
+      tris.push_back({p00, p11, p01});
+    }
+  // Straight down onto every vertex and edge midpoint: direction (0, 0, -1) has two zero components.
+  for (int y = 1; y < 2 * n; ++y)
+    for (int x = 1; x < 2 * n; ++x) {
+      const Ray r({x / float(2 * n), y / float(2 * n), 1.0f}, {0.0f, 0.0f, -1.0f});
+      EXPECT_GE(hits(tris, r), 1) << x << "," << y;
+    }
+}
+
+TEST(AxisParallel, BoxTestWithZeroDirectionComponents) {
+  const Bounds3 box{{0, 0, 0}, {1, 1, 1}};
+  float entry;
+  // Inside the slab of the zero components: hit.
+  EXPECT_TRUE(intersect_box(box, Ray({0.5f, 0.5f, -1.0f}, {0, 0, 1}), kInfinity, &entry));
+  EXPECT_NEAR(entry, 1.0f, 1e-5f);
+  // Outside a slab with zero direction component: miss.
+  EXPECT_FALSE(intersect_box(box, Ray({1.5f, 0.5f, -1.0f}, {0, 0, 1}), kInfinity, &entry));
+  // Exactly on a slab plane (0 * inf = NaN): the boundary counts as inside.
+  EXPECT_TRUE(intersect_box(box, Ray({1.0f, 0.5f, -1.0f}, {0, 0, 1}), kInfinity, &entry));
+  EXPECT_TRUE(intersect_box(box, Ray({0.0f, 1.0f, -1.0f}, {0, 0, 1}), kInfinity, &entry));
+  // Negative zero.
+  EXPECT_TRUE(intersect_box(box, Ray({0.5f, 0.5f, 2.0f}, {-0.0f, 0.0f, -1.0f}), kInfinity, &entry));
+}
+
+TEST(AxisParallel, SphereAndTriangle) {
+  float t, b1, b2;
+  EXPECT_TRUE(intersect_sphere({{0, 0, 0}, 1}, Ray({0, 0, -5}, {0, 0, 1}), kInfinity, &t));
+  EXPECT_FLOAT_EQ(t, 4.0f);
+  EXPECT_TRUE(intersect_sphere({{0, 0, 0}, 1}, Ray({-5, 0, 0}, {1, 0, 0}), kInfinity, &t));
+  EXPECT_FLOAT_EQ(t, 4.0f);
+  const Triangle tri{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  EXPECT_TRUE(intersect_triangle(tri, Ray({0.25f, 0.25f, 1}, {0, 0, -1}), kInfinity, &t, &b1, &b2));
+  EXPECT_FLOAT_EQ(t, 1.0f);
+  EXPECT_FLOAT_EQ(b1, 0.25f);
+  EXPECT_FALSE(intersect_triangle(tri, Ray({0.75f, 0.75f, 1}, {0, 0, -1}), kInfinity, &t, &b1, &b2));
+}
+
+TEST(Grazing, TangentRaysAndEdgeOnTriangles) {
+  float t, b1, b2;
+  const Sphere s{{0, 0, 0}, 1};
+  // Just inside and just outside the silhouette.
+  EXPECT_TRUE(intersect_sphere(s, Ray({-5, 0.9999f, 0}, {1, 0, 0}), kInfinity, &t));
+  EXPECT_FALSE(intersect_sphere(s, Ray({-5, 1.0001f, 0}, {1, 0, 0}), kInfinity, &t));
+  // Whatever the tangent ray does, the result is finite and the box agrees.
+  if (intersect_sphere(s, Ray({-5, 1.0f, 0}, {1, 0, 0}), kInfinity, &t)) {
+    EXPECT_TRUE(std::isfinite(t));
+    float entry;
+    EXPECT_TRUE(intersect_box(s.bounds(), Ray({-5, 1.0f, 0}, {1, 0, 0}), kInfinity, &entry));
+  }
+  // A ray in the plane of a triangle sees it edge-on: no hit, no NaN.
+  const Triangle tri{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  EXPECT_FALSE(intersect_triangle(tri, Ray({-1, 0.2f, 0}, {1, 0, 0}), kInfinity, &t, &b1, &b2));
+  // Nearly grazing: hit with a finite t.
+  const Ray r({-1, 0.2f, 1e-3f}, glm::normalize(glm::vec3(1, 0, -1e-3f)));
+  if (intersect_triangle(tri, r, kInfinity, &t, &b1, &b2)) {
+    EXPECT_TRUE(std::isfinite(t));
+    EXPECT_GT(t, 0);
+  }
+}
+
+TEST(Degenerate, ZeroAreaTrianglesAreNeverHit) {
+  float t, b1, b2;
+  apps::Rng rng(3);
+  const Triangle point{{0.5f, 0.5f, 0}, {0.5f, 0.5f, 0}, {0.5f, 0.5f, 0}};
+  const Triangle line{{0, 0, 0}, {1, 1, 0}, {2, 2, 0}};
+  const Triangle twice{{0, 0, 0}, {1, 0, 0}, {1, 0, 0}};
+  for (int i = 0; i < 500; ++i) {
+    const glm::vec3 o(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(0.1f, 3));
+    const glm::vec3 target(rng.uniform(0, 1), rng.uniform(0, 1), 0);
+    for (const Triangle& tri : {point, line, twice}) {
+      EXPECT_FALSE(intersect_triangle(tri, Ray(o, target - o), kInfinity, &t, &b1, &b2));
+      EXPECT_FALSE(intersect_triangle(tri, Ray(o, tri.p0 - o), kInfinity, &t, &b1, &b2));
+    }
+  }
+  EXPECT_FALSE(point.bounds().empty());
+}
+
+TEST(Scale, TinyAndHugeSpheres) {
+  float t;
+  for (float r : {1e-4f, 1e-2f, 1.0f, 1e2f, 1e4f}) {
+    const Sphere s{{3 * r, -2 * r, 7 * r}, r};
+    const glm::vec3 eye = s.center + glm::vec3(0, 0, -10 * r);
+    ASSERT_TRUE(intersect_sphere(s, Ray(eye, {0, 0, 1}), kInfinity, &t)) << r;
+    EXPECT_NEAR(t, 9 * r, 9 * r * 1e-5f) << r;
+    // Off-centre: t = 10r - sqrt(r^2 - d^2).
+    const float d = 0.6f * r;
+    ASSERT_TRUE(intersect_sphere(s, Ray(eye + glm::vec3(d, 0, 0), {0, 0, 1}), kInfinity, &t)) << r;
+    EXPECT_NEAR(t, 10 * r - 0.8f * r, r * 1e-4f) << r;
+    EXPECT_FALSE(intersect_sphere(s, Ray(eye + glm::vec3(1.01f * r, 0, 0), {0, 0, 1}), kInfinity, &t)) << r;
+    // From far away (1e3 radii): the stable discriminant keeps the hit.
+    const glm::vec3 far = s.center + glm::vec3(0, 0, -1000 * r);
+    ASSERT_TRUE(intersect_sphere(s, Ray(far + glm::vec3(0.5f * r, 0, 0), {0, 0, 1}), kInfinity, &t)) << r;
+    EXPECT_NEAR(t, 1000 * r - std::sqrt(0.75f) * r, 1000 * r * 1e-6f) << r;
+    // From inside: the far side.
+    ASSERT_TRUE(intersect_sphere(s, Ray(s.center, {1, 0, 0}), kInfinity, &t));
+    EXPECT_NEAR(t, r, r * 1e-5f);
+  }
+}
+
+}  // namespace
+}  // namespace gcsim::raytrace
