@@ -1,8 +1,13 @@
 #include "machine/trace.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include <fmt/format.h>
+
+#include "machine/mesh.hpp"
+#include "machine/paje_writer.hpp"
+#include "machine/trace_csv.hpp"
 
 namespace gcsim::machine {
 
@@ -10,7 +15,7 @@ TraceLevel parse_trace_level(std::string_view s) {
   if (s == "summary") return TraceLevel::summary;
   if (s == "messages") return TraceLevel::messages;
   if (s == "full") return TraceLevel::full;
-  throw std::invalid_argument("unknown trace level '" + std::string(s) + "' (expected summary, messages or full)js");
+  throw std::invalid_argument("unknown trace level '" + std::string(s) + "' (expected summary, messages or full)");
 }
 
 std::string_view to_string(TraceLevel l) {
@@ -42,11 +47,19 @@ constexpr std::size_t kFlushBytes = 1 << 16;
 // Chrome timestamps are microseconds; six decimals keep every picosecond.
 std::string us(SimTime t) { return fmt::format("{}.{:06d}", t / kMicrosecond, t % kMicrosecond); }
 
-std::string csv_path_for(const std::string& json_path) {
-  const auto dot = json_path.rfind('.');
-  const auto slash = json_path.rfind('/');
-  if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) return json_path.substr(0, dot) + ".csv";
-  return json_path + ".csv";
+// Labels are operation names chosen by applications; anything that would need quoting in CSV or
+// escaping in JSON becomes '_', so both files stay trivially parseable.
+std::string_view clean_label(std::string_view label, std::string& scratch) {
+  auto needs_cleaning = [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == ',' || c == '"' || c == '\\'; };
+  if (std::none_of(label.begin(), label.end(), needs_cleaning)) return label;
+  scratch.assign(label);
+  std::replace_if(scratch.begin(), scratch.end(), needs_cleaning, '_');
+  return scratch;
+}
+
+const char* direction_name(int channel) {
+  static constexpr const char* names[] = {"east", "west", "north", "south"};
+  return names[channel % 4];
 }
 
 }  // namespace
@@ -54,17 +67,20 @@ std::string csv_path_for(const std::string& json_path) {
 TraceWriter::TraceWriter(const TraceOptions& options, int processors, int mesh_width, int mesh_height)
     : level_(options.level), mesh_width_(mesh_width) {
   if (options.path.empty()) return;
-  json_ = std::fopen(options.path.c_str(), "wb");
-  if (!json_) throw std::runtime_error("cannot write trace file '" + options.path + "'");
-  const std::string csv = csv_path_for(options.path);
-  csv_ = std::fopen(csv.c_str(), "wb");
-  if (!csv_) throw std::runtime_error("cannot write trace file '" + csv + "'");
+  json_path_ = options.path;
+  csv_path_ = trace_sibling_path(options.path, ".csv");
+  paje_path_ = trace_sibling_path(options.path, ".paje");
+  if (csv_path_ == json_path_) throw std::runtime_error("trace file '" + json_path_ + "' must not end in .csv (the CSV goes beside it)");
+  json_ = std::fopen(json_path_.c_str(), "wb");
+  if (!json_) throw std::runtime_error("cannot write trace file '" + json_path_ + "'");
+  csv_ = std::fopen(csv_path_.c_str(), "wb");
+  if (!csv_) throw std::runtime_error("cannot write trace file '" + csv_path_ + "'");
   // Array form of the Chrome trace-event format: the closing bracket is optional, so the file
-  // is readable at every record boundary.
+  // is readable at every record boundary. pid 0 holds one track (tid) per processor.
   json_buffer_ += "[\n";
   json_buffer_ += R"js({"ph":"M","pid":0,"name":"process_name","args":{"name":"processors"}})js";
-  json_buffer_ += fmt::format(",\n{{\"ph\":\"M\",\"pid\":1,\"name\":\"process_name\",\"args\":{{\"name\":\"mesh channels ({}x{})\"}}}}",
-                              mesh_width, mesh_height);
+  json_buffer_ += R"js(,
+{"ph":"M","pid":0,"name":"process_sort_index","args":{"sort_index":0}})js";
   for (int p = 0; p < processors; ++p) {
     json_buffer_ += fmt::format(
         ",\n{{\"ph\":\"M\",\"pid\":0,\"tid\":{},\"name\":\"thread_name\",\"args\":{{\"name\":\"P{} node ({},{})\"}}}}", p, p,
@@ -72,40 +88,69 @@ TraceWriter::TraceWriter(const TraceOptions& options, int processors, int mesh_w
     json_buffer_ += fmt::format(
         ",\n{{\"ph\":\"M\",\"pid\":0,\"tid\":{},\"name\":\"thread_sort_index\",\"args\":{{\"sort_index\":{}}}}}", p, p);
   }
+  if (level_ == TraceLevel::full) {
+    // pid 1 holds one track per directed mesh channel (tid = channel id), named by its ends.
+    json_buffer_ += fmt::format(
+        ",\n{{\"ph\":\"M\",\"pid\":1,\"name\":\"process_name\",\"args\":{{\"name\":\"mesh channels ({}x{})\"}}}}",
+        mesh_width, mesh_height);
+    json_buffer_ += R"js(,
+{"ph":"M","pid":1,"name":"process_sort_index","args":{"sort_index":1}})js";
+    const Mesh mesh(mesh_width, mesh_height);
+    for (int ch = 0; ch < mesh.channel_count(); ++ch) {
+      if (!mesh.channel_exists(ch)) continue;
+      const MeshChannel e = mesh.channel_ends(ch);
+      json_buffer_ += fmt::format(
+          ",\n{{\"ph\":\"M\",\"pid\":1,\"tid\":{},\"name\":\"thread_name\",\"args\":{{\"name\":\"ch {} P{}->P{} {}\"}}}}", ch, ch,
+          e.from, e.to, direction_name(ch));
+      json_buffer_ += fmt::format(
+          ",\n{{\"ph\":\"M\",\"pid\":1,\"tid\":{},\"name\":\"thread_sort_index\",\"args\":{{\"sort_index\":{}}}}}", ch, ch);
+    }
+  }
   csv_buffer_ += fmt::format("# gcsim trace; level {}; {} processors; mesh {}x{}; times in picoseconds\n",
                              to_string(level_), processors, mesh_width, mesh_height);
   csv_buffer_ += "kind,proc,peer,start_ps,end_ps,bytes,id,label\n";
   flush_buffers();
 }
 
-TraceWriter::~TraceWriter() { close(); }
+TraceWriter::~TraceWriter() {
+  try {
+    close();
+  } catch (...) {
+    // A destructor must not throw; close() is called explicitly on the normal path.
+  }
+}
 
 void TraceWriter::record(const TraceRecord& r) {
   if (!json_) return;
   if (level_ == TraceLevel::summary) return;
   if (r.kind == TraceKind::link && level_ != TraceLevel::full) return;
+  std::string scratch;
+  const std::string_view label = clean_label(r.label.empty() ? to_string(r.kind) : r.label, scratch);
   csv_buffer_ += fmt::format("{},{},{},{},{},{},{},{}\n", to_string(r.kind), r.proc, r.peer, r.start, r.end, r.bytes,
-                             r.id, r.label);
+                             r.id, label);
   switch (r.kind) {
     case TraceKind::message:
-      // An arrow from the send on the source's track to the arrival on the destination's.
+      // An arrow from the send on the source's track to the arrival on the destination's. Flow
+      // events of version 2 (bind_id, flow_out/flow_in) bind to the zero-length slice they sit on,
+      // so the arrow exists even when no send or receive interval covers that instant.
       json_buffer_ += fmt::format(
-          ",\n{{\"ph\":\"s\",\"pid\":0,\"tid\":{},\"ts\":{},\"id\":{},\"cat\":\"message\",\"name\":\"message\"}}", r.proc,
-          us(r.start), r.id);
+          ",\n{{\"ph\":\"X\",\"pid\":0,\"tid\":{},\"ts\":{},\"dur\":0,\"cat\":\"message\",\"name\":\"to P{}\","
+          "\"bind_id\":{},\"flow_out\":true,\"args\":{{\"message\":{},\"peer\":{},\"bytes\":{}}}}}",
+          r.proc, us(r.start), r.peer, r.id, r.id, r.peer, r.bytes);
       json_buffer_ += fmt::format(
-          ",\n{{\"ph\":\"f\",\"bp\":\"e\",\"pid\":0,\"tid\":{},\"ts\":{},\"id\":{},\"cat\":\"message\",\"name\":\"message\"}}",
-          r.peer, us(r.end), r.id);
+          ",\n{{\"ph\":\"X\",\"pid\":0,\"tid\":{},\"ts\":{},\"dur\":0,\"cat\":\"message\",\"name\":\"from P{}\","
+          "\"bind_id\":{},\"flow_in\":true,\"args\":{{\"message\":{},\"peer\":{},\"bytes\":{}}}}}",
+          r.peer, us(r.end), r.proc, r.id, r.id, r.proc, r.bytes);
       break;
     case TraceKind::link:
       json_buffer_ += fmt::format(
-          ",\n{{\"ph\":\"X\",\"pid\":1,\"tid\":{},\"ts\":{},\"dur\":{},\"cat\":\"link\",\"name\":\"{}->{}\",\"args\":{{\"bytes\":{}}}}}",
+          ",\n{{\"ph\":\"X\",\"pid\":1,\"tid\":{},\"ts\":{},\"dur\":{},\"cat\":\"link\",\"name\":\"P{}->P{}\",\"args\":{{\"bytes\":{}}}}}",
           r.id, us(r.start), us(r.end - r.start), r.proc, r.peer, r.bytes);
       break;
     default:
       json_buffer_ += fmt::format(
           ",\n{{\"ph\":\"X\",\"pid\":0,\"tid\":{},\"ts\":{},\"dur\":{},\"cat\":\"{}\",\"name\":\"{}\",\"args\":{{\"peer\":{},\"bytes\":{}}}}}",
-          r.proc, us(r.start), us(r.end - r.start), to_string(r.kind), r.label.empty() ? to_string(r.kind) : r.label,
-          r.peer, r.bytes);
+          r.proc, us(r.start), us(r.end - r.start), to_string(r.kind), label, r.peer, r.bytes);
       break;
   }
   if (json_buffer_.size() > kFlushBytes || csv_buffer_.size() > kFlushBytes) flush_buffers();
@@ -132,6 +177,8 @@ void TraceWriter::close() {
   std::fclose(csv_);
   json_ = nullptr;
   csv_ = nullptr;
+  // Paje needs time order, which only the whole trace has: it is made from the finished CSV.
+  write_paje(read_trace_csv(csv_path_), paje_path_);
 }
 
 }  // namespace gcsim::machine

@@ -2,7 +2,9 @@
 // Trace of a simulated run: compute intervals, sends, receives, waits, connections and link use,
 // with simulated timestamps only, so a rerun writes byte-identical files. Written incrementally:
 // Chrome trace-event JSON (array form, whose closing bracket is optional, so an interrupted run
-// still loads in Perfetto) and CSV, flushed as the run goes.
+// still loads in Perfetto) and CSV, flushed as the run goes in whole records. Paje (for ViTE)
+// needs its events in time order, so it is written from the CSV when the trace is closed.
+// traces/README.md describes the three formats.
 #include <cstdint>
 #include <cstdio>
 #include <memory>
@@ -22,7 +24,7 @@ TraceLevel parse_trace_level(std::string_view s);  // throws std::invalid_argume
 std::string_view to_string(TraceLevel l);
 
 struct TraceOptions {
-  std::string path;                // FILE.json (Chrome) with FILE.csv beside it; "" = no trace
+  std::string path;                // FILE.json (Chrome) with FILE.csv and FILE.paje beside it; "" = no trace
   TraceLevel level = TraceLevel::full;
 };
 
@@ -50,11 +52,12 @@ class TraceWriter {
   bool enabled() const { return json_ != nullptr; }
   TraceLevel level() const { return level_; }
   void record(const TraceRecord& r);
-  void close();  // writes the closing bracket
+  void close();  // writes the closing bracket, then the Paje file
 
  private:
   void flush_buffers();
   TraceLevel level_;
+  std::string json_path_, csv_path_, paje_path_;
   std::FILE* json_ = nullptr;
   std::FILE* csv_ = nullptr;
   std::string json_buffer_;  // whole records only, so the files always end on a record boundary

@@ -1,0 +1,200 @@
+#include "machine/paje_writer.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <set>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "machine/mesh.hpp"
+
+namespace gcsim::machine {
+
+namespace {
+
+// Event numbers of the %EventDef header; the header itself is written by write_header().
+enum PajeEventId {
+  kDefineContainerType = 0,
+  kDefineStateType = 1,
+  kDefineVariableType = 2,
+  kDefineLinkType = 3,
+  kDefineEntityValue = 4,
+  kCreateContainer = 5,
+  kDestroyContainer = 6,
+  kPushState = 7,
+  kPopState = 8,
+  kStartLink = 9,
+  kEndLink = 10,
+  kAddVariable = 11,
+  kSubVariable = 12,
+  kSetVariable = 13,
+};
+
+constexpr const char* kHeader =
+    "%EventDef PajeDefineContainerType 0\n%       Alias string\n%       Type string\n%       Name string\n%EndEventDef\n"
+    "%EventDef PajeDefineStateType 1\n%       Alias string\n%       Type string\n%       Name string\n%EndEventDef\n"
+    "%EventDef PajeDefineVariableType 2\n%       Alias string\n%       Type string\n%       Name string\n"
+    "%       Color color\n%EndEventDef\n"
+    "%EventDef PajeDefineLinkType 3\n%       Alias string\n%       Type string\n%       StartContainerType string\n"
+    "%       EndContainerType string\n%       Name string\n%EndEventDef\n"
+    "%EventDef PajeDefineEntityValue 4\n%       Alias string\n%       Type string\n%       Name string\n"
+    "%       Color color\n%EndEventDef\n"
+    "%EventDef PajeCreateContainer 5\n%       Time date\n%       Alias string\n%       Type string\n"
+    "%       Container string\n%       Name string\n%EndEventDef\n"
+    "%EventDef PajeDestroyContainer 6\n%       Time date\n%       Type string\n%       Name string\n%EndEventDef\n"
+    "%EventDef PajePushState 7\n%       Time date\n%       Type string\n%       Container string\n"
+    "%       Value string\n%EndEventDef\n"
+    "%EventDef PajePopState 8\n%       Time date\n%       Type string\n%       Container string\n%EndEventDef\n"
+    "%EventDef PajeStartLink 9\n%       Time date\n%       Type string\n%       Container string\n"
+    "%       Value string\n%       StartContainer string\n%       Key string\n%EndEventDef\n"
+    "%EventDef PajeEndLink 10\n%       Time date\n%       Type string\n%       Container string\n"
+    "%       Value string\n%       EndContainer string\n%       Key string\n%EndEventDef\n"
+    "%EventDef PajeAddVariable 11\n%       Time date\n%       Type string\n%       Container string\n"
+    "%       Value double\n%EndEventDef\n"
+    "%EventDef PajeSubVariable 12\n%       Time date\n%       Type string\n%       Container string\n"
+    "%       Value double\n%EndEventDef\n"
+    "%EventDef PajeSetVariable 13\n%       Time date\n%       Type string\n%       Container string\n"
+    "%       Value double\n%EndEventDef\n";
+
+// The same colours as the plots (traces/plot_trace.py), as Paje's "r g b" in [0, 1].
+struct StateValue {
+  TraceKind kind;
+  const char* color;
+};
+constexpr StateValue kStates[] = {
+    {TraceKind::compute, "0.302 0.686 0.290"},  // green
+    {TraceKind::send, "0.216 0.494 0.722"},     // blue
+    {TraceKind::recv, "1.000 0.498 0.000"},     // orange
+    {TraceKind::wait, "0.894 0.102 0.110"},     // red
+    {TraceKind::connect, "0.596 0.306 0.639"},  // purple
+};
+
+// Simulated milliseconds, exact: picoseconds are the ninth decimal.
+std::string ms(SimTime t) {
+  if (t < 0) return "-" + ms(-t);
+  return fmt::format("{}.{:09d}", t / kMillisecond, t % kMillisecond);
+}
+
+const char* direction_name(int channel) {
+  static constexpr const char* names[] = {"east", "west", "north", "south"};
+  return names[channel % 4];
+}
+
+// One timed Paje event to emit; sorted by (time, phase, sequence) so that at equal times an
+// interval's end comes before the next one's start, and the order is otherwise the record order.
+struct TimedEvent {
+  SimTime time;
+  int phase;  // 0: ends (pop, end link, sub), 1: starts (push, start link, add)
+  std::size_t record;
+  bool operator<(const TimedEvent& o) const {
+    if (time != o.time) return time < o.time;
+    if (phase != o.phase) return phase < o.phase;
+    return record < o.record;
+  }
+};
+
+bool is_state(TraceKind k) { return k != TraceKind::link && k != TraceKind::message; }
+
+class PajeFile {
+ public:
+  explicit PajeFile(const std::string& path) : f_(std::fopen(path.c_str(), "wb"), &std::fclose) {
+    if (!f_) throw std::runtime_error("cannot write Paje trace '" + path + "'");
+  }
+  template <class... Args>
+  void line(fmt::format_string<Args...> format, Args&&... args) {
+    fmt::format_to(std::back_inserter(buffer_), format, std::forward<Args>(args)...);
+    buffer_.push_back('\n');
+    if (buffer_.size() > (1 << 16)) flush();
+  }
+  void raw(const char* text) { buffer_ += text; }
+  void flush() {
+    std::fwrite(buffer_.data(), 1, buffer_.size(), f_.get());
+    buffer_.clear();
+  }
+
+ private:
+  std::unique_ptr<std::FILE, decltype(&std::fclose)> f_;
+  std::string buffer_;
+};
+
+}  // namespace
+
+void write_paje(const TraceCsv& trace, const std::string& path) {
+  PajeFile out(path);
+  out.raw(kHeader);
+  const Mesh mesh(std::max(1, trace.mesh_width), std::max(1, trace.mesh_height));
+
+  // Type hierarchy: Machine > Node > Channel; states on Node, a variable on Channel, links in Machine.
+  out.line("{} M 0 \"Machine\"", int(kDefineContainerType));
+  out.line("{} N M \"Node\"", int(kDefineContainerType));
+  out.line("{} C N \"Channel\"", int(kDefineContainerType));
+  out.line("{} S N \"Activity\"", int(kDefineStateType));
+  for (const StateValue& s : kStates) out.line("{} {} S \"{}\" \"{}\"", int(kDefineEntityValue), to_string(s.kind), to_string(s.kind), s.color);
+  out.line("{} V C \"transfers\" \"0.216 0.494 0.722\"", int(kDefineVariableType));
+  out.line("{} L M N N \"Message\"", int(kDefineLinkType));
+  out.line("{} msg L \"message\" \"0.0 0.0 0.0\"", int(kDefineEntityValue));
+
+  // Containers: every processor, and the channels the trace uses (link records exist at level full).
+  std::set<int> channels;
+  SimTime last = 0;
+  for (const StoredTraceRecord& r : trace.records) {
+    if (r.kind == TraceKind::link && r.id >= 0 && r.id < mesh.channel_count()) channels.insert(static_cast<int>(r.id));
+    last = std::max(last, r.end);
+  }
+  out.line("{} {} gc M 0 \"GC-PowerPlus {} processors, mesh {}x{}\"", int(kCreateContainer), ms(0), trace.processors,
+           trace.mesh_width, trace.mesh_height);
+  for (int p = 0; p < trace.processors; ++p) {
+    out.line("{} {} p{} N gc \"P{} ({},{})\"", int(kCreateContainer), ms(0), p, p, mesh.x(p), mesh.y(p));
+  }
+  for (int ch : channels) {
+    const MeshChannel e = mesh.channel_ends(ch);
+    if (e.from >= trace.processors) continue;
+    out.line("{} {} c{} C p{} \"channel {} P{}->P{} {}\"", int(kCreateContainer), ms(0), ch, e.from, ch, e.from, e.to,
+             direction_name(ch));
+    out.line("{} {} V c{} 0", int(kSetVariable), ms(0), ch);
+  }
+
+  std::vector<TimedEvent> events;
+  events.reserve(trace.records.size() * 2);
+  auto in_range = [&](int p) { return p >= 0 && p < trace.processors; };
+  for (std::size_t i = 0; i < trace.records.size(); ++i) {
+    const StoredTraceRecord& r = trace.records[i];
+    if (r.kind == TraceKind::link) {
+      const MeshChannel e = mesh.channel_ends(static_cast<int>(r.id));
+      if (!channels.count(static_cast<int>(r.id)) || e.from >= trace.processors) continue;
+    } else if (r.kind == TraceKind::message) {
+      if (!in_range(r.proc) || !in_range(r.peer)) continue;
+    } else if (!in_range(r.proc) || r.end <= r.start) {
+      continue;  // a zero-length state shows nothing and would unbalance push/pop at equal times
+    }
+    events.push_back({r.start, 1, i});
+    events.push_back({r.end, 0, i});
+  }
+  std::sort(events.begin(), events.end());
+
+  for (const TimedEvent& e : events) {
+    const StoredTraceRecord& r = trace.records[e.record];
+    const std::string t = ms(e.time);
+    if (is_state(r.kind)) {
+      if (e.phase == 1) out.line("{} {} S p{} {}", int(kPushState), t, r.proc, to_string(r.kind));
+      else out.line("{} {} S p{}", int(kPopState), t, r.proc);
+    } else if (r.kind == TraceKind::message) {
+      if (e.phase == 1) out.line("{} {} L gc msg p{} m{}", int(kStartLink), t, r.proc, r.id);
+      else out.line("{} {} L gc msg p{} m{}", int(kEndLink), t, r.peer, r.id);
+    } else {
+      out.line("{} {} V c{} 1", int(e.phase == 1 ? kAddVariable : kSubVariable), t, r.id);
+    }
+  }
+
+  // Closing the containers at the last event, innermost first.
+  for (int ch : channels) {
+    if (mesh.channel_ends(ch).from < trace.processors) out.line("{} {} C c{}", int(kDestroyContainer), ms(last), ch);
+  }
+  for (int p = 0; p < trace.processors; ++p) out.line("{} {} N p{}", int(kDestroyContainer), ms(last), p);
+  out.line("{} {} M gc", int(kDestroyContainer), ms(last));
+  out.flush();
+}
+
+}  // namespace gcsim::machine

@@ -1,0 +1,96 @@
+#include "machine/trace_csv.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <string_view>
+#include <unordered_map>
+
+#include <fmt/format.h>
+
+namespace gcsim::machine {
+
+namespace {
+
+constexpr std::string_view kColumns = "kind,proc,peer,start_ps,end_ps,bytes,id,label";
+
+std::runtime_error bad_line(const std::string& path, std::size_t line_number, std::string_view why) {
+  return std::runtime_error(fmt::format("{}:{}: {}", path, line_number, why));
+}
+
+bool parse_kind(std::string_view s, TraceKind& k) {
+  for (TraceKind c : {TraceKind::compute, TraceKind::send, TraceKind::recv, TraceKind::wait, TraceKind::connect,
+                      TraceKind::link, TraceKind::message}) {
+    if (s == to_string(c)) {
+      k = c;
+      return true;
+    }
+  }
+  return false;
+}
+
+template <class T>
+bool parse_number(std::string_view s, T& v) {
+  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+  return r.ec == std::errc() && r.ptr == s.data() + s.size();
+}
+
+}  // namespace
+
+std::string trace_sibling_path(const std::string& path, std::string_view extension) {
+  const auto dot = path.rfind('.');
+  const auto slash = path.rfind('/');
+  if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) {
+    return path.substr(0, dot) + std::string(extension);
+  }
+  return path + std::string(extension);
+}
+
+TraceCsv read_trace_csv(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(fmt::format("cannot read trace CSV '{}'", path));
+  TraceCsv t;
+  std::string line;
+  if (!std::getline(in, line)) throw bad_line(path, 1, "empty file; expected a gcsim trace CSV");
+  char level[32] = {0};
+  if (std::sscanf(line.c_str(), "# gcsim trace; level %31[a-z]; %d processors; mesh %dx%d", level, &t.processors,
+                  &t.mesh_width, &t.mesh_height) != 4) {
+    throw bad_line(path, 1,
+                   "not a gcsim trace CSV: expected the header '# gcsim trace; level L; N processors; mesh WxH; ...'");
+  }
+  t.level = level;
+  if (!std::getline(in, line) || line != kColumns) {
+    throw bad_line(path, 2, fmt::format("expected the column line '{}'", kColumns));
+  }
+  std::unordered_map<std::string, std::int32_t> label_index;
+  std::size_t line_number = 2;
+  std::string_view fields[8];
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (line.empty()) continue;
+    std::string_view rest(line);
+    int n = 0;
+    for (; n < 7; ++n) {
+      const auto comma = rest.find(',');
+      if (comma == std::string_view::npos) break;
+      fields[n] = rest.substr(0, comma);
+      rest.remove_prefix(comma + 1);
+    }
+    if (n != 7) throw bad_line(path, line_number, "expected 8 comma-separated fields");
+    fields[7] = rest;
+    StoredTraceRecord r{};
+    if (!parse_kind(fields[0], r.kind)) throw bad_line(path, line_number, "unknown record kind '" + std::string(fields[0]) + "'");
+    if (!parse_number(fields[1], r.proc) || !parse_number(fields[2], r.peer) || !parse_number(fields[3], r.start) ||
+        !parse_number(fields[4], r.end) || !parse_number(fields[5], r.bytes) || !parse_number(fields[6], r.id)) {
+      throw bad_line(path, line_number, "expected integers in fields 2 to 7");
+    }
+    auto [it, inserted] = label_index.try_emplace(std::string(fields[7]), static_cast<std::int32_t>(t.labels.size()));
+    if (inserted) t.labels.emplace_back(fields[7]);
+    r.label = it->second;
+    t.records.push_back(r);
+  }
+  return t;
+}
+
+}  // namespace gcsim::machine

@@ -1,0 +1,1 @@
+"""Plots of gcsim traces and sweeps (gcsim plot, gcsim report). See traces/README.md."""

@@ -1,0 +1,142 @@
+"""Plot 2: the physical mesh, each directed channel coloured by the bytes it carried and by the
+fraction of the window it was busy. Channel ids follow machine/mesh.hpp: node * 4 + direction
+(0 east, 1 west, 2 north = +y, 3 south = -y)."""
+
+import numpy as np
+from matplotlib.colors import Normalize
+from matplotlib.patches import FancyArrowPatch, Rectangle
+from matplotlib.ticker import FuncFormatter
+
+from .binning import union_length
+from .style import DPI, human_bytes
+from .trace_data import KIND_CODE
+
+STEP = {0: (1, 0), 1: (-1, 0), 2: (0, 1), 3: (0, -1)}
+
+
+def channel_target(trace, ch):
+    node, d = divmod(int(ch), 4)
+    x, y = trace.node_xy(node)
+    dx, dy = STEP[d]
+    tx, ty = x + dx, y + dy
+    if not (0 <= tx < trace.mesh_width and 0 <= ty < trace.mesh_height):
+        return None
+    return tx, ty
+
+
+def route_messages(trace, src, dst):
+    """Channels of the X-then-Y routes of the messages (as machine/mesh.cpp routes them):
+    pairs (channel, message index)."""
+    w = trace.mesh_width
+    x, y = src % w, src // w
+    tx, ty = dst % w, dst // w
+    channels, owners = [], []
+    index = np.arange(len(src))
+    for _ in range(trace.mesh_width + trace.mesh_height):
+        move_x = x != tx
+        move_y = ~move_x & (y != ty)
+        if not (move_x.any() or move_y.any()):
+            break
+        east = move_x & (tx > x)
+        west = move_x & (tx < x)
+        north = move_y & (ty > y)
+        south = move_y & (ty < y)
+        node = y * w + x
+        for mask, d in ((east, 0), (west, 1), (north, 2), (south, 3)):
+            channels.append(node[mask] * 4 + d)
+            owners.append(index[mask])
+        x = x + east - west
+        y = y + north - south
+    if not channels:
+        return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
+    return np.concatenate(channels), np.concatenate(owners)
+
+
+def channel_load(trace, window):
+    """Bytes and busy milliseconds per channel id in the window, and where they came from."""
+    nch = trace.mesh_width * trace.mesh_height * 4
+    in_window = window.overlapping(trace)
+    links = in_window & (trace.kind == KIND_CODE["link"]) & (trace.id >= 0) & (trace.id < nch)
+    if links.any():
+        ch = trace.id[links]
+        starts = np.maximum(trace.start[links], window.t0)
+        ends = np.minimum(trace.end[links], window.t1)
+        source = "link records (trace level full)"
+        nbytes = trace.bytes[links]
+    else:
+        msgs = in_window & (trace.kind == KIND_CODE["message"])
+        msgs &= (trace.proc >= 0) & (trace.peer >= 0)
+        msgs &= (trace.proc < trace.mesh_width * trace.mesh_height) & (trace.peer < trace.mesh_width * trace.mesh_height)
+        ch, owner = route_messages(trace, trace.proc[msgs].astype(np.int64), trace.peer[msgs].astype(np.int64))
+        starts = np.maximum(trace.start[msgs][owner], window.t0)
+        ends = np.minimum(trace.end[msgs][owner], window.t1)
+        nbytes = trace.bytes[msgs][owner]
+        source = ("messages routed X then Y (no link records at this trace level: busy is an upper bound, "
+                  "send to arrival)")
+    total = np.bincount(ch, weights=nbytes.astype(np.float64), minlength=nch)
+    busy = union_length(ch, starts, ends, nch)
+    return total, busy / window.length, source
+
+
+def draw_mesh(ax, trace, window, values, norm, cmap, lw):
+    w, h = trace.mesh_width, trace.mesh_height
+    label_nodes = w * h <= 64
+    for node in range(w * h):
+        x, y = trace.node_xy(node)
+        chosen = node < trace.processors and window.selected[node]
+        ax.add_patch(Rectangle((x - 0.17, y - 0.17), 0.34, 0.34, facecolor="white",
+                               edgecolor="#222222" if chosen else "#bbbbbb", linewidth=1.4 if chosen else 0.6, zorder=3))
+        if label_nodes:
+            ax.text(x, y, f"P{node}", ha="center", va="center", fontsize=7 if w * h > 16 else 9, zorder=4,
+                    color="#222222" if chosen else "#999999")
+    for ch in range(w * h * 4):
+        target = channel_target(trace, ch)
+        if target is None:
+            continue
+        x, y = trace.node_xy(ch // 4)
+        dx, dy = STEP[ch % 4]
+        ox, oy = dy * 0.1, -dx * 0.1  # keep right: the two directions of a pair side by side
+        start = (x + 0.2 * dx + ox, y + 0.2 * dy + oy)
+        end = (x + 0.8 * dx + ox, y + 0.8 * dy + oy)
+        used = values[ch] > 0
+        color = cmap(norm(values[ch])) if used else "#dddddd"
+        ax.add_patch(FancyArrowPatch(start, end, arrowstyle="-|>", mutation_scale=6 + lw * 2, color=color,
+                                     linewidth=lw if used else max(0.5, lw / 3), zorder=2, shrinkA=0, shrinkB=0))
+    ax.set_xlim(-0.6, w - 0.4)
+    ax.set_ylim(-0.6, h - 0.4)
+    ax.set_aspect("equal")
+    ax.set_xticks(range(w))
+    ax.set_yticks(range(h))
+    ax.set_xlabel("mesh x (east \u2192)")
+    ax.set_ylabel("mesh y (north \u2192)")
+
+
+def plot_mesh_heatmap(plt, trace, window, title, path):
+    total, busy, source = channel_load(trace, window)
+    w, h = trace.mesh_width, trace.mesh_height
+    panel = min(7.0, max(4.0, 0.9 * max(w, h) + 1.5))
+    fig, axes = plt.subplots(1, 2, figsize=(2 * panel + 2.2, panel * h / max(w, h) + 1.8), dpi=DPI)
+    lw = max(0.8, min(5.0, 32.0 / max(w, h)))
+    import matplotlib
+    bytes_cmap = matplotlib.colormaps["viridis"]
+    busy_cmap = matplotlib.colormaps["inferno_r"]
+    bytes_norm = Normalize(0, max(1.0, total.max()))
+    # Scaled to the busiest channel (a nice round share), so that light load still shows contrast.
+    busy_top = next((v for v in (0.01, 0.02, 0.05, 0.1, 0.2, 0.25, 0.5, 0.75, 1.0) if busy.max() <= v), max(1.0, busy.max()))
+    busy_norm = Normalize(0, busy_top)
+    draw_mesh(axes[0], trace, window, total, bytes_norm, bytes_cmap, lw)
+    draw_mesh(axes[1], trace, window, busy, busy_norm, busy_cmap, lw)
+    axes[0].set_title(f"bytes carried per channel (max {human_bytes(total.max())})", fontsize=10)
+    axes[1].set_title(f"busy fraction per channel (max {busy.max():.0%})", fontsize=10)
+    cb = fig.colorbar(matplotlib.cm.ScalarMappable(norm=bytes_norm, cmap=bytes_cmap), ax=axes[0], shrink=0.8)
+    cb.set_label("bytes in window")
+    cb.ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: human_bytes(v)))
+    cb = fig.colorbar(matplotlib.cm.ScalarMappable(norm=busy_norm, cmap=busy_cmap), ax=axes[1], shrink=0.8)
+    cb.set_label(f"fraction of the window the channel was busy (scale 0 to {busy_top:.0%})")
+    cb.ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:.0%}"))
+    subset = "; outlined: the selected processors" if window.subset else ""
+    fig.suptitle(f"{title}\nmesh channels {w}x{h}, {window.describe()}; from {source}; grey: unused{subset}",
+                 fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)

@@ -1,0 +1,153 @@
+"""Loads a gcsim trace CSV (FILE.csv beside FILE.json) into numpy arrays, and selects a window
+of time and a subset of processors. Format: traces/README.md."""
+
+import os
+import re
+import warnings
+
+import numpy as np
+
+from .errors import PlotError
+
+KINDS = ("compute", "send", "recv", "wait", "connect", "link", "message")
+KIND_CODE = {k: i for i, k in enumerate(KINDS)}
+COLUMNS = "kind,proc,peer,start_ps,end_ps,bytes,id,label"
+HEADER = re.compile(r"^# gcsim trace; level (\w+); (\d+) processors; mesh (\d+)x(\d+)")
+PS_PER_MS = 1e9
+
+
+class Trace:
+    """Columns of the records, one numpy array each; times in simulated milliseconds."""
+
+    def __init__(self, path, level, processors, mesh_width, mesh_height, kind, proc, peer, start_ps, end_ps, nbytes, ident):
+        self.path = path
+        self.level = level
+        self.processors = processors
+        self.mesh_width = mesh_width
+        self.mesh_height = mesh_height
+        self.kind = kind
+        self.proc = proc
+        self.peer = peer
+        self.start = start_ps / PS_PER_MS
+        self.end = end_ps / PS_PER_MS
+        self.bytes = nbytes
+        self.id = ident
+
+    def __len__(self):
+        return len(self.kind)
+
+    def span_ms(self):
+        return (0.0, float(self.end.max()) if len(self) else 0.0)
+
+    def of_kind(self, *names):
+        codes = [KIND_CODE[n] for n in names]
+        return np.isin(self.kind, codes)
+
+    def node_xy(self, node):
+        return node % self.mesh_width, node // self.mesh_width
+
+
+def csv_path_for(path):
+    """gcsim writes FILE.json, FILE.csv and FILE.paje; any of them (or FILE) names the trace."""
+    stem, ext = os.path.splitext(path)
+    if ext == ".csv":
+        return path
+    if ext in (".json", ".paje"):
+        return stem + ".csv"
+    return path + ".csv" if not os.path.exists(path) else path
+
+
+def load_trace(path):
+    csv = csv_path_for(path)
+    if not os.path.exists(csv):
+        if csv != path:
+            raise PlotError(f"{path}: the trace CSV {csv} beside it does not exist "
+                            "(gcsim --trace FILE.json writes FILE.csv next to it; plots are drawn from the CSV)")
+        raise PlotError(f"{path}: no such file (expected a gcsim trace: FILE.json with FILE.csv beside it)")
+    try:
+        with open(csv, "r", encoding="utf-8", errors="replace") as f:
+            first = f.readline()
+            second = f.readline().strip()
+            lines = f.read().splitlines()
+    except OSError as e:
+        raise PlotError(f"{csv}: cannot read: {e.strerror}")
+    m = HEADER.match(first)
+    if not m:
+        raise PlotError(f"{csv}: not a gcsim trace CSV (expected a first line '# gcsim trace; level L; "
+                        f"N processors; mesh WxH; ...', found {first.strip()[:60]!r})")
+    if second != COLUMNS:
+        raise PlotError(f"{csv}: expected the column line '{COLUMNS}', found {second[:60]!r}")
+    level, processors, width, height = m.group(1), int(m.group(2)), int(m.group(3)), int(m.group(4))
+    lines = [l for l in lines if l]
+    if not lines:
+        why = (" (level summary keeps totals only: rerun with --trace-level messages or full)"
+               if level == "summary" else "")
+        raise PlotError(f"{csv}: the trace has no records{why}")
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            numbers = np.loadtxt(lines, delimiter=",", usecols=(1, 2, 3, 4, 5, 6), dtype=np.int64, ndmin=2)
+            names = np.loadtxt(lines, delimiter=",", usecols=(0,), dtype="U8", ndmin=1)
+    except ValueError as e:
+        raise PlotError(f"{csv}: not a gcsim trace CSV: {str(e).splitlines()[0]} (rows after the two header lines)")
+    kind = np.full(len(names), -1, dtype=np.int8)
+    for k, code in KIND_CODE.items():
+        kind[names == k] = code
+    if (kind < 0).any():
+        bad = names[kind < 0][0]
+        raise PlotError(f"{csv}: unknown record kind {bad!r} (expected one of {', '.join(KINDS)})")
+    return Trace(csv, level, processors, width, height, kind, numbers[:, 0].astype(np.int32),
+                 numbers[:, 1].astype(np.int32), numbers[:, 2].astype(np.float64), numbers[:, 3].astype(np.float64),
+                 numbers[:, 4], numbers[:, 5])
+
+
+def parse_procs(spec, processors, where):
+    """'0-7,12' -> [0..7, 12]; every processor when spec is empty."""
+    if not spec:
+        return np.arange(processors)
+    chosen = []
+    for part in spec.split(","):
+        part = part.strip()
+        m = re.fullmatch(r"(\d+)(?:-(\d+))?", part)
+        if not m:
+            raise PlotError(f"--procs {spec!r}: expected processor numbers and ranges such as 0-7,12 "
+                            f"(the trace {where} has processors 0-{processors - 1})")
+        lo = int(m.group(1))
+        hi = int(m.group(2)) if m.group(2) else lo
+        if lo > hi or hi >= processors:
+            raise PlotError(f"--procs {spec!r}: {part} is outside 0-{processors - 1}, "
+                            f"the processors of the trace {where}")
+        chosen.extend(range(lo, hi + 1))
+    return np.unique(np.array(chosen, dtype=np.int64))
+
+
+class Window:
+    """The time window [t0, t1] in ms that the plots show, and the processors they show."""
+
+    def __init__(self, trace, from_ms, to_ms, procs_spec):
+        span0, span1 = trace.span_ms()
+        self.t0 = span0 if from_ms is None else float(from_ms)
+        self.t1 = span1 if to_ms is None else float(to_ms)
+        if self.t1 <= self.t0:
+            if from_ms is None and to_ms is None:
+                raise PlotError(f"{trace.path}: every record has zero length; nothing to plot")
+            raise PlotError(f"--from-ms {self.t0:g} --to-ms {self.t1:g}: the window is empty "
+                            f"(the trace {trace.path} spans {span0:g} to {span1:g} ms)")
+        if self.t0 >= span1 or self.t1 <= span0:
+            raise PlotError(f"--from-ms {self.t0:g} --to-ms {self.t1:g}: no records in that window "
+                            f"(the trace {trace.path} spans {span0:g} to {span1:g} ms)")
+        self.procs = parse_procs(procs_spec, trace.processors, trace.path)
+        self.subset = procs_spec is not None and procs_spec != ""
+        self.selected = np.zeros(trace.processors, dtype=bool)
+        self.selected[self.procs] = True
+
+    @property
+    def length(self):
+        return self.t1 - self.t0
+
+    def overlapping(self, trace):
+        """Records whose interval meets the window."""
+        return (trace.end >= self.t0) & (trace.start <= self.t1)
+
+    def describe(self):
+        return f"{self.t0:g} to {self.t1:g} ms"
