@@ -1,0 +1,222 @@
+#include "apps/raytrace/parallel_render.hpp"
+
+#include <cstring>
+#include <deque>
+
+#include "apps/raytrace/render.hpp"
+#include "apps/raytrace/scene.hpp"
+#include "apps/raytrace/tile_renderer.hpp"
+#include "parix/collectives.hpp"
+
+namespace gcsim::raytrace {
+
+std::optional<Distribution> parse_distribution(std::string_view s) {
+  if (s == "static") return Distribution::static_blocks;
+  if (s == "interleaved") return Distribution::interleaved;
+  if (s == "dynamic") return Distribution::dynamic;
+  return std::nullopt;
+}
+
+std::string_view name_of(Distribution d) {
+  switch (d) {
+    case Distribution::static_blocks: return "static";
+    case Distribution::interleaved: return "interleaved";
+    case Distribution::dynamic: return "dynamic";
+  }
+  return "?";
+}
+
+namespace {
+
+constexpr int kTileTag = 40;
+
+void append(parix::Bytes& out, const void* data, std::size_t n) {
+  const auto* p = static_cast<const std::byte*>(data);
+  out.insert(out.end(), p, p + n);
+}
+
+// What one processor does with the tiles it is given: renders, charges the operations, and packs
+// the pixels as [int32 tile][float rgb ...] records.
+struct NodeWork {
+  const Scene& scene;
+  const Bvh& bvh;
+  const RenderSettings& settings;
+  Tiling tiling;
+  ParallelRender& out;  // host-side: counters and primary hit ids
+  std::vector<TileRenderer> renderers;  // one per processor (state: row planes, classifier)
+
+  parix::Bytes render(parix::Processor& p, TileRenderer& r, int tile) {
+    const auto rect = tiling.rect(tile);
+    std::vector<glm::vec3> colors(rect.pixels());
+    std::vector<std::int32_t> prims(rect.pixels());
+    TraceCounters c;
+    r.render_tile(rect.x0, rect.y0, rect.x1, rect.y1, colors, prims, c);
+    std::vector<parix::OpCount> ops;
+    for (const auto& [name, count] : c.ops())
+      if (count > 0) ops.push_back({name, count});
+    p.compute(ops);
+    out.per_node[p.id()] += c;
+    ++out.tiles_per_node[p.id()];
+    const int w = rect.x1 - rect.x0;
+    for (int y = rect.y0; y < rect.y1; ++y)
+      for (int x = rect.x0; x < rect.x1; ++x)
+        out.prim_ids[std::size_t(y) * settings.width + x] = prims[std::size_t(y - rect.y0) * w + (x - rect.x0)];
+    parix::Bytes b;
+    const std::int32_t t = tile;
+    append(b, &t, sizeof t);
+    append(b, colors.data(), colors.size() * sizeof(glm::vec3));
+    return b;
+  }
+
+  // Node 0 unpacks tile records into the image (charged as memory copies).
+  void assemble(parix::Processor& p, std::span<const std::byte> records) {
+    std::size_t at = 0;
+    while (at + sizeof(std::int32_t) <= records.size()) {
+      std::int32_t t;
+      std::memcpy(&t, records.data() + at, sizeof t);
+      at += sizeof t;
+      if (t < 0 || t >= tiling.count()) throw parix::ParixError("raytrace: corrupt tile record");
+      const auto rect = tiling.rect(t);
+      const std::size_t bytes = std::size_t(rect.pixels()) * sizeof(glm::vec3);
+      if (records.size() - at < bytes) throw parix::ParixError("raytrace: truncated tile record");
+      const int w = rect.x1 - rect.x0;
+      for (int y = rect.y0; y < rect.y1; ++y)
+        for (int x = rect.x0; x < rect.x1; ++x)
+          std::memcpy(&out.image.at(x, y), records.data() + at + (std::size_t(y - rect.y0) * w + (x - rect.x0)) * sizeof(glm::vec3),
+                      sizeof(glm::vec3));
+      at += bytes;
+      p.compute("memcpy_byte", static_cast<std::int64_t>(bytes));
+    }
+  }
+};
+
+void run_static(parix::Processor& p, NodeWork& work, Distribution d) {
+  const int n = p.count(), me = p.id(), tiles = work.tiling.count();
+  parix::Bytes mine;
+  auto do_tile = [&](int t) {
+    parix::Bytes b = work.render(p, work.renderers[me], t);
+    mine.insert(mine.end(), b.begin(), b.end());
+  };
+  if (d == Distribution::static_blocks) {
+    const int begin = int(std::int64_t(tiles) * me / n), end = int(std::int64_t(tiles) * (me + 1) / n);
+    for (int t = begin; t < end; ++t) do_tile(t);
+  } else {
+    for (int t = me; t < tiles; t += n) do_tile(t);
+  }
+  const auto all = parix::gather(p, 0, mine);
+  if (me == 0)
+    for (const auto& part : all) work.assemble(p, part);
+}
+
+void run_dynamic(parix::Processor& p, NodeWork& work) {
+  const int n = p.count(), me = p.id(), tiles = work.tiling.count();
+  if (me != 0) {
+    parix::Link master = p.connect(0, kTileTag);
+    std::deque<int> queue;
+    bool stopped = false;
+    std::vector<parix::Request> sends;
+    parix::Request pending = p.irecv(master);
+    for (;;) {
+      // Take in every assignment that has arrived; block only when there is nothing to do.
+      while (!stopped && (pending.done() || queue.empty())) {
+        p.wait(pending);
+        const auto t = [&] {
+          parix::Bytes b = pending.take();
+          std::int32_t v;
+          std::memcpy(&v, b.data(), sizeof v);
+          return v;
+        }();
+        if (t < 0) stopped = true;
+        else queue.push_back(t);
+        if (!stopped) pending = p.irecv(master);
+      }
+      if (queue.empty()) break;
+      const int t = queue.front();
+      queue.pop_front();
+      parix::Bytes result = work.render(p, work.renderers[me], t);  // also asks for the next tile
+      sends.push_back(p.isend(master, result));
+    }
+    for (auto& s : sends) p.wait(s);
+    return;
+  }
+
+  // Node 0: the master, and a worker thread on the node's second CPU sharing the tile pool.
+  int next = 0;
+  parix::Thread local = p.spawn([&](parix::Processor& q) {
+    while (next < tiles) {
+      const int t = next++;
+      parix::Bytes b = work.render(q, work.renderers[0], t);
+      work.assemble(q, b);
+    }
+  });
+  std::vector<parix::Link> links(n);
+  for (int w = 1; w < n; ++w) links[w] = p.connect(w, kTileTag);
+  std::vector<int> outstanding(n, 0);
+  std::vector<bool> stop_sent(n, false);
+  std::vector<parix::Request> sends;
+  auto assign = [&](int w) {
+    std::int32_t t = -1;
+    if (next < tiles) {
+      t = next++;
+      ++outstanding[w];
+    } else {
+      stop_sent[w] = true;
+    }
+    sends.push_back(p.isend(links[w], std::as_bytes(std::span(&t, 1))));
+  };
+  for (int w = 1; w < n; ++w)
+    for (int k = 0; k < 2 && !stop_sent[w]; ++k) assign(w);
+  std::vector<parix::Request> recvs(n);
+  for (int w = 1; w < n; ++w)
+    if (outstanding[w] > 0) recvs[w] = p.irecv(links[w]);
+  for (;;) {
+    std::vector<parix::Request*> waiting;
+    std::vector<int> who;
+    for (int w = 1; w < n; ++w)
+      if (outstanding[w] > 0) {
+        waiting.push_back(&recvs[w]);
+        who.push_back(w);
+      }
+    if (waiting.empty()) break;
+    const int w = who[p.wait_any(waiting)];
+    parix::Bytes result = recvs[w].take();
+    --outstanding[w];
+    work.assemble(p, result);
+    if (!stop_sent[w]) assign(w);
+    if (outstanding[w] > 0) recvs[w] = p.irecv(links[w]);
+  }
+  for (int w = 1; w < n; ++w)
+    if (!stop_sent[w]) assign(w);
+  for (auto& s : sends) p.wait(s);
+  local.join();
+}
+
+}  // namespace
+
+ParallelRender render_parallel(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Distribution distribution,
+                               const parix::SimulationOptions& options) {
+  ParallelRender out;
+  const int nodes = options.nodes > 0 ? options.nodes : options.config.nodes;
+  out.image = apps::Image(settings.width, settings.height);
+  out.prim_ids.assign(std::size_t(settings.width) * settings.height, -1);
+  out.per_node.assign(nodes, TraceCounters{});
+  out.tiles_per_node.assign(nodes, 0);
+  NodeWork work{scene, bvh, settings, Tiling{settings.width, settings.height, settings.tile}, out, {}};
+  work.renderers.reserve(nodes);
+  for (int i = 0; i < nodes; ++i) work.renderers.emplace_back(scene, bvh, settings);
+  // What each node holds: the scene and the tree.
+  const std::int64_t scene_bytes = std::int64_t(scene.spheres.size()) * sizeof(Sphere) +
+                                   std::int64_t(scene.triangles.size()) * sizeof(Triangle) +
+                                   std::int64_t(bvh.nodes.size()) * sizeof(BvhNode) +
+                                   std::int64_t(bvh.prim_bounds.size()) * sizeof(Bounds3);
+  out.run = parix::run_simulated(options, [&](parix::Processor& p) {
+    p.use_memory(scene_bytes);
+    if (p.id() == 0) p.use_memory(std::int64_t(settings.width) * settings.height * sizeof(glm::vec3));
+    if (distribution == Distribution::dynamic) run_dynamic(p, work);
+    else run_static(p, work, distribution);
+  });
+  for (const auto& c : out.per_node) out.counters += c;
+  return out;
+}
+
+}  // namespace gcsim::raytrace
