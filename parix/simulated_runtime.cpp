@@ -38,6 +38,7 @@ struct Message {
   bool synchronous = false;
   std::int64_t id = 0;
   std::int64_t link_seq = 0;  // position on its link: a link delivers in sending order
+  std::int64_t dst_end = -1;  // the link end it goes to
   int src = -1;
   machine::SimTime sent = 0;
 };
@@ -144,7 +145,23 @@ class Simulation {
     return static_cast<std::int64_t>(links.size()) - 1;
   }
 
-  void deliver(std::int64_t end, Message&& m);
+  void deliver(Message&& m);
+  // Messages in the network wait in a slab, so callbacks can refer to them by index.
+  std::int64_t park(Message&& m) {
+    if (free_slots.empty()) {
+      in_flight.push_back(std::move(m));
+      return static_cast<std::int64_t>(in_flight.size()) - 1;
+    }
+    const std::int64_t slot = free_slots.back();
+    free_slots.pop_back();
+    in_flight[slot] = std::move(m);
+    return slot;
+  }
+  Message unpark(std::int64_t slot) {
+    Message m = std::move(in_flight[slot]);
+    free_slots.push_back(slot);
+    return m;
+  }
   void accept(LinkEnd& e, Message&& m);
   void complete(const std::shared_ptr<RequestState>& r) {
     r->done = true;
@@ -167,6 +184,8 @@ class Simulation {
   std::deque<machine::Node> nodes;
   std::vector<ProcessorStats> stats;
   std::deque<LinkEnd> links;
+  std::vector<Message> in_flight;
+  std::vector<std::int64_t> free_slots;
   std::vector<std::unique_ptr<SimProcess>> processes;
   std::vector<boost::fibers::fiber> fibers;
   // Connections waiting for their other end: (from, to, tag) -> the waiting ends, in call order.
@@ -336,15 +355,17 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   auto& s = sim_.stats[id_];
   ++s.messages_sent;
   s.bytes_sent += static_cast<std::int64_t>(data.size());
-  const std::int64_t dst_end = e.peer_end;
-  auto holder = std::make_shared<Message>(std::move(m));
+  m.dst_end = e.peer_end;
+  // The arrival callback captures only (simulation, slot): small enough for std::function to
+  // store inline, which keeps the per-message cost free of extra allocations.
+  const std::int64_t slot = sim_.park(std::move(m));
   sim_.network->transfer(id_, e.peer, static_cast<std::int64_t>(data.size()),
-                         [sim = &sim_, dst_end, holder] { sim->deliver(dst_end, std::move(*holder)); });
+                         [sim = &sim_, slot] { sim->deliver(sim->unpark(slot)); });
   return Request(req);
 }
 
-void Simulation::deliver(std::int64_t end, Message&& m) {
-  LinkEnd& e = links[end];
+void Simulation::deliver(Message&& m) {
+  LinkEnd& e = links[m.dst_end];
   if (m.link_seq != e.delivered) {
     // A shorter message overtook a longer one in the network; the link keeps sending order.
     e.early.emplace(m.link_seq, std::move(m));
