@@ -49,9 +49,13 @@ void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohma
   fmt::print("simulated {:12.6f} s   (compute {:.6f} s, communication {:.6f} s mean per processor)\n",
              r.simulated_seconds(), r.mean_compute_seconds(), r.mean_comm_seconds());
   fmt::print("wall      {:12.6f} s   ({} events, {} messages)\n", r.wall_seconds, r.events, r.total_messages());
-  if (!o.trace.empty()) fmt::print("trace     {} (and .csv)\n", o.trace);
+  if (!o.trace.empty()) fmt::print("trace     {} (and .csv, .paje beside it)\n", o.trace);
   if (!o.json.empty()) {
     nlohmann::json j = r.to_json();
+    if (!o.trace.empty()) {
+      j["trace"] = o.trace;  // lets `gcsim report RUN.json` find the trace to plot
+      j["trace_level"] = o.trace_level;
+    }
     j.update(extra);
     write_json_file(o.json, j);
     fmt::print("json      {}\n", o.json);

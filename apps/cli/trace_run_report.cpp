@@ -1,0 +1,209 @@
+#include "apps/cli/trace_run_report.hpp"
+
+#include <filesystem>
+#include <set>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "apps/cli/trace_plot_runner.hpp"
+
+namespace gcsim::cli {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+constexpr const char* kPlots[][2] = {
+    {"gantt.png", "Timeline of every processor: compute, send, receive, wait and connection, with message arrows"},
+    {"utilization.png", "Share of processor time in each activity over time"},
+    {"mesh_heatmap.png", "The physical mesh: bytes carried and busy fraction of each channel"},
+    {"message_matrix.png", "Bytes sent from each processor to each other processor"},
+};
+
+std::string escape(std::string_view s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string show(const json& v) {
+  if (v.is_string()) return escape(v.get<std::string>());
+  if (v.is_number_float()) return fmt::format("{:.6g}", v.get<double>());
+  return escape(v.dump());
+}
+
+json read_run_json(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read run JSON '" + path + "' (expected the file written by --json)");
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw std::runtime_error(fmt::format("{}: not JSON ({}); expected the file written by --json", path, e.what()));
+  }
+  if (!j.is_object() || !j.contains("simulated") || !j["simulated"].is_object() || !j.contains("wall")) {
+    throw std::runtime_error(path + ": not a gcsim run JSON (expected the keys \"simulated\" and \"wall\" that --json writes)");
+  }
+  return j;
+}
+
+// A path named inside the JSON is taken relative to the JSON's folder, else to the current one.
+fs::path resolve_named(const std::string& named, const std::string& json_path) {
+  const fs::path p(named);
+  if (p.is_absolute()) return p;
+  const fs::path beside = fs::path(json_path).parent_path() / p;
+  if (fs::exists(beside)) return beside;
+  return p;
+}
+
+double number_at(const json& j, const char* a, const char* b) {
+  if (j.contains(a) && j[a].is_object() && j[a].contains(b) && j[a][b].is_number()) return j[a][b].get<double>();
+  return -1;
+}
+
+void table_row(std::ostringstream& h, std::string_view name, const std::string& a, const std::string& b = {}) {
+  h << "<tr><th>" << escape(name) << "</th><td>" << a << "</td>";
+  if (!b.empty()) h << "<td>" << b << "</td>";
+  h << "</tr>\n";
+}
+
+std::string seconds(double s) { return s < 0 ? "&ndash;" : fmt::format("{:.6f} s", s); }
+
+}  // namespace
+
+std::string write_run_report(const ReportOptions& o) {
+  const json j = read_run_json(o.run_json);
+  if (!o.trace.empty() && !fs::exists(o.trace) && !fs::exists(fs::path(o.trace).replace_extension(".csv"))) {
+    throw std::runtime_error("--trace " + o.trace + ": no such file (expected FILE.json written by --trace, with FILE.csv beside it)");
+  }
+  std::error_code ec;
+  fs::create_directories(o.out_dir, ec);
+  if (ec) throw std::runtime_error("--out " + o.out_dir + ": cannot create the directory: " + ec.message());
+
+  std::ostringstream h;
+  std::string heading = "gcsim run";
+  for (const char* k : {"experiment", "app", "algo", "scene"}) {
+    if (j.contains(k) && j[k].is_string()) heading += " &middot; " + escape(j[k].get<std::string>());
+  }
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << heading << "</title>\n"
+    << "<style>body{font-family:sans-serif;max-width:1200px;margin:2em auto;padding:0 1em;color:#222}"
+       "table{border-collapse:collapse;margin:0.5em 0 1.5em}th,td{border:1px solid #ccc;padding:3px 10px;text-align:left}"
+       "td{font-variant-numeric:tabular-nums}th{background:#f4f4f4}img{max-width:100%;border:1px solid #ddd}"
+       "figure{margin:1em 0 2em}figcaption{color:#555;font-size:0.9em}.note{color:#a33}</style></head><body>\n";
+  h << "<h1>" << heading << "</h1>\n<p>Report of <code>" << escape(o.run_json) << "</code>.</p>\n";
+
+  h << "<h2>Configuration</h2>\n<table>\n";
+  static const std::set<std::string> kShownElsewhere{"simulated", "wall", "processors", "ops", "events", "messages"};
+  for (const auto& [k, v] : j.items()) {
+    if (kShownElsewhere.count(k)) continue;
+    if (v.is_object()) {
+      for (const auto& [k2, v2] : v.items()) {
+        if (!v2.is_structured()) table_row(h, k + "." + k2, show(v2));
+      }
+    } else if (!v.is_array()) {
+      table_row(h, k, show(v));
+    }
+  }
+  h << "</table>\n";
+
+  const double sim_total = number_at(j, "simulated", "total_s");
+  const double wall_total = number_at(j, "wall", "total_s");
+  h << "<h2>Simulated time next to wall-clock time</h2>\n<table>\n"
+    << "<tr><th></th><th>simulated GC-PowerPlus</th><th>host wall clock</th></tr>\n";
+  table_row(h, "total", seconds(sim_total), seconds(wall_total));
+  table_row(h, "computation (mean per processor)", seconds(number_at(j, "simulated", "compute_s")), "&ndash;");
+  table_row(h, "communication (mean per processor)", seconds(number_at(j, "simulated", "comm_s")), "&ndash;");
+  table_row(h, "communication (busiest processor)", seconds(number_at(j, "simulated", "comm_max_s")), "&ndash;");
+  if (sim_total > 0 && wall_total > 0) {
+    table_row(h, "simulated seconds per wall second", fmt::format("{:.4g}", sim_total / wall_total), "");
+  }
+  if (j.contains("events")) table_row(h, "discrete events", show(j["events"]), "");
+  if (j.contains("messages")) table_row(h, "messages", show(j["messages"]), "");
+  h << "</table>\n";
+
+  if (j.contains("ops") && j["ops"].is_object() && !j["ops"].empty()) {
+    h << "<h2>Counted operations</h2>\n<table>\n";
+    for (const auto& [k, v] : j["ops"].items()) table_row(h, k, show(v));
+    h << "</table>\n";
+  }
+
+  if (j.contains("processors") && j["processors"].is_array() && !j["processors"].empty()) {
+    const auto& ps = j["processors"];
+    h << "<details" << (ps.size() <= 16 ? " open" : "") << "><summary><b>Processors</b> (" << ps.size()
+      << ")</summary>\n<table>\n<tr><th>id</th><th>finish (s)</th><th>compute (s)</th><th>comm (s)</th>"
+         "<th>connect (s)</th><th>messages sent</th><th>bytes sent</th><th>connections</th></tr>\n";
+    for (const auto& p : ps) {
+      h << "<tr>";
+      for (const char* k : {"id", "finish_s", "compute_s", "comm_s", "connect_s", "messages_sent", "bytes_sent", "connections"}) {
+        h << "<td>" << (p.contains(k) ? show(p[k]) : "") << "</td>";
+      }
+      h << "</tr>\n";
+    }
+    h << "</table></details>\n";
+  }
+
+  if (j.contains("image") && j["image"].is_string()) {
+    const fs::path image = resolve_named(j["image"].get<std::string>(), o.run_json);
+    h << "<h2>Image</h2>\n";
+    if (fs::exists(image)) {
+      const fs::path copy = fs::path(o.out_dir) / image.filename();
+      fs::copy_file(image, copy, fs::copy_options::overwrite_existing, ec);
+      const std::string ext = image.extension().string();
+      if (ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".gif" || ext == ".svg") {
+        h << "<figure><img src=\"" << escape(image.filename().string()) << "\" alt=\"rendered image\"><figcaption>"
+          << escape(image.string()) << "</figcaption></figure>\n";
+      } else {
+        h << "<p><a href=\"" << escape(image.filename().string()) << "\">" << escape(image.string()) << "</a></p>\n";
+      }
+    } else {
+      h << "<p class=\"note\">The run names the image " << escape(image.string()) << ", which does not exist.</p>\n";
+    }
+  }
+
+  std::string trace = o.trace;
+  if (trace.empty() && j.contains("trace") && j["trace"].is_string()) {
+    trace = resolve_named(j["trace"].get<std::string>(), o.run_json).string();
+  }
+  h << "<h2>Communication trace</h2>\n";
+  if (trace.empty()) {
+    h << "<p>No trace: rerun with <code>--trace FILE.json</code> (and <code>--json</code>), or give "
+         "<code>gcsim report --trace FILE.json</code>.</p>\n";
+  } else {
+    const std::string plots = (fs::path(o.out_dir) / "plots").string();
+    const int status = run_plot_script({trace, "--out", plots});
+    if (status != 0) {
+      h << "<p class=\"note\">The plots of " << escape(trace) << " could not be drawn (gcsim plot exited with "
+        << status << "; its message is on the terminal).</p>\n";
+    } else {
+      h << "<p>Trace <code>" << escape(trace) << "</code> (open the .json in Perfetto or chrome://tracing, the "
+           ".paje in ViTE).</p>\n";
+      for (const auto& [file, caption] : kPlots) {
+        h << "<figure><img src=\"plots/" << file << "\" alt=\"" << caption << "\"><figcaption>" << caption
+          << "</figcaption></figure>\n";
+      }
+    }
+  }
+  h << "<hr><p><small>Written by <code>gcsim report</code>. Simulated times are the modelled machine's; wall "
+       "times are the host's.</small></p>\n</body></html>\n";
+
+  const std::string index = (fs::path(o.out_dir) / "index.html").string();
+  std::ofstream out(index);
+  if (!out) throw std::runtime_error("cannot write " + index);
+  out << h.str();
+  return index;
+}
+
+}  // namespace gcsim::cli

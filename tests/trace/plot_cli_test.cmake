@@ -1,0 +1,103 @@
+# Runs gcsim plot and gcsim report on small runs; fails with a message naming what went wrong.
+# Invoked by CTest as: cmake -DGCSIM=path/to/gcsim -DWORK=scratch/dir -P plot_cli_test.cmake
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+
+function(gcsim expect_status)
+  execute_process(COMMAND ${GCSIM} ${ARGN} WORKING_DIRECTORY ${WORK}
+                  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL expect_status)
+    message(FATAL_ERROR "gcsim ${ARGN}: exit status ${status}, expected ${expect_status}\n${out}\n${err}")
+  endif()
+  if(err MATCHES "Traceback")
+    message(FATAL_ERROR "gcsim ${ARGN} printed a Python traceback:\n${err}")
+  endif()
+  set(last_out "${out}" PARENT_SCOPE)
+  set(last_err "${err}" PARENT_SCOPE)
+endfunction()
+
+function(expect_error_mentions)
+  foreach(word ${ARGN})
+    string(FIND "${last_err}" "${word}" at)
+    if(at EQUAL -1)
+      message(FATAL_ERROR "expected the error to mention '${word}', got:\n${last_err}")
+    endif()
+  endforeach()
+endfunction()
+
+function(expect_png path)
+  if(NOT EXISTS ${path})
+    message(FATAL_ERROR "${path} was not written")
+  endif()
+  file(READ ${path} signature LIMIT 8 HEX)
+  if(NOT signature STREQUAL "89504e470d0a1a0a")
+    message(FATAL_ERROR "${path} is not a PNG (starts with ${signature})")
+  endif()
+  file(SIZE ${path} size)
+  if(size LESS 10000)
+    message(FATAL_ERROR "${path} is suspiciously small (${size} bytes)")
+  endif()
+endfunction()
+
+# A traced run and its four plots.
+gcsim(0 bcast --nodes 16 --size 4096 --algo tree --trace t.json --json run.json)
+gcsim(0 plot t.json --out plots)
+foreach(png gantt mesh_heatmap message_matrix utilization)
+  expect_png(${WORK}/plots/${png}.png)
+endforeach()
+
+# A window and a subset of processors; the CSV names the trace as well as the JSON.
+gcsim(0 plot t.csv --out zoom --from-ms 1 --to-ms 8 --procs 0-7,12)
+expect_png(${WORK}/zoom/gantt.png)
+
+# A trace without link records (level messages): the heat map routes the messages instead.
+gcsim(0 bcast --nodes 8 --size 1024 --algo sequential --trace m.json --trace-level messages)
+gcsim(0 plot m.json --out messages --only mesh_heatmap)
+expect_png(${WORK}/messages/mesh_heatmap.png)
+
+# The HTML report finds the trace through the run JSON.
+gcsim(0 report run.json --out report)
+expect_png(${WORK}/report/plots/gantt.png)
+file(READ ${WORK}/report/index.html html)
+foreach(word "Simulated time next to wall-clock time" "plots/gantt.png" "plots/mesh_heatmap.png")
+  string(FIND "${html}" "${word}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "report/index.html does not contain '${word}'")
+  endif()
+endforeach()
+
+# A sweep that reproduces thesis table 4.3 (CORNELL, sequential broadcast) gets the thesis overlay.
+file(WRITE ${WORK}/sweep.csv
+"scene,broadcast,nodes,simulated_s,speedup,comm_s,wall_s\n"
+"CORNELL,sequential,1,280,1.0,0,10\n"
+"CORNELL,sequential,2,230,1.22,20,6\n"
+"CORNELL,sequential,4,190,1.47,38,4\n"
+"CORNELL,sequential,8,150,1.87,65,3\n")
+gcsim(0 plot --sweep sweep.csv --out sweeps)
+expect_png(${WORK}/sweeps/sweep_sweep.png)
+string(FIND "${last_out}" "wrote" at)
+
+# Bad input: one line naming the file and what was expected, exit status 2, no traceback.
+gcsim(2 plot missing.json --out bad)
+expect_error_mentions("missing" "does not exist")
+file(WRITE ${WORK}/notatrace.csv "hello,world\n1,2\n")
+gcsim(2 plot notatrace.csv --out bad)
+expect_error_mentions("notatrace.csv" "not a gcsim trace CSV")
+gcsim(0 bcast --nodes 4 --size 1024 --trace empty.json --trace-level summary)
+gcsim(2 plot empty.json --out bad)
+expect_error_mentions("empty.csv" "no records" "--trace-level")
+gcsim(2 plot t.json --out bad --procs 0-99)
+expect_error_mentions("--procs" "0-15")
+gcsim(2 plot t.json --out bad --procs seven)
+expect_error_mentions("--procs" "0-7,12")
+gcsim(2 plot t.json --out bad --from-ms 500 --to-ms 600)
+expect_error_mentions("no records in that window" "spans")
+file(WRITE ${WORK}/nocomm.csv "nodes,simulated_s\n1,2\n")
+gcsim(2 plot --sweep nocomm.csv --out bad)
+expect_error_mentions("nocomm.csv" "missing column comm_s")
+gcsim(1 report missing_run.json --out bad)
+expect_error_mentions("missing_run.json")
+file(WRITE ${WORK}/notrun.json "{\"hello\": 1}")
+gcsim(1 report notrun.json --out bad)
+expect_error_mentions("notrun.json" "not a gcsim run JSON")
+message(STATUS "gcsim plot and gcsim report: all checks passed")
