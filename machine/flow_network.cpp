@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <set>
 
 namespace gcsim::machine {
 
@@ -14,6 +15,7 @@ void FlowNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action 
     ctx_.kernel.after(lat, std::move(on_arrival));
     return;
   }
+  if (on_channel_.empty()) on_channel_.resize(ctx_.mesh.channel_count());
   const std::uint64_t id = next_id_++;
   Flow f;
   f.route = ctx_.mesh.route(src, dst);
@@ -24,51 +26,58 @@ void FlowNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action 
   ctx_.kernel.after(lat, [this, id] { start_flow(id); });
 }
 
-void FlowNetwork::advance_to_now() {
-  const SimTime now = ctx_.kernel.now();
-  const double dt = to_seconds(now - last_update_);
-  if (dt > 0) {
-    for (auto& [id, f] : flows_) {
-      if (f.transmitting) f.remaining = std::max(0.0, f.remaining - f.rate * dt);
-    }
-  }
-  last_update_ = now;
-}
-
 void FlowNetwork::start_flow(std::uint64_t id) {
-  advance_to_now();
   Flow& f = flows_.at(id);
-  f.started = ctx_.kernel.now();
+  f.started = f.updated = ctx_.kernel.now();
   f.transmitting = true;
-  reshare();
+  for (int ch : f.route) on_channel_[ch].push_back(id);
+  reshare(f.route);
 }
 
 void FlowNetwork::finish_flow(std::uint64_t id, std::uint64_t version) {
   auto it = flows_.find(id);
   if (it == flows_.end() || it->second.version != version) return;  // rescheduled since
-  advance_to_now();
   Flow f = std::move(it->second);
   flows_.erase(it);
+  for (int ch : f.route) {
+    auto& v = on_channel_[ch];
+    v.erase(std::find(v.begin(), v.end(), id));
+  }
   account(f.route, f.bytes, f.started, ctx_.kernel.now());
-  reshare();
+  reshare(f.route);
   f.on_arrival();
 }
 
-// Max-min fair rates by progressive filling: repeatedly saturate the channel that offers the
-// smallest equal share to the flows still unassigned, and fix those flows at that share.
-void FlowNetwork::reshare() {
-  const double capacity = ctx_.config.channel_bandwidth();
-  std::map<int, double> left;     // channel -> bandwidth not yet assigned
-  std::map<int, int> unassigned;  // channel -> transmitting flows without a rate yet
-  std::vector<Flow*> todo;
-  for (auto& [id, f] : flows_) {
-    if (!f.transmitting) continue;
-    todo.push_back(&f);
-    for (int ch : f.route) {
-      left.try_emplace(ch, capacity);
-      ++unassigned[ch];
+void FlowNetwork::reshare(const std::vector<int>& seed) {
+  // The component of flows linked through shared channels; no other flow's rate can change.
+  std::set<std::uint64_t> component;
+  std::set<int> channels;
+  std::vector<int> frontier(seed.begin(), seed.end());
+  while (!frontier.empty()) {
+    const int ch = frontier.back();
+    frontier.pop_back();
+    if (!channels.insert(ch).second) continue;
+    for (std::uint64_t id : on_channel_[ch]) {
+      if (component.insert(id).second) {
+        for (int c : flows_.at(id).route) {
+          if (!channels.count(c)) frontier.push_back(c);
+        }
+      }
     }
   }
+  if (component.empty()) return;
+
+  // Max-min fair rates by progressive filling: repeatedly saturate the channel that offers the
+  // smallest equal share to the flows still unassigned, and fix those flows at that share.
+  const double capacity = ctx_.config.channel_bandwidth();
+  std::map<int, double> left;
+  std::map<int, int> unassigned;
+  for (int ch : channels) {
+    left[ch] = capacity;
+    unassigned[ch] = static_cast<int>(on_channel_[ch].size());
+  }
+  std::map<std::uint64_t, double> rate;
+  std::vector<std::uint64_t> todo(component.begin(), component.end());
   while (!todo.empty()) {
     int bottleneck = -1;
     double share = std::numeric_limits<double>::infinity();
@@ -78,23 +87,29 @@ void FlowNetwork::reshare() {
         bottleneck = ch;
       }
     }
-    std::vector<Flow*> rest;
-    for (Flow* f : todo) {
-      if (std::find(f->route.begin(), f->route.end(), bottleneck) == f->route.end()) {
-        rest.push_back(f);
+    std::vector<std::uint64_t> rest;
+    for (std::uint64_t id : todo) {
+      const Flow& f = flows_.at(id);
+      if (std::find(f.route.begin(), f.route.end(), bottleneck) == f.route.end()) {
+        rest.push_back(id);
         continue;
       }
-      f->rate = share;
-      for (int ch : f->route) {
+      rate[id] = share;
+      for (int ch : f.route) {
         left[ch] -= share;
         --unassigned[ch];
       }
     }
     todo.swap(rest);
   }
+
   const SimTime now = ctx_.kernel.now();
-  for (auto& [id, f] : flows_) {
-    if (!f.transmitting) continue;
+  for (auto [id, r] : rate) {
+    Flow& f = flows_.at(id);
+    if (f.version != 0 && r == f.rate) continue;  // unchanged: its completion event still holds
+    f.remaining = std::max(0.0, f.remaining - f.rate * to_seconds(now - f.updated));
+    f.updated = now;
+    f.rate = r;
     ++f.version;
     // Same expression as NetworkModel::serialization, so a lone flow matches the analytic model.
     const SimTime eta = now + from_seconds(f.remaining / f.rate);

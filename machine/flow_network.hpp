@@ -1,8 +1,9 @@
 #pragma once
 // Flow-level network: after its latency, a message becomes a flow whose rate is the max-min fair
 // share of the channels on its route (progressive filling). Rates change only when a flow starts
-// or ends; then remaining bytes are advanced and completion events rescheduled (stale ones are
-// recognised by a version number and ignored).
+// or ends, and only for the flows connected to it through shared channels; those have their
+// remaining bytes advanced and, if their rate changed, their completion rescheduled (stale
+// completion events are recognised by a version number and ignored).
 #include <cstdint>
 #include <map>
 #include <vector>
@@ -22,22 +23,24 @@ class FlowNetwork final : public NetworkModel {
  private:
   struct Flow {
     std::vector<int> route;
-    std::int64_t bytes;
-    double remaining;           // bytes still to send
+    std::int64_t bytes = 0;
+    double remaining = 0;       // bytes still to send, as of `updated`
     double rate = 0;            // bytes per second while transmitting
     bool transmitting = false;  // past its latency phase
     SimTime started = 0;
+    SimTime updated = 0;
     std::uint64_t version = 0;
     Kernel::Action on_arrival;
   };
   void start_flow(std::uint64_t id);
   void finish_flow(std::uint64_t id, std::uint64_t version);
-  void advance_to_now();
-  void reshare();
+  // Recomputes the rates of the transmitting flows that share a channel, directly or through
+  // other flows, with any channel in `channels`.
+  void reshare(const std::vector<int>& channels);
 
-  std::map<std::uint64_t, Flow> flows_;  // ordered by id: deterministic iteration
+  std::map<std::uint64_t, Flow> flows_;                  // ordered by id: deterministic iteration
+  std::vector<std::vector<std::uint64_t>> on_channel_;  // transmitting flows per channel
   std::uint64_t next_id_ = 0;
-  SimTime last_update_ = 0;
 };
 
 }  // namespace gcsim::machine
