@@ -238,7 +238,7 @@ World cornell_world() {
   {
     // The light hangs 0.1 mm below the ceiling; its housing (upper side) is black.
     EntityBuilder b("light");
-    int emitter = b.surface({0.78, 0.78, 0.78}, {17.0, 12.0, 4.0});
+    int emitter = b.surface({0.78, 0.78, 0.78}, {18.4, 15.6, 8.0});
     int housing = b.surface({0.0, 0.0, 0.0});
     int v0 = b.add_vertex({343, 548.7, 227}), v1 = b.add_vertex({343, 548.7, 332});
     int v2 = b.add_vertex({213, 548.7, 332}), v3 = b.add_vertex({213, 548.7, 227});

@@ -11,6 +11,8 @@ namespace gcsim::radiosity {
 
 namespace {
 
+constexpr double kSubpixel = 256;  // projected vertices live on a grid of 1/256 pixel
+
 std::vector<HemicubeCell> make_cells(const HemicubeOptions& o) {
   if (o.hierarchical_levels < 0 || o.hierarchical_levels > 8)
     throw std::invalid_argument("hierarchical levels must be in [0, 8]");
@@ -93,24 +95,31 @@ void HemicubeRenderer::project(int shooter, OpCounts& ops) {
       Projected p;
       p.element = e;
       p.front = front;
-      p.count = n;
       p.plane_n = to_face(face, nl);
       p.plane_k = k;
-      double area2 = 0;
-      double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+      // Vertices snap to 1/256 of a pixel and edge functions are then exact: ties on shared edges are
+      // settled by one rule, and rounding noise (scene scale, clipping) cannot flip a pixel.
+      int m = 0;
       for (int i = 0; i < n; ++i) {
         double x = (buf1[i].x / buf1[i].z + 1) * r / 2;
         double y = face == kTopFace ? (buf1[i].y / buf1[i].z + 1) * r / 2 : buf1[i].y / buf1[i].z * r / 2;
-        p.p[i] = {x, y};
-        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+        std::array<double, 2> q{std::round(x * kSubpixel), std::round(y * kSubpixel)};
+        if (m > 0 && q == p.p[m - 1]) continue;
+        p.p[m++] = q;
       }
-      for (int i = 0; i < n; ++i) {
+      while (m > 1 && p.p[m - 1] == p.p[0]) --m;
+      if (m < 3) continue;
+      p.count = m;
+      double area2 = 0, x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+      for (int i = 0; i < m; ++i) {
         const auto& a = p.p[i];
-        const auto& b = p.p[(i + 1) % n];
+        const auto& b = p.p[(i + 1) % m];
         area2 += a[0] * b[1] - a[1] * b[0];
+        x0 = std::min(x0, a[0]), x1 = std::max(x1, a[0]), y0 = std::min(y0, a[1]), y1 = std::max(y1, a[1]);
       }
-      if (std::abs(area2) < 1e-12) continue;  // degenerate after projection
+      if (area2 == 0) continue;  // degenerate after projection (seen edge-on)
       p.edge_sign = area2 > 0 ? 1.0 : -1.0;
+      x0 /= kSubpixel, x1 /= kSubpixel, y0 /= kSubpixel, y1 /= kSubpixel;
       // Pixels whose centres can be inside: centre i + 0.5 in [x0, x1].
       int h = dff_.height(face);
       p.bx0 = std::max(0, int(std::ceil(x0 - 0.5)));
@@ -124,11 +133,15 @@ void HemicubeRenderer::project(int shooter, OpCounts& ops) {
 }
 
 bool HemicubeRenderer::inside(const Projected& poly, double px, double py) const {
+  const double x = px * kSubpixel, y = py * kSubpixel;
   for (int i = 0; i < poly.count; ++i) {
     const auto& a = poly.p[i];
     const auto& b = poly.p[(i + 1) % poly.count];
-    double e = (b[0] - a[0]) * (py - a[1]) - (b[1] - a[1]) * (px - a[0]);
-    if (e * poly.edge_sign < 0) return false;
+    const double dx = (b[0] - a[0]) * poly.edge_sign, dy = (b[1] - a[1]) * poly.edge_sign;
+    const double e = dx * (y - a[1]) - dy * (x - a[0]);
+    if (e < 0) return false;
+    // On the edge: of two polygons sharing it (opposite directions), exactly one takes the pixel.
+    if (e == 0 && !(dy < 0 || (dy == 0 && dx > 0))) return false;
   }
   return true;
 }
