@@ -17,6 +17,7 @@
 #include "machine/network_model.hpp"
 #include "machine/node.hpp"
 #include "machine/trace.hpp"
+#include "parix/fiber_stack.hpp"
 
 namespace gcsim::parix {
 namespace {
@@ -118,7 +119,7 @@ class Simulation {
     ++runnable;
     ++live;
     fibers.emplace_back(boost::fibers::launch::post, std::allocator_arg,
-                        boost::fibers::protected_fixedsize_stack(kStackBytes), [this, p, body = std::move(body)] {
+                        FiberStack(kStackBytes), [this, p, body = std::move(body)] {
                           p->ctx = boost::fibers::context::active();
                           try {
                             body(*p);
