@@ -40,7 +40,8 @@ Scene sphere_grid(std::string name, float radius) {
   for (int z = 0; z < 8; ++z)
     for (int y = 0; y < 8; ++y)
       for (int x = 0; x < 8; ++x) s.add_sphere({glm::vec3(x, y, z), radius}, mats[(x + y + z) % 8]);
-  s.camera = frame_scene(s.bounds(), {1.0f, 0.75f, 1.35f}, {0, 1, 0}, 40.0f);
+  // Close enough that the grid fills the frame: every ray crosses the lattice.
+  s.camera = frame_scene(s.bounds(), {1.0f, 0.75f, 1.35f}, {0, 1, 0}, 40.0f, 0.72f);
   add_key_light(s);
   return s;
 }
@@ -150,8 +151,8 @@ CameraSpec frame_scene(const Bounds3& b, glm::vec3 direction, glm::vec3 up, floa
 
 Scene make_builtin_scene(std::string_view name) {
   Scene s;
-  if (name == "spheres-a") s = sphere_grid("spheres-a", 0.2f);
-  else if (name == "spheres-b") s = sphere_grid("spheres-b", 0.45f);
+  if (name == "spheres-a") s = sphere_grid("spheres-a", 0.4f);
+  else if (name == "spheres-b") s = sphere_grid("spheres-b", 0.12f);
   else if (name == "spheres-random") s = spheres_random();
   else if (name == "teapot") s = teapot_scene();
   else if (name == "teapots") s = teapots_scene();

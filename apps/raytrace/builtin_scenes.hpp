@@ -1,7 +1,8 @@
 #pragma once
 // The built-in scenes, deterministic (fixed seeds):
-//   spheres-a       512 spheres on an 8x8x8 grid, radius 0.2 of the spacing (the paper's photo 1)
-//   spheres-b       the same grid with radius 0.45 (photo 2)
+//   spheres-a       512 spheres on an 8x8x8 grid, radius 0.4 of the spacing (the paper's photo 1)
+//   spheres-b       the same grid with radius 0.12: mostly background between small spheres (photo 2;
+//                   its A2' subtrees of 0.66 BV tests per ray say most subregions see one sphere or none)
 //   spheres-random  512 spheres of random radius and position (photo 3)
 //   teapot          one Utah teapot, 552 triangles (photo 4)
 //   teapots         eight teapots, 4416 triangles (photo 5)
