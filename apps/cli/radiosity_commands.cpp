@@ -33,6 +33,7 @@ struct SolveFlags {
   std::string parallel = "hemicube-fixed";
   std::string bcast = "sequential";
   bool aggregate = false;
+  bool keep_links = false;
   int levels = 2;
   int cells = 8;
   int max_steps = 1000000;
@@ -64,8 +65,10 @@ void add_solve_options(CLI::App* cmd, SolveFlags& f) {
       ->check(CLI::IsMember({"sequential", "tree"}))
       ->capture_default_str();
   cmd->add_flag("--aggregate", f.aggregate,
-                "4.4.3: one larger exchange per loop (the replicas choose the shooters themselves) over links "
-                "kept open, instead of two exchanges that each open connections");
+                "4.4.3: one larger exchange per loop (the replicas choose the shooters themselves and every "
+                "shooter's form factors travel together) instead of K + 1 exchanges");
+  cmd->add_flag("--keep-links", f.keep_links,
+                "Open each link once and reuse it, instead of a connection for every message (as the thesis did)");
   cmd->add_option("--levels", f.levels, "hemicube-hierarchical: levels of subdivision below the coarse cells")
       ->check(CLI::Range(1, 6))
       ->capture_default_str();
@@ -86,6 +89,7 @@ rad::ParallelOptions parallel_options(const SolveFlags& f) {
   o.algorithm = rad::parse_parallel_algorithm(f.parallel);
   o.bcast = f.bcast == "tree" ? parix::BcastAlgo::tree : parix::BcastAlgo::sequential;
   o.aggregate = f.aggregate;
+  o.keep_links = f.keep_links;
   o.hierarchical_levels = f.levels;
   // Fail early, with the reason, on an impossible hemicube / partition combination.
   rad::HemicubeOptions check = o.solver.hemicube;
@@ -207,8 +211,9 @@ void add_run(CommandGroups& g) {
     auto c = scene.counts();
     fmt::print("scene     {}: {} instances, {} surfaces, {} patches, {} elements, {} vertices\n", scene.name,
                c.instances, c.surfaces, c.patches, c.elements, c.vertices);
-    fmt::print("solver    {} on {} nodes, bcast {}{}, hemicube {}, {} shooters per loop, energy {}\n",
-               rad::to_string(o.algorithm), sim.nodes, f->solve.bcast, o.aggregate ? " (aggregated)" : "",
+    fmt::print("solver    {} on {} nodes, bcast {}{}{}, hemicube {}, {} shooters per loop, energy {}\n",
+               rad::to_string(o.algorithm), sim.nodes, f->solve.bcast, o.aggregate ? ", aggregated" : "",
+               o.keep_links ? ", links kept" : "",
                o.solver.hemicube.resolution, o.solver.shooters, o.solver.energy);
     RunOutcome out = simulate(scene, o, sim);
     const auto& r = out.result;
@@ -225,6 +230,7 @@ void add_run(CommandGroups& g) {
                           {"parallel", rad::to_string(o.algorithm)},
                           {"bcast", f->solve.bcast},
                           {"aggregate", o.aggregate},
+                          {"keep_links", o.keep_links},
                           {"hemicube", o.solver.hemicube.resolution},
                           {"shooters", o.solver.shooters},
                           {"energy_threshold", o.solver.energy},
@@ -337,8 +343,9 @@ void add_sweep(CommandGroups& g) {
     rad::ParallelOptions o = parallel_options(f->solve);
     const bool tree = o.bcast == parix::BcastAlgo::tree;
     const rad::thesis::SceneFigures* fig = rad::thesis::figures_for(scene.name);
-    fmt::print("{}: {} / bcast {}{} / hemicube {} / K {} / energy {}\n", scene.name, rad::to_string(o.algorithm),
-               f->solve.bcast, o.aggregate ? " aggregated" : "", o.solver.hemicube.resolution, o.solver.shooters,
+    fmt::print("{}: {} / bcast {}{}{} / hemicube {} / K {} / energy {}\n", scene.name, rad::to_string(o.algorithm),
+               f->solve.bcast, o.aggregate ? " aggregated" : "", o.keep_links ? " links kept" : "",
+               o.solver.hemicube.resolution, o.solver.shooters,
                o.solver.energy);
     fmt::print("{:>5} {:>10} {:>8} {:>10} {:>9} {:>6} | {:>9} {:>8} {:>9}\n", "nodes", "sim_s", "speedup", "comm_s",
                "wall_s", "loops", "thesis_s", "thesis_x", "thesis_c");

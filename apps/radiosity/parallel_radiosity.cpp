@@ -94,7 +94,7 @@ void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOp
 
   parix::CollectiveOptions coll;
   coll.algo = o.bcast;
-  coll.connect_per_message = !o.aggregate;
+  coll.connect_per_message = !o.keep_links;
 
   ProgressiveState state(scene);
   OpCounts ops;
@@ -138,43 +138,55 @@ void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOp
     }
     if (shooters.empty()) break;
 
-    // 2. This node's share of the form factors.
-    Writer w;
-    for (std::size_t k = 0; k < shooters.size(); ++k) {
+    // 2. This node's share of the form factors, and 3. the all-node exchange. Unaggregated, as in
+    // the thesis, every shooter's delta form factors are exchanged on their own; aggregated, one
+    // exchange carries every shooter's.
+    std::vector<std::vector<CellFormFactors>> by_cell(shooters.size(), std::vector<CellFormFactors>(cells));
+    auto compute_share = [&](std::size_t k, Writer& w) {
       int s = shooters[k];
-      if (o.algorithm == ParallelAlgorithm::patch) {
-        if (s % n != id) continue;
-        renderer.project(s, ops);
-        for (int c = 0; c < cells; ++c) {
-          w.put<std::int32_t>(std::int32_t(k));
-          put_cell(w, renderer.cell_form_factors(c, ops));
-        }
-      } else {
-        renderer.project(s, ops);
-        for (int c = id; c < cells; c += n) {
-          w.put<std::int32_t>(std::int32_t(k));
-          put_cell(w, renderer.cell_form_factors(c, ops));
+      const bool patch_mode = o.algorithm == ParallelAlgorithm::patch;
+      if (patch_mode && s % n != id) return;
+      renderer.project(s, ops);
+      for (int c = patch_mode ? 0 : id; c < cells; c += patch_mode ? 1 : n) {
+        w.put<std::int32_t>(std::int32_t(k));
+        put_cell(w, renderer.cell_form_factors(c, ops));
+      }
+    };
+    auto absorb = [&](const std::vector<parix::Bytes>& all) {
+      for (const parix::Bytes& b : all) {
+        Reader r{b};
+        while (r.at < b.size()) {
+          int k = r.get<std::int32_t>();
+          CellFormFactors c = get_cell(r);
+          if (k < 0 || k >= int(shooters.size()) || c.cell < 0 || c.cell >= cells)
+            throw std::runtime_error("radiosity: malformed form factor message");
+          by_cell[k][c.cell] = std::move(c);
         }
       }
+    };
+    auto exchange = [&](Writer& w, int owner) {
+      exchanged += std::int64_t(w.bytes.size());
+      ops.charge(p);
+      if (owner >= 0) {
+        // Patch partition: the shooter's owner has the whole row; it broadcasts it.
+        absorb({parix::broadcast(p, owner, owner == id ? std::move(w.bytes) : parix::Bytes{}, coll)});
+      } else {
+        absorb(parix::allgather(p, w.bytes, coll));
+      }
+    };
+    if (o.aggregate) {
+      Writer w;
+      for (std::size_t k = 0; k < shooters.size(); ++k) compute_share(k, w);
+      exchange(w, -1);
+    } else {
+      for (std::size_t k = 0; k < shooters.size(); ++k) {
+        Writer w;
+        compute_share(k, w);
+        exchange(w, o.algorithm == ParallelAlgorithm::patch ? shooters[k] % n : -1);
+      }
     }
-    ops.charge(p);
-
-    // 3. All-node exchange of the delta form factor sums.
-    exchanged += std::int64_t(w.bytes.size());
-    std::vector<parix::Bytes> all = parix::allgather(p, w.bytes, coll);
 
     // 4. Every node assembles the rows, adding cells in the fixed cell order, and shoots.
-    std::vector<std::vector<CellFormFactors>> by_cell(shooters.size(), std::vector<CellFormFactors>(cells));
-    for (const parix::Bytes& b : all) {
-      Reader r{b};
-      while (r.at < b.size()) {
-        int k = r.get<std::int32_t>();
-        CellFormFactors c = get_cell(r);
-        if (k < 0 || k >= int(shooters.size()) || c.cell < 0 || c.cell >= cells)
-          throw std::runtime_error("radiosity: malformed form factor message");
-        by_cell[k][c.cell] = std::move(c);
-      }
-    }
     std::vector<std::vector<double>> rows(shooters.size(), std::vector<double>(ne, 0.0));
     for (std::size_t k = 0; k < shooters.size(); ++k)
       for (int c = 0; c < cells; ++c) {

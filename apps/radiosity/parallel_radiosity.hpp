@@ -10,8 +10,11 @@
 //                               into four, recursively).
 //   patch (4.2.2)               patches belong to nodes (p mod N); the owner of a shooter computes
 //                               its whole hemicube; the rows are exchanged. The conventional baseline.
-// --aggregate (4.4.3) drops the proposal exchange (every replica can select the shooters itself),
-// so each loop has one exchange of larger messages, and keeps the links open between loops.
+// Unaggregated, a loop has K + 1 all-node exchanges as in the thesis: the proposals, then each
+// shooter's delta form factors (for the patch partition: a broadcast from the shooter's owner).
+// --aggregate (4.4.3, unfinished in the thesis) makes it one exchange of larger messages: the
+// proposals are dropped (every replica can select the shooters itself) and all shooters' form
+// factors travel together. keep_links reuses one link per peer instead of a connection per message.
 // Form factors are summed cell by cell in the fixed cell order, so every node count gives radiosities
 // bit-identical to the sequential solver with the same K.
 #include <string>
@@ -32,6 +35,7 @@ struct ParallelOptions {
   ParallelAlgorithm algorithm = ParallelAlgorithm::hemicube_fixed;
   parix::BcastAlgo bcast = parix::BcastAlgo::sequential;
   bool aggregate = false;
+  bool keep_links = false;      // reuse links between exchanges instead of connecting per message
   int hierarchical_levels = 2;  // for hemicube-hierarchical
 };
 

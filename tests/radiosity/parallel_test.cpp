@@ -15,6 +15,7 @@ struct Variant {
   ParallelAlgorithm algorithm;
   parix::BcastAlgo bcast;
   bool aggregate;
+  bool keep_links = false;
 };
 
 ParallelOutcome run(const Scene& scene, const ParallelOptions& o, int nodes, parix::RunResult* result = nullptr) {
@@ -33,6 +34,8 @@ TEST(ParallelRadiosity, EveryVariantEqualsSequentialOnEveryNodeCount) {
       {ParallelAlgorithm::hemicube_fixed, parix::BcastAlgo::sequential, false},
       {ParallelAlgorithm::hemicube_fixed, parix::BcastAlgo::tree, false},
       {ParallelAlgorithm::hemicube_fixed, parix::BcastAlgo::tree, true},
+      {ParallelAlgorithm::hemicube_fixed, parix::BcastAlgo::sequential, true, true},
+      {ParallelAlgorithm::patch, parix::BcastAlgo::tree, true},
       {ParallelAlgorithm::hemicube_hierarchical, parix::BcastAlgo::sequential, false},
       {ParallelAlgorithm::patch, parix::BcastAlgo::sequential, false},
   };
@@ -46,6 +49,7 @@ TEST(ParallelRadiosity, EveryVariantEqualsSequentialOnEveryNodeCount) {
       o.algorithm = v.algorithm;
       o.bcast = v.bcast;
       o.aggregate = v.aggregate;
+      o.keep_links = v.keep_links;
       o.hierarchical_levels = 2;
       SolverOptions seq = o.solver;
       if (v.algorithm == ParallelAlgorithm::hemicube_hierarchical) seq.hemicube.hierarchical_levels = 2;
