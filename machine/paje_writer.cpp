@@ -134,7 +134,8 @@ void write_paje(const TraceCsv& trace, const std::string& path) {
   for (const StateValue& s : kStates) out.line("{} {} S \"{}\" \"{}\"", int(kDefineEntityValue), to_string(s.kind), to_string(s.kind), s.color);
   out.line("{} V C \"transfers\" \"0.216 0.494 0.722\"", int(kDefineVariableType));
   out.line("{} L M N N \"Message\"", int(kDefineLinkType));
-  out.line("{} msg L \"message\" \"0.0 0.0 0.0\"", int(kDefineEntityValue));
+  // The links' value "msg" is left undefined: ViTE rejects entity values of link types, and
+  // Paje readers (ViTE, pajeng) take an undefined link value as its own name.
 
   // Containers: every processor, and the channels the trace uses (link records exist at level full).
   std::set<int> channels;

@@ -87,8 +87,9 @@ def plot_trace(args, plt):
             "utilization": plot_utilization}
     for name in wanted:
         path = os.path.join(args.out, name + ".png")
+        began = time.monotonic()
         draw[name](plt, trace, window, title, path)
-        print(f"wrote {path}")
+        print(f"wrote {path} ({time.monotonic() - began:.2f} s)")
     print(f"plotted {len(trace)} records in {time.monotonic() - started:.2f} s "
           f"(reading the trace {loaded - started:.2f} s)")
 

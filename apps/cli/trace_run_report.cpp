@@ -128,10 +128,10 @@ std::string write_run_report(const ReportOptions& o) {
   table_row(h, "communication (mean per processor)", seconds(number_at(j, "simulated", "comm_s")), "&ndash;");
   table_row(h, "communication (busiest processor)", seconds(number_at(j, "simulated", "comm_max_s")), "&ndash;");
   if (sim_total > 0 && wall_total > 0) {
-    table_row(h, "simulated seconds per wall second", fmt::format("{:.4g}", sim_total / wall_total), "");
+    table_row(h, "simulated seconds per wall second", fmt::format("{:.4g}", sim_total / wall_total), "&nbsp;");
   }
-  if (j.contains("events")) table_row(h, "discrete events", show(j["events"]), "");
-  if (j.contains("messages")) table_row(h, "messages", show(j["messages"]), "");
+  if (j.contains("events")) table_row(h, "discrete events", show(j["events"]), "&nbsp;");
+  if (j.contains("messages")) table_row(h, "messages sent", show(j["messages"]), "&nbsp;");
   h << "</table>\n";
 
   if (j.contains("ops") && j["ops"].is_object() && !j["ops"].empty()) {
@@ -148,7 +148,8 @@ std::string write_run_report(const ReportOptions& o) {
     for (const auto& p : ps) {
       h << "<tr>";
       for (const char* k : {"id", "finish_s", "compute_s", "comm_s", "connect_s", "messages_sent", "bytes_sent", "connections"}) {
-        h << "<td>" << (p.contains(k) ? show(p[k]) : "") << "</td>";
+        const bool time = std::string_view(k).ends_with("_s") && p.contains(k) && p[k].is_number();
+        h << "<td>" << (time ? fmt::format("{:.6f}", p[k].get<double>()) : p.contains(k) ? show(p[k]) : "") << "</td>";
       }
       h << "</tr>\n";
     }

@@ -23,7 +23,7 @@ def row_labels(trace, procs):
 def plot_gantt(plt, trace, window, title, path):
     procs = window.procs
     n = len(procs)
-    height = min(14.0, max(3.2, 0.26 * n + 2.0))
+    height = min(12.0, max(3.4, 0.24 * n + 2.2))
     fig, ax = plt.subplots(figsize=(14, height), dpi=DPI)
     row_of = np.full(trace.processors, -1)
     row_of[procs] = np.arange(n)
@@ -72,7 +72,7 @@ def plot_gantt(plt, trace, window, title, path):
                         arrowprops=dict(arrowstyle="-|>", color=MESSAGE_COLOR, lw=0.7, alpha=0.75, shrinkA=0,
                                         shrinkB=0, mutation_scale=7))
     elif count:
-        mode += f"; {count} message arrows left out (more than {ARROWS_MAX}: narrow the window or --procs)"
+        mode += f"; {count} message arrows left out (over {ARROWS_MAX}: narrow --from-ms/--to-ms or --procs)"
 
     ax.set_xlim(window.t0, window.t1)
     ax.set_ylim(n - 0.5, -0.5)
@@ -82,8 +82,8 @@ def plot_gantt(plt, trace, window, title, path):
     ax.set_yticklabels([row_labels(trace, procs)[t] for t in ticks], fontsize=8 if n > 16 else 9)
     ax.set_xlabel("simulated time (ms)")
     ax.set_ylabel("processor (mesh x,y)")
-    ax.set_title(f"{title}\nprocessor timeline, {window.describe()}, {n} of {trace.processors} processors; {mode}",
-                 fontsize=11)
+    ax.set_title(f"{title}\nprocessor timeline, {window.describe()}, {n} of {trace.processors} processors\n{mode}",
+                 fontsize=10)
     ax.grid(axis="x", color="white", linewidth=0.6, alpha=0.8)
 
     handles = [Patch(facecolor=STATE_COLORS[k], label=STATE_LABELS[k]) for k in STATE_KINDS]

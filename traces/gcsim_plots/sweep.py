@@ -22,7 +22,7 @@ SYNONYMS = {
                     "simulated_total_s", "total_s"),
     "speedup": ("speedup", "speed_up", "simulated_speedup"),
     "comm_s": ("comm_s", "communication_s", "comm", "comm_time_s", "communication", "simulated_comm_s",
-               "communication_time_s"),
+               "communication_time_s", "comm_s_mean", "mean_comm_s"),
     "wall_s": ("wall_s", "wall", "wall_time_s", "wall_seconds", "wall_total_s", "host_s"),
     "thesis_s": ("thesis_s", "thesis_time_s", "paper_s", "thesis", "measured_s"),
     "thesis_speedup": ("thesis_speedup", "paper_speedup", "measured_speedup"),
@@ -93,6 +93,13 @@ def _is_number(v):
         return False
 
 
+def present(data, column, idx):
+    """The column's values for these rows, or None when the file lacks it or leaves it empty."""
+    if column not in data or np.isnan(data[column][idx]).all():
+        return None
+    return data[column][idx]
+
+
 def series(data):
     """One series per (scene, broadcast) found in the file, each sorted by node count."""
     n = len(data["nodes"])
@@ -116,11 +123,12 @@ def plot_sweep(plt, path, out_path, title=None):
         nodes = data["nodes"][idx]
         sim = data["simulated_s"][idx]
         comm = data["comm_s"][idx]
-        name = " ".join(v for v in (scene, broadcast) if v) or "gcsim"
-        label = f"gcsim simulated ({name})" if (scene or broadcast) else "gcsim simulated"
+        name = " ".join(v for v in (scene, broadcast) if v)
+        suffix = f" ({name})" if name else ""
+        label = f"gcsim simulated{suffix}"
         ax_time.plot(nodes, sim, "o-", color=color, label=label)
         if "wall_s" in data:
-            ax_time.plot(nodes, data["wall_s"][idx], "x:", color=color, alpha=0.7, label=f"host wall-clock ({name})")
+            ax_time.plot(nodes, data["wall_s"][idx], "x:", color=color, alpha=0.7, label=f"host wall-clock{suffix}")
         if "speedup" in data and not np.isnan(data["speedup"][idx]).all():
             speedup = data["speedup"][idx]
         else:
@@ -132,9 +140,11 @@ def plot_sweep(plt, path, out_path, title=None):
         thesis = None
         if "thesis_s" in data and not np.isnan(data["thesis_s"][idx]).all():
             t_time = data["thesis_s"][idx]
-            t_speedup = data["thesis_speedup"][idx] if "thesis_speedup" in data else t_time[0] / t_time
-            t_comm = data["thesis_comm_s"][idx] if "thesis_comm_s" in data else None
-            thesis = (f"thesis measured ({name})", nodes, t_time, t_speedup, t_comm)
+            t_speedup = present(data, "thesis_speedup", idx)
+            if t_speedup is None:
+                t_speedup = t_time[0] / t_time
+            t_comm = present(data, "thesis_comm_s", idx)
+            thesis = (f"thesis measured{suffix} (the file's thesis_* columns)", nodes, t_time, t_speedup, t_comm)
         else:
             curve = thesis_curve(scene, broadcast)
             if curve:
@@ -146,15 +156,17 @@ def plot_sweep(plt, path, out_path, title=None):
         if thesis:
             label_t, tn, t_time, t_speedup, t_comm = thesis
             overlays.append(label_t)
+            all_nodes = sorted(set(all_nodes) | set(float(n) for n in tn))
             ax_time.plot(tn, t_time, "s--", color=color, alpha=0.55, label=label_t)
             if t_speedup is not None:
                 ax_speedup.plot(tn, t_speedup, "s--", color=color, alpha=0.55, label=label_t)
             if t_comm is not None:
                 ax_comm.plot(tn, 100.0 * t_comm / t_time, "s--", color=color, alpha=0.55, label=label_t)
 
-    ideal = np.array(all_nodes) / all_nodes[0]
+    sweep_nodes = sorted(set(data["nodes"].tolist()))
+    ideal = np.array(sweep_nodes) / sweep_nodes[0]
     top = ax_speedup.get_ylim()[1]
-    ax_speedup.plot(all_nodes, ideal, color="#999999", linewidth=0.8, linestyle="-.", label="ideal (linear)")
+    ax_speedup.plot(sweep_nodes, ideal, color="#999999", linewidth=0.8, linestyle="-.", label="ideal (linear)")
     ax_speedup.set_ylim(0, max(top, 1.2))
     for ax in (ax_time, ax_speedup, ax_comm):
         ax.set_xscale("log", base=2)

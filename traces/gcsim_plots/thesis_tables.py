@@ -12,7 +12,7 @@ TABLES = {
                    "thesis_table_4_5_comm_time.csv"),
     "tree": ("thesis_table_4_8_time_vs_nodes_tree_broadcast.csv", None, None),
 }
-TABLE_NAMES = {"sequential": "table 4.3 (sequential broadcast)", "tree": "table 4.8 (tree broadcast)"}
+TABLE_NAMES = {"sequential": "tables 4.3-4.5 (sequential broadcast)", "tree": "table 4.8 (tree broadcast)"}
 SCENES = ("ROOM", "PICROOM", "CORNELL")
 
 
