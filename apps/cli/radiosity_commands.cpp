@@ -415,8 +415,9 @@ void add_accuracy(CommandGroups& g) {
       "1. Hemicube form factors against closed forms, per resolution: from the centre of a unit square\n"
       "   to the parallel unit square at distance 1 and to the perpendicular unit square sharing an edge,\n"
       "   and from a small patch to a disc (r = 1 at h = 1: F = r^2/(h^2 + r^2)). 'point' is one hemicube\n"
-      "   at the centre against the exact differential form factor; 'area' is the mean of 4 x 4\n"
-      "   hemicubes against the exact area-to-area form factor.\n"
+      "   at the centre against the exact differential form factor; 'area' is the mean of 8 x 8\n"
+      "   hemicubes against the exact area-to-area form factor (for the disc, polygon of 256 sides:\n"
+      "   point is exact for the polygon, area is the ideal disc).\n"
       "2. Radiosities of a scene after shooting a fraction of the energy, against the converged\n"
       "   Gauss-Seidel solution with the same form factors.\n"
       "Times are simulated seconds on one node of the machine (counted operations) and host wall seconds.");

@@ -43,18 +43,18 @@ std::vector<FormFactorAccuracy> form_factor_accuracy(const std::vector<int>& res
       HemicubeOptions ho;
       ho.resolution = res;
       ho.cells_per_side = 8;
+      FormFactorSetup one = form_factor_setup(c, 1.0, 1);
       {
-        FormFactorSetup one = form_factor_setup(c, 1.0, 1);
         HemicubeRenderer r(one.scene, ho);
         a.hemicube_point = row_sum(r.form_factor_row(0, ops), one.scene, one.receiver_patch);
         a.exact_point = one.exact_point;
       }
       if (c == FormFactorCase::patch_to_disc) {
-        a.hemicube_area = a.hemicube_point;
-        a.exact_area = a.exact_point;
+        a.hemicube_area = a.hemicube_point;  // the patch is small: its centre stands for it
+        a.exact_area = one.exact_area;
       } else {
-        // F(A1 -> A2) = 1/A1 * integral over A1 of F(dA1 -> A2): the mean over a 4 x 4 grid of hemicubes.
-        const int n = 4;
+        // F(A1 -> A2) = 1/A1 * integral over A1 of F(dA1 -> A2): the mean over an 8 x 8 grid of hemicubes.
+        const int n = 8;
         FormFactorSetup grid = form_factor_setup(c, 1.0, n);
         HemicubeRenderer r(grid.scene, ho);
         double sum = 0;

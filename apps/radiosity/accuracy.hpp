@@ -15,7 +15,7 @@ struct FormFactorAccuracy {
   FormFactorCase form_factor_case;
   int resolution;
   double hemicube_point, exact_point;  // from the centre of the source (one hemicube)
-  double hemicube_area, exact_area;    // area average over 4 x 4 hemicubes (squares only)
+  double hemicube_area, exact_area;    // squares: mean of 8 x 8 hemicubes, area to area; disc: the ideal disc
   double simulated_seconds, wall_seconds;
   double point_error() const { return std::abs(hemicube_point - exact_point) / exact_point; }
   double area_error() const { return std::abs(hemicube_area - exact_area) / exact_area; }

@@ -23,7 +23,7 @@ struct FormFactorSetup {
   Scene scene;
   int receiver_patch;          // index of the receiving patch
   double exact_point;          // closed form from the centre of patch 0
-  double exact_area;           // closed form area to area (the disc case: same as exact_point)
+  double exact_area;           // closed form area to area (the disc case: the ideal disc, r^2/(h^2+r^2))
 };
 FormFactorSetup form_factor_setup(FormFactorCase c, double scale = 1.0, int subdivisions = 1);
 const char* to_string(FormFactorCase c);

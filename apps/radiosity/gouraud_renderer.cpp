@@ -19,7 +19,8 @@ struct CameraVertex {
 apps::Image render_gouraud(const Scene& scene, const std::vector<Rgb>& b, const Camera& cam,
                            const RenderOptions& o) {
   const int W = o.width, H = o.height;
-  // Per element corner: area-weighted mean over coplanar elements sharing the vertex.
+  // Per element corner: area-weighted mean over the elements sharing the vertex that lie in the same
+  // plane and have the same surface (so box edges and the colour fields of a picture stay crisp).
   std::vector<std::vector<int>> users(scene.vertices.size());
   for (int e = 0; e < int(scene.elements.size()); ++e)
     for (int k = 0; k < scene.elements[e].count; ++k) users[scene.elements[e].vertex[k]].push_back(e);
@@ -27,7 +28,8 @@ apps::Image render_gouraud(const Scene& scene, const std::vector<Rgb>& b, const 
     Rgb sum(0.0);
     double area = 0;
     for (int u : users[v])
-      if (glm::dot(scene.elements[u].normal, scene.elements[e].normal) > 0.999) {
+      if (glm::dot(scene.elements[u].normal, scene.elements[e].normal) > 0.999 &&
+          scene.patches[scene.elements[u].patch].surface == scene.patches[scene.elements[e].patch].surface) {
         sum += b[u] * scene.elements[u].area;
         area += scene.elements[u].area;
       }
@@ -85,7 +87,7 @@ apps::Image render_gouraud(const Scene& scene, const std::vector<Rgb>& b, const 
       cv[k] = {{glm::dot(d, right), glm::dot(d, up), glm::dot(d, fwd)}, corner_value(e, el.vertex[k])};
     }
     bool emitter = channel_sum(scene.surface_of_element(e).exitance) > 0;
-    for (int tri = 0; tri + 2 < el.count + (el.count == 4 ? 0 : 0); ++tri) {
+    for (int tri = 0; tri + 2 < el.count; ++tri) {
       CameraVertex in[3] = {cv[0], cv[tri + 1], cv[tri + 2]};
       // Clip against the near plane (z >= near): a triangle becomes at most a quad.
       CameraVertex out[4];

@@ -1,7 +1,8 @@
 #pragma once
 // Displays a radiosity solution (thesis section 3.5.1, step 3): element radiosities are averaged at
 // the vertices and interpolated across each element (Gouraud), hidden surfaces removed by Z-buffer.
-// Vertex values average only elements lying in the same plane, so box edges stay crisp.
+// Vertex values average only elements in the same plane with the same surface, so box edges and
+// the colour fields of pictures stay crisp.
 #include <vector>
 
 #include "apps/common/image.hpp"
