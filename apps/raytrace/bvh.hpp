@@ -1,31 +1,23 @@
 #pragma once
 // A binary tree of axis-aligned boxes (section 2.1: the paper argues for a binary tree, which
 // makes the front-to-back ordering of children a single comparison). Leaves are primitives
-// themselves: a child reference >= 0 is a node, < 0 is the primitive ~ref.
-// The same node layout serves the whole tree and the per-subregion subtrees of 2.2.1.
+// themselves (tree_node.hpp).
 #include <cstdint>
 #include <vector>
 
 #include "apps/raytrace/bounds.hpp"
+#include "apps/raytrace/packed_tree.hpp"
+#include "apps/raytrace/tree_node.hpp"
 
 namespace gcsim::raytrace {
 
 class Scene;
 
-using NodeRef = std::int32_t;
-inline bool is_primitive(NodeRef r) { return r < 0; }
-inline int primitive_of(NodeRef r) { return ~r; }
-inline NodeRef primitive_ref(int prim) { return ~prim; }
-
-struct BvhNode {
-  Bounds3 box;
-  NodeRef child[2];
-};
-
 struct Bvh {
   std::vector<BvhNode> nodes;       // depth-first order, root first (when the root is a node)
   NodeRef root = 0;                 // a node, or a primitive when the scene has only one
   std::vector<Bounds3> prim_bounds; // the box of every primitive, by id
+  PackedTree packed;                // the same tree laid out for traversal
 
   int depth() const;                // longest root-to-primitive path, in nodes
 };

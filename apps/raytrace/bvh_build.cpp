@@ -120,6 +120,7 @@ Bvh build_bvh_by_clustering(const Scene& scene) {
   const NodeRef root = n == 0 ? primitive_ref(0) : b.build(prims, 0, prims.size(), centroid);
   if (is_primitive(root)) {
     bvh.root = root;
+    pack_tree(bvh.nodes, bvh.root, false, bvh.prim_bounds, bvh.packed);
     return bvh;
   }
   // Lay the nodes out depth-first, so a descent walks forward through memory.
@@ -135,6 +136,7 @@ Bvh build_bvh_by_clustering(const Scene& scene) {
     return at;
   };
   bvh.root = copy(root);
+  pack_tree(bvh.nodes, bvh.root, false, bvh.prim_bounds, bvh.packed);
   return bvh;
 }
 

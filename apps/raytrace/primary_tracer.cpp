@@ -25,14 +25,14 @@ void PrimaryTracer::trace_pixel(int x, int y, Hit& hit, TestTally& tally, TraceC
   const Ray ray = camera_.pixel_ray(x, y);
   hit = Hit{};
   switch (algorithm_) {
-    case Algorithm::A1: traverse_unordered(scene_, bvh_.nodes.data(), bvh_.root, ray, hit, tally); break;
-    case Algorithm::A2: traverse_ordered(scene_, bvh_.nodes.data(), bvh_.root, ray, hit, tally); break;
+    case Algorithm::A1: traverse_unordered(scene_, bvh_.packed, ray, hit, tally); break;
+    case Algorithm::A2: traverse_ordered(scene_, bvh_.packed, ray, hit, tally); break;
     case Algorithm::A2p:
-      if (!subtree_.empty) traverse_unordered(scene_, subtree_.nodes.data(), subtree_.root, ray, hit, tally);
+      traverse_unordered(scene_, subtree_.packed, ray, hit, tally);
       break;
     case Algorithm::A3:
     case Algorithm::A4:
-      if (!subtree_.empty) traverse_ordered(scene_, subtree_.nodes.data(), subtree_.root, ray, hit, tally);
+      traverse_ordered(scene_, subtree_.packed, ray, hit, tally);
       break;
     case Algorithm::B1: classifier_->trace(x, y, ray, hit, tally, counters); break;
     case Algorithm::brute: intersect_brute_force(scene_, ray, hit, tally); break;

@@ -91,6 +91,7 @@ void subtree_from_filtered(const Bvh& bvh, const PlaneFilteredTree& row, const P
   out.nodes.clear();
   out.empty = true;
   out.primitive_count = 0;
+  out.packed.empty = true;
   if (row.root < 0) return;
   const Plane planes[2] = {c, d};
   SubtreePass pass{bvh, row, planes, out};
@@ -101,6 +102,7 @@ void subtree_from_filtered(const Bvh& bvh, const PlaneFilteredTree& row, const P
   }
   counters.plane_tests += pass.tests;
   counters.subtree_nodes += static_cast<std::int64_t>(out.nodes.size());
+  pack_tree(out.nodes, out.root, out.empty, bvh.prim_bounds, out.packed);
 }
 
 void build_subtree(const Bvh& bvh, const std::array<Plane, 4>& planes, Subtree& out, TraceCounters& counters) {

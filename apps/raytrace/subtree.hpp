@@ -26,6 +26,7 @@ struct Subtree {
   NodeRef root = 0;
   bool empty = true;
   int primitive_count = 0;
+  PackedTree packed;  // the same, laid out for traversal
 };
 
 // The BVH filtered by two planes: the node and primitive entries not outside either, with the

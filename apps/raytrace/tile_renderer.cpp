@@ -94,10 +94,9 @@ Hit TileRenderer::trace_secondary(const Ray& ray, const Pencil* pencil, TraceCou
   if (pencil && pencil->contains(ray)) {
     // Every primitive the ray can reach meets the pencil, so it is in the pencil's subtree.
     ++counters.secondary_in_pencil;
-    if (!pencil->subtree.empty)
-      traverse_ordered(scene_, pencil->subtree.nodes.data(), pencil->subtree.root, ray, hit, tally);
+    traverse_ordered(scene_, pencil->subtree.packed, ray, hit, tally);
   } else {
-    traverse_ordered(scene_, bvh_.nodes.data(), bvh_.root, ray, hit, tally);
+    traverse_ordered(scene_, bvh_.packed, ray, hit, tally);
   }
   counters.secondary_box_tests += tally.boxes;
   counters.secondary_prim_tests += tally.prims();
@@ -130,7 +129,7 @@ glm::vec3 TileRenderer::local_light(const Ray& ray, const Hit& hit, const Surfac
       ++counters.shadow_rays;
       TestTally tally;
       const float tmax = glm::length(light.position - shadow.origin) * (1.0f - 1e-4f);
-      const bool blocked = traverse_any_hit(scene_, bvh_.nodes.data(), bvh_.root, shadow, tmax, tally);
+      const bool blocked = traverse_any_hit(scene_, bvh_.packed, shadow, tmax, tally);
       counters.secondary_box_tests += tally.boxes;
       counters.secondary_prim_tests += tally.prims();
       counters.sphere_tests += tally.spheres;

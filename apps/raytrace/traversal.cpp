@@ -1,38 +1,58 @@
 #include "apps/raytrace/traversal.hpp"
 
+#include <algorithm>
+
 namespace gcsim::raytrace {
 namespace {
+
 constexpr int kStackSize = 256;  // clustered trees of the built-in scenes are < 64 deep
+
+// Slab test of child c of n (see intersect_box for the conservative rounding and NaN handling:
+// the comparisons below drop a NaN from 0 * inf, counting a slab plane the ray lies in as inside).
+inline bool child_box(const PairNode& n, int c, const Ray& r, float tmax, float* entry) {
+  float t0 = r.tmin, t1 = tmax;
+  for (int a = 0; a < 3; ++a) {
+    const float tn = (n.bounds[r.near_plane[a]][c] - r.origin[a]) * r.inv_direction[a];
+    const float tf = (n.bounds[r.far_plane[a]][c] - r.origin[a]) * r.inv_direction[a] * (1.0f + 2.0f * gamma(3));
+    t0 = tn > t0 ? tn : t0;
+    t1 = tf < t1 ? tf : t1;
+  }
+  *entry = t0 * (1.0f - 2.0f * gamma(3));
+  return t0 <= t1;
 }
 
-void traverse_unordered(const Scene& scene, const BvhNode* nodes, NodeRef root, const Ray& ray, Hit& hit, TestTally& tally) {
-  if (is_primitive(root)) {
-    test_primitive(scene, primitive_of(root), ray, hit, tally);
+}  // namespace
+
+void traverse_unordered(const Scene& scene, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+  if (tree.empty) return;
+  if (is_primitive(tree.root)) {
+    test_primitive(scene, primitive_of(tree.root), ray, hit, tally);
     return;
   }
   float entry;
   ++tally.boxes;
-  if (!intersect_box(nodes[root].box, ray, kInfinity, &entry)) return;
+  if (!intersect_box(tree.root_box, ray, kInfinity, &entry)) return;
   NodeRef stack[kStackSize];
   int top = 0;
-  stack[top++] = root;
+  stack[top++] = tree.root;
   while (top > 0) {
-    const BvhNode& n = nodes[stack[--top]];
+    const PairNode& n = tree.nodes[stack[--top]];
     for (int i = 1; i >= 0; --i) {  // push the second child first: the first is visited first
       const NodeRef c = n.child[i];
       if (is_primitive(c)) {
         test_primitive(scene, primitive_of(c), ray, hit, tally);
       } else {
         ++tally.boxes;
-        if (intersect_box(nodes[c].box, ray, kInfinity, &entry) && top < kStackSize) stack[top++] = c;
+        if (child_box(n, i, ray, kInfinity, &entry) && top < kStackSize) stack[top++] = c;
       }
     }
   }
 }
 
-void traverse_ordered(const Scene& scene, const BvhNode* nodes, NodeRef root, const Ray& ray, Hit& hit, TestTally& tally) {
-  if (is_primitive(root)) {
-    test_primitive(scene, primitive_of(root), ray, hit, tally);
+void traverse_ordered(const Scene& scene, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+  if (tree.empty) return;
+  if (is_primitive(tree.root)) {
+    test_primitive(scene, primitive_of(tree.root), ray, hit, tally);
     return;
   }
   struct Entry { NodeRef node; float entry; };
@@ -40,12 +60,12 @@ void traverse_ordered(const Scene& scene, const BvhNode* nodes, NodeRef root, co
   int top = 0;
   float entry;
   ++tally.boxes;
-  if (!intersect_box(nodes[root].box, ray, hit.t, &entry)) return;
-  stack[top++] = {root, entry};
+  if (!intersect_box(tree.root_box, ray, hit.t, &entry)) return;
+  stack[top++] = {tree.root, entry};
   while (top > 0) {
     const Entry e = stack[--top];
     if (e.entry > hit.t) continue;  // figure 3: a nearer primitive was found meanwhile
-    const BvhNode& n = nodes[e.node];
+    const PairNode& n = tree.nodes[e.node];
     Entry found[2];
     int count = 0;
     for (int i = 0; i < 2; ++i) {
@@ -54,7 +74,7 @@ void traverse_ordered(const Scene& scene, const BvhNode* nodes, NodeRef root, co
         test_primitive(scene, primitive_of(c), ray, hit, tally);
       } else {
         ++tally.boxes;
-        if (intersect_box(nodes[c].box, ray, hit.t, &entry)) found[count++] = {c, entry};
+        if (child_box(n, i, ray, hit.t, &entry)) found[count++] = {c, entry};
       }
     }
     if (count == 2) {
@@ -70,23 +90,24 @@ void traverse_ordered(const Scene& scene, const BvhNode* nodes, NodeRef root, co
   }
 }
 
-bool traverse_any_hit(const Scene& scene, const BvhNode* nodes, NodeRef root, const Ray& ray, float tmax, TestTally& tally) {
-  if (is_primitive(root)) return occludes(scene, primitive_of(root), ray, tmax, tally);
+bool traverse_any_hit(const Scene& scene, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally) {
+  if (tree.empty) return false;
+  if (is_primitive(tree.root)) return occludes(scene, primitive_of(tree.root), ray, tmax, tally);
   float entry;
   ++tally.boxes;
-  if (!intersect_box(nodes[root].box, ray, tmax, &entry)) return false;
+  if (!intersect_box(tree.root_box, ray, tmax, &entry)) return false;
   NodeRef stack[kStackSize];
   int top = 0;
-  stack[top++] = root;
+  stack[top++] = tree.root;
   while (top > 0) {
-    const BvhNode& n = nodes[stack[--top]];
+    const PairNode& n = tree.nodes[stack[--top]];
     for (int i = 1; i >= 0; --i) {
       const NodeRef c = n.child[i];
       if (is_primitive(c)) {
         if (occludes(scene, primitive_of(c), ray, tmax, tally)) return true;
       } else {
         ++tally.boxes;
-        if (intersect_box(nodes[c].box, ray, tmax, &entry) && top < kStackSize) stack[top++] = c;
+        if (child_box(n, i, ray, tmax, &entry) && top < kStackSize) stack[top++] = c;
       }
     }
   }

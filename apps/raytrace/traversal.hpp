@@ -4,16 +4,17 @@
 //    ahead is visited, with no use of the distance found so far;
 //  - ordered (A2, A3; section 2.2.2): children are visited nearest-entry first, and a child whose
 //    box starts beyond the nearest hit found so far is pruned (figure 3).
-#include "apps/raytrace/bvh.hpp"
+// A primitive child is tested directly; only node children cost a box test.
 #include "apps/raytrace/hit.hpp"
+#include "apps/raytrace/packed_tree.hpp"
 #include "apps/raytrace/primitive_test.hpp"
 
 namespace gcsim::raytrace {
 
-void traverse_unordered(const Scene& scene, const BvhNode* nodes, NodeRef root, const Ray& ray, Hit& hit, TestTally& tally);
-void traverse_ordered(const Scene& scene, const BvhNode* nodes, NodeRef root, const Ray& ray, Hit& hit, TestTally& tally);
-// True if any primitive is hit with tmin < t < tmax (shadow rays); ordered by nothing, stops at the first.
-bool traverse_any_hit(const Scene& scene, const BvhNode* nodes, NodeRef root, const Ray& ray, float tmax, TestTally& tally);
+void traverse_unordered(const Scene& scene, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally);
+void traverse_ordered(const Scene& scene, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally);
+// True if any primitive is hit with tmin < t < tmax (shadow rays); stops at the first.
+bool traverse_any_hit(const Scene& scene, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally);
 // Every primitive, no tree: the reference the tests compare with.
 void intersect_brute_force(const Scene& scene, const Ray& ray, Hit& hit, TestTally& tally);
 
