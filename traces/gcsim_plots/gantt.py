@@ -90,8 +90,8 @@ def plot_gantt(plt, trace, window, title, path):
     handles.append(Patch(facecolor=IDLE_COLOR, edgecolor="#bbbbbb", label="idle"))
     if arrows:
         handles.append(Line2D([0], [0], color=MESSAGE_COLOR, lw=1, marker=">", markersize=5, label="message (send \u2192 arrival)"))
-    ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.09 if n > 8 else -0.16), ncol=len(handles),
-              frameon=False, fontsize=9)
-    fig.tight_layout()
+    # The legend gets its own strip under the axis label, whatever the figure's height.
+    fig.legend(handles=handles, loc="lower center", ncol=len(handles), frameon=False, fontsize=9)
+    fig.tight_layout(rect=(0, 0.45 / height, 1, 1))
     fig.savefig(path)
     plt.close(fig)

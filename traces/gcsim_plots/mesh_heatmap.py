@@ -132,7 +132,7 @@ def plot_mesh_heatmap(plt, trace, window, title, path):
     cb.set_label("bytes in window")
     cb.ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: human_bytes(v)))
     cb = fig.colorbar(matplotlib.cm.ScalarMappable(norm=busy_norm, cmap=busy_cmap), ax=axes[1], shrink=0.8)
-    cb.set_label(f"fraction of the window the channel was busy (scale 0 to {busy_top:.0%})")
+    cb.set_label("busy fraction of the window")
     cb.ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:.0%}"))
     subset = "; outlined: the selected processors" if window.subset else ""
     fig.suptitle(f"{title}\nmesh channels {w}x{h}, {window.describe()}; from {source}; grey: unused{subset}",

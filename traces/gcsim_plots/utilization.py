@@ -31,9 +31,8 @@ def plot_utilization(plt, trace, window, title, path):
                  f"{width * 1e3:.3g} \u00b5s; mean: {summary}", fontsize=10)
     handles = [Patch(facecolor=STATE_COLORS[k], label=STATE_LABELS[k]) for k in STATE_KINDS]
     handles.append(Patch(facecolor=IDLE_COLOR, edgecolor="#bbbbbb", label="idle"))
-    ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=len(handles), frameon=False,
-              fontsize=9)
+    fig.legend(handles=handles, loc="lower center", ncol=len(handles), frameon=False, fontsize=9)
     ax.grid(color="white", linewidth=0.6, alpha=0.7)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.45 / 5.0, 1, 1))
     fig.savefig(path)
     plt.close(fig)
