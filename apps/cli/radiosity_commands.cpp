@@ -34,7 +34,7 @@ struct SolveFlags {
   std::string bcast = "sequential";
   bool aggregate = false;
   bool keep_links = false;
-  int levels = 2;
+  int levels = 3;
   int cells = 8;
   int max_steps = 1000000;
 };

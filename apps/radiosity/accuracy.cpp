@@ -11,7 +11,8 @@ namespace gcsim::radiosity {
 double simulated_seconds(const OpCounts& ops, const machine::MachineConfig& m) {
   const std::pair<const char*, std::int64_t> counts[] = {
       {"polygon_project", ops.polygon_project}, {"hemicube_pixel", ops.hemicube_pixel},
-      {"hemicube_sample", ops.hemicube_sample}, {"form_factor_sum", ops.form_factor_sum},
+      {"hemicube_sample", ops.hemicube_sample}, {"hemicube_cull", ops.hemicube_cull},
+      {"form_factor_sum", ops.form_factor_sum},
       {"element_update", ops.element_update},   {"patch_select", ops.patch_select}};
   machine::SimTime t = 0;
   for (const auto& [op, n] : counts)

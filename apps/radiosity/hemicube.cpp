@@ -120,6 +120,7 @@ void HemicubeRenderer::project(int shooter, OpCounts& ops) {
       if (area2 == 0) continue;  // degenerate after projection (seen edge-on)
       p.edge_sign = area2 > 0 ? 1.0 : -1.0;
       x0 /= kSubpixel, x1 /= kSubpixel, y0 /= kSubpixel, y1 /= kSubpixel;
+      p.fx0 = x0, p.fx1 = x1, p.fy0 = y0, p.fy1 = y1;
       // Pixels whose centres can be inside: centre i + 0.5 in [x0, x1].
       int h = dff_.height(face);
       p.bx0 = std::max(0, int(std::ceil(x0 - 0.5)));
@@ -223,15 +224,22 @@ int HemicubeRenderer::sample(int face, const std::vector<int>& candidates, doubl
   return item;
 }
 
-void HemicubeRenderer::subdivide(int face, const std::vector<int>& candidates, int i0, int j0, int size,
-                                 OpCounts& ops) {
+void HemicubeRenderer::subdivide(int face, const std::vector<int>& parent, int i0, int j0, int size, OpCounts& ops) {
+  // Only elements whose projection reaches this square can be seen in it.
+  std::vector<int> candidates;
+  const auto& polys = faces_[face];
+  ops.hemicube_cull += std::int64_t(parent.size());
+  for (int k : parent) {
+    const Projected& p = polys[k];
+    if (p.fx0 <= i0 + size && p.fx1 >= i0 && p.fy0 <= j0 + size && p.fy1 >= j0) candidates.push_back(k);
+  }
   int centre = sample(face, candidates, i0 + size * 0.5, j0 + size * 0.5, ops);
   bool uniform = size == 1;
   if (!uniform) {
     uniform = true;
     const double cx[4] = {0.0, 1.0, 0.0, 1.0}, cy[4] = {0.0, 0.0, 1.0, 1.0};
     for (int k = 0; k < 4 && uniform; ++k) {
-      // Corners pulled a hair inside so they belong to this pixel.
+      // Corners pulled a hair inside so they belong to this square.
       double px = i0 + (cx[k] == 0 ? 1e-6 : size - 1e-6), py = j0 + (cy[k] == 0 ? 1e-6 : size - 1e-6);
       uniform = sample(face, candidates, px, py, ops) == centre;
     }
@@ -249,16 +257,10 @@ void HemicubeRenderer::subdivide(int face, const std::vector<int>& candidates, i
 
 void HemicubeRenderer::hierarchical_cell(const HemicubeCell& c, CellFormFactors& out, OpCounts& ops) {
   const int size = 1 << options_.hierarchical_levels;
-  std::vector<int> candidates;
-  const auto& polys = faces_[c.face];
-  for (int k = 0; k < int(polys.size()); ++k) {
-    const Projected& p = polys[k];
-    // Widen the box by a pixel: corner samples may fall outside the centre-based bounding box.
-    if (p.bx1 + 1 <= c.i0 || p.bx0 - 1 >= c.i1 || p.by1 + 1 <= c.j0 || p.by0 - 1 >= c.j1) continue;
-    candidates.push_back(k);
-  }
+  std::vector<int> all(faces_[c.face].size());
+  for (int k = 0; k < int(all.size()); ++k) all[k] = k;
   for (int j = c.j0; j < c.j1; j += size)
-    for (int i = c.i0; i < c.i1; i += size) subdivide(c.face, candidates, i, j, size, ops);
+    for (int i = c.i0; i < c.i1; i += size) subdivide(c.face, all, i, j, size, ops);
 }
 
 std::vector<double> HemicubeRenderer::form_factor_row(int shooter, OpCounts& ops) {

@@ -55,7 +55,8 @@ class HemicubeRenderer {
     double edge_sign;
     Vec3 plane_n;               // element plane in face coordinates: plane_n . q = plane_k
     double plane_k;
-    int bx0, by0, bx1, by1;     // pixel bounding box, inclusive-exclusive
+    int bx0, by0, bx1, by1;     // pixels whose centres may be inside, inclusive-exclusive
+    double fx0, fy0, fx1, fy1;  // bounding box in pixel units
   };
   bool inside(const Projected& poly, double px, double py) const;
   double depth(int face, const Projected& poly, double px, double py) const;

@@ -36,7 +36,7 @@ struct ParallelOptions {
   parix::BcastAlgo bcast = parix::BcastAlgo::sequential;
   bool aggregate = false;
   bool keep_links = false;      // reuse links between exchanges instead of connecting per message
-  int hierarchical_levels = 2;  // for hemicube-hierarchical
+  int hierarchical_levels = 3;  // for hemicube-hierarchical
 };
 
 // What processor 0 reports at the end of a run.
