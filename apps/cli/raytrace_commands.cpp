@@ -16,6 +16,7 @@
 #include "apps/raytrace/builtin_scenes.hpp"
 #include "apps/raytrace/camera.hpp"
 #include "apps/raytrace/cost_model.hpp"
+#include "apps/raytrace/embree_reference.hpp"
 #include "apps/raytrace/obj_loader.hpp"
 #include "apps/raytrace/paper_figures.hpp"
 #include "apps/raytrace/parallel_render.hpp"
@@ -369,6 +370,7 @@ void add_bench(CommandGroups& g) {
   struct Opts {
     RenderOptions render;
     int repeat = 5;
+    bool embree = true;
   };
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = g.bench->add_subcommand(
@@ -377,6 +379,8 @@ void add_bench(CommandGroups& g) {
       "no shading, in millions of rays per second (best of --repeat runs; subtree and beam building included).");
   add_render_options(cmd, o->render, false);
   cmd->add_option("--repeat", o->repeat, "Runs; the best is reported")->check(CLI::Range(1, 1000))->capture_default_str();
+  cmd->add_flag("!--no-embree", o->embree,
+                "Skip the comparison with Intel Embree's rtcIntersect1 on the same rays (done when gcsim was built with libembree-dev)");
   cmd->callback([o] {
     const Scene scene = load_scene_or_fail(o->render.scene);
     const auto t0 = std::chrono::steady_clock::now();
@@ -405,7 +409,28 @@ void add_bench(CommandGroups& g) {
     const double rays = double(size) * size;
     fmt::print("bench     {} on {}x{}, {}x{} tiles: {:.3f} ms per frame, {:.2f} Mrays/s (one thread, best of {})\n",
                paper_name_of(a), size, size, o->render.tile, o->render.tile, best * 1e3, rays / best / 1e6, o->repeat);
-    fmt::print("checksum  {}\n", checksum);
+    std::int64_t hits = 0;
+    {
+      PrimaryTracer tracer(scene, bvh, camera, a);
+      TraceCounters c;
+      std::vector<Hit> tile_hits;
+      for (int i = 0; i < tiling.count(); ++i) {
+        const auto r = tiling.rect(i);
+        tracer.trace_tile(r.x0, r.y0, r.x1, r.y1, tile_hits, c);
+        for (const Hit& h : tile_hits) hits += h.valid();
+      }
+    }
+    if (o->embree) {
+      const auto e = time_embree_primary_rays(scene, camera, o->repeat);
+      if (!e) {
+        fmt::print("embree    not available (gcsim was built without libembree-dev)\n");
+      } else {
+        fmt::print("embree    rtcIntersect1, one thread: {:.3f} ms per frame, {:.2f} Mrays/s; {} hits (ours {})\n",
+                   e->seconds_per_frame * 1e3, rays / e->seconds_per_frame / 1e6, e->hits, hits);
+        fmt::print("ratio     ours / Embree = {:.2f}\n", e->seconds_per_frame / best);
+      }
+    }
+    (void)checksum;
   });
 }
 

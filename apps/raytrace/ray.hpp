@@ -39,7 +39,7 @@ struct Ray {
     // Swapping kx and ky when the dominant component is negative keeps the winding, so the
     // sign of the edge functions has a fixed meaning; the test accepts both sides anyway.
     if (direction[kz] < 0.0f) std::swap(kx, ky);
-    shear_z = 1.0f / direction[kz];
+    shear_z = inv_direction[kz];
     shear_x = -direction[kx] * shear_z;
     shear_y = -direction[ky] * shear_z;
   }
