@@ -129,9 +129,14 @@ void write_paje(const TraceCsv& trace, const std::string& path) {
   // Type hierarchy: Machine > Node > Channel; states on Node, a variable on Channel, links in Machine.
   out.line("{} M 0 \"Machine\"", int(kDefineContainerType));
   out.line("{} N M \"Node\"", int(kDefineContainerType));
+  out.line("{} T N \"Thread\"", int(kDefineContainerType));
   out.line("{} C N \"Channel\"", int(kDefineContainerType));
   out.line("{} S N \"Activity\"", int(kDefineStateType));
-  for (const StateValue& s : kStates) out.line("{} {} S \"{}\" \"{}\"", int(kDefineEntityValue), to_string(s.kind), to_string(s.kind), s.color);
+  out.line("{} TS T \"Activity\"", int(kDefineStateType));
+  for (const StateValue& s : kStates) {
+    out.line("{} {} S \"{}\" \"{}\"", int(kDefineEntityValue), to_string(s.kind), to_string(s.kind), s.color);
+    out.line("{} t_{} TS \"{}\" \"{}\"", int(kDefineEntityValue), to_string(s.kind), to_string(s.kind), s.color);
+  }
   out.line("{} V C \"transfers\" \"0.216 0.494 0.722\"", int(kDefineVariableType));
   out.line("{} L M N N \"Message\"", int(kDefineLinkType));
   // The links' value "msg" is left undefined: ViTE rejects entity values of link types, and
@@ -139,15 +144,20 @@ void write_paje(const TraceCsv& trace, const std::string& path) {
 
   // Containers: every processor, and the channels the trace uses (link records exist at level full).
   std::set<int> channels;
+  std::set<std::pair<int, int>> threads;  // (processor, thread > 0): threads spawned on a node overlap it in time
   SimTime last = 0;
   for (const StoredTraceRecord& r : trace.records) {
     if (r.kind == TraceKind::link && r.id >= 0 && r.id < mesh.channel_count()) channels.insert(static_cast<int>(r.id));
+    if (is_state(r.kind) && r.thread > 0 && r.proc >= 0 && r.proc < trace.processors) threads.insert({r.proc, r.thread});
     last = std::max(last, r.end);
   }
   out.line("{} {} gc M 0 \"GC-PowerPlus {} processors, mesh {}x{}\"", int(kCreateContainer), ms(0), trace.processors,
            trace.mesh_width, trace.mesh_height);
   for (int p = 0; p < trace.processors; ++p) {
     out.line("{} {} p{} N gc \"P{} ({},{})\"", int(kCreateContainer), ms(0), p, p, mesh.x(p), mesh.y(p));
+  }
+  for (const auto& [p, t] : threads) {
+    out.line("{} {} p{}t{} T p{} \"P{} thread {}\"", int(kCreateContainer), ms(0), p, t, p, p, t);
   }
   for (int ch : channels) {
     const MeshChannel e = mesh.channel_ends(ch);
@@ -178,7 +188,10 @@ void write_paje(const TraceCsv& trace, const std::string& path) {
   for (const TimedEvent& e : events) {
     const StoredTraceRecord& r = trace.records[e.record];
     const std::string t = ms(e.time);
-    if (is_state(r.kind)) {
+    if (is_state(r.kind) && r.thread > 0) {
+      if (e.phase == 1) out.line("{} {} TS p{}t{} t_{}", int(kPushState), t, r.proc, r.thread, to_string(r.kind));
+      else out.line("{} {} TS p{}t{}", int(kPopState), t, r.proc, r.thread);
+    } else if (is_state(r.kind)) {
       if (e.phase == 1) out.line("{} {} S p{} {}", int(kPushState), t, r.proc, to_string(r.kind));
       else out.line("{} {} S p{}", int(kPopState), t, r.proc);
     } else if (r.kind == TraceKind::message) {
@@ -193,6 +206,7 @@ void write_paje(const TraceCsv& trace, const std::string& path) {
   for (int ch : channels) {
     if (mesh.channel_ends(ch).from < trace.processors) out.line("{} {} C c{}", int(kDestroyContainer), ms(last), ch);
   }
+  for (const auto& [p, t] : threads) out.line("{} {} T p{}t{}", int(kDestroyContainer), ms(last), p, t);
   for (int p = 0; p < trace.processors; ++p) out.line("{} {} N p{}", int(kDestroyContainer), ms(last), p);
   out.line("{} {} M gc", int(kDestroyContainer), ms(last));
   out.flush();

@@ -65,7 +65,7 @@ const char* direction_name(int channel) {
 }  // namespace
 
 TraceWriter::TraceWriter(const TraceOptions& options, int processors, int mesh_width, int mesh_height)
-    : level_(options.level), mesh_width_(mesh_width) {
+    : level_(options.level), mesh_width_(mesh_width), processors_(processors) {
   if (options.path.empty()) return;
   json_path_ = options.path;
   csv_path_ = trace_sibling_path(options.path, ".csv");
@@ -86,7 +86,8 @@ TraceWriter::TraceWriter(const TraceOptions& options, int processors, int mesh_w
         ",\n{{\"ph\":\"M\",\"pid\":0,\"tid\":{},\"name\":\"thread_name\",\"args\":{{\"name\":\"P{} node ({},{})\"}}}}", p, p,
         p % mesh_width, p / mesh_width);
     json_buffer_ += fmt::format(
-        ",\n{{\"ph\":\"M\",\"pid\":0,\"tid\":{},\"name\":\"thread_sort_index\",\"args\":{{\"sort_index\":{}}}}}", p, p);
+        ",\n{{\"ph\":\"M\",\"pid\":0,\"tid\":{},\"name\":\"thread_sort_index\",\"args\":{{\"sort_index\":{}}}}}", p,
+        sort_index(p, 0));
   }
   if (level_ == TraceLevel::full) {
     // pid 1 holds one track per directed mesh channel (tid = channel id), named by its ends.
@@ -108,7 +109,7 @@ TraceWriter::TraceWriter(const TraceOptions& options, int processors, int mesh_w
   }
   csv_buffer_ += fmt::format("# gcsim trace; level {}; {} processors; mesh {}x{}; times in picoseconds\n",
                              to_string(level_), processors, mesh_width, mesh_height);
-  csv_buffer_ += "kind,proc,peer,start_ps,end_ps,bytes,id,label\n";
+  csv_buffer_ += "kind,proc,peer,start_ps,end_ps,bytes,id,label,thread\n";
   flush_buffers();
 }
 
@@ -126,8 +127,8 @@ void TraceWriter::record(const TraceRecord& r) {
   if (r.kind == TraceKind::link && level_ != TraceLevel::full) return;
   std::string scratch;
   const std::string_view label = clean_label(r.label.empty() ? to_string(r.kind) : r.label, scratch);
-  csv_buffer_ += fmt::format("{},{},{},{},{},{},{},{}\n", to_string(r.kind), r.proc, r.peer, r.start, r.end, r.bytes,
-                             r.id, label);
+  csv_buffer_ += fmt::format("{},{},{},{},{},{},{},{},{}\n", to_string(r.kind), r.proc, r.peer, r.start, r.end, r.bytes,
+                             r.id, label, r.thread);
   switch (r.kind) {
     case TraceKind::message:
       // An arrow from the send on the source's track to the arrival on the destination's. Flow
@@ -148,12 +149,28 @@ void TraceWriter::record(const TraceRecord& r) {
           r.id, us(r.start), us(r.end - r.start), r.proc, r.peer, r.bytes);
       break;
     default:
+      if (r.thread > 0) name_thread_track(r.proc, r.thread);
       json_buffer_ += fmt::format(
           ",\n{{\"ph\":\"X\",\"pid\":0,\"tid\":{},\"ts\":{},\"dur\":{},\"cat\":\"{}\",\"name\":\"{}\",\"args\":{{\"peer\":{},\"bytes\":{}}}}}",
-          r.proc, us(r.start), us(r.end - r.start), to_string(r.kind), label, r.peer, r.bytes);
+          thread_track(r.proc, r.thread), us(r.start), us(r.end - r.start), to_string(r.kind), label, r.peer, r.bytes);
       break;
   }
   if (json_buffer_.size() > kFlushBytes || csv_buffer_.size() > kFlushBytes) flush_buffers();
+}
+
+// Threads a processor spawns overlap it in time, and Perfetto wants the slices of one track
+// nested: each thread gets its own track, sorted right under its processor's.
+int TraceWriter::thread_track(int proc, int thread) const { return thread == 0 ? proc : thread * processors_ + proc; }
+
+void TraceWriter::name_thread_track(int proc, int thread) {
+  if (!named_threads_.insert({proc, thread}).second) return;
+  const int tid = thread_track(proc, thread);
+  json_buffer_ += fmt::format(
+      ",\n{{\"ph\":\"M\",\"pid\":0,\"tid\":{},\"name\":\"thread_name\",\"args\":{{\"name\":\"P{} thread {}\"}}}}", tid, proc,
+      thread);
+  json_buffer_ += fmt::format(
+      ",\n{{\"ph\":\"M\",\"pid\":0,\"tid\":{},\"name\":\"thread_sort_index\",\"args\":{{\"sort_index\":{}}}}}", tid,
+      sort_index(proc, thread));
 }
 
 void TraceWriter::flush_buffers() {

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <set>
 #include <string>
 #include <string_view>
 
@@ -40,6 +41,7 @@ struct TraceRecord {
   std::int64_t bytes = 0;
   std::int64_t id = -1;    // message id, for arrows from send to receive
   std::string_view label;  // operation or call name
+  int thread = 0;          // node-local thread (Processor::spawn) the interval belongs to; 0 = the processor itself
 };
 
 class TraceWriter {
@@ -60,6 +62,11 @@ class TraceWriter {
   std::string json_path_, csv_path_, paje_path_;
   std::FILE* json_ = nullptr;
   std::FILE* csv_ = nullptr;
+  void name_thread_track(int proc, int thread);
+  int thread_track(int proc, int thread) const;  // Chrome tid
+  static std::int64_t sort_index(int proc, int thread) { return std::int64_t(proc) * 65536 + thread; }
+  int processors_;
+  std::set<std::pair<int, int>> named_threads_;  // (processor, thread) tracks already named in the JSON
   std::string json_buffer_;  // whole records only, so the files always end on a record boundary
   std::string csv_buffer_;
   int mesh_width_;

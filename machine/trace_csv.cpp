@@ -13,7 +13,8 @@ namespace gcsim::machine {
 
 namespace {
 
-constexpr std::string_view kColumns = "kind,proc,peer,start_ps,end_ps,bytes,id,label";
+constexpr std::string_view kColumns = "kind,proc,peer,start_ps,end_ps,bytes,id,label,thread";
+constexpr std::string_view kColumnsWithoutThread = "kind,proc,peer,start_ps,end_ps,bytes,id,label";  // older traces
 
 std::runtime_error bad_line(const std::string& path, std::size_t line_number, std::string_view why) {
   return std::runtime_error(fmt::format("{}:{}: {}", path, line_number, why));
@@ -60,30 +61,37 @@ TraceCsv read_trace_csv(const std::string& path) {
                    "not a gcsim trace CSV: expected the header '# gcsim trace; level L; N processors; mesh WxH; ...'");
   }
   t.level = level;
-  if (!std::getline(in, line) || line != kColumns) {
+  if (!std::getline(in, line) || (line != kColumns && line != kColumnsWithoutThread)) {
     throw bad_line(path, 2, fmt::format("expected the column line '{}'", kColumns));
   }
+  const int field_count = line == kColumns ? 9 : 8;
   std::unordered_map<std::string, std::int32_t> label_index;
   std::size_t line_number = 2;
-  std::string_view fields[8];
+  std::string_view fields[9];
   while (std::getline(in, line)) {
     ++line_number;
     if (line.empty()) continue;
     std::string_view rest(line);
     int n = 0;
-    for (; n < 7; ++n) {
+    for (; n < field_count - 1; ++n) {
       const auto comma = rest.find(',');
       if (comma == std::string_view::npos) break;
       fields[n] = rest.substr(0, comma);
       rest.remove_prefix(comma + 1);
     }
-    if (n != 7) throw bad_line(path, line_number, "expected 8 comma-separated fields");
-    fields[7] = rest;
+    if (n != field_count - 1 || rest.find(',') != std::string_view::npos) {
+      throw bad_line(path, line_number, fmt::format("expected {} comma-separated fields", field_count));
+    }
+    fields[field_count - 1] = rest;
     StoredTraceRecord r{};
     if (!parse_kind(fields[0], r.kind)) throw bad_line(path, line_number, "unknown record kind '" + std::string(fields[0]) + "'");
     if (!parse_number(fields[1], r.proc) || !parse_number(fields[2], r.peer) || !parse_number(fields[3], r.start) ||
         !parse_number(fields[4], r.end) || !parse_number(fields[5], r.bytes) || !parse_number(fields[6], r.id)) {
       throw bad_line(path, line_number, "expected integers in fields 2 to 7");
+    }
+    r.thread = 0;
+    if (field_count == 9 && (!parse_number(fields[8], r.thread) || r.thread < 0)) {
+      throw bad_line(path, line_number, "expected a thread number in field 9");
     }
     auto [it, inserted] = label_index.try_emplace(std::string(fields[7]), static_cast<std::int32_t>(t.labels.size()));
     if (inserted) t.labels.emplace_back(fields[7]);

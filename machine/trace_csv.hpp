@@ -19,6 +19,7 @@ struct StoredTraceRecord {
   std::int64_t bytes;
   std::int64_t id;
   std::int32_t label;  // index into TraceCsv::labels
+  int thread;          // node-local thread; 0 = the processor itself
 };
 
 struct TraceCsv {

@@ -261,7 +261,7 @@ void SimProcess::compute(std::span<const OpCount> ops) {
   s.compute += duration;
   if (sim_.trace.enabled()) {
     sim_.trace.record({TraceKind::compute, id_, -1, start, sim_.kernel.now(), 0, -1,
-                       ops.size() == 1 ? ops[0].op : std::string_view("compute")});
+                       ops.size() == 1 ? ops[0].op : std::string_view("compute"), thread_});
   }
 }
 
@@ -313,8 +313,8 @@ Link SimProcess::connect(int peer, int tag) {
     sim_.stats[peer].connections += 1;
     sim_.stats[id_].connections += 1;
     if (sim_.trace.enabled()) {
-      sim_.trace.record({TraceKind::connect, peer, id_, their_start, up, 0, -1, "connect"});
-      sim_.trace.record({TraceKind::connect, id_, peer, start, up, 0, -1, "connect"});
+      sim_.trace.record({TraceKind::connect, peer, id_, their_start, up, 0, -1, "connect", them->thread()});
+      sim_.trace.record({TraceKind::connect, id_, peer, start, up, 0, -1, "connect", thread_});
     }
   } else {
     sim_.pending_connects[{id_, peer, tag}].push_back({this, &mine, start});
@@ -441,7 +441,7 @@ void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {
   const machine::SimTime end = sim_.kernel.now();
   sim_.stats[id_].comm += end - start;
   if (sim_.trace.enabled() && end > start) {
-    sim_.trace.record({kind, id_, r.peer, start, end, static_cast<std::int64_t>(r.data.size()), -1, call});
+    sim_.trace.record({kind, id_, r.peer, start, end, static_cast<std::int64_t>(r.data.size()), -1, call, thread_});
   }
 }
 
@@ -470,7 +470,7 @@ std::size_t SimProcess::wait_any(std::span<Request* const> rs) {
   const machine::SimTime end = sim_.kernel.now();
   sim_.stats[id_].comm += end - start;
   if (sim_.trace.enabled() && end > start) {
-    sim_.trace.record({TraceKind::wait, id_, rs[i]->state()->peer, start, end, 0, -1, "wait_any"});
+    sim_.trace.record({TraceKind::wait, id_, rs[i]->state()->peer, start, end, 0, -1, "wait_any", thread_});
   }
   return i;
 }

@@ -19,7 +19,8 @@ void add_machine_options(CLI::App* cmd, MachineOptions& o) {
   cmd->add_option("--model", o.model, "Network model: analytic (no contention) or flow (links shared); default: the config's")
       ->check(CLI::IsMember({"analytic", "flow"}));
   cmd->add_option("--trace", o.trace,
-                  "Write a trace of simulated events: FILE (Chrome trace-event JSON, opens in Perfetto) and FILE with .csv");
+                  "Write a trace of simulated events: FILE.json (Chrome trace-event JSON, opens in Perfetto) with FILE.csv and "
+                  "FILE.paje (ViTE) beside it; `gcsim plot FILE.json` draws it");
   cmd->add_option("--trace-level", o.trace_level, "summary (totals only), messages (no link records) or full")
       ->check(CLI::IsMember({"summary", "messages", "full"}))
       ->capture_default_str();

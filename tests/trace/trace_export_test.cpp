@@ -161,17 +161,17 @@ TEST_F(SmallRunTrace, CsvRowsMatchTheRun) {
   const std::vector<std::string> lines = lines_of(slurp(file(".csv")));
   ASSERT_GE(lines.size(), 2u);
   EXPECT_EQ(lines[0], "# gcsim trace; level full; 3 processors; mesh 3x1; times in picoseconds");
-  EXPECT_EQ(lines[1], "kind,proc,peer,start_ps,end_ps,bytes,id,label");
+  EXPECT_EQ(lines[1], "kind,proc,peer,start_ps,end_ps,bytes,id,label,thread");
   std::vector<std::string> rows(lines.begin() + 2, lines.end());
   std::sort(rows.begin(), rows.end());
   const std::vector<std::string> expected{
-      "compute,0,-1,0,1000000000,0,-1,work",
-      "connect,0,1,1000000000,1200000000,0,-1,connect",
-      "connect,1,0,0,1200000000,0,-1,connect",
-      "link,0,1,1250000000,2250000000,1000,0,link",
-      "message,0,1,1200000000,2250000000,1000,0,message",
-      "recv,1,0,1200000000,2250000000,1000,-1,recv",
-      "send,0,1,1200000000,2250000000,0,-1,send",
+      "compute,0,-1,0,1000000000,0,-1,work,0",
+      "connect,0,1,1000000000,1200000000,0,-1,connect,0",
+      "connect,1,0,0,1200000000,0,-1,connect,0",
+      "link,0,1,1250000000,2250000000,1000,0,link,0",
+      "message,0,1,1200000000,2250000000,1000,0,message,0",
+      "recv,1,0,1200000000,2250000000,1000,-1,recv,0",
+      "send,0,1,1200000000,2250000000,0,-1,send,0",
   };
   EXPECT_EQ(rows, expected);
   EXPECT_EQ(kComputeEnd, 1000000000);
@@ -347,13 +347,50 @@ TEST(TraceCsv, BadFilesAreNamedWithWhatWasExpected) {
   EXPECT_NE(message_for("hello\n").find("bad.csv:1: not a gcsim trace CSV"), std::string::npos);
   const std::string header = "# gcsim trace; level full; 2 processors; mesh 2x1; times in picoseconds\n";
   EXPECT_NE(message_for(header + "a,b\n").find("bad.csv:2: expected the column line"), std::string::npos);
-  const std::string columns = "kind,proc,peer,start_ps,end_ps,bytes,id,label\n";
-  EXPECT_NE(message_for(header + columns + "teleport,0,1,0,1,0,-1,x\n").find("bad.csv:3: unknown record kind"),
+  const std::string columns = "kind,proc,peer,start_ps,end_ps,bytes,id,label,thread\n";
+  EXPECT_NE(message_for(header + columns + "teleport,0,1,0,1,0,-1,x,0\n").find("bad.csv:3: unknown record kind"),
             std::string::npos);
-  EXPECT_NE(message_for(header + columns + "send,0,1,zero,1,0,-1,x\n").find("bad.csv:3: expected integers"),
+  EXPECT_NE(message_for(header + columns + "send,0,1,zero,1,0,-1,x,0\n").find("bad.csv:3: expected integers"),
             std::string::npos);
-  EXPECT_NE(message_for(header + columns + "send,0,1\n").find("bad.csv:3: expected 8"), std::string::npos);
+  EXPECT_NE(message_for(header + columns + "send,0,1\n").find("bad.csv:3: expected 9"), std::string::npos);
+  EXPECT_NE(message_for(header + columns + "send,0,1,0,1,0,-1,x,two\n").find("bad.csv:3: expected a thread"),
+            std::string::npos);
+  // Traces written before the thread column read as thread 0.
+  EXPECT_EQ(message_for(header + "kind,proc,peer,start_ps,end_ps,bytes,id,label\nsend,0,1,0,1,0,-1,x\n"), "no error");
   EXPECT_THROW(machine::read_trace_csv((d / "missing.csv").string()), std::runtime_error);
+  fs::remove_all(d);
+}
+
+// P0 spawns a thread that computes while P0 itself computes: the overlapping intervals go to
+// separate tracks (Chrome JSON) and containers (Paje), so that each stays properly nested.
+TEST(TraceExport, SpawnedThreadsGetTheirOwnTrack) {
+  const fs::path d = fresh_dir("threads");
+  parix::SimulationOptions o;
+  o.config = small_machine();
+  o.config.cpus_per_node = 2;
+  o.trace.path = (d / "t.json").string();
+  parix::run_simulated(o, [](parix::Processor& p) {
+    if (p.id() != 0) return;
+    parix::Thread t = p.spawn([](parix::Processor& q) { q.compute("work", 300); });
+    p.compute("work", 100);
+    t.join();
+  });
+  std::map<int, std::string> names;
+  std::vector<std::tuple<int, double, double>> computes;  // tid, ts, dur
+  for (const json& e : json::parse(slurp(d / "t.json"))) {
+    if (e["ph"] == "M" && e["name"] == "thread_name") names[e["tid"].get<int>()] = e["args"]["name"];
+    if (e["ph"] == "X" && e["cat"] == "compute") computes.emplace_back(e["tid"], e["ts"], e["dur"]);
+  }
+  EXPECT_EQ(names[3], "P0 thread 1");  // tid = thread x processors + processor
+  std::sort(computes.begin(), computes.end());
+  EXPECT_EQ(computes, (std::vector<std::tuple<int, double, double>>{{0, 0.0, 1000.0}, {3, 0.0, 3000.0}}));
+  const std::string csv = slurp(d / "t.csv");
+  EXPECT_NE(csv.find("compute,0,-1,0,3000000000,0,-1,work,1\n"), std::string::npos) << csv;
+  const std::string paje = slurp(d / "t.paje");
+  EXPECT_NE(paje.find("p0t1 T p0 \"P0 thread 1\""), std::string::npos) << paje;
+  EXPECT_NE(paje.find("7 0.000000000 TS p0t1 t_compute"), std::string::npos);
+  EXPECT_NE(paje.find("8 3.000000000 TS p0t1"), std::string::npos);
+  EXPECT_NE(paje.find("8 1.000000000 S p0\n"), std::string::npos);
   fs::remove_all(d);
 }
 

@@ -12,7 +12,7 @@ from .trace_data import KIND_CODE
 
 # Above these counts the chart is drawn per pixel column, and arrows would hide the activities.
 EXACT_INTERVALS_MAX = 20000
-ARROWS_MAX = 400
+ARROWS_MAX = 250
 PIXEL_COLUMNS = 1500
 
 
@@ -33,18 +33,24 @@ def plot_gantt(plt, trace, window, title, path):
     states &= (trace.proc >= 0) & (trace.proc < trace.processors)
     states &= window.selected[np.clip(trace.proc, 0, trace.processors - 1)]
     exact = states.sum() <= EXACT_INTERVALS_MAX
+    threads = bool((states & (trace.thread > 0)).any())
     if exact:
         mode = "every interval drawn"
+        if threads:
+            mode += "; lower half of a row: threads the processor spawned (they run beside it)"
         ax.set_facecolor(IDLE_COLOR)
-        for kind in STATE_KINDS:
-            m = states & (trace.kind == KIND_CODE[kind])
+        # The processor's own intervals fill the row; its threads' intervals go on top, in the lower half.
+        for kind, own in [(k, True) for k in STATE_KINDS] + [(k, False) for k in STATE_KINDS]:
+            m = states & (trace.kind == KIND_CODE[kind]) & ((trace.thread == 0) if own else (trace.thread > 0))
             if not m.any():
                 continue
             rows = row_of[trace.proc[m]]
             x0 = np.maximum(trace.start[m], window.t0)
             x1 = np.minimum(trace.end[m], window.t1)
-            verts = np.stack([np.column_stack((x0, rows - 0.35)), np.column_stack((x0, rows + 0.35)),
-                              np.column_stack((x1, rows + 0.35)), np.column_stack((x1, rows - 0.35))], axis=1)
+            top = rows - 0.35 if own else rows + 0.02
+            bottom = rows + 0.35
+            verts = np.stack([np.column_stack((x0, top)), np.column_stack((x0, bottom)),
+                              np.column_stack((x1, bottom)), np.column_stack((x1, top))], axis=1)
             ax.add_collection(PolyCollection(verts, facecolors=STATE_COLORS[kind], edgecolors=STATE_COLORS[kind],
                                              linewidths=0.3))  # hairline: sub-pixel intervals stay visible
     else:

@@ -11,7 +11,8 @@ from .errors import PlotError
 
 KINDS = ("compute", "send", "recv", "wait", "connect", "link", "message")
 KIND_CODE = {k: i for i, k in enumerate(KINDS)}
-COLUMNS = "kind,proc,peer,start_ps,end_ps,bytes,id,label"
+COLUMNS = "kind,proc,peer,start_ps,end_ps,bytes,id,label,thread"
+COLUMNS_WITHOUT_THREAD = "kind,proc,peer,start_ps,end_ps,bytes,id,label"  # traces written before threads were recorded
 HEADER = re.compile(r"^# gcsim trace; level (\w+); (\d+) processors; mesh (\d+)x(\d+)")
 PS_PER_MS = 1e9
 
@@ -19,7 +20,8 @@ PS_PER_MS = 1e9
 class Trace:
     """Columns of the records, one numpy array each; times in simulated milliseconds."""
 
-    def __init__(self, path, level, processors, mesh_width, mesh_height, kind, proc, peer, start_ps, end_ps, nbytes, ident):
+    def __init__(self, path, level, processors, mesh_width, mesh_height, kind, proc, peer, start_ps, end_ps, nbytes, ident,
+                 thread):
         self.path = path
         self.level = level
         self.processors = processors
@@ -32,6 +34,7 @@ class Trace:
         self.end = end_ps / PS_PER_MS
         self.bytes = nbytes
         self.id = ident
+        self.thread = thread  # 0: the processor itself; 1, 2, ...: threads it spawned
 
     def __len__(self):
         return len(self.kind)
@@ -75,7 +78,7 @@ def load_trace(path):
     if not m:
         raise PlotError(f"{csv}: not a gcsim trace CSV (expected a first line '# gcsim trace; level L; "
                         f"N processors; mesh WxH; ...', found {first.strip()[:60]!r})")
-    if second != COLUMNS:
+    if second not in (COLUMNS, COLUMNS_WITHOUT_THREAD):
         raise PlotError(f"{csv}: expected the column line '{COLUMNS}', found {second[:60]!r}")
     level, processors, width, height = m.group(1), int(m.group(2)), int(m.group(3)), int(m.group(4))
     if not rest.strip():
@@ -87,7 +90,8 @@ def load_trace(path):
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            table = np.loadtxt(csv, delimiter=",", skiprows=2, usecols=(0, 1, 2, 3, 4, 5, 6), dtype=np.int64,
+            columns = (0, 1, 2, 3, 4, 5, 6, 8) if second == COLUMNS else (0, 1, 2, 3, 4, 5, 6)
+            table = np.loadtxt(csv, delimiter=",", skiprows=2, usecols=columns, dtype=np.int64,
                                ndmin=2, converters={0: lambda s: codes.get(s, -1)})
     except ValueError as e:
         raise PlotError(f"{csv}: not a gcsim trace CSV: {str(e).splitlines()[0]} (rows counted from 0 after the "
@@ -97,9 +101,10 @@ def load_trace(path):
         row = int(np.flatnonzero(kind < 0)[0])
         raise PlotError(f"{csv}:{row + 3}: unknown record kind (expected one of {', '.join(KINDS)})")
     numbers = table[:, 1:]
+    thread = table[:, 7].astype(np.int32) if table.shape[1] > 7 else np.zeros(len(table), dtype=np.int32)
     return Trace(csv, level, processors, width, height, kind, numbers[:, 0].astype(np.int32),
                  numbers[:, 1].astype(np.int32), numbers[:, 2].astype(np.float64), numbers[:, 3].astype(np.float64),
-                 numbers[:, 4], numbers[:, 5])
+                 numbers[:, 4], numbers[:, 5], thread)
 
 
 def parse_procs(spec, processors, where):
