@@ -7,7 +7,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from .binning import state_coverage
-from .style import DPI, IDLE_COLOR, MESSAGE_COLOR, STATE_COLORS, STATE_KINDS, STATE_LABELS
+from .style import DPI, IDLE_COLOR, human_duration, MESSAGE_COLOR, STATE_COLORS, STATE_KINDS, STATE_LABELS
 from .trace_data import KIND_CODE
 
 # Above these counts the chart is drawn per pixel column, and arrows would hide the activities.
@@ -63,7 +63,7 @@ def plot_gantt(plt, trace, window, title, path):
         cmap = ListedColormap([IDLE_COLOR] + [STATE_COLORS[k] for k in STATE_KINDS])
         ax.imshow(dominant, cmap=cmap, vmin=-0.5, vmax=len(STATE_KINDS) + 0.5, aspect="auto", interpolation="nearest",
                   extent=(window.t0, window.t1, n - 0.5, -0.5))
-        mode = f"each pixel column shows the activity that filled most of its {(edges[1] - edges[0]) * 1e3:.3g} \u00b5s"
+        mode = f"each pixel column shows the activity that filled most of its {human_duration(edges[1] - edges[0])}"
 
     messages = in_window & (trace.kind == KIND_CODE["message"])
     messages &= (trace.proc >= 0) & (trace.proc < trace.processors) & (trace.peer >= 0) & (trace.peer < trace.processors)

@@ -31,3 +31,14 @@ def human_bytes(n):
             return f"{n:.0f} {unit}" if unit == "B" else f"{n:.1f} {unit}"
         n /= 1024
     return f"{n:.1f} TB"
+
+
+def human_duration(ms):
+    """A duration given in ms, in the unit that reads best: '303 \u00b5s', '42.4 ms', '2.1 s'."""
+    if ms >= 1000:
+        return f"{ms / 1000:.3g} s"
+    if ms >= 1:
+        return f"{ms:.3g} ms"
+    if ms >= 1e-3:
+        return f"{ms * 1e3:.3g} \u00b5s"
+    return f"{ms * 1e6:.3g} ns"

@@ -4,7 +4,7 @@ import numpy as np
 from matplotlib.patches import Patch
 
 from .binning import state_coverage
-from .style import DPI, IDLE_COLOR, STATE_COLORS, STATE_KINDS, STATE_LABELS
+from .style import DPI, IDLE_COLOR, human_duration, STATE_COLORS, STATE_KINDS, STATE_LABELS
 
 BINS = 300
 
@@ -28,7 +28,7 @@ def plot_utilization(plt, trace, window, title, path):
     mean = cover.sum(axis=1) / (window.length * len(window.procs)) * 100.0
     summary = ", ".join(f"{STATE_LABELS[k].split(' ')[0]} {m:.1f}%" for k, m in zip(STATE_KINDS, mean))
     ax.set_title(f"{title}\nutilization of {len(window.procs)} processors, {window.describe()}, bins of "
-                 f"{width * 1e3:.3g} \u00b5s; mean: {summary}", fontsize=10)
+                 f"{human_duration(width)}; mean: {summary}", fontsize=10)
     handles = [Patch(facecolor=STATE_COLORS[k], label=STATE_LABELS[k]) for k in STATE_KINDS]
     handles.append(Patch(facecolor=IDLE_COLOR, edgecolor="#bbbbbb", label="idle"))
     fig.legend(handles=handles, loc="lower center", ncol=len(handles), frameon=False, fontsize=9)
