@@ -103,6 +103,10 @@ nlohmann::json counters_json(const TraceCounters& c) {
           {"total_tests", c.box_tests() + c.prim_tests()},
           {"secondary_rays", c.secondary_rays},
           {"secondary_in_pencil", c.secondary_in_pencil},
+          {"first_bounce_rays", c.first_bounce_rays},
+          {"first_bounce_in_pencil_tiles", c.first_bounce_in_pencil_tiles},
+          {"first_bounce_bv_tests", c.first_bounce_box_tests},
+          {"first_bounce_prim_tests", c.first_bounce_prim_tests},
           {"shadow_rays", c.shadow_rays},
           {"secondary_bv_tests", c.secondary_box_tests},
           {"secondary_prim_tests", c.secondary_prim_tests},
@@ -132,6 +136,10 @@ void print_counters(const TraceCounters& c) {
     fmt::print("secondary {} reflected/refracted rays ({} through {} pencil subtrees), {} shadow rays; "
                "{} BV + {} primitive tests\n",
                c.secondary_rays, c.secondary_in_pencil, c.pencils, c.shadow_rays, c.secondary_box_tests, c.secondary_prim_tests);
+    if (c.first_bounce_rays > 0)
+      fmt::print("1st bounce {} rays, {} in subregions with a pencil, {} inside it; BV tests/ray {:.2f}, primitive tests/ray {:.2f}\n",
+                 c.first_bounce_rays, c.first_bounce_in_pencil_tiles, c.secondary_in_pencil,
+                 double(c.first_bounce_box_tests) / c.first_bounce_rays, double(c.first_bounce_prim_tests) / c.first_bounce_rays);
   }
 }
 

@@ -17,6 +17,12 @@ struct TraceCounters {
   // Secondary (reflection, refraction) and shadow rays, and their tests.
   std::int64_t secondary_rays = 0;
   std::int64_t secondary_in_pencil = 0;   // secondary rays traced through a pencil subtree (2.3)
+  // First-generation reflected/refracted rays (the ones pencils are for), those of subregions that
+  // had a pencil, and the tests the first generation needed.
+  std::int64_t first_bounce_rays = 0;
+  std::int64_t first_bounce_in_pencil_tiles = 0;
+  std::int64_t first_bounce_box_tests = 0;
+  std::int64_t first_bounce_prim_tests = 0;
   std::int64_t shadow_rays = 0;
   std::int64_t secondary_box_tests = 0;
   std::int64_t secondary_prim_tests = 0;

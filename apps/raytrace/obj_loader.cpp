@@ -11,7 +11,7 @@
 namespace gcsim::raytrace {
 
 ObjError::ObjError(const std::string& f, int l, const std::string& what)
-    : std::runtime_error(f + ":" + std::to_string(l) + ": " + what), file(f), line(l) {}
+    : std::runtime_error(l > 0 ? f + ":" + std::to_string(l) + ": " + what : f + ": " + what), file(f), line(l) {}
 
 namespace {
 

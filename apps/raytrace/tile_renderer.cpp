@@ -158,7 +158,14 @@ glm::vec3 TileRenderer::shade(const Ray& ray, const Hit& hit, int depth, const P
     const SecondaryRay s = secondary_ray(ray, hit, kind);
     if (!s.valid || s.weight <= 0.0f) continue;
     const Pencil* pencil = kind == Bounce::reflection ? reflection_pencil : refraction_pencil;
+    const std::int64_t boxes = counters.secondary_box_tests, prims = counters.secondary_prim_tests;
     const Hit next = trace_secondary(s.ray, pencil, counters);
+    if (depth == 0) {
+      ++counters.first_bounce_rays;
+      counters.first_bounce_in_pencil_tiles += pencil != nullptr;
+      counters.first_bounce_box_tests += counters.secondary_box_tests - boxes;
+      counters.first_bounce_prim_tests += counters.secondary_prim_tests - prims;
+    }
     color += s.weight * shade(s.ray, next, depth + 1, nullptr, nullptr, counters);
   }
   return color;
