@@ -4,8 +4,8 @@ fraction of the window it was busy. Channel ids follow machine/mesh.hpp: node * 
 
 import numpy as np
 from matplotlib.colors import Normalize
-from matplotlib.patches import FancyArrowPatch, Rectangle
-from matplotlib.ticker import FuncFormatter
+from matplotlib.patches import Rectangle
+from matplotlib.ticker import FuncFormatter, MaxNLocator
 
 from .binning import union_length
 from .style import DPI, human_bytes
@@ -79,34 +79,47 @@ def channel_load(trace, window):
 
 
 def draw_mesh(ax, trace, window, values, norm, cmap, lw):
+    # add_artist, not add_patch: the limits are set below, and updating them per arrow is the slow part.
     w, h = trace.mesh_width, trace.mesh_height
     label_nodes = w * h <= 64
+    # On big meshes the node boxes would hide the channels: only the selected nodes get a dot.
+    big = w * h > 256
     for node in range(w * h):
+        if big:
+            if window.subset and node < trace.processors and window.selected[node]:
+                ax.plot(*trace.node_xy(node), "s", color="#222222", markersize=3, zorder=3)
+            continue
         x, y = trace.node_xy(node)
         chosen = node < trace.processors and window.selected[node]
-        ax.add_patch(Rectangle((x - 0.17, y - 0.17), 0.34, 0.34, facecolor="white",
+        ax.add_artist(Rectangle((x - 0.17, y - 0.17), 0.34, 0.34, facecolor="white",
                                edgecolor="#222222" if chosen else "#bbbbbb", linewidth=1.4 if chosen else 0.6, zorder=3))
         if label_nodes:
             ax.text(x, y, f"P{node}", ha="center", va="center", fontsize=7 if w * h > 16 else 9, zorder=4,
                     color="#222222" if chosen else "#999999")
+    # One quiver per panel (used channels coloured, unused grey): hundreds of arrows cost one artist.
+    used, unused = [], []
     for ch in range(w * h * 4):
-        target = channel_target(trace, ch)
-        if target is None:
+        if channel_target(trace, ch) is None:
             continue
         x, y = trace.node_xy(ch // 4)
         dx, dy = STEP[ch % 4]
         ox, oy = dy * 0.1, -dx * 0.1  # keep right: the two directions of a pair side by side
-        start = (x + 0.2 * dx + ox, y + 0.2 * dy + oy)
-        end = (x + 0.8 * dx + ox, y + 0.8 * dy + oy)
-        used = values[ch] > 0
-        color = cmap(norm(values[ch])) if used else "#dddddd"
-        ax.add_patch(FancyArrowPatch(start, end, arrowstyle="-|>", mutation_scale=6 + lw * 2, color=color,
-                                     linewidth=lw if used else max(0.5, lw / 3), zorder=2, shrinkA=0, shrinkB=0))
+        (used if values[ch] > 0 else unused).append((x + 0.2 * dx + ox, y + 0.2 * dy + oy, 0.6 * dx, 0.6 * dy, values[ch]))
+    for arrows, width in ((unused, lw / 3), (used, lw if not big else 6.0)):
+        if not arrows:
+            continue
+        a = np.array(arrows)
+        style = dict(angles="xy", scale_units="xy", scale=1, units="xy", width=0.018 * width, headwidth=2.6,
+                     headlength=2.2, headaxislength=2.0, zorder=2)
+        if arrows is used:
+            ax.quiver(a[:, 0], a[:, 1], a[:, 2], a[:, 3], a[:, 4], cmap=cmap, norm=norm, **style)
+        else:
+            ax.quiver(a[:, 0], a[:, 1], a[:, 2], a[:, 3], color="#dddddd", **style)
     ax.set_xlim(-0.6, w - 0.4)
     ax.set_ylim(-0.6, h - 0.4)
     ax.set_aspect("equal")
-    ax.set_xticks(range(w))
-    ax.set_yticks(range(h))
+    ax.set_xticks(range(0, w, max(1, w // 16)))
+    ax.set_yticks(range(0, h, max(1, h // 16)))
     ax.set_xlabel("mesh x (east \u2192)")
     ax.set_ylabel("mesh y (north \u2192)")
 
@@ -130,6 +143,10 @@ def plot_mesh_heatmap(plt, trace, window, title, path):
     axes[1].set_title(f"busy fraction per channel (max {busy.max():.0%})", fontsize=10)
     cb = fig.colorbar(matplotlib.cm.ScalarMappable(norm=bytes_norm, cmap=bytes_cmap), ax=axes[0], shrink=0.8)
     cb.set_label("bytes in window")
+    # Ticks at round numbers of the unit the maximum is shown in (KB, MB), not of bytes.
+    unit = 1024 ** max(0, min(4, int(np.log(max(total.max(), 1.0)) / np.log(1024))))
+    cb.set_ticks(unit * MaxNLocator(6).tick_values(0, bytes_norm.vmax / unit))
+    cb.ax.set_ylim(0, bytes_norm.vmax)
     cb.ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: human_bytes(v)))
     cb = fig.colorbar(matplotlib.cm.ScalarMappable(norm=busy_norm, cmap=busy_cmap), ax=axes[1], shrink=0.8)
     cb.set_label("busy fraction of the window")
