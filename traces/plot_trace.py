@@ -88,7 +88,10 @@ def plot_trace(args, plt):
     for name in wanted:
         path = os.path.join(args.out, name + ".png")
         began = time.monotonic()
-        draw[name](plt, trace, window, title, path)
+        try:
+            draw[name](plt, trace, window, title, path)
+        except OSError as e:
+            raise PlotError(f"cannot write {path}: {e.strerror}")
         print(f"wrote {path} ({time.monotonic() - began:.2f} s)")
     print(f"plotted {len(trace)} records in {time.monotonic() - started:.2f} s "
           f"(reading the trace {loaded - started:.2f} s)")
@@ -99,7 +102,10 @@ def plot_sweep(args, plt):
     make_out_dir(args.out)
     stem = os.path.splitext(os.path.basename(args.sweep))[0]
     path = os.path.join(args.out, f"sweep_{stem}.png")
-    draw(plt, args.sweep, path, args.title)
+    try:
+        draw(plt, args.sweep, path, args.title)
+    except OSError as e:
+        raise PlotError(f"cannot write {path}: {e.strerror}")
     print(f"wrote {path}")
 
 

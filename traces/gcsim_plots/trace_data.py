@@ -77,7 +77,7 @@ def load_trace(path):
     m = HEADER.match(first)
     if not m:
         raise PlotError(f"{csv}: not a gcsim trace CSV (expected a first line '# gcsim trace; level L; "
-                        f"N processors; mesh WxH; ...', found {first.strip()[:60]!r})")
+                        f"N processors; mesh WxH; ...', found {ascii(first.strip()[:40])})")
     if second not in (COLUMNS, COLUMNS_WITHOUT_THREAD):
         raise PlotError(f"{csv}: expected the column line '{COLUMNS}', found {second[:60]!r}")
     level, processors, width, height = m.group(1), int(m.group(2)), int(m.group(3)), int(m.group(4))
