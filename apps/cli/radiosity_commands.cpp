@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -208,6 +209,9 @@ void add_run(CommandGroups& g) {
     rad::Scene scene = rad::flatten(world);
     rad::ParallelOptions o = parallel_options(f->solve);
     parix::SimulationOptions sim = simulation_options(f->machine, 1);
+    // Checked before the run, so that a typo does not cost a whole simulation.
+    std::optional<rad::Camera> camera;
+    if (!f->camera.empty()) camera = parse_camera(f->camera);
     auto c = scene.counts();
     fmt::print("scene     {}: {} instances, {} surfaces, {} patches, {} elements, {} vertices\n", scene.name,
                c.instances, c.surfaces, c.patches, c.elements, c.vertices);
@@ -260,8 +264,7 @@ void add_run(CommandGroups& g) {
       fmt::print("csv       {}\n", f->steps_csv);
     }
     if (!f->image.empty()) {
-      rad::Camera cam = !f->camera.empty() ? parse_camera(f->camera)
-                                           : (scene.camera ? *scene.camera : rad::default_camera(scene));
+      rad::Camera cam = camera ? *camera : (scene.camera ? *scene.camera : rad::default_camera(scene));
       rad::RenderOptions ro;
       bool room = scene.name == "ROOM" || scene.name == "PICROOM";
       ro.width = f->width > 0 ? f->width : 512;
