@@ -90,22 +90,12 @@ TraceWriter::TraceWriter(const TraceOptions& options, int processors, int mesh_w
         sort_index(p, 0));
   }
   if (level_ == TraceLevel::full) {
-    // pid 1 holds one track per directed mesh channel (tid = channel id), named by its ends.
+    // pid 1 holds the mesh channels' occupancy (see record()).
     json_buffer_ += fmt::format(
         ",\n{{\"ph\":\"M\",\"pid\":1,\"name\":\"process_name\",\"args\":{{\"name\":\"mesh channels ({}x{})\"}}}}",
         mesh_width, mesh_height);
     json_buffer_ += R"js(,
 {"ph":"M","pid":1,"name":"process_sort_index","args":{"sort_index":1}})js";
-    const Mesh mesh(mesh_width, mesh_height);
-    for (int ch = 0; ch < mesh.channel_count(); ++ch) {
-      if (!mesh.channel_exists(ch)) continue;
-      const MeshChannel e = mesh.channel_ends(ch);
-      json_buffer_ += fmt::format(
-          ",\n{{\"ph\":\"M\",\"pid\":1,\"tid\":{},\"name\":\"thread_name\",\"args\":{{\"name\":\"ch {} P{}->P{} {}\"}}}}", ch, ch,
-          e.from, e.to, direction_name(ch));
-      json_buffer_ += fmt::format(
-          ",\n{{\"ph\":\"M\",\"pid\":1,\"tid\":{},\"name\":\"thread_sort_index\",\"args\":{{\"sort_index\":{}}}}}", ch, ch);
-    }
   }
   csv_buffer_ += fmt::format("# gcsim trace; level {}; {} processors; mesh {}x{}; times in picoseconds\n",
                              to_string(level_), processors, mesh_width, mesh_height);
@@ -143,11 +133,19 @@ void TraceWriter::record(const TraceRecord& r) {
           "\"bind_id\":{},\"flow_in\":true,\"args\":{{\"message\":{},\"peer\":{},\"bytes\":{}}}}}",
           r.peer, us(r.end), r.proc, r.id, r.id, r.proc, r.bytes);
       break;
-    case TraceKind::link:
+    case TraceKind::link: {
+      // Messages sharing a channel overlap without nesting, which slices of one track may not do:
+      // async begin/end pairs (one track per channel name, laid out in lanes) may.
+      const std::string name = fmt::format("ch {} P{}->P{} {}", r.id, r.proc, r.peer, direction_name(static_cast<int>(r.id)));
+      const std::int64_t occupancy = link_records_++;
       json_buffer_ += fmt::format(
-          ",\n{{\"ph\":\"X\",\"pid\":1,\"tid\":{},\"ts\":{},\"dur\":{},\"cat\":\"link\",\"name\":\"P{}->P{}\",\"args\":{{\"bytes\":{}}}}}",
-          r.id, us(r.start), us(r.end - r.start), r.proc, r.peer, r.bytes);
+          ",\n{{\"ph\":\"b\",\"pid\":1,\"tid\":{},\"ts\":{},\"cat\":\"link\",\"name\":\"{}\",\"id\":{},\"args\":{{\"bytes\":{}}}}}",
+          r.id, us(r.start), name, occupancy, r.bytes);
+      json_buffer_ += fmt::format(
+          ",\n{{\"ph\":\"e\",\"pid\":1,\"tid\":{},\"ts\":{},\"cat\":\"link\",\"name\":\"{}\",\"id\":{}}}",
+          r.id, us(r.end), name, occupancy);
       break;
+    }
     default:
       if (r.thread > 0) name_thread_track(r.proc, r.thread);
       json_buffer_ += fmt::format(

@@ -66,6 +66,7 @@ class TraceWriter {
   int thread_track(int proc, int thread) const;  // Chrome tid
   static std::int64_t sort_index(int proc, int thread) { return std::int64_t(proc) * 65536 + thread; }
   int processors_;
+  std::int64_t link_records_ = 0;  // ids of the channels' async begin/end pairs
   std::set<std::pair<int, int>> named_threads_;  // (processor, thread) tracks already named in the JSON
   std::string json_buffer_;  // whole records only, so the files always end on a record boundary
   std::string csv_buffer_;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -94,6 +95,53 @@ void run_small_program(const fs::path& dir, machine::TraceLevel level = machine:
   });
 }
 
+// What Perfetto's JSON importer needs to show every event: the slices of one track nest (a slice
+// that starts inside another ends inside it too), each message's flow has one start and one end,
+// each async begin has its end; and only the phases gcsim writes appear.
+void expect_perfetto_rules(const json& events) {
+  ASSERT_TRUE(events.is_array());
+  // (pid, tid) -> (start, end) in picoseconds: the six decimals of a microsecond, exactly.
+  std::map<std::pair<int, int>, std::vector<std::pair<std::int64_t, std::int64_t>>> tracks;
+  auto ps = [](const json& us) { return std::llround(us.get<double>() * 1e6); };
+  std::map<std::int64_t, std::pair<int, int>> flow_ends;                           // bind_id -> (outs, ins)
+  std::map<std::pair<std::string, std::int64_t>, int> async_open;
+  for (const json& e : events) {
+    const std::string ph = e["ph"];
+    ASSERT_TRUE(ph == "M" || ph == "X" || ph == "b" || ph == "e") << e.dump();
+    if (ph == "X") {
+      const std::int64_t ts = ps(e["ts"]), dur = ps(e["dur"]);
+      ASSERT_GE(dur, 0) << e.dump();
+      tracks[{e["pid"], e["tid"]}].push_back({ts, ts + dur});
+      if (e.contains("bind_id")) {
+        auto& [outs, ins] = flow_ends[e["bind_id"].get<std::int64_t>()];
+        if (e.value("flow_out", false)) ++outs;
+        if (e.value("flow_in", false)) ++ins;
+      }
+    } else if (ph == "b") {
+      ++async_open[{e["name"], e["id"].get<std::int64_t>()}];
+    } else if (ph == "e") {
+      --async_open[{e["name"], e["id"].get<std::int64_t>()}];
+    }
+  }
+  for (auto& [track, slices] : tracks) {
+    // Longer first at equal starts, as a parent precedes its children.
+    std::sort(slices.begin(), slices.end(), [](auto& a, auto& b) { return a.first != b.first ? a.first < b.first : a.second > b.second; });
+    std::vector<std::int64_t> open_ends;
+    for (const auto& [ts, end] : slices) {
+      while (!open_ends.empty() && open_ends.back() <= ts && !(open_ends.back() == ts && end == ts)) open_ends.pop_back();
+      if (!open_ends.empty()) {
+        EXPECT_LE(end, open_ends.back()) << "slices overlap without nesting on pid " << track.first << " tid " << track.second
+                                         << " at ts " << ts;
+      }
+      open_ends.push_back(end);
+    }
+  }
+  for (const auto& [id, ends] : flow_ends) {
+    EXPECT_EQ(ends, std::make_pair(1, 1)) << "message flow " << id;
+  }
+  for (const auto& [key, open] : async_open) EXPECT_EQ(open, 0) << "async " << key.first << " id " << key.second;
+}
+
 class SmallRunTrace : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -130,7 +178,9 @@ TEST_F(SmallRunTrace, ChromeJsonHasTheExpectedEventsAtExactTimes) {
   // (pid, tid, category) -> [(ts, dur)] in microseconds.
   std::map<std::tuple<int, int, std::string>, std::vector<std::pair<double, double>>> slices;
   std::vector<json> flows;
+  std::vector<json> channel;  // async begin/end of the channel's occupancy
   for (const json& e : events) {
+    if (e["pid"] == 1 && (e["ph"] == "b" || e["ph"] == "e")) channel.push_back(e);
     if (e["ph"] != "X") continue;
     slices[{e["pid"].get<int>(), e["tid"].get<int>(), e["cat"].get<std::string>()}].push_back(
         {e["ts"].get<double>(), e["dur"].get<double>()});
@@ -142,8 +192,16 @@ TEST_F(SmallRunTrace, ChromeJsonHasTheExpectedEventsAtExactTimes) {
   EXPECT_EQ((slices[{0, 1, "connect"}]), (Slices{{0.0, 1200.0}}));
   EXPECT_EQ((slices[{0, 0, "send"}]), (Slices{{1200.0, 1050.0}}));
   EXPECT_EQ((slices[{0, 1, "recv"}]), (Slices{{1200.0, 1050.0}}));
-  EXPECT_EQ((slices[{1, 0, "link"}]), (Slices{{1250.0, 1000.0}}));  // channel 0: node 0 east
-  EXPECT_EQ(slices.size(), 8u);  // and the two message marks below; nothing on P2
+  EXPECT_EQ(slices.size(), 7u);  // and the two message marks below; nothing on P2
+  // Channel 0 (node 0 east) carries the 1000 bytes from the end of the latency to the arrival.
+  ASSERT_EQ(channel.size(), 2u);
+  EXPECT_EQ(channel[0]["ph"], "b");
+  EXPECT_EQ(channel[0]["name"], "ch 0 P0->P1 east");
+  EXPECT_EQ(channel[0]["ts"].get<double>(), 1250.0);
+  EXPECT_EQ(channel[0]["args"]["bytes"], 1000);
+  EXPECT_EQ(channel[1]["ph"], "e");
+  EXPECT_EQ(channel[1]["ts"].get<double>(), 2250.0);
+  EXPECT_EQ(channel[1]["id"], channel[0]["id"]);
   // The message arrow: out of P0 when sent, into P1 on arrival, bound by the message id.
   ASSERT_EQ(flows.size(), 2u);
   const json& out = flows[0]["flow_out"] == true ? flows[0] : flows[1];
@@ -155,6 +213,43 @@ TEST_F(SmallRunTrace, ChromeJsonHasTheExpectedEventsAtExactTimes) {
   EXPECT_EQ(in["ts"].get<double>(), 2250.0);
   EXPECT_EQ(in["bind_id"], out["bind_id"]);
   EXPECT_EQ(out["args"]["bytes"], 1000);
+}
+
+TEST_F(SmallRunTrace, ChromeJsonFollowsPerfettosRules) { expect_perfetto_rules(json::parse(slurp(file(".json")))); }
+
+// Many messages at once on shared channels (flow model: they overlap on the links), a node that
+// opens links from many threads at once (as the ray tracer's master does), and collectives.
+TEST(TraceExport, BusyRunsFollowPerfettosRules) {
+  const fs::path d = fresh_dir("busy");
+  parix::SimulationOptions o;
+  o.config = machine::default_machine_config();
+  o.nodes = 16;
+  o.network_model = "flow";
+  o.trace.path = (d / "t.json").string();
+  parix::run_simulated(o, [](parix::Processor& p) {
+    if (p.id() == 0) {
+      std::vector<parix::Link> links(p.count());
+      {
+        std::vector<parix::Thread> openers;
+        for (int w = 1; w < p.count(); ++w) openers.push_back(p.spawn([&links, w](parix::Processor& q) { links[w] = q.connect(w); }));
+      }
+      for (int w = 1; w < p.count(); ++w) EXPECT_EQ(p.recv(links[w]).size(), 5000u);
+    } else {
+      parix::Link l = p.connect(0);
+      p.compute("cycle", 1000 * p.id());
+      parix::Request r = p.isend(l, std::vector<std::byte>(5000));
+      p.compute("cycle", 500);
+      p.wait(r);
+    }
+  });
+  const json events = json::parse(slurp(d / "t.json"));
+  expect_perfetto_rules(events);
+  std::set<int> thread_tracks;
+  for (const json& e : events) {
+    if (e["ph"] == "M" && e["name"] == "thread_name" && e["tid"].get<int>() >= 16) thread_tracks.insert(e["tid"].get<int>());
+  }
+  EXPECT_EQ(thread_tracks.size(), 15u) << "one track per connecting thread of P0";
+  fs::remove_all(d);
 }
 
 TEST_F(SmallRunTrace, CsvRowsMatchTheRun) {
