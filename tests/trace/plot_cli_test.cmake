@@ -75,7 +75,22 @@ file(WRITE ${WORK}/sweep.csv
 "CORNELL,sequential,8,150,1.87,65,3\n")
 gcsim(0 plot --sweep sweep.csv --out sweeps)
 expect_png(${WORK}/sweeps/sweep_sweep.png)
-string(FIND "${last_out}" "wrote" at)
+
+# The columns gcsim sweep radiosity writes (thesis cells left empty where the thesis has none) and a
+# close variant (comm_s_mean, as gcsim sweep raytrace writes it).
+file(WRITE ${WORK}/radiosity.csv
+"nodes,simulated_s,speedup,comm_s,wall_s,loops,thesis_s,thesis_speedup,thesis_comm_s\n"
+"1,250.5,1.0,0.0,3.2,151,289,1.0000,\n"
+"2,210.1,1.19,21.0,2.1,151,236,1.2246,25\n"
+"4,170.2,1.47,41.0,1.5,151,180,1.6056,40\n")
+gcsim(0 plot --sweep radiosity.csv --out sweeps)
+expect_png(${WORK}/sweeps/sweep_radiosity.png)
+file(WRITE ${WORK}/raytrace.csv
+"nodes,simulated_s,speedup,efficiency,comm_s_mean,compute_s_mean,wall_s\n"
+"1,10.0,1.0,1.0,0.0,10.0,5.0\n"
+"4,2.7,3.7,0.92,0.2,2.5,5.1\n")
+gcsim(0 plot --sweep raytrace.csv --out sweeps)
+expect_png(${WORK}/sweeps/sweep_raytrace.png)
 
 # Bad input: one line naming the file and what was expected, exit status 2, no traceback.
 gcsim(2 plot missing.json --out bad)
