@@ -16,18 +16,20 @@ Camera::Camera(const CameraSpec& spec, int width, int height) : width_(width), h
   up_ = glm::cross(right_, forward_);
   half_h_ = std::tan(glm::radians(spec.fov_degrees) * 0.5f);
   half_w_ = half_h_ * float(width) / float(height);
+  two_over_width_ = 2.0f / float(width);
+  two_over_height_ = 2.0f / float(height);
 }
 
 // For a direction forward + u right + v up, (right - u_k forward) . d = u - u_k: positive right of
 // the boundary. Likewise (v_j forward - up) . d = v_j - v: positive below row boundary j.
 Plane Camera::column_plane_at(float k) const {
-  const float uk = (2.0f * k / width_ - 1.0f) * half_w_;
+  const float uk = (k * two_over_width_ - 1.0f) * half_w_;
   const glm::vec3 n = right_ - uk * forward_;
   return {n, glm::dot(n, eye_)};
 }
 
 Plane Camera::row_plane_at(float j) const {
-  const float vj = (1.0f - 2.0f * j / height_) * half_h_;
+  const float vj = (1.0f - j * two_over_height_) * half_h_;
   const glm::vec3 n = vj * forward_ - up_;
   return {n, glm::dot(n, eye_)};
 }

@@ -16,7 +16,7 @@ void pack_tree(const std::vector<BvhNode>& nodes, NodeRef root, bool empty, cons
       const Bounds3& b = is_primitive(r) ? prim_bounds[primitive_of(r)] : nodes[r].box;
       for (int a = 0; a < 3; ++a) {
         p.bounds[a][c] = b.lo[a];
-        p.bounds[3 + a][c] = b.hi[a];
+        p.bounds[a][2 + c] = b.hi[a];
       }
       p.child[c] = r;
     }

@@ -1,7 +1,7 @@
 #pragma once
 // The layout traversal reads: each node holds the boxes of its two children, so expanding a node
-// tests both children from one 64-byte cache line, with the near and far slab planes chosen once
-// per ray from the signs of its direction. Built from a BVH or a subtree (same references).
+// tests both children from one 64-byte cache line, one axis per 4-wide vector
+// (lo of child 0, lo of child 1, hi of child 0, hi of child 1). Built from a BVH or a subtree.
 #include <cstdint>
 #include <vector>
 
@@ -10,7 +10,7 @@
 namespace gcsim::raytrace {
 
 struct alignas(64) PairNode {
-  float bounds[6][2];  // [lo x, lo y, lo z, hi x, hi y, hi z][child]
+  float bounds[3][4];  // [axis][lo child 0, lo child 1, hi child 0, hi child 1]
   NodeRef child[2];
 };
 

@@ -32,8 +32,9 @@ namespace {
 constexpr int kTileTag = 40;
 
 void append(parix::Bytes& out, const void* data, std::size_t n) {
-  const auto* p = static_cast<const std::byte*>(data);
-  out.insert(out.end(), p, p + n);
+  const std::size_t at = out.size();
+  out.resize(at + n);
+  std::memcpy(out.data() + at, data, n);
 }
 
 // What one processor does with the tiles it is given: renders, charges the operations, and packs

@@ -15,8 +15,6 @@ struct Ray {
 
   // Derived; call prepare() after setting origin and direction.
   glm::vec3 inv_direction{0.0f};
-  int near_plane[3] = {0, 1, 2};  // index into PairNode::bounds of the slab plane met first
-  int far_plane[3] = {3, 4, 5};
   int kx = 0, ky = 1, kz = 2;  // kz: the axis where |direction| is largest
   float shear_x = 0, shear_y = 0, shear_z = 1;
 
@@ -28,10 +26,6 @@ struct Ray {
   void prepare() {
     // 1/0 gives +-inf, which the slab test handles; the sign of zero is kept.
     inv_direction = glm::vec3(1.0f / direction.x, 1.0f / direction.y, 1.0f / direction.z);
-    for (int a = 0; a < 3; ++a) {
-      near_plane[a] = std::signbit(inv_direction[a]) ? 3 + a : a;
-      far_plane[a] = std::signbit(inv_direction[a]) ? a : 3 + a;
-    }
     const glm::vec3 a = glm::abs(direction);
     kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
     kx = kz == 2 ? 0 : kz + 1;

@@ -1,25 +1,70 @@
 #include "apps/raytrace/traversal.hpp"
 
 #include <algorithm>
+#include <cmath>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 
 namespace gcsim::raytrace {
 namespace {
 
 constexpr int kStackSize = 256;  // clustered trees of the built-in scenes are < 64 deep
 
-// Slab test of child c of n (see intersect_box for the conservative rounding and NaN handling:
-// the comparisons below drop a NaN from 0 * inf, counting a slab plane the ray lies in as inside).
-inline bool child_box(const PairNode& n, int c, const Ray& r, float tmax, float* entry) {
-  float t0 = r.tmin, t1 = tmax;
-  for (int a = 0; a < 3; ++a) {
-    const float tn = (n.bounds[r.near_plane[a]][c] - r.origin[a]) * r.inv_direction[a];
-    const float tf = (n.bounds[r.far_plane[a]][c] - r.origin[a]) * r.inv_direction[a] * (1.0f + 2.0f * gamma(3));
-    t0 = tn > t0 ? tn : t0;
-    t1 = tf < t1 ? tf : t1;
+// Slab tests of both children of n at once (see intersect_box for the conservative rounding and
+// NaN handling: a NaN from 0 * inf, an axis-parallel ray in a slab plane, is dropped by max/min,
+// which return their second operand when the first is NaN). The far distance is scaled up once,
+// after the minimum, which is the same as scaling each.
+struct SlabRay {
+  float o[3], inv[3];
+  bool negative[3];  // the hi plane is met first
+  explicit SlabRay(const Ray& r) {
+    for (int a = 0; a < 3; ++a) {
+      o[a] = r.origin[a];
+      inv[a] = r.inv_direction[a];
+      negative[a] = std::signbit(inv[a]);
+    }
   }
-  *entry = t0 * (1.0f - 2.0f * gamma(3));
-  return t0 <= t1;
+};
+
+#if defined(__SSE2__)
+inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, float tmax, float entry[2]) {
+  __m128 t0 = _mm_set1_ps(tmin), t1 = _mm_set1_ps(kInfinity);
+  for (int a = 0; a < 3; ++a) {
+    // (lo0, lo1, hi0, hi1) -> distances; the near pair is in the low or high half.
+    const __m128 t = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.bounds[a]), _mm_set1_ps(r.o[a])), _mm_set1_ps(r.inv[a]));
+    const __m128 swapped = _mm_movehl_ps(t, t);
+    const __m128 tn = r.negative[a] ? swapped : t;
+    const __m128 tf = r.negative[a] ? t : swapped;
+    t0 = _mm_max_ps(tn, t0);
+    t1 = _mm_min_ps(tf, t1);
+  }
+  const __m128 far = _mm_min_ps(_mm_mul_ps(t1, _mm_set1_ps(1.0f + 2.0f * gamma(3))), _mm_set1_ps(tmax));
+  const __m128 near = _mm_mul_ps(t0, _mm_set1_ps(1.0f - 2.0f * gamma(3)));
+  alignas(16) float e[4];
+  _mm_store_ps(e, near);
+  entry[0] = e[0];
+  entry[1] = e[1];
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(t0, far))) & 3u;
 }
+#else
+inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, float tmax, float entry[2]) {
+  unsigned mask = 0;
+  for (int c = 0; c < 2; ++c) {
+    float t0 = tmin, t1 = kInfinity;
+    for (int a = 0; a < 3; ++a) {
+      float tn = (n.bounds[a][c] - r.o[a]) * r.inv[a];
+      float tf = (n.bounds[a][2 + c] - r.o[a]) * r.inv[a];
+      if (r.negative[a]) std::swap(tn, tf);
+      t0 = tn > t0 ? tn : t0;
+      t1 = tf < t1 ? tf : t1;
+    }
+    entry[c] = t0 * (1.0f - 2.0f * gamma(3));
+    mask |= unsigned(t0 <= std::min(t1 * (1.0f + 2.0f * gamma(3)), tmax)) << c;
+  }
+  return mask;
+}
+#endif
 
 }  // namespace
 
@@ -32,18 +77,21 @@ void traverse_unordered(const Scene& scene, const PackedTree& tree, const Ray& r
   float entry;
   ++tally.boxes;
   if (!intersect_box(tree.root_box, ray, kInfinity, &entry)) return;
+  const SlabRay slab(ray);
   NodeRef stack[kStackSize];
   int top = 0;
   stack[top++] = tree.root;
   while (top > 0) {
     const PairNode& n = tree.nodes[stack[--top]];
+    float entries[2];
+    const unsigned mask = both_children(n, slab, ray.tmin, kInfinity, entries);
     for (int i = 1; i >= 0; --i) {  // push the second child first: the first is visited first
       const NodeRef c = n.child[i];
       if (is_primitive(c)) {
         test_primitive(scene, primitive_of(c), ray, hit, tally);
       } else {
         ++tally.boxes;
-        if (child_box(n, i, ray, kInfinity, &entry) && top < kStackSize) stack[top++] = c;
+        if ((mask >> i & 1u) && top < kStackSize) stack[top++] = c;
       }
     }
   }
@@ -61,6 +109,7 @@ void traverse_ordered(const Scene& scene, const PackedTree& tree, const Ray& ray
   float entry;
   ++tally.boxes;
   if (!intersect_box(tree.root_box, ray, hit.t, &entry)) return;
+  const SlabRay slab(ray);
   stack[top++] = {tree.root, entry};
   while (top > 0) {
     const Entry e = stack[--top];
@@ -68,13 +117,17 @@ void traverse_ordered(const Scene& scene, const PackedTree& tree, const Ray& ray
     const PairNode& n = tree.nodes[e.node];
     Entry found[2];
     int count = 0;
-    for (int i = 0; i < 2; ++i) {
-      const NodeRef c = n.child[i];
-      if (is_primitive(c)) {
-        test_primitive(scene, primitive_of(c), ray, hit, tally);
-      } else {
+    // Primitive children first: their hits tighten the distance the boxes are tested against.
+    const bool prim0 = is_primitive(n.child[0]), prim1 = is_primitive(n.child[1]);
+    if (prim0) test_primitive(scene, primitive_of(n.child[0]), ray, hit, tally);
+    if (prim1) test_primitive(scene, primitive_of(n.child[1]), ray, hit, tally);
+    if (!(prim0 && prim1)) {
+      float entries[2];
+      const unsigned mask = both_children(n, slab, ray.tmin, hit.t, entries);
+      for (int i = 0; i < 2; ++i) {
+        if (i == 0 ? prim0 : prim1) continue;
         ++tally.boxes;
-        if (child_box(n, i, ray, hit.t, &entry)) found[count++] = {c, entry};
+        if (mask >> i & 1u) found[count++] = {n.child[i], entries[i]};
       }
     }
     if (count == 2) {
@@ -96,18 +149,21 @@ bool traverse_any_hit(const Scene& scene, const PackedTree& tree, const Ray& ray
   float entry;
   ++tally.boxes;
   if (!intersect_box(tree.root_box, ray, tmax, &entry)) return false;
+  const SlabRay slab(ray);
   NodeRef stack[kStackSize];
   int top = 0;
   stack[top++] = tree.root;
   while (top > 0) {
     const PairNode& n = tree.nodes[stack[--top]];
+    float entries[2];
+    const unsigned mask = both_children(n, slab, ray.tmin, tmax, entries);
     for (int i = 1; i >= 0; --i) {
       const NodeRef c = n.child[i];
       if (is_primitive(c)) {
         if (occludes(scene, primitive_of(c), ray, tmax, tally)) return true;
       } else {
         ++tally.boxes;
-        if (child_box(n, i, ray, tmax, &entry) && top < kStackSize) stack[top++] = c;
+        if ((mask >> i & 1u) && top < kStackSize) stack[top++] = c;
       }
     }
   }
