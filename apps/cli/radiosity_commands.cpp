@@ -475,6 +475,80 @@ void add_accuracy(CommandGroups& g) {
   });
 }
 
+void add_table(CommandGroups& g) {
+  struct Flags {
+    int hemicube = 256;
+    int shooters = 2;
+    std::string csv;
+  };
+  auto f = std::make_shared<Flags>();
+  CLI::App* cmd = g.table->add_subcommand(
+      "radiosity",
+      "The thesis's tables 4.1 (scene counts) and 4.2 (progressive-refinement loops needed to shoot a\n"
+      "given fraction of the energy) for ROOM, PICROOM and CORNELL, next to the published figures.\n"
+      "Loop counts come from the sequential solver (they do not depend on the node count).");
+  cmd->add_option("--hemicube", f->hemicube, "Hemicube resolution")->check(CLI::Range(8, 4096))->capture_default_str();
+  cmd->add_option("--shooters", f->shooters, "Shooters per loop (the thesis: 2)")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+  cmd->add_option("--csv", f->csv, "Write table 4.2 as CSV");
+  cmd->callback([f] {
+    fmt::print("table 4.1: scenes ({} / thesis)\n", "this");
+    fmt::print("{:<8} {:>11} {:>11} {:>11} {:>11} {:>11}\n", "scene", "instances", "surfaces", "patches", "elements", "vertices");
+    std::vector<rad::Scene> scenes;
+    for (const auto& name : rad::builtin_scene_names()) {
+      scenes.push_back(rad::flatten(rad::load_scene_world(name)));
+      auto c = scenes.back().counts();
+      auto t = rad::thesis_counts(name);
+      auto pair = [](int a, int b) { return fmt::format("{}/{}", a, b); };
+      fmt::print("{:<8} {:>11} {:>11} {:>11} {:>11} {:>11}\n", scenes.back().name, pair(c.instances, t.instances),
+                 pair(c.surfaces, t.surfaces), pair(c.patches, t.patches), pair(c.elements, t.elements),
+                 pair(c.vertices, t.vertices));
+    }
+    fmt::print("\ntable 4.2: loops ({} shooters each) to shoot a fraction of the energy (this / thesis)\n", f->shooters);
+    fmt::print("{:>8}", "energy%");
+    for (const auto& s : scenes) fmt::print(" {:>13}", s.name);
+    fmt::print("\n");
+    std::vector<std::vector<int>> loops(scenes.size());
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+      rad::SolverOptions o;
+      o.hemicube.resolution = f->hemicube;
+      o.shooters = f->shooters;
+      o.energy = rad::thesis::kEnergyPercent.back() / 100;
+      auto r = rad::solve_progressive(scenes[i], o);
+      for (double pct : rad::thesis::kEnergyPercent) {
+        int l = -1;
+        for (const auto& st : r.steps)
+          if (st.shot_fraction >= pct / 100) {
+            l = st.step;
+            break;
+          }
+        loops[i].push_back(l);
+      }
+    }
+    std::ofstream csv;
+    if (!f->csv.empty()) {
+      csv.open(f->csv);
+      if (!csv) throw std::runtime_error("cannot write CSV file '" + f->csv + "'");
+      csv << "energy_percent";
+      for (const auto& s : scenes) csv << ',' << s.name << ',' << s.name << "_thesis";
+      csv << '\n';
+    }
+    for (std::size_t k = 0; k < rad::thesis::kEnergyPercent.size(); ++k) {
+      fmt::print("{:>8}", rad::thesis::kEnergyPercent[k]);
+      if (csv) csv << rad::thesis::kEnergyPercent[k];
+      for (std::size_t i = 0; i < scenes.size(); ++i) {
+        const auto* fig = rad::thesis::figures_for(scenes[i].name);
+        int t = fig ? fig->loops_for_energy[k] : -1;
+        auto num = [](int v) { return v < 0 ? std::string("-") : fmt::format("{}", v); };
+        fmt::print(" {:>13}", num(loops[i][k]) + " / " + num(t));
+        if (csv) csv << ',' << (loops[i][k] < 0 ? "" : num(loops[i][k])) << ',' << (t < 0 ? "" : num(t));
+      }
+      fmt::print("\n");
+      if (csv) csv << '\n';
+    }
+    if (!f->csv.empty()) fmt::print("csv {}\n", f->csv);
+  });
+}
+
 void add_scene_info(CommandGroups& g) {
   struct Flags {
     std::string scene;
@@ -534,6 +608,7 @@ void add_radiosity_commands(CommandGroups& g) {
   add_run(g);
   add_sweep(g);
   add_accuracy(g);
+  add_table(g);
   add_scene_info(g);
 }
 

@@ -143,15 +143,18 @@ TEST(WorldParser, WorldErrorsNameTheFile) {
             "bad.wld:5: expected entity file name, COMMENT, CAMERA or 'END_FILE', found end of file");
   EXPECT_EQ(err("WORLD w\nEND_FILE\n"), "bad.wld:2: world has no instances");
   // An error inside an entity names the entity file.
-  std::filesystem::create_directories("fixtures_tmp");
-  std::ofstream("fixtures_tmp/broken.ent") << "ENTITY b\nVERTEX\n< 0 0 0\nEND_VERT\n";
+  auto dir = std::filesystem::temp_directory_path() / "gcsim_radiosity_parser_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "broken.ent") << "ENTITY b\nVERTEX\n< 0 0 0\nEND_VERT\n";
   try {
-    parse_world("WORLD w\nbroken.ent\n< 1 1 1 >\n< 0 0 0 >\n< 0 0 0 >\nEND_FILE\n", "w.wld", "fixtures_tmp");
+    parse_world("WORLD w\nbroken.ent\n< 1 1 1 >\n< 0 0 0 >\n< 0 0 0 >\nEND_FILE\n", "w.wld", dir);
     FAIL() << "no error";
   } catch (const ParseError& e) {
-    EXPECT_EQ(std::string(e.what()), "fixtures_tmp/broken.ent:4: expected '>' closing vertex vector (three numbers), found 'END_VERT'");
+    EXPECT_EQ(e.file, (dir / "broken.ent").string());
+    EXPECT_EQ(e.line, 4);
+    EXPECT_EQ(e.message, "expected '>' closing vertex vector (three numbers), found 'END_VERT'");
   }
-  std::filesystem::remove_all("fixtures_tmp");
+  std::filesystem::remove_all(dir);
   EXPECT_THROW(load_world("fixtures/no_such.wld"), ParseError);
 }
 
