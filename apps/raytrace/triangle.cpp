@@ -6,10 +6,13 @@
 
 namespace gcsim::raytrace {
 
-bool intersect_triangle(const Triangle& tri, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2) {
+namespace {
+
+// The axes are template parameters so that the permutation costs nothing at run time.
+template <int kx, int ky, int kz>
+bool watertight(const Triangle& tri, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2) {
   // Translate to the ray origin, permute so the dominant direction axis is z, then shear.
-  glm::vec3 a = tri.p0 - ray.origin, b = tri.p1 - ray.origin, c = tri.p2 - ray.origin;
-  const int kx = ray.kx, ky = ray.ky, kz = ray.kz;
+  const glm::vec3 a = tri.p0 - ray.origin, b = tri.p1 - ray.origin, c = tri.p2 - ray.origin;
   const float sx = ray.shear_x, sy = ray.shear_y, sz = ray.shear_z;
   const float az = a[kz], bz = b[kz], cz = c[kz];
   const float ax = a[kx] + sx * az, ay = a[ky] + sy * az;
@@ -55,6 +58,19 @@ bool intersect_triangle(const Triangle& tri, const Ray& ray, float tmax, float* 
   *b1 = e1 * inv_det;
   *b2 = e2 * inv_det;
   return true;
+}
+
+}  // namespace
+
+bool intersect_triangle(const Triangle& tri, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2) {
+  switch (ray.kz * 3 + ray.kx) {
+    case 0 * 3 + 1: return watertight<1, 2, 0>(tri, ray, tmax, t_hit, b1, b2);
+    case 0 * 3 + 2: return watertight<2, 1, 0>(tri, ray, tmax, t_hit, b1, b2);
+    case 1 * 3 + 2: return watertight<2, 0, 1>(tri, ray, tmax, t_hit, b1, b2);
+    case 1 * 3 + 0: return watertight<0, 2, 1>(tri, ray, tmax, t_hit, b1, b2);
+    case 2 * 3 + 0: return watertight<0, 1, 2>(tri, ray, tmax, t_hit, b1, b2);
+    default: return watertight<1, 0, 2>(tri, ray, tmax, t_hit, b1, b2);
+  }
 }
 
 }  // namespace gcsim::raytrace
