@@ -103,4 +103,40 @@ std::vector<EnergyAccuracy> energy_accuracy(const Scene& scene, const SolverOpti
   return out;
 }
 
+std::vector<HierarchicalAccuracy> hierarchical_accuracy(const Scene& scene, const SolverOptions& options,
+                                                        const std::vector<int>& levels,
+                                                        const machine::MachineConfig& m) {
+  std::vector<HierarchicalAccuracy> out;
+  std::vector<Rgb> reference;
+  double mean_ref = 0, total_area = 0;
+  std::vector<int> all = {0};
+  all.insert(all.end(), levels.begin(), levels.end());
+  for (int l : all) {
+    SolverOptions o = options;
+    o.hemicube.hierarchical_levels = l;
+    OpCounts ops;
+    double t0 = now_seconds();
+    SolveResult r = solve_progressive(scene, o, &ops);
+    double wall = now_seconds() - t0;
+    const auto& b = r.state.element_radiosity();
+    if (l == 0) {
+      reference = b;
+      for (std::size_t e = 0; e < b.size(); ++e) {
+        mean_ref += channel_sum(b[e]) / 3 * scene.elements[e].area;
+        total_area += scene.elements[e].area;
+      }
+      mean_ref /= total_area;
+    }
+    double sq = 0, worst = 0;
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      Rgb d = glm::abs(b[e] - reference[e]) / mean_ref;
+      double err = std::max({d.r, d.g, d.b});
+      sq += err * err * scene.elements[e].area;
+      worst = std::max(worst, err);
+    }
+    out.push_back({l, r.state.steps(), std::sqrt(sq / total_area), worst, simulated_seconds(ops, m), wall});
+  }
+  return out;
+}
+
 }  // namespace gcsim::radiosity

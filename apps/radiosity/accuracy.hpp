@@ -37,6 +37,20 @@ std::vector<EnergyAccuracy> energy_accuracy(const Scene& scene, const SolverOpti
                                             const std::vector<double>& thresholds,
                                             const machine::MachineConfig& machine);
 
+struct HierarchicalAccuracy {
+  int levels;                 // 0: the fixed hemicube (the reference)
+  int steps;
+  double rms_relative_error;  // against the fixed hemicube of the same resolution
+  double max_relative_error;
+  double simulated_seconds, wall_seconds;
+};
+
+// The hierarchical hemicube (thesis 4.5) against the fixed one at the same resolution: what the
+// adaptive sampling saves and what it costs in accuracy, per number of levels.
+std::vector<HierarchicalAccuracy> hierarchical_accuracy(const Scene& scene, const SolverOptions& options,
+                                                        const std::vector<int>& levels,
+                                                        const machine::MachineConfig& machine);
+
 // Simulated seconds of counted work on one CPU of the machine.
 double simulated_seconds(const OpCounts& ops, const machine::MachineConfig& machine);
 
