@@ -1,8 +1,8 @@
 #include "apps/cli/trace_run_report.hpp"
 
 #include <filesystem>
-#include <set>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -82,6 +82,28 @@ void table_row(std::ostringstream& h, std::string_view name, const std::string& 
 
 std::string seconds(double s) { return s < 0 ? "&ndash;" : fmt::format("{:.6f} s", s); }
 
+// Run JSONs keep app settings in an object named after the app ({"radiosity": {"scene", "image",
+// ...}}): a key is looked up at the top level, then in those objects. Returns (app, value) or nulls.
+std::pair<std::string, const json*> find_setting(const json& j, const char* key) {
+  if (j.contains(key) && j[key].is_string()) return {"", &j[key]};
+  static const std::set<std::string> kRunBlocks{"simulated", "wall", "ops"};
+  for (const auto& [k, v] : j.items()) {
+    if (v.is_object() && !kRunBlocks.count(k) && v.contains(key) && v[key].is_string()) return {k, &v[key]};
+  }
+  return {"", nullptr};
+}
+
+// Settings as dotted rows: {"radiosity": {"scene": "CORNELL", "counts": {"patches": 112}}} gives
+// radiosity.scene and radiosity.counts.patches.
+void setting_rows(std::ostringstream& h, const std::string& prefix, const json& v, int depth) {
+  if (v.is_object()) {
+    if (depth > 2) return;
+    for (const auto& [k, sub] : v.items()) setting_rows(h, prefix.empty() ? k : prefix + "." + k, sub, depth + 1);
+  } else if (!v.is_array()) {
+    table_row(h, prefix, show(v));
+  }
+}
+
 }  // namespace
 
 std::string write_run_report(const ReportOptions& o) {
@@ -96,8 +118,12 @@ std::string write_run_report(const ReportOptions& o) {
   std::ostringstream h;
   std::string heading = "gcsim run";
   for (const char* k : {"experiment", "app", "algo", "scene"}) {
-    if (j.contains(k) && j[k].is_string()) heading += " &middot; " + escape(j[k].get<std::string>());
+    const auto [app, v] = find_setting(j, k);
+    if (!v) continue;
+    if (!app.empty() && heading.find(app) == std::string::npos) heading += " &middot; " + escape(app);
+    heading += " &middot; " + escape(v->get<std::string>());
   }
+  if (j.contains("nodes") && j["nodes"].is_number_integer()) heading += fmt::format(" &middot; {} nodes", j["nodes"].get<int>());
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << heading << "</title>\n"
     << "<style>body{font-family:sans-serif;max-width:1200px;margin:2em auto;padding:0 1em;color:#222}"
        "table{border-collapse:collapse;margin:0.5em 0 1.5em}th,td{border:1px solid #ccc;padding:3px 10px;text-align:left}"
@@ -108,14 +134,7 @@ std::string write_run_report(const ReportOptions& o) {
   h << "<h2>Configuration</h2>\n<table>\n";
   static const std::set<std::string> kShownElsewhere{"simulated", "wall", "processors", "ops", "events", "messages"};
   for (const auto& [k, v] : j.items()) {
-    if (kShownElsewhere.count(k)) continue;
-    if (v.is_object()) {
-      for (const auto& [k2, v2] : v.items()) {
-        if (!v2.is_structured()) table_row(h, k + "." + k2, show(v2));
-      }
-    } else if (!v.is_array()) {
-      table_row(h, k, show(v));
-    }
+    if (!kShownElsewhere.count(k)) setting_rows(h, k, v, 1);
   }
   h << "</table>\n";
 
@@ -156,8 +175,8 @@ std::string write_run_report(const ReportOptions& o) {
     h << "</table></details>\n";
   }
 
-  if (j.contains("image") && j["image"].is_string()) {
-    const fs::path image = resolve_named(j["image"].get<std::string>(), o.run_json);
+  if (const auto [app, named] = find_setting(j, "image"); named) {
+    const fs::path image = resolve_named(named->get<std::string>(), o.run_json);
     h << "<h2>Image</h2>\n";
     if (fs::exists(image)) {
       const fs::path copy = fs::path(o.out_dir) / image.filename();
@@ -175,8 +194,8 @@ std::string write_run_report(const ReportOptions& o) {
   }
 
   std::string trace = o.trace;
-  if (trace.empty() && j.contains("trace") && j["trace"].is_string()) {
-    trace = resolve_named(j["trace"].get<std::string>(), o.run_json).string();
+  if (const auto [app, named] = find_setting(j, "trace"); trace.empty() && named) {
+    trace = resolve_named(named->get<std::string>(), o.run_json).string();
   }
   h << "<h2>Communication trace</h2>\n";
   if (trace.empty()) {

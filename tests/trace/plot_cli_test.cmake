@@ -66,6 +66,20 @@ foreach(word "Simulated time next to wall-clock time" "plots/gantt.png" "plots/m
   endif()
 endforeach()
 
+# A rendering run names its image inside its app's settings; the report copies and shows it.
+file(READ ${WORK}/run.json run_json)
+string(REPLACE "\"nodes\"" "\"radiosity\": {\"scene\": \"CORNELL\", \"image\": \"plots/gantt.png\"}, \"nodes\"" run_json "${run_json}")
+file(WRITE ${WORK}/render_run.json "${run_json}")
+gcsim(0 report render_run.json --out render_report)
+expect_png(${WORK}/render_report/gantt.png)
+file(READ ${WORK}/render_report/index.html html)
+foreach(word "<h2>Image</h2>" "src=\"gantt.png\"" "radiosity.scene")
+  string(FIND "${html}" "${word}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "render_report/index.html does not contain '${word}'")
+  endif()
+endforeach()
+
 # A sweep that reproduces thesis table 4.3 (CORNELL, sequential broadcast) gets the thesis overlay.
 file(WRITE ${WORK}/sweep.csv
 "scene,broadcast,nodes,simulated_s,speedup,comm_s,wall_s\n"
