@@ -64,6 +64,10 @@ Scene flatten(const World& world) {
       throw std::invalid_argument("instance refers to an unknown entity");
     const Entity& e = world.entities[inst.entity];
     int v0 = int(s.vertices.size()), s0 = int(s.surfaces.size()), p0 = int(s.patches.size());
+    // A mirroring placement (odd number of negative scale factors) would turn every polygon to face
+    // the other way; reversing the vertex order keeps the sides the entity file meant.
+    const Vec3& sc = inst.placement.scale;
+    const bool mirrored = (sc.x < 0) != ((sc.y < 0) != (sc.z < 0));
     for (const Vec3& v : e.vertices) s.vertices.push_back(inst.placement.apply(v));
     for (const Surface& sf : e.surfaces) s.surfaces.push_back(sf);
     std::vector<std::vector<int>> elements_of(e.patches.size());
@@ -79,7 +83,7 @@ Scene flatten(const World& world) {
       ScenePatch p;
       p.surface = s0 + r.owner;
       std::array<int, 4> gv{};
-      for (int k = 0; k < r.count; ++k) gv[k] = v0 + r.vertex[k];
+      for (int k = 0; k < r.count; ++k) gv[k] = v0 + r.vertex[mirrored ? r.count - 1 - k : k];
       p.polygon = make_polygon(s.vertices, gv, r.count);
       p.area = polygon_area(p.polygon);
       if (!(p.area > 0))
@@ -93,7 +97,7 @@ Scene flatten(const World& world) {
         SceneElement el;
         el.patch = p0 + int(i);
         el.count = er.count;
-        for (int k = 0; k < er.count; ++k) el.vertex[k] = v0 + er.vertex[k];
+        for (int k = 0; k < er.count; ++k) el.vertex[k] = v0 + er.vertex[mirrored ? er.count - 1 - k : k];
         el.polygon = make_polygon(s.vertices, el.vertex, er.count);
         el.area = polygon_area(el.polygon);
         if (!(el.area > 0))

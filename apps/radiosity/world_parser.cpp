@@ -239,7 +239,11 @@ World parse_world(std::string_view text, const std::string& file, const std::fil
     const Token& name = c.next("entity file name");
     if (name.text == "<" || name.text == "[") c.fail_at(name.line, "expected entity file name, found a vector");
     Instance inst;
+    int scale_line = c.line();
     inst.placement.scale = c.triple('<', '>', "scaling vector");
+    for (int k = 0; k < 3; ++k)
+      if (inst.placement.scale[k] == 0)
+        c.fail_at(scale_line, "scaling vector has a zero component: the entity would be flattened");
     inst.placement.rotation_degrees = c.triple('<', '>', "rotation vector");
     inst.placement.translation = c.triple('<', '>', "translation vector");
     auto it = loaded.find(name.text);

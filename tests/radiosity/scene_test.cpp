@@ -172,6 +172,23 @@ TEST(WorldParser, ExportedBuiltinScenesParseBackIdentically) {
   }
 }
 
+TEST(Placement, MirroringKeepsTheFacingSide) {
+  World w = load_world("fixtures/opposing_squares.wld");
+  w.instances[0].placement.scale = {-1, 1, 1};  // mirrored in x: the square must still face +z
+  Scene s = flatten(w);
+  EXPECT_NEAR(s.patches[0].normal.z, 1, 1e-12);
+  EXPECT_NEAR(s.elements[0].normal.z, 1, 1e-12);
+}
+
+TEST(WorldParser, ZeroScaleIsRejectedAtItsLine) {
+  try {
+    parse_world("WORLD w\nsquare.ent\n< 1 0 1 >\n< 0 0 0 >\n< 0 0 0 >\nEND_FILE\n", "z.wld", "fixtures");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(std::string(e.what()), "z.wld:3: scaling vector has a zero component: the entity would be flattened");
+  }
+}
+
 TEST(Placement, ScaleRotateTranslateInThatOrder) {
   Placement p;
   p.scale = {2, 1, 1};
