@@ -32,7 +32,7 @@ struct Bounds3 {
   // Grown by a few float ulps of its own magnitude, so that a hit the primitive test reports can
   // never fall outside the box because of rounding.
   Bounds3 padded() const {
-    const glm::vec3 mag = glm::max(glm::abs(lo), glm::abs(hi));
+    const glm::vec3 mag = glm::max(abs_components(lo), abs_components(hi));
     const float pad = 4.0f * gamma(3) * std::max({mag.x, mag.y, mag.z, 1e-30f});
     return {lo - pad, hi + pad};
   }

@@ -12,6 +12,13 @@ inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
 // Bound on the relative error after n floating-point operations: n*eps / (1 - n*eps).
 constexpr float gamma(int n) { return (n * kMachineEpsilon) / (1 - n * kMachineEpsilon); }
 
+// Component-wise |v| without branches (glm::abs compiles to compare-and-branch).
+template <class V>
+inline V abs_components(V v) {
+  for (int i = 0; i < V::length(); ++i) v[i] = std::fabs(v[i]);
+  return v;
+}
+
 inline float next_float_up(float v) { return std::nextafter(v, kInfinity); }
 inline float next_float_down(float v) { return std::nextafter(v, -kInfinity); }
 

@@ -2,6 +2,8 @@
 // Which side of a plane a box lies on: the flags of section 2.2.1 (inside, outside, crossing).
 #include <glm/glm.hpp>
 
+#include "apps/raytrace/float_util.hpp"
+
 #include "apps/raytrace/bounds.hpp"
 #include "apps/raytrace/camera.hpp"
 
@@ -15,9 +17,9 @@ inline Side classify(const Bounds3& b, const Plane& p) {
   const glm::vec3 c = b.center();
   const glm::vec3 h = 0.5f * b.extent();
   const float s = glm::dot(p.normal, c) - p.offset;
-  const float r = glm::dot(glm::abs(p.normal), h);
+  const float r = glm::dot(abs_components(p.normal), h);
   if (s - r > 0.0f) return Side::inside;
-  const float margin = 1e-5f * (std::abs(p.offset) + glm::dot(glm::abs(p.normal), glm::abs(c)) + r);
+  const float margin = 1e-5f * (std::abs(p.offset) + glm::dot(abs_components(p.normal), abs_components(c)) + r);
   if (s + r < -margin) return Side::outside;
   return Side::crossing;
 }

@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include "apps/raytrace/float_util.hpp"
+
 namespace gcsim::raytrace {
 
 struct Ray {
@@ -26,7 +28,7 @@ struct Ray {
   void prepare() {
     // 1/0 gives +-inf, which the slab test handles; the sign of zero is kept.
     inv_direction = glm::vec3(1.0f / direction.x, 1.0f / direction.y, 1.0f / direction.z);
-    const glm::vec3 a = glm::abs(direction);
+    const glm::vec3 a = abs_components(direction);
     kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
     kx = kz == 2 ? 0 : kz + 1;
     ky = kx == 2 ? 0 : kx + 1;

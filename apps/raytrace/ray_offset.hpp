@@ -11,7 +11,7 @@ namespace gcsim::raytrace {
 
 inline glm::vec3 offset_ray_origin(const SurfacePoint& sp, glm::vec3 direction) {
   const glm::vec3 n = sp.geometric_normal;
-  const float d = glm::dot(glm::abs(n), sp.position_error);
+  const float d = glm::dot(abs_components(n), sp.position_error);
   glm::vec3 offset = d * n;
   if (glm::dot(direction, n) < 0) offset = -offset;
   glm::vec3 p = sp.position + offset;

@@ -66,14 +66,14 @@ SurfacePoint Scene::surface_point(const Ray& ray, int prim, float t, float b1, f
     radial = len > 0 ? radial / len : glm::dvec3(0, 0, 1);
     p = c + double(s.radius) * radial;
     sp.position = glm::vec3(p);
-    sp.position_error = gamma(5) * glm::abs(sp.position) + gamma(5) * glm::abs(s.center);
+    sp.position_error = gamma(5) * abs_components(sp.position) + gamma(5) * abs_components(s.center);
     sp.geometric_normal = glm::vec3(radial);
     sp.shading_normal = sp.geometric_normal;
   } else {
     const Triangle& tri = triangle(prim);
     const float b0 = 1.0f - b1 - b2;
     sp.position = b0 * tri.p0 + b1 * tri.p1 + b2 * tri.p2;
-    sp.position_error = gamma(7) * (glm::abs(b0 * tri.p0) + glm::abs(b1 * tri.p1) + glm::abs(b2 * tri.p2));
+    sp.position_error = gamma(7) * (abs_components(b0 * tri.p0) + abs_components(b1 * tri.p1) + abs_components(b2 * tri.p2));
     glm::vec3 g = tri.geometric_normal();
     const float len = glm::length(g);
     sp.geometric_normal = len > 0 ? g / len : glm::vec3(0, 0, 1);
