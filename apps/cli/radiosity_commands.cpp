@@ -102,8 +102,6 @@ rad::ParallelOptions parallel_options(const SolveFlags& f) {
   return o;
 }
 
-std::string scene_label(const rad::World& w) { return w.name; }
-
 // "ex,ey,ez,tx,ty,tz[,fov]"
 rad::Camera parse_camera(const std::string& s) {
   std::vector<double> v;
