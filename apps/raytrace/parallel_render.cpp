@@ -1,5 +1,6 @@
 #include "apps/raytrace/parallel_render.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <deque>
 
@@ -144,11 +145,29 @@ void run_static(parix::Processor& p, NodeWork& work, Distribution d) {
   }
 }
 
+// Guided self-scheduling: a request is answered with a run of consecutive tiles of one row, about
+// 1/(2N) of what is left (at least one). Early runs are long, so there are few messages and
+// neighbouring tiles share their row planes (2.2.1); the last runs are single tiles, so the
+// nodes finish together.
+struct Chunk {
+  std::int32_t first = -1;  // -1: no more work
+  std::int32_t count = 0;
+};
+
+Chunk next_chunk(int& next, int tiles, int tiles_x, int nodes) {
+  if (next >= tiles) return {};
+  const int left_in_row = tiles_x - next % tiles_x;
+  const int count = std::clamp((tiles - next) / (2 * nodes), 1, left_in_row);
+  const Chunk c{next, count};
+  next += count;
+  return c;
+}
+
 void run_dynamic(parix::Processor& p, NodeWork& work) {
-  const int n = p.count(), me = p.id(), tiles = work.tiling.count();
+  const int n = p.count(), me = p.id(), tiles = work.tiling.count(), tiles_x = work.tiling.tiles_x();
   if (me != 0) {
     parix::Link master = p.connect(0, kTileTag);
-    std::deque<int> queue;
+    std::deque<Chunk> queue;
     bool stopped = false;
     std::vector<parix::Request> sends;
     parix::Request pending = p.irecv(master);
@@ -156,20 +175,22 @@ void run_dynamic(parix::Processor& p, NodeWork& work) {
       // Take in every assignment that has arrived; block only when there is nothing to do.
       while (!stopped && (pending.done() || queue.empty())) {
         p.wait(pending);
-        const auto t = [&] {
-          parix::Bytes b = pending.take();
-          std::int32_t v;
-          std::memcpy(&v, b.data(), sizeof v);
-          return v;
-        }();
-        if (t < 0) stopped = true;
-        else queue.push_back(t);
+        const parix::Bytes b = pending.take();
+        Chunk c;
+        if (b.size() != sizeof c) throw parix::ParixError("raytrace: malformed tile assignment");
+        std::memcpy(&c, b.data(), sizeof c);
+        if (c.first < 0) stopped = true;
+        else queue.push_back(c);
         if (!stopped) pending = p.irecv(master);
       }
       if (queue.empty()) break;
-      const int t = queue.front();
+      const Chunk c = queue.front();
       queue.pop_front();
-      parix::Bytes result = work.render(p, work.renderers[me], t);  // also asks for the next tile
+      parix::Bytes result;  // the run's pixels; sending them also asks for more work
+      for (int t = c.first; t < c.first + c.count; ++t) {
+        const parix::Bytes b = work.render(p, work.renderers[me], t);
+        result.insert(result.end(), b.begin(), b.end());
+      }
       sends.push_back(p.isend(master, result));
     }
     for (auto& s : sends) p.wait(s);
@@ -179,26 +200,22 @@ void run_dynamic(parix::Processor& p, NodeWork& work) {
   // Node 0: the master, and a worker thread on the node's second CPU sharing the tile pool.
   int next = 0;
   parix::Thread local = p.spawn([&](parix::Processor& q) {
-    while (next < tiles) {
-      const int t = next++;
-      parix::Bytes b = work.render(q, work.renderers[0], t);
-      work.assemble(q, b);
-    }
+    for (Chunk c = next_chunk(next, tiles, tiles_x, n); c.first >= 0; c = next_chunk(next, tiles, tiles_x, n))
+      for (int t = c.first; t < c.first + c.count; ++t) work.assemble(q, work.render(q, work.renderers[0], t));
   });
   std::vector<parix::Link> links = connect_root_to_all(p);
-  std::vector<int> outstanding(n, 0);
+  std::vector<int> outstanding(n, 0);  // runs assigned to a worker and not yet returned
   std::vector<bool> stop_sent(n, false);
+  std::vector<Chunk> sent;             // kept alive until the sends complete
+  sent.reserve(std::size_t(tiles) + std::size_t(n));
   std::vector<parix::Request> sends;
   auto assign = [&](int w) {
-    std::int32_t t = -1;
-    if (next < tiles) {
-      t = next++;
-      ++outstanding[w];
-    } else {
-      stop_sent[w] = true;
-    }
-    sends.push_back(p.isend(links[w], std::as_bytes(std::span(&t, 1))));
+    sent.push_back(next_chunk(next, tiles, tiles_x, n));
+    if (sent.back().first >= 0) ++outstanding[w];
+    else stop_sent[w] = true;
+    sends.push_back(p.isend(links[w], std::as_bytes(std::span(&sent.back(), 1))));
   };
+  // Two runs each to start with, so a worker never idles during a round trip.
   for (int w = 1; w < n; ++w)
     for (int k = 0; k < 2 && !stop_sent[w]; ++k) assign(w);
   std::vector<parix::Request> recvs(n);
@@ -214,7 +231,7 @@ void run_dynamic(parix::Processor& p, NodeWork& work) {
       }
     if (waiting.empty()) break;
     const int w = who[p.wait_any(waiting)];
-    parix::Bytes result = recvs[w].take();
+    const parix::Bytes result = recvs[w].take();
     --outstanding[w];
     work.assemble(p, result);
     if (!stop_sent[w]) assign(w);

@@ -5,9 +5,10 @@
 // which assembles the image.
 //   static       each node takes one contiguous block of tiles (scanline order)
 //   interleaved  tile i goes to node i mod N
-//   dynamic      node 0 is a master handing out tiles on request; every worker keeps two
-//                requests outstanding so it does not idle during the round trip, and a
-//                worker thread on node 0's second CPU takes tiles from the same pool
+//   dynamic      node 0 is a master handing out runs of tiles on request (guided
+//                self-scheduling: long runs first, single tiles at the end); every worker keeps
+//                two requests outstanding so it does not idle during the round trip, and a
+//                worker thread on node 0's second CPU takes runs from the same pool
 #include <cstdint>
 #include <optional>
 #include <string_view>
