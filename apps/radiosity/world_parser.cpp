@@ -169,7 +169,12 @@ Entity parse_entity(std::string_view text, const std::string& file) {
   c.expect("VERTEX", "'VERTEX' section");
   while (!c.accept("END_VERT")) {
     if (c.done() || c.peek().text != "<") c.fail("'< x y z >' vertex or 'END_VERT'");
-    e.vertices.push_back(c.triple('<', '>', "vertex vector"));
+    int vl = c.line();
+    Vec3 v = c.triple('<', '>', "vertex vector");
+    // Far beyond any scene; squares of such numbers would overflow the geometry.
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(v[k]) > 1e15) c.fail_at(vl, fmt::format("vertex coordinate {} is too large (limit 1e15)", v[k]));
+    e.vertices.push_back(v);
   }
   c.expect("SURFACE", "'SURFACE' section");
   while (!c.accept("END_SURF")) {
@@ -182,6 +187,7 @@ Entity parse_entity(std::string_view text, const std::string& file) {
       if (s.reflectance[k] < 0 || s.reflectance[k] > 1)
         c.fail_at(sl, fmt::format("reflectance {} is outside [0, 1]", s.reflectance[k]));
       if (s.exitance[k] < 0) c.fail_at(sl, fmt::format("exitance {} is negative", s.exitance[k]));
+      if (s.exitance[k] > 1e30) c.fail_at(sl, fmt::format("exitance {} is too large (limit 1e30)", s.exitance[k]));
     }
     e.surfaces.push_back(s);
   }
@@ -244,8 +250,13 @@ World parse_world(std::string_view text, const std::string& file, const std::fil
     for (int k = 0; k < 3; ++k)
       if (inst.placement.scale[k] == 0)
         c.fail_at(scale_line, "scaling vector has a zero component: the entity would be flattened");
+    int rest_line = c.line();
     inst.placement.rotation_degrees = c.triple('<', '>', "rotation vector");
     inst.placement.translation = c.triple('<', '>', "translation vector");
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(inst.placement.scale[k]) > 1e15 || std::abs(inst.placement.translation[k]) > 1e15 ||
+          std::abs(inst.placement.rotation_degrees[k]) > 1e6)
+        c.fail_at(rest_line, "scaling, rotation or translation too large (limits 1e15, 1e6 degrees, 1e15)");
     auto it = loaded.find(name.text);
     if (it == loaded.end()) {
       std::filesystem::path p = base_dir / name.text;
