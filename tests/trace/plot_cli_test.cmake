@@ -46,6 +46,14 @@ foreach(png gantt mesh_heatmap message_matrix utilization)
   expect_png(${WORK}/plots/${png}.png)
 endforeach()
 
+# gcsim paje remakes the Paje file from the CSV (for an interrupted run) exactly as the run wrote it.
+gcsim(0 paje t.csv --out again.paje)
+file(READ ${WORK}/t.paje written_by_run)
+file(READ ${WORK}/again.paje written_again)
+if(NOT written_by_run STREQUAL written_again)
+  message(FATAL_ERROR "gcsim paje t.csv differs from the t.paje the run wrote")
+endif()
+
 # A window and a subset of processors; the CSV names the trace as well as the JSON.
 gcsim(0 plot t.csv --out zoom --from-ms 1 --to-ms 8 --procs 0-7,12)
 expect_png(${WORK}/zoom/gantt.png)
@@ -89,6 +97,10 @@ file(WRITE ${WORK}/sweep.csv
 "CORNELL,sequential,8,150,1.87,65,3\n")
 gcsim(0 plot --sweep sweep.csv --out sweeps)
 expect_png(${WORK}/sweeps/sweep_sweep.png)
+string(FIND "${last_out}" "overlaid: thesis tables 4.3-4.5 (sequential broadcast), CORNELL" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "the sweep of CORNELL with sequential broadcast should overlay thesis tables 4.3-4.5:\n${last_out}")
+endif()
 
 # The columns gcsim sweep radiosity writes (thesis cells left empty where the thesis has none) and a
 # close variant (comm_s_mean, as gcsim sweep raytrace writes it).

@@ -489,6 +489,33 @@ TEST(TraceExport, SpawnedThreadsGetTheirOwnTrack) {
   fs::remove_all(d);
 }
 
+// A run killed mid-way leaves what has been flushed: whole records only, so the JSON parses once
+// its closing bracket is added (Perfetto does without it) and the CSV reads back.
+TEST(TraceExport, AnInterruptedTraceEndsOnARecordBoundary) {
+  const fs::path d = fresh_dir("interrupted");
+  machine::TraceOptions options;
+  options.path = (d / "t.json").string();
+  machine::TraceWriter writer(options, 2, 2, 1);
+  for (int i = 0; i < 5000; ++i) {  // well past one flush of the buffers
+    writer.record({machine::TraceKind::compute, i % 2, -1, SimTime(i) * kMicrosecond, SimTime(i + 1) * kMicrosecond, 0,
+                   -1, "work"});
+  }
+  const std::string json_so_far = slurp(d / "t.json");
+  const std::string csv_so_far = slurp(d / "t.csv");
+  ASSERT_GT(json_so_far.size(), 1u << 16);
+  EXPECT_EQ(json_so_far.back(), '}');
+  EXPECT_EQ(csv_so_far.back(), '\n');
+  const json events = json::parse(json_so_far + "\n]");
+  const machine::TraceCsv csv = machine::read_trace_csv((d / "t.csv").string());
+  EXPECT_GT(csv.records.size(), 100u);
+  // Two processes (processors; mesh channels at level full) with name and order, two named tracks,
+  // then one event per record.
+  EXPECT_EQ(events.size(), 2 + 2 + 2 * 2 + csv.records.size());
+  writer.close();
+  EXPECT_EQ(machine::read_trace_csv((d / "t.csv").string()).records.size(), 5000u);
+  fs::remove_all(d);
+}
+
 TEST(TraceCsv, SiblingPaths) {
   EXPECT_EQ(machine::trace_sibling_path("run/t.json", ".csv"), "run/t.csv");
   EXPECT_EQ(machine::trace_sibling_path("run.d/trace", ".paje"), "run.d/trace.paje");

@@ -187,6 +187,7 @@ def plot_sweep(plt, path, out_path, title=None):
     ax_comm.set_title("communication share (comm_s / simulated_s)")
     note = "; overlaid: " + "; ".join(overlays) if overlays else "; no thesis table matches (no overlay)"
     fig.suptitle(f"{title or os.path.basename(path)}{note}", fontsize=11)
+    print(note.lstrip("; "))
     fig.tight_layout()
     fig.savefig(out_path)
     plt.close(fig)
