@@ -146,9 +146,11 @@ void run_static(parix::Processor& p, NodeWork& work, Distribution d) {
 }
 
 // Guided self-scheduling: a request is answered with a run of consecutive tiles of one row, about
-// 1/(2N) of what is left (at least one). Early runs are long, so there are few messages and
+// 1/(4N) of what is left (at least one, at most kMaxRun). Early runs are long, so there are few messages and
 // neighbouring tiles share their row planes (2.2.1); the last runs are single tiles, so the
 // nodes finish together.
+constexpr int kMaxRun = 4;  // long enough to share row planes, short enough to balance
+
 struct Chunk {
   std::int32_t first = -1;  // -1: no more work
   std::int32_t count = 0;
@@ -157,7 +159,7 @@ struct Chunk {
 Chunk next_chunk(int& next, int tiles, int tiles_x, int nodes) {
   if (next >= tiles) return {};
   const int left_in_row = tiles_x - next % tiles_x;
-  const int count = std::clamp((tiles - next) / (2 * nodes), 1, left_in_row);
+  const int count = std::clamp((tiles - next) / (4 * nodes), 1, std::min(left_in_row, kMaxRun));
   const Chunk c{next, count};
   next += count;
   return c;
