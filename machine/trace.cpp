@@ -1,6 +1,8 @@
 #include "machine/trace.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -70,11 +72,13 @@ TraceWriter::TraceWriter(const TraceOptions& options, int processors, int mesh_w
   json_path_ = options.path;
   csv_path_ = trace_sibling_path(options.path, ".csv");
   paje_path_ = trace_sibling_path(options.path, ".paje");
-  if (csv_path_ == json_path_) throw std::runtime_error("trace file '" + json_path_ + "' must not end in .csv (the CSV goes beside it)");
+  if (csv_path_ == json_path_ || paje_path_ == json_path_) {
+    throw std::runtime_error("trace file '" + json_path_ + "': name the Chrome JSON (FILE.json); FILE.csv and FILE.paje go beside it");
+  }
   json_ = std::fopen(json_path_.c_str(), "wb");
-  if (!json_) throw std::runtime_error("cannot write trace file '" + json_path_ + "'");
+  if (!json_) throw std::runtime_error("cannot write trace file '" + json_path_ + "': " + std::strerror(errno));
   csv_ = std::fopen(csv_path_.c_str(), "wb");
-  if (!csv_) throw std::runtime_error("cannot write trace file '" + csv_path_ + "'");
+  if (!csv_) throw std::runtime_error("cannot write trace file '" + csv_path_ + "': " + std::strerror(errno));
   // Array form of the Chrome trace-event format: the closing bracket is optional, so the file
   // is readable at every record boundary. pid 0 holds one track (tid) per processor.
   json_buffer_ += "[\n";
