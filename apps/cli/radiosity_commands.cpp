@@ -38,6 +38,8 @@ struct SolveFlags {
   int levels = 3;
   int cells = 8;
   int max_steps = 1000000;
+  std::string order = "energy";
+  double sort_until = 0.9;
 };
 
 void add_solve_options(CLI::App* cmd, SolveFlags& f) {
@@ -77,6 +79,15 @@ void add_solve_options(CLI::App* cmd, SolveFlags& f) {
                   "Hemicube partition: T x T cells on the top face, T x T/2 per side face (even)")
       ->check(CLI::Range(2, 512))
       ->capture_default_str();
+  cmd->add_option("--order", f.order,
+                  "How shooters are chosen: energy (the K largest unshot energies, 3.5.2), index (patch order "
+                  "without sorting, 4.4.1: saves the proposal exchange but converges more slowly), "
+                  "energy-then-index (sort until --sort-until, then index order, 4.4.1)")
+      ->check(CLI::IsMember({"energy", "index", "energy-then-index"}))
+      ->capture_default_str();
+  cmd->add_option("--sort-until", f.sort_until, "energy-then-index: shot fraction at which sorting stops")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   cmd->add_option("--max-steps", f.max_steps, "Give up after this many loops")
       ->check(CLI::Range(1, 1 << 30))
       ->capture_default_str();
@@ -89,6 +100,8 @@ rad::ParallelOptions parallel_options(const SolveFlags& f) {
   o.solver.shooters = f.shooters;
   o.solver.energy = f.energy;
   o.solver.max_steps = f.max_steps;
+  o.solver.order = rad::parse_shooting_order(f.order);
+  o.solver.sort_until = f.sort_until;
   o.algorithm = rad::parse_parallel_algorithm(f.parallel);
   o.bcast = f.bcast == "tree" ? parix::BcastAlgo::tree : parix::BcastAlgo::sequential;
   o.aggregate = f.aggregate;
@@ -203,6 +216,7 @@ void add_run(CommandGroups& g) {
       "  gcsim run radiosity --scene cornell --nodes 8 --json r.json --image c.png\n"
       "  gcsim run radiosity --scene room --nodes 16 --bcast tree --steps-csv loops.csv\n"
       "  gcsim run radiosity --scene picroom --parallel hemicube-hierarchical --levels 2 --nodes 8\n"
+      "  gcsim run radiosity --scene cornell --nodes 8 --order index --max-steps 2000   (thesis 4.4.1)\n"
       "  gcsim run radiosity --scene tests/radiosity/fixtures/opposing_squares_lit.wld --energy 0.99999");
   cmd->callback([f] {
     rad::World world = rad::load_scene_world(f->solve.scene);
@@ -215,9 +229,10 @@ void add_run(CommandGroups& g) {
     auto c = scene.counts();
     fmt::print("scene     {}: {} instances, {} surfaces, {} patches, {} elements, {} vertices\n", scene.name,
                c.instances, c.surfaces, c.patches, c.elements, c.vertices);
-    fmt::print("solver    {} on {} nodes, bcast {}{}{}, hemicube {}, {} shooters per loop, energy {}\n",
+    fmt::print("solver    {} on {} nodes, bcast {}{}{}{}, hemicube {}, {} shooters per loop, energy {}\n",
                rad::to_string(o.algorithm), sim.nodes, f->solve.bcast, o.aggregate ? ", aggregated" : "",
                o.keep_links ? ", links kept" : "",
+               o.solver.order == rad::ShootingOrder::energy ? "" : fmt::format(", order {}", rad::to_string(o.solver.order)),
                o.solver.hemicube.resolution, o.solver.shooters, o.solver.energy);
     RunOutcome out = simulate(scene, o, sim);
     const auto& r = out.result;
@@ -235,6 +250,7 @@ void add_run(CommandGroups& g) {
                           {"bcast", f->solve.bcast},
                           {"aggregate", o.aggregate},
                           {"keep_links", o.keep_links},
+                          {"order", rad::to_string(o.solver.order)},
                           {"hemicube", o.solver.hemicube.resolution},
                           {"shooters", o.solver.shooters},
                           {"energy_threshold", o.solver.energy},

@@ -106,7 +106,11 @@ void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOp
   while (state.shot_fraction() < o.solver.energy && state.steps() < o.solver.max_steps) {
     // 1. Choose the shooters.
     std::vector<int> shooters;
-    if (o.aggregate) {
+    if (!sorts_this_step(o.solver, state.shot_fraction())) {
+      // 4.4.1: index order needs no exchange; every replica knows the next patches.
+      shooters = state.select_in_index_order(k_shooters, ops);
+      ops.charge(p);
+    } else if (o.aggregate) {
       shooters = state.select_shooters(k_shooters, ops);
       ops.charge(p);
     } else {

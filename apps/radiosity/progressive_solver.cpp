@@ -34,6 +34,33 @@ std::vector<int> ProgressiveState::select_shooters(int k, OpCounts& ops) const {
   return order;
 }
 
+std::vector<int> ProgressiveState::select_in_index_order(int k, OpCounts& ops) {
+  std::vector<int> out;
+  const int n = int(unshot_.size());
+  for (int looked = 0; looked < n && int(out.size()) < k; ++looked) {
+    int p = (cursor_ + looked) % n;
+    ++ops.patch_select;
+    if (unshot_energy(p) > 0) out.push_back(p);
+  }
+  if (!out.empty()) cursor_ = (out.back() + 1) % n;
+  return out;
+}
+
+ShootingOrder parse_shooting_order(const std::string& s) {
+  if (s == "energy") return ShootingOrder::energy;
+  if (s == "index") return ShootingOrder::index;
+  if (s == "energy-then-index") return ShootingOrder::energy_then_index;
+  throw std::invalid_argument("unknown shooting order '" + s + "': expected energy, index or energy-then-index");
+}
+
+const char* to_string(ShootingOrder o) {
+  switch (o) {
+    case ShootingOrder::energy: return "energy";
+    case ShootingOrder::index: return "index";
+    default: return "energy-then-index";
+  }
+}
+
 void ProgressiveState::shoot(std::span<const int> shooters, std::span<const std::vector<double>> rows,
                              OpCounts& ops) {
   if (shooters.size() != rows.size()) throw std::invalid_argument("shoot: one form factor row per shooter");
@@ -90,7 +117,9 @@ SolveResult solve_progressive(const Scene& scene, const SolverOptions& o, OpCoun
   OpCounts local;
   OpCounts& ops = ops_out ? *ops_out : local;
   while (r.state.shot_fraction() < o.energy && r.state.steps() < o.max_steps) {
-    std::vector<int> shooters = r.state.select_shooters(o.shooters, ops);
+    std::vector<int> shooters = sorts_this_step(o, r.state.shot_fraction())
+                                    ? r.state.select_shooters(o.shooters, ops)
+                                    : r.state.select_in_index_order(o.shooters, ops);
     if (shooters.empty()) break;
     std::vector<std::vector<double>> rows;
     for (int s : shooters) rows.push_back(hemicube.form_factor_row(s, ops));

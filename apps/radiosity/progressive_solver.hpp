@@ -6,6 +6,7 @@
 // and the element's patch gains delta Rad_e * A_e / A_p of unshot radiosity.
 // The state is plain data so that every node of a parallel run can hold a replica of it.
 #include <functional>
+#include <string>
 #include <span>
 #include <vector>
 
@@ -29,6 +30,9 @@ class ProgressiveState {
   // The K patches with the largest unshot energy, largest first (ties: lower index); only patches
   // with unshot energy > 0.
   std::vector<int> select_shooters(int k, OpCounts& ops) const;
+  // Thesis 4.4.1: the next K patches with unshot energy > 0 in index order, cycling, without
+  // sorting (so that a parallel run needs no exchange to choose them). Advances the cursor.
+  std::vector<int> select_in_index_order(int k, OpCounts& ops);
   // Unshot energy of a patch (delta B * A summed over channels): what selection sorts by.
   double unshot_energy(int patch) const { return channel_sum(unshot_[patch]) * scene_->patches[patch].area; }
   // Shoots every patch in `shooters` with the unshot radiosity it had before the step, using
@@ -50,14 +54,31 @@ class ProgressiveState {
   EnergyBalance energy_;
   double emitted_sum_ = 0;
   int steps_ = 0;
+  int cursor_ = 0;  // next patch index for select_in_index_order
 };
+
+// How shooters are chosen (thesis 3.5.2 and 4.4.1).
+enum class ShootingOrder {
+  energy,            // the K largest unshot energies: sorting, the thesis's method
+  index,             // patch index order, no sorting (4.4.1: converges more slowly)
+  energy_then_index  // sort until the shot fraction reaches sort_until, then index order (4.4.1)
+};
+ShootingOrder parse_shooting_order(const std::string& s);  // throws std::invalid_argument
+const char* to_string(ShootingOrder o);
 
 struct SolverOptions {
   HemicubeOptions hemicube;
   int shooters = 2;          // K: patches shooting per step (the thesis uses 2)
   double energy = 0.999;     // stop once this fraction of the energy has been shot
   int max_steps = 1000000;   // safety net for reflectances near 1
+  ShootingOrder order = ShootingOrder::energy;
+  double sort_until = 0.9;   // energy_then_index: sort while the shot fraction is below this
 };
+
+// Whether this step sorts by energy (true) or takes the index order.
+inline bool sorts_this_step(const SolverOptions& o, double shot_fraction) {
+  return o.order == ShootingOrder::energy || (o.order == ShootingOrder::energy_then_index && shot_fraction < o.sort_until);
+}
 
 struct StepRecord {
   int step;                  // 1-based

@@ -67,6 +67,24 @@ TEST(ParallelRadiosity, EveryVariantEqualsSequentialOnEveryNodeCount) {
   }
 }
 
+TEST(ParallelRadiosity, IndexOrderVariantsEqualSequentialToo) {
+  Scene scene = testing::lit_room();
+  for (ShootingOrder order : {ShootingOrder::index, ShootingOrder::energy_then_index}) {
+    ParallelOptions o;
+    o.solver.hemicube.resolution = 32;
+    o.solver.hemicube.cells_per_side = 4;
+    o.solver.energy = 0.99;
+    o.solver.order = order;
+    o.solver.sort_until = 0.8;
+    SolveResult reference = solve_progressive(scene, o.solver);
+    ASSERT_TRUE(reference.converged);
+    for (int nodes : {1, 3, 4}) {
+      ParallelOutcome out = run(scene, o, nodes);
+      ASSERT_EQ(out.element_radiosity, reference.state.element_radiosity()) << to_string(order) << " " << nodes;
+    }
+  }
+}
+
 TEST(ParallelRadiosity, SimulatedTimeIsDeterministicAndCommunicationGrowsWithNodes) {
   Scene scene = flatten(cornell_world());
   ParallelOptions o;
