@@ -139,6 +139,8 @@ rad::Camera parse_camera(const std::string& s) {
   return c;
 }
 
+std::vector<int> parse_int_list(const std::string& s, const char* what);
+
 struct RunOutcome {
   parix::RunResult run;
   rad::ParallelOutcome result;
@@ -184,7 +186,7 @@ void add_run(CommandGroups& g) {
   struct Flags {
     MachineOptions machine;
     SolveFlags solve;
-    std::string image, camera, steps_csv;
+    std::string image, camera, steps_csv, snapshots;
     int width = 0, height = 0;
     double exposure = 0;
     bool gauss_seidel = false;
@@ -208,6 +210,9 @@ void add_run(CommandGroups& g) {
   cmd->add_option("--height", f->height, "Image height (default 512, 384 for the rooms)")->check(CLI::Range(8, 8192));
   cmd->add_option("--exposure", f->exposure, "Multiply radiosities by this before display; default: automatic");
   cmd->add_option("--steps-csv", f->steps_csv, "Write the shot fraction after every loop as CSV (table 4.2 analog)");
+  cmd->add_option("--snapshots", f->snapshots,
+                  "With --image: also write the image after these loops (e.g. 1,10,50), as IMAGE_loopN.png: "
+                  "the progression of figures 4.10-4.12");
   cmd->add_flag("--gauss-seidel", f->gauss_seidel,
                 "Also solve with full-matrix Gauss-Seidel (3.5.1) on the host and print how far the progressive "
                 "result is from it (small scenes only)");
@@ -226,6 +231,10 @@ void add_run(CommandGroups& g) {
     // Checked before the run, so that a typo does not cost a whole simulation.
     std::optional<rad::Camera> camera;
     if (!f->camera.empty()) camera = parse_camera(f->camera);
+    if (!f->snapshots.empty()) {
+      if (f->image.empty()) throw std::invalid_argument("--snapshots needs --image (the snapshots are named after it)");
+      o.snapshot_loops = parse_int_list(f->snapshots, "--snapshots");
+    }
     auto c = scene.counts();
     fmt::print("scene     {}: {} instances, {} surfaces, {} patches, {} elements, {} vertices\n", scene.name,
                c.instances, c.surfaces, c.patches, c.elements, c.vertices);
@@ -286,8 +295,20 @@ void add_run(CommandGroups& g) {
       ro.width = f->width > 0 ? f->width : 512;
       ro.height = f->height > 0 ? f->height : (room ? 384 : 512);
       ro.exposure = f->exposure;
-      apps::write_png(f->image, rad::render_gouraud(scene, r.element_radiosity, cam, ro));
+      apps::Image final_image = rad::render_gouraud(scene, r.element_radiosity, cam, ro);
+      apps::write_png(f->image, final_image);
       fmt::print("image     {}\n", f->image);
+      if (!r.snapshots.empty()) {
+        // Same exposure as the final image, so that the images show light arriving.
+        if (ro.exposure <= 0) ro.exposure = rad::auto_exposure(scene, r.element_radiosity, cam, ro);
+        std::filesystem::path base(f->image);
+        for (const auto& [loop, b] : r.snapshots) {
+          std::filesystem::path p = base.parent_path() / fmt::format("{}_loop{}{}", base.stem().string(), loop,
+                                                                      base.extension().string());
+          apps::write_png(p, rad::render_gouraud(scene, b, cam, ro));
+          fmt::print("snapshot  {} (after loop {})\n", p.string(), loop);
+        }
+      }
       extra["radiosity"]["image"] = f->image;
     }
     report_run(out.run, f->machine, extra);

@@ -16,8 +16,10 @@ struct CameraVertex {
 
 }  // namespace
 
-apps::Image render_gouraud(const Scene& scene, const std::vector<Rgb>& b, const Camera& cam,
-                           const RenderOptions& o) {
+namespace {
+
+apps::Image render(const Scene& scene, const std::vector<Rgb>& b, const Camera& cam, const RenderOptions& o,
+                   double* chosen_exposure) {
   const int W = o.width, H = o.height;
   // Per element corner: area-weighted mean over the elements sharing the vertex that lie in the same
   // plane and have the same surface (so box edges and the colour fields of a picture stay crisp).
@@ -122,6 +124,7 @@ apps::Image render_gouraud(const Scene& scene, const std::vector<Rgb>& b, const 
       exposure = 1.0;
     }
   }
+  if (chosen_exposure) *chosen_exposure = exposure;
   apps::Image img(W, H);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
@@ -129,6 +132,20 @@ apps::Image render_gouraud(const Scene& scene, const std::vector<Rgb>& b, const 
       img.at(x, y) = glm::vec3(float(c.r * exposure), float(c.g * exposure), float(c.b * exposure));
     }
   return img;
+}
+
+}  // namespace
+
+apps::Image render_gouraud(const Scene& scene, const std::vector<Rgb>& b, const Camera& cam, const RenderOptions& o) {
+  return render(scene, b, cam, o, nullptr);
+}
+
+double auto_exposure(const Scene& scene, const std::vector<Rgb>& b, const Camera& cam, const RenderOptions& o) {
+  RenderOptions automatic = o;
+  automatic.exposure = 0;
+  double e = 1;
+  render(scene, b, cam, automatic, &e);
+  return e;
 }
 
 }  // namespace gcsim::radiosity

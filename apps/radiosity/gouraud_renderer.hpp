@@ -16,6 +16,10 @@ struct RenderOptions {
   double exposure = 0;  // 0: automatic (the 97th percentile of lit, non-emitting pixels maps to 0.85)
 };
 
+// The exposure the automatic setting would choose for this solution and view.
+double auto_exposure(const Scene& scene, const std::vector<Rgb>& element_radiosity, const Camera& camera,
+                     const RenderOptions& options);
+
 apps::Image render_gouraud(const Scene& scene, const std::vector<Rgb>& element_radiosity, const Camera& camera,
                            const RenderOptions& options);
 

@@ -201,7 +201,11 @@ void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOp
     state.shoot(shooters, rows, ops);
     ops.charge(p);
     StepRecord rec{state.steps(), state.shot_fraction(), shooters};
-    if (id == 0) steps.push_back(std::move(rec));
+    if (id == 0) {
+      steps.push_back(std::move(rec));
+      if (outcome && std::find(o.snapshot_loops.begin(), o.snapshot_loops.end(), state.steps()) != o.snapshot_loops.end())
+        outcome->snapshots.emplace_back(state.steps(), state.element_radiosity());
+    }
   }
   ops.charge(p);
   p.use_memory(-replica_bytes - std::int64_t(hc.resolution) * hc.resolution * 3 * 12);

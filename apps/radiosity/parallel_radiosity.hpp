@@ -18,6 +18,7 @@
 // Form factors are summed cell by cell in the fixed cell order, so every node count gives radiosities
 // bit-identical to the sequential solver with the same K.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "apps/radiosity/progressive_solver.hpp"
@@ -37,6 +38,7 @@ struct ParallelOptions {
   bool aggregate = false;
   bool keep_links = false;      // reuse links between exchanges instead of connecting per message
   int hierarchical_levels = 3;  // for hemicube-hierarchical
+  std::vector<int> snapshot_loops;  // processor 0 keeps the radiosities after these loops
 };
 
 // What processor 0 reports at the end of a run.
@@ -46,6 +48,7 @@ struct ParallelOutcome {
   EnergyBalance energy;
   bool converged = false;
   std::int64_t exchanged_bytes = 0;  // bytes processor 0 contributed to the exchanges
+  std::vector<std::pair<int, std::vector<Rgb>>> snapshots;  // (loop, element radiosities)
 };
 
 // The SPMD program: run it on every processor; processor 0 fills *outcome.
