@@ -54,7 +54,19 @@ void add_solve_options(CLI::App* cmd, SolveFlags& f) {
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
   cmd->add_option("--energy", f.energy, "Stop once this fraction of the energy has been shot (thesis: 0.999)")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {
+            double x = -1;
+            try {
+              std::size_t used = 0;
+              x = std::stod(v, &used);
+              if (used != v.size()) return "'" + v + "' is not a number";
+            } catch (const std::exception&) {
+              return "'" + v + "' is not a number";
+            }
+            return x >= 0 && x < 1 ? "" : "must be in [0, 1): reflected light keeps some energy unshot forever";
+          },
+          "in [0, 1)"))
       ->capture_default_str();
   cmd->add_option("--parallel", f.parallel,
                   "hemicube-fixed (4.3: hemicube cells spread over the nodes), hemicube-hierarchical (4.5: "
