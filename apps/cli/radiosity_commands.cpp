@@ -147,6 +147,7 @@ rad::Camera parse_camera(const std::string& s) {
   c.eye = {v[0], v[1], v[2]};
   c.target = {v[3], v[4], v[5]};
   if (v.size() == 7) c.fov_y_degrees = v[6];
+  if (!(c.fov_y_degrees > 0.01 && c.fov_y_degrees < 179)) throw std::invalid_argument("--camera: field of view must be in (0.01, 179) degrees");
   if (glm::length(c.target - c.eye) == 0) throw std::invalid_argument("--camera: eye and target coincide");
   return c;
 }

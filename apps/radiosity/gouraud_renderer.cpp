@@ -58,10 +58,13 @@ apps::Image render(const Scene& scene, const std::vector<Rgb>& b, const Camera& 
     }
     double area = (sx[1] - sx[0]) * (sy[2] - sy[0]) - (sx[2] - sx[0]) * (sy[1] - sy[0]);
     if (std::abs(area) < 1e-12) return;
-    int x0 = std::max(0, int(std::floor(std::min({sx[0], sx[1], sx[2]}))));
-    int x1 = std::min(W - 1, int(std::ceil(std::max({sx[0], sx[1], sx[2]}))));
-    int y0 = std::max(0, int(std::floor(std::min({sy[0], sy[1], sy[2]}))));
-    int y1 = std::min(H - 1, int(std::ceil(std::max({sy[0], sy[1], sy[2]}))));
+    // Clamp in floating point first: a vertex close to the eye can land far outside any int.
+    auto to_px = [](double v, int hi) { return int(std::clamp(v, -1.0, double(hi) + 1)); };
+    int x0 = std::max(0, to_px(std::floor(std::min({sx[0], sx[1], sx[2]})), W));
+    int x1 = std::min(W - 1, to_px(std::ceil(std::max({sx[0], sx[1], sx[2]})), W));
+    int y0 = std::max(0, to_px(std::floor(std::min({sy[0], sy[1], sy[2]})), H));
+    int y1 = std::min(H - 1, to_px(std::ceil(std::max({sy[0], sy[1], sy[2]})), H));
+    if (!(std::isfinite(area))) return;
     for (int y = y0; y <= y1; ++y)
       for (int x = x0; x <= x1; ++x) {
         double px = x + 0.5, py = y + 0.5;
