@@ -39,13 +39,15 @@ TEST(ParallelRadiosity, EveryVariantEqualsSequentialOnEveryNodeCount) {
       {ParallelAlgorithm::hemicube_hierarchical, parix::BcastAlgo::sequential, false},
       {ParallelAlgorithm::patch, parix::BcastAlgo::sequential, false},
   };
-  for (int k : {1, 2, 3}) {
-    for (const Variant& v : variants) {
+  for (const Variant& v : variants) {
+    // Every K for the thesis's variant; K = 2 (the thesis's) for the others, to keep the suite short.
+    const bool first = &v == &variants[0];
+    for (int k : first ? std::vector<int>{1, 2, 3} : std::vector<int>{2}) {
       ParallelOptions o;
       o.solver.hemicube.resolution = 32;
       o.solver.hemicube.cells_per_side = 4;
       o.solver.shooters = k;
-      o.solver.energy = 0.99;
+      o.solver.energy = 0.95;
       o.algorithm = v.algorithm;
       o.bcast = v.bcast;
       o.aggregate = v.aggregate;
