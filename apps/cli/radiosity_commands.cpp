@@ -500,11 +500,11 @@ void add_accuracy(CommandGroups& g) {
         throw std::invalid_argument("--thresholds: expected ascending fractions in (0, 1)");
     nlohmann::json j;
     fmt::print("1. hemicube form factors against closed forms (relative errors)\n");
-    fmt::print("{:<42} {:>5} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>10} {:>8}\n", "case", "res", "point", "exact",
+    fmt::print("{:<46} {:>5} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>10} {:>8}\n", "case", "res", "point", "exact",
                "error", "area", "exact", "error", "sim_s", "wall_s");
     auto ff = rad::form_factor_accuracy(res, m);
     for (const auto& a : ff) {
-      fmt::print("{:<42} {:>5} {:>9.6f} {:>9.6f} {:>9.2e} {:>9.6f} {:>9.6f} {:>9.2e} {:>10.4f} {:>8.3f}\n",
+      fmt::print("{:<46} {:>5} {:>9.6f} {:>9.6f} {:>9.2e} {:>9.6f} {:>9.6f} {:>9.2e} {:>10.4f} {:>8.3f}\n",
                  rad::to_string(a.form_factor_case), a.resolution, a.hemicube_point, a.exact_point, a.point_error(),
                  a.hemicube_area, a.exact_area, a.area_error(), a.simulated_seconds, a.wall_seconds);
       j["form_factors"].push_back({{"case", rad::to_string(a.form_factor_case)}, {"resolution", a.resolution},
