@@ -62,7 +62,7 @@ void HemicubeRenderer::project(int shooter, OpCounts& ops) {
   for (auto& f : faces_) f.clear();
   const ScenePatch& sp = scene_.patches[shooter];
   const Frame fr = Frame::from_normal(sp.normal);
-  const double r = options_.resolution, eps = 1e-12 * scene_.extent();
+  const double r = options_.resolution, eps = 1e-3 * near_;  // 1e-12 of the scene's extent
   for (int e = 0; e < int(scene_.elements.size()); ++e) {
     const SceneElement& el = scene_.elements[e];
     if (el.patch == shooter) continue;
@@ -127,7 +127,6 @@ void HemicubeRenderer::project(int shooter, OpCounts& ops) {
       p.bx1 = std::min(options_.resolution, int(std::floor(x1 - 0.5)) + 1);
       p.by0 = std::max(0, int(std::ceil(y0 - 0.5)));
       p.by1 = std::min(h, int(std::floor(y1 - 0.5)) + 1);
-      // Hierarchical sampling also asks at pixel corners: keep a one-pixel margin of candidates.
       faces_[face].push_back(p);
     }
   }
@@ -270,7 +269,6 @@ std::vector<double> HemicubeRenderer::form_factor_row(int shooter, OpCounts& ops
     CellFormFactors cf = cell_form_factors(c, ops);
     for (std::size_t k = 0; k < cf.element.size(); ++k) row[cf.element[k]] += cf.value[k];
   }
-  ops.form_factor_sum += 0;
   return row;
 }
 
