@@ -1,5 +1,6 @@
 // gcsim run/sweep/accuracy radiosity and gcsim scene info: the thesis's chapters 3 and 4 from the
 // command line.
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -409,7 +410,8 @@ void add_sweep(CommandGroups& g) {
       csv << "nodes,simulated_s,speedup,comm_s,wall_s,loops,thesis_s,thesis_speedup,thesis_comm_s\n";
     }
     nlohmann::json all = nlohmann::json::array();
-    double first = 0;
+    double first = 0, best_time = 0;
+    int best_nodes = 0;
     std::vector<rad::Rgb> reference;
     for (int n : counts) {
       MachineOptions mo;
@@ -420,6 +422,7 @@ void add_sweep(CommandGroups& g) {
       RunOutcome out = simulate(scene, o, sim);
       double t = out.run.simulated_seconds();
       if (first == 0) first = t;
+      if (best_nodes == 0 || t < best_time) best_nodes = n, best_time = t;
       if (reference.empty()) reference = out.result.element_radiosity;
       else if (reference != out.result.element_radiosity)
         fmt::print("warning: radiosities on {} nodes differ from the first run\n", n);
@@ -442,6 +445,15 @@ void add_sweep(CommandGroups& g) {
       nlohmann::json j = out.run.to_json();
       j["radiosity"] = {{"scene", scene.name}, {"loops", out.result.steps.size()}, {"nodes", n}};
       all.push_back(j);
+    }
+    if (best_nodes > 0) {
+      std::string theirs;
+      if (fig) {
+        const auto& t = tree ? fig->time_tree_bcast : fig->time_sequential_bcast;
+        int bi = int(std::min_element(t.begin(), t.end()) - t.begin());
+        theirs = fmt::format(" (thesis: {} nodes)", rad::thesis::kNodes[bi]);
+      }
+      fmt::print("fastest on {} nodes{}\n", best_nodes, theirs);
     }
     if (fig) fmt::print("thesis_x: speedup over 1 node from the thesis's table {}; thesis_c: table 4.5\n", tree ? "4.8" : "4.3");
     if (!f->csv.empty()) fmt::print("csv  {}\n", f->csv);
