@@ -656,6 +656,7 @@ void add_scene_info(CommandGroups& g) {
     rad::Scene scene = rad::flatten(world);
     auto c = scene.counts();
     auto t = rad::thesis_counts(f->scene);
+    if (t.instances == 0) t = rad::thesis_counts(scene.name);  // an exported built-in scene keeps its name
     fmt::print("scene {} ({})\n", scene.name, f->scene);
     fmt::print("{:<10} {:>9} {:>9} {:>8} {:>9} {:>9}\n", "", "instances", "surfaces", "patches", "elements", "vertices");
     fmt::print("{:<10} {:>9} {:>9} {:>8} {:>9} {:>9}\n", "this", c.instances, c.surfaces, c.patches, c.elements, c.vertices);
