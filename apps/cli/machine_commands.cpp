@@ -24,8 +24,8 @@ void add_topo(CommandGroups& g) {
     int nodes = 64;
   };
   auto o = std::make_shared<Options>();
-  CLI::App* cmd = g.app->add_subcommand(
-      "topo",
+  CLI::App* cmd = g.app->add_subcommand("topo", "Interconnect parameters of a virtual topology (thesis table 2.1) and its mapping");
+  cmd->footer(
       "Interconnect parameters of a virtual topology (thesis table 2.1), computed exactly on its graph\n"
       "next to the thesis's formulas, and the dilation and congestion of its mapping onto the mesh.\n"
       "D = maximum, d = mean processor distance (hops); R = maximum, r = mean relay load (shortest\n"
@@ -122,8 +122,8 @@ void add_bcast(CommandGroups& g) {
     bool table = false;
   };
   auto o = std::make_shared<Options>();
-  CLI::App* cmd = g.app->add_subcommand(
-      "bcast",
+  CLI::App* cmd = g.app->add_subcommand("bcast", "The thesis's broadcast experiment (4.4.2): sequential or tree, simulated ms");
+  cmd->footer(
       "The thesis's broadcast experiment (section 4.4.2): one all-node broadcast, where every node's data\n"
       "goes to the root (node 0) and the root sends back to every node. sequential: the nodes send to the\n"
       "root in turn and the root answers each in turn (O(N) steps); tree: up a binary tree from the leaves\n"
@@ -157,8 +157,8 @@ void add_bench_ring(CommandGroups& g) {
     std::int64_t size = 64;
   };
   auto o = std::make_shared<Options>();
-  CLI::App* cmd = g.bench->add_subcommand(
-      "ring",
+  CLI::App* cmd = g.bench->add_subcommand("ring", "Kernel throughput: simulated messages per wall-clock second on a ring");
+  cmd->footer(
       "Kernel throughput: every processor sends --size bytes to its right neighbour and receives from its\n"
       "left, --iterations times, over persistent links. Prints simulated messages per wall-clock second.");
   add_machine_options(cmd, o->machine);
@@ -181,8 +181,8 @@ void add_demo(CommandGroups& g) {
   auto machine = std::make_shared<MachineOptions>();
   CLI::App* demo = g.app->add_subcommand("demo", "Small programs that show how the simulated runtime behaves");
   demo->require_subcommand(1);
-  CLI::App* cmd = demo->add_subcommand(
-      "deadlock",
+  CLI::App* cmd = demo->add_subcommand("deadlock", "Two processors that both receive first: the deadlock report");
+  cmd->footer(
       "Two processors open a link and both receive first, so neither ever sends. The run stops at once\n"
       "with a report naming each blocked processor, its call and its peer, and exits with status 3.");
   add_machine_options(cmd, *machine);

@@ -19,13 +19,6 @@ int main(int argc, char** argv) {
       "GC-PowerPlus as published is used. `gcsim COMMAND --help` explains each command.",
       "gcsim"};
   app.require_subcommand(1);
-  app.footer(
-      "\nExamples:\n"
-      "  gcsim topo --topology hypercube --nodes 64        thesis table 2.1 parameters, exact and by formula\n"
-      "  gcsim bcast --nodes 64 --size 16KB --algo tree    one all-node broadcast (thesis 4.4.2)\n"
-      "  gcsim bcast --table                               the whole grid next to thesis tables 4.6/4.7\n"
-      "  gcsim bench ring --nodes 64 --iterations 2000     kernel throughput in simulated messages/s");
-
   cli::CommandGroups g{&app};
   g.run = app.add_subcommand("run", "Run an application on the simulated machine");
   g.sweep = app.add_subcommand("sweep", "Run an application for several node counts: time, speedup, communication");
@@ -49,6 +42,17 @@ int main(int argc, char** argv) {
   for (CLI::App* verb : {g.run, g.sweep, g.table, g.accuracy, g.bench, g.scene}) {
     if (verb->get_subcommands({}).empty()) app.remove_subcommand(verb);
   }
+
+  app.footer(
+      "\nExamples:\n"
+      "  gcsim topo --topology hypercube --nodes 64        thesis table 2.1 parameters, exact and by formula\n"
+      "  gcsim bcast --nodes 64 --size 16KB --algo tree    one all-node broadcast (thesis 4.4.2)\n"
+      "  gcsim bcast --table                               the whole grid next to thesis tables 4.6/4.7\n"
+      "  gcsim bench ring --nodes 64 --iterations 2000     kernel throughput in simulated messages/s\n"
+      "  gcsim run radiosity --scene cornell --nodes 8 --image c.png   parallel radiosity, thesis ch. 4\n"
+      "  gcsim run raytrace --scene teapots --algo A4 --nodes 16 --image t.png\n"
+      "  gcsim plot t.json --out plots/                    pictures of a trace written with --trace t.json");
+  // (after the subcommands exist, so they do not inherit it)
 
   try {
     app.parse(argc, argv);
