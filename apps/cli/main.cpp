@@ -1,5 +1,8 @@
 // gcsim: simulate the Parsytec GC-PowerPlus and run parallel graphics applications on it.
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <string>
 #include <exception>
 
 #include <fmt/format.h>
@@ -7,6 +10,52 @@
 #include "apps/cli/commands.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/simulated_runtime.hpp"
+
+namespace {
+
+// The first sentence of a description, on one line: up to a full stop followed by a capital, a
+// digit or the end (not after a short abbreviation such as "ch."), or a colon outside parentheses; at most ~100 characters.
+std::string first_sentence(std::string d) {
+  std::replace(d.begin(), d.end(), '\n', ' ');
+  int depth = 0;
+  std::size_t cut = d.size();
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    if (d[i] == '(') ++depth;
+    if (d[i] == ')') --depth;
+    bool sentence_end = false;
+    if (d[i] == '.') {
+      std::size_t next = i + 1;
+      while (next < d.size() && d[next] == ' ') ++next;
+      std::size_t word = i;
+      while (word > 0 && std::isalpha(static_cast<unsigned char>(d[word - 1]))) --word;
+      const bool abbreviation = i - word <= 2 && i > word && std::islower(static_cast<unsigned char>(d[word]));
+      sentence_end = next == d.size() || (next > i + 1 && !abbreviation && !std::islower(static_cast<unsigned char>(d[next])));
+    }
+    const bool colon = d[i] == ':' && depth == 0 && i + 1 < d.size() && d[i + 1] == ' ';
+    if (sentence_end || colon) {
+      cut = i;
+      break;
+    }
+  }
+  d = d.substr(0, cut);
+  constexpr std::size_t kMax = 100;
+  if (d.size() > kMax) d = d.substr(0, d.rfind(' ', kMax)) + " ...";
+  return d;
+}
+
+// Command lists show one line per command; a longer description moves into the command's own help.
+void summarize_descriptions(CLI::App* app) {
+  for (CLI::App* sub : app->get_subcommands({})) {
+    const std::string d = sub->get_description();
+    if (d.find('\n') != std::string::npos) {
+      sub->footer("\n" + d + sub->get_footer());
+      sub->description(first_sentence(d));
+    }
+    summarize_descriptions(sub);
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace gcsim;
@@ -38,6 +87,7 @@ int main(int argc, char** argv) {
 #ifdef GCSIM_HAVE_TRACE_COMMANDS
   cli::add_trace_commands(g);
 #endif
+  summarize_descriptions(&app);
   // Verbs that no command family filled in are hidden rather than offered empty.
   for (CLI::App* verb : {g.run, g.sweep, g.table, g.accuracy, g.bench, g.scene}) {
     if (verb->get_subcommands({}).empty()) app.remove_subcommand(verb);
