@@ -67,7 +67,7 @@ const char* direction_name(int channel) {
 }  // namespace
 
 TraceWriter::TraceWriter(const TraceOptions& options, int processors, int mesh_width, int mesh_height)
-    : level_(options.level), mesh_width_(mesh_width), processors_(processors) {
+    : level_(options.level), processors_(processors), mesh_width_(mesh_width) {
   if (options.path.empty()) return;
   json_path_ = options.path;
   csv_path_ = trace_sibling_path(options.path, ".csv");
@@ -116,8 +116,7 @@ TraceWriter::~TraceWriter() {
 }
 
 void TraceWriter::record(const TraceRecord& r) {
-  if (!json_) return;
-  if (level_ == TraceLevel::summary) return;
+  if (!enabled()) return;
   if (r.kind == TraceKind::link && level_ != TraceLevel::full) return;
   std::string scratch;
   const std::string_view label = clean_label(r.label.empty() ? to_string(r.kind) : r.label, scratch);

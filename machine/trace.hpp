@@ -51,7 +51,8 @@ class TraceWriter {
   TraceWriter(const TraceWriter&) = delete;
   TraceWriter& operator=(const TraceWriter&) = delete;
 
-  bool enabled() const { return json_ != nullptr; }
+  // Whether records are kept: a trace file is open and the level is above summary.
+  bool enabled() const { return json_ != nullptr && level_ != TraceLevel::summary; }
   TraceLevel level() const { return level_; }
   void record(const TraceRecord& r);
   void close();  // writes the closing bracket, then the Paje file

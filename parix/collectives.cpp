@@ -84,23 +84,25 @@ Bytes broadcast(Processor& p, int root, Bytes data, const CollectiveOptions& o) 
   return data;
 }
 
-std::vector<Bytes> gather(Processor& p, int root, std::span<const std::byte> mine, const CollectiveOptions& o) {
+namespace {
+
+// Every contribution, packed as [id][size][bytes] records in arrival order, at the root; an empty
+// packet elsewhere. The packet is what travels, so allgather can broadcast it as it is.
+Bytes gather_packed(Processor& p, int root, std::span<const std::byte> mine, const CollectiveOptions& o) {
   const int n = p.count(), me = p.id();
-  std::vector<Bytes> all;
+  Bytes packet;
   if (o.algo == BcastAlgo::sequential) {
     if (me != root) {
       send_to(p, root, mine, o);
-      return all;
+      return packet;
     }
-    all.resize(n);
-    all[me].assign(mine.begin(), mine.end());
+    append_packet(packet, me, mine);
     for (int q = 0; q < n; ++q) {
-      if (q != root) all[q] = recv_from(p, q, o);
+      if (q != root) append_packet(packet, q, recv_from(p, q, o));
     }
-    return all;
+    return packet;
   }
   // Tree: each processor forwards its own contribution and its subtree's, packed, to its parent.
-  Bytes packet;
   append_packet(packet, me, mine);
   for (int c : tree_children(me, root, n)) {
     Bytes sub = recv_from(p, c, o);
@@ -108,22 +110,26 @@ std::vector<Bytes> gather(Processor& p, int root, std::span<const std::byte> min
   }
   if (me != root) {
     send_to(p, tree_parent(me, root, n), packet, o);
-    return all;
+    packet.clear();
   }
-  all.resize(n);
-  unpack(packet, all);
+  return packet;
+}
+
+}  // namespace
+
+std::vector<Bytes> gather(Processor& p, int root, std::span<const std::byte> mine, const CollectiveOptions& o) {
+  const Bytes packet = gather_packed(p, root, mine, o);
+  std::vector<Bytes> all;
+  if (p.id() == root) {
+    all.resize(p.count());
+    unpack(packet, all);
+  }
   return all;
 }
 
 std::vector<Bytes> allgather(Processor& p, std::span<const std::byte> mine, const CollectiveOptions& o) {
-  const int n = p.count();
-  std::vector<Bytes> at_root = gather(p, 0, mine, o);
-  Bytes packed;
-  if (p.id() == 0) {
-    for (int q = 0; q < n; ++q) append_packet(packed, q, at_root[q]);
-  }
-  packed = broadcast(p, 0, std::move(packed), o);
-  std::vector<Bytes> all(n);
+  const Bytes packed = broadcast(p, 0, gather_packed(p, 0, mine, o), o);
+  std::vector<Bytes> all(p.count());
   unpack(packed, all);
   return all;
 }

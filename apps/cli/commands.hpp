@@ -8,13 +8,13 @@
 namespace gcsim::cli {
 
 struct CommandGroups {
-  CLI::App* app;       // gcsim itself (for top-level commands such as topo, bcast, plot)
-  CLI::App* run;       // gcsim run APP ...
-  CLI::App* sweep;     // gcsim sweep APP ...   (node-count sweeps)
-  CLI::App* table;     // gcsim table APP ...   (paper tables)
-  CLI::App* accuracy;  // gcsim accuracy APP ...(what accuracy costs)
-  CLI::App* bench;     // gcsim bench WHAT ...  (host speed)
-  CLI::App* scene;     // gcsim scene ...       (scene information)
+  CLI::App* app = nullptr;       // gcsim itself (for top-level commands such as topo, bcast, plot)
+  CLI::App* run = nullptr;       // gcsim run APP ...
+  CLI::App* sweep = nullptr;     // gcsim sweep APP ...   (node-count sweeps)
+  CLI::App* table = nullptr;     // gcsim table APP ...   (paper tables)
+  CLI::App* accuracy = nullptr;  // gcsim accuracy APP ...(what accuracy costs)
+  CLI::App* bench = nullptr;     // gcsim bench WHAT ...  (host speed)
+  CLI::App* scene = nullptr;     // gcsim scene ...       (scene information)
 };
 
 // A subcommand that must end the process with a given status throws this.

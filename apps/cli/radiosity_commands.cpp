@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -128,20 +129,40 @@ rad::ParallelOptions parallel_options(const SolveFlags& f) {
   return o;
 }
 
-// "ex,ey,ez,tx,ty,tz[,fov]"
-rad::Camera parse_camera(const std::string& s) {
-  std::vector<double> v;
+// Comma-separated values. Each item must convert in full (and, for integers, be positive);
+// otherwise the error names the option, the item and `expected`, what each item should be.
+template <class T>
+std::vector<T> parse_list(const std::string& s, const char* what, const char* expected, bool allow_empty = false) {
+  std::vector<T> v;
   std::stringstream ss(s);
   std::string item;
   while (std::getline(ss, item, ',')) {
     try {
       std::size_t used = 0;
-      v.push_back(std::stod(item, &used));
-      if (used != item.size()) throw std::invalid_argument(item);
+      T x;
+      if constexpr (std::is_integral_v<T>) x = std::stoi(item, &used);
+      else x = std::stod(item, &used);
+      if (used != item.size() || (std::is_integral_v<T> && x < 1)) throw std::invalid_argument(item);
+      v.push_back(x);
     } catch (const std::exception&) {
-      throw std::invalid_argument(fmt::format("--camera: '{}' is not a number (expected ex,ey,ez,tx,ty,tz[,fov])", item));
+      throw std::invalid_argument(fmt::format("{}: '{}' is not {}", what, item, expected));
     }
   }
+  if (v.empty() && !allow_empty) throw std::invalid_argument(fmt::format("{}: empty list", what));
+  return v;
+}
+
+std::vector<int> parse_int_list(const std::string& s, const char* what) {
+  return parse_list<int>(s, what, "a positive integer (expected e.g. 1,2,4,8)");
+}
+
+std::vector<double> parse_double_list(const std::string& s, const char* what) {
+  return parse_list<double>(s, what, "a number");
+}
+
+// "ex,ey,ez,tx,ty,tz[,fov]"
+rad::Camera parse_camera(const std::string& s) {
+  const std::vector<double> v = parse_list<double>(s, "--camera", "a number (expected ex,ey,ez,tx,ty,tz[,fov])", true);
   if (v.size() != 6 && v.size() != 7)
     throw std::invalid_argument(fmt::format("--camera: expected 6 or 7 numbers (ex,ey,ez,tx,ty,tz[,fov]), got {}", v.size()));
   rad::Camera c;
@@ -152,8 +173,6 @@ rad::Camera parse_camera(const std::string& s) {
   if (glm::length(c.target - c.eye) == 0) throw std::invalid_argument("--camera: eye and target coincide");
   return c;
 }
-
-std::vector<int> parse_int_list(const std::string& s, const char* what);
 
 struct RunOutcome {
   parix::RunResult run;
@@ -329,46 +348,11 @@ void add_run(CommandGroups& g) {
   });
 }
 
-std::vector<int> parse_int_list(const std::string& s, const char* what) {
-  std::vector<int> v;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    try {
-      std::size_t used = 0;
-      int x = std::stoi(item, &used);
-      if (used != item.size() || x < 1) throw std::invalid_argument(item);
-      v.push_back(x);
-    } catch (const std::exception&) {
-      throw std::invalid_argument(fmt::format("{}: '{}' is not a positive integer (expected e.g. 1,2,4,8)", what, item));
-    }
-  }
-  if (v.empty()) throw std::invalid_argument(fmt::format("{}: empty list", what));
-  return v;
-}
-
-std::vector<double> parse_double_list(const std::string& s, const char* what) {
-  std::vector<double> v;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    try {
-      std::size_t used = 0;
-      double x = std::stod(item, &used);
-      if (used != item.size()) throw std::invalid_argument(item);
-      v.push_back(x);
-    } catch (const std::exception&) {
-      throw std::invalid_argument(fmt::format("{}: '{}' is not a number", what, item));
-    }
-  }
-  if (v.empty()) throw std::invalid_argument(fmt::format("{}: empty list", what));
-  return v;
-}
-
 void add_sweep(CommandGroups& g) {
   struct Flags {
     SolveFlags solve;
-    std::string config, model, nodes = "1,2,4,8,16,32,64", csv, json;
+    MachineOptions machine;  // --config and --model
+    std::string nodes = "1,2,4,8,16,32,64", csv, json;
   };
   auto f = std::make_shared<Flags>();
   CLI::App* cmd = g.sweep->add_subcommand(
@@ -378,10 +362,7 @@ void add_sweep(CommandGroups& g) {
       "thesis's tables 4.3/4.4/4.5 (sequential broadcast) or 4.8 (tree broadcast) for built-in scenes.\n"
       "The thesis's shape: time falls with more nodes at first, then rises as communication dominates.");
   add_solve_options(cmd, f->solve);
-  cmd->add_option("--config", f->config, "Machine file (configs/*.toml); default: the built-in GC-PowerPlus")
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--model", f->model, "Network model: analytic or flow; default: the config's")
-      ->check(CLI::IsMember({"analytic", "flow"}));
+  add_machine_choice_options(cmd, f->machine);
   cmd->add_option("--nodes", f->nodes, "Comma-separated node counts")->capture_default_str();
   cmd->add_option("--csv", f->csv, "Write the table as CSV");
   cmd->add_option("--json", f->json, "Write every run's JSON summary as one array");
@@ -414,9 +395,7 @@ void add_sweep(CommandGroups& g) {
     int best_nodes = 0;
     std::vector<rad::Rgb> reference;
     for (int n : counts) {
-      MachineOptions mo;
-      mo.config = f->config;
-      mo.model = f->model;
+      MachineOptions mo = f->machine;
       mo.nodes = n;
       parix::SimulationOptions sim = simulation_options(mo, n);
       RunOutcome out = simulate(scene, o, sim);
@@ -478,7 +457,7 @@ void add_accuracy(CommandGroups& g) {
   auto f = std::make_shared<Flags>();
   CLI::App* cmd = g.accuracy->add_subcommand(
       "radiosity",
-      "What accuracy costs in radiosity, as two tables.\n"
+      "What accuracy costs in radiosity, as three tables.\n"
       "1. Hemicube form factors against closed forms, per resolution: from the centre of a unit square\n"
       "   to the parallel unit square at distance 1 and to the perpendicular unit square sharing an edge,\n"
       "   and from a small patch to a disc (r = 1 at h = 1: F = r^2/(h^2 + r^2)). 'point' is one hemicube\n"

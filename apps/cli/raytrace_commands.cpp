@@ -325,12 +325,13 @@ void add_sweep(CommandGroups& g) {
       "Render the same image on 1..64 simulated nodes: simulated time, speedup over 1 node, parallel\n"
       "efficiency, mean communication time per node, and the host's wall time for each run.");
   add_render_options(cmd, o->render);
-  cmd->add_option("--config", o->machine.config, "Machine file (configs/*.toml); default: the built-in GC-PowerPlus")->check(CLI::ExistingFile);
-  cmd->add_option("--model", o->machine.model, "Network model: analytic or flow")->check(CLI::IsMember({"analytic", "flow"}));
+  add_machine_choice_options(cmd, o->machine);
   cmd->add_option("--distribute", o->distribute, "static, interleaved or dynamic (see run raytrace --help)")
       ->check(CLI::IsMember({"static", "interleaved", "dynamic"}))
       ->capture_default_str();
-  cmd->add_option("--node-counts", o->nodes, "Node counts to run")->check(CLI::Range(1, 1 << 16))->delimiter(',');
+  cmd->add_option("--nodes,--node-counts", o->nodes, "Comma-separated node counts (as in sweep radiosity)")
+      ->check(CLI::Range(1, 1 << 16))
+      ->delimiter(',');
   cmd->add_option("--csv", o->csv, "Write the sweep as CSV");
   cmd->add_option("--json", o->machine.json, "Write the sweep as JSON");
   cmd->callback([o] {
@@ -358,7 +359,6 @@ void add_sweep(CommandGroups& g) {
       const ParallelRender r = render_parallel(scene, bvh, settings, d, sim);
       const double t = r.run.simulated_seconds();
       if (t1 == 0) t1 = t * n;  // the first count's time scaled to 1 node if the sweep does not start at 1
-      if (n == o->nodes.front() && n == 1) t1 = t;
       const double speedup = t1 / t;
       fmt::print("{:>6} {:>12.4f} {:>8.2f} {:>7.0f}% {:>12.4f} {:>12.4f} {:>9.2f}\n", n, t, speedup, 100.0 * speedup / n,
                  r.run.mean_comm_seconds(), r.run.mean_compute_seconds(), r.run.wall_seconds);

@@ -11,13 +11,17 @@
 
 namespace gcsim::cli {
 
-void add_machine_options(CLI::App* cmd, MachineOptions& o) {
+void add_machine_choice_options(CLI::App* cmd, MachineOptions& o) {
   cmd->add_option("--config", o.config, "Machine file (configs/*.toml); default: the built-in GC-PowerPlus as published")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--nodes", o.nodes, "Use the first N nodes of the machine, in the GC's mesh shape (2=2x1, 4=2x2, 8=4x2, ...)")
-      ->check(CLI::Range(1, 1 << 20));
   cmd->add_option("--model", o.model, "Network model: analytic (no contention) or flow (links shared); default: the config's")
       ->check(CLI::IsMember({"analytic", "flow"}));
+}
+
+void add_machine_options(CLI::App* cmd, MachineOptions& o) {
+  add_machine_choice_options(cmd, o);
+  cmd->add_option("--nodes", o.nodes, "Use the first N nodes of the machine, in the GC's mesh shape (2=2x1, 4=2x2, 8=4x2, ...)")
+      ->check(CLI::Range(1, 1 << 20));
   cmd->add_option("--trace", o.trace,
                   "Write a trace of simulated events: FILE.json (Chrome trace-event JSON, opens in Perfetto) with FILE.csv and "
                   "FILE.paje (ViTE) beside it; `gcsim plot FILE.json` draws it");

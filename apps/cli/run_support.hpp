@@ -19,8 +19,10 @@ struct MachineOptions {
   std::string json;                   // where to write the run's JSON summary
 };
 
-// Adds --config, --nodes, --model, --trace, --trace-level and --json to cmd.
+// Adds --config, --model, --nodes, --trace, --trace-level and --json to cmd.
 void add_machine_options(CLI::App* cmd, MachineOptions& o);
+// Adds only --config and --model: for commands that run several node counts (sweeps).
+void add_machine_choice_options(CLI::App* cmd, MachineOptions& o);
 // Loads the config (or the built-in one) restricted to o.nodes (or default_nodes) nodes.
 parix::SimulationOptions simulation_options(const MachineOptions& o, int default_nodes);
 // Prints "simulated X s   wall Y s ..." and, with --json, writes result.to_json() merged with extra.

@@ -68,15 +68,17 @@ inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, f
 
 }  // namespace
 
-void traverse_unordered(const Scene& scene, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
-  if (tree.empty) return;
-  if (is_primitive(tree.root)) {
-    test_primitive(scene, primitive_of(tree.root), ray, hit, tally);
-    return;
-  }
+namespace {
+
+// Depth-first walk in child order, without sorting: what A1 and shadow rays share. Boxes are
+// tested against tmax; visit(primitive) tests one primitive and returns true to stop the walk.
+template <class Visit>
+bool walk_depth_first(const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally, Visit&& visit) {
+  if (tree.empty) return false;
+  if (is_primitive(tree.root)) return visit(primitive_of(tree.root));
   float entry;
   ++tally.boxes;
-  if (!intersect_box(tree.root_box, ray, kInfinity, &entry)) return;
+  if (!intersect_box(tree.root_box, ray, tmax, &entry)) return false;
   const SlabRay slab(ray);
   NodeRef stack[kStackSize];
   int top = 0;
@@ -84,17 +86,27 @@ void traverse_unordered(const Scene& scene, const PackedTree& tree, const Ray& r
   while (top > 0) {
     const PairNode& n = tree.nodes[stack[--top]];
     float entries[2];
-    const unsigned mask = both_children(n, slab, ray.tmin, kInfinity, entries);
+    const unsigned mask = both_children(n, slab, ray.tmin, tmax, entries);
     for (int i = 1; i >= 0; --i) {  // push the second child first: the first is visited first
       const NodeRef c = n.child[i];
       if (is_primitive(c)) {
-        test_primitive(scene, primitive_of(c), ray, hit, tally);
+        if (visit(primitive_of(c))) return true;
       } else {
         ++tally.boxes;
         if ((mask >> i & 1u) && top < kStackSize) stack[top++] = c;
       }
     }
   }
+  return false;
+}
+
+}  // namespace
+
+void traverse_unordered(const Scene& scene, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+  walk_depth_first(tree, ray, kInfinity, tally, [&](int p) {
+    test_primitive(scene, p, ray, hit, tally);
+    return false;
+  });
 }
 
 void traverse_ordered(const Scene& scene, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
@@ -144,30 +156,7 @@ void traverse_ordered(const Scene& scene, const PackedTree& tree, const Ray& ray
 }
 
 bool traverse_any_hit(const Scene& scene, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally) {
-  if (tree.empty) return false;
-  if (is_primitive(tree.root)) return occludes(scene, primitive_of(tree.root), ray, tmax, tally);
-  float entry;
-  ++tally.boxes;
-  if (!intersect_box(tree.root_box, ray, tmax, &entry)) return false;
-  const SlabRay slab(ray);
-  NodeRef stack[kStackSize];
-  int top = 0;
-  stack[top++] = tree.root;
-  while (top > 0) {
-    const PairNode& n = tree.nodes[stack[--top]];
-    float entries[2];
-    const unsigned mask = both_children(n, slab, ray.tmin, tmax, entries);
-    for (int i = 1; i >= 0; --i) {
-      const NodeRef c = n.child[i];
-      if (is_primitive(c)) {
-        if (occludes(scene, primitive_of(c), ray, tmax, tally)) return true;
-      } else {
-        ++tally.boxes;
-        if ((mask >> i & 1u) && top < kStackSize) stack[top++] = c;
-      }
-    }
-  }
-  return false;
+  return walk_depth_first(tree, ray, tmax, tally, [&](int p) { return occludes(scene, p, ray, tmax, tally); });
 }
 
 void intersect_brute_force(const Scene& scene, const Ray& ray, Hit& hit, TestTally& tally) {
