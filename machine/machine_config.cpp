@@ -150,10 +150,10 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
   const toml::table& net = r.table(root, "network");
   r.only_keys(net, "[network]", {"model", "link_bandwidth_mbps", "message_setup_us", "network_latency_us",
                                  "hop_latency_us", "connect_base_us", "connect_per_hop_us",
-                                 "connect_serialized"});
+                                 "connect_serialized", "packet_bytes"});
   c.network_model = r.string(net, "model", "[network]", std::string("analytic"));
-  if (c.network_model != "analytic" && c.network_model != "flow") {
-    r.fail(net.get("model"), "'model' in [network] is '" + c.network_model + "'; expected \"analytic\" or \"flow\"");
+  if (c.network_model != "analytic" && c.network_model != "flow" && c.network_model != "packet") {
+    r.fail(net.get("model"), "'model' in [network] is '" + c.network_model + "'; expected \"analytic\", \"flow\" or \"packet\"");
   }
   c.link_bandwidth = r.number(net, "link_bandwidth_mbps", "[network]", 1e-9, 1e9) * 1e6;
   auto us = [&](std::string_view key) {
@@ -169,6 +169,8 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
     if (!b) r.fail(n, "'connect_serialized' in [network] must be true or false");
     c.connect_serialized = b->get();
   }
+
+  c.packet_bytes = static_cast<std::int64_t>(r.number(net, "packet_bytes", "[network]", 1, 1 << 30, 1024.0));
 
   const toml::table& ops = r.table(root, "ops", false);
   for (const auto& [k, v] : ops) {

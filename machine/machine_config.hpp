@@ -41,6 +41,8 @@ struct MachineConfig {
   // Connection set-ups are handled one at a time machine-wide (a single connection server),
   // instead of concurrently by the nodes involved.
   bool connect_serialized = false;
+  // The packet model cuts messages into packets of at most this many bytes.
+  std::int64_t packet_bytes = 1024;
 
   int links_per_node() const { return comm_processors * links_per_comm_processor; }
   // The links of a node are spread evenly over its four mesh directions.

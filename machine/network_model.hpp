@@ -4,6 +4,7 @@
 //   analytic: set-up + latency + per-hop latency + size / channel bandwidth; no contention.
 //   flow:     the same latency, but each channel's bandwidth is shared max-min fairly among the
 //             messages crossing it at the same time (rates recomputed when a message starts or ends).
+//   packet:   messages cut into packets that queue for each channel of their route (cut-through).
 #include <cstdint>
 #include <memory>
 #include <string_view>
@@ -53,7 +54,7 @@ class NetworkModel {
 };
 
 // Names the models a run may ask for.
-inline constexpr std::string_view kNetworkModelNames = "analytic, flow";
+inline constexpr std::string_view kNetworkModelNames = "analytic, flow, packet";
 // Throws std::invalid_argument listing the valid names if name is unknown.
 std::unique_ptr<NetworkModel> make_network_model(std::string_view name, NetworkContext ctx);
 

@@ -14,8 +14,8 @@ namespace gcsim::cli {
 void add_machine_choice_options(CLI::App* cmd, MachineOptions& o) {
   cmd->add_option("--config", o.config, "Machine file (configs/*.toml); default: the built-in GC-PowerPlus as published")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--model", o.model, "Network model: analytic (no contention) or flow (links shared); default: the config's")
-      ->check(CLI::IsMember({"analytic", "flow"}));
+  cmd->add_option("--model", o.model, "Network model: analytic (no contention), flow (links shared max-min fairly) or packet (packets queue for each link); default: the config's")
+      ->check(CLI::IsMember({"analytic", "flow", "packet"}));
 }
 
 void add_machine_options(CLI::App* cmd, MachineOptions& o) {

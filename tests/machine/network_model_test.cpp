@@ -110,10 +110,10 @@ TEST(Network, UnknownModelListsTheValidOnes) {
   Mesh m(2, 1);
   MachineConfig c = with_nodes(default_machine_config(), 2);
   try {
-    make_network_model("packet", {k, m, c, nullptr});
+    make_network_model("carrier-pigeon", {k, m, c, nullptr});
     FAIL();
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("analytic, flow"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("analytic, flow, packet"), std::string::npos);
   }
 }
 
