@@ -100,6 +100,32 @@ class Reader {
 
 constexpr double kMaxMicroseconds = 1e9;
 
+// [network] connect_model = "parallel" | "serialized" | "servers", with connect_server_block =
+// [w, h] for "servers". The older connect_serialized = true means "serialized".
+void read_connect_model(const Reader& r, const toml::table& net, MachineConfig& c) {
+  if (const toml::node* n = net.get("connect_serialized")) {
+    auto b = n->as_boolean();
+    if (!b) r.fail(n, "'connect_serialized' in [network] must be true or false");
+    if (net.get("connect_model")) r.fail(n, "give either 'connect_model' or the older 'connect_serialized' in [network], not both");
+    c.connect_model = b->get() ? ConnectModel::serialized : ConnectModel::parallel;
+  }
+  const std::string model = r.string(net, "connect_model", "[network]", std::string("parallel"));
+  if (model == "serialized") c.connect_model = ConnectModel::serialized;
+  else if (model == "servers") c.connect_model = ConnectModel::servers;
+  else if (model != "parallel")
+    r.fail(net.get("connect_model"), "'connect_model' in [network] is '" + model + "'; expected \"parallel\", \"serialized\" or \"servers\"");
+  if (const toml::node* n = net.get("connect_server_block")) {
+    const toml::array* a = n->as_array();
+    if (!a || a->size() != 2 || !a->get(0)->is_integer() || !a->get(1)->is_integer() ||
+        a->get(0)->as_integer()->get() < 1 || a->get(1)->as_integer()->get() < 1) {
+      r.fail(n, "'connect_server_block' in [network] must be [width, height], two positive integers");
+    }
+    if (c.connect_model != ConnectModel::servers) r.fail(n, "'connect_server_block' needs connect_model = \"servers\"");
+    c.connect_block_width = static_cast<int>(a->get(0)->as_integer()->get());
+    c.connect_block_height = static_cast<int>(a->get(1)->as_integer()->get());
+  }
+}
+
 }  // namespace
 
 MachineConfig parse_machine_config(std::string_view text, const std::string& source) {
@@ -150,7 +176,7 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
   const toml::table& net = r.table(root, "network");
   r.only_keys(net, "[network]", {"model", "link_bandwidth_mbps", "message_setup_us", "network_latency_us",
                                  "hop_latency_us", "connect_base_us", "connect_per_hop_us",
-                                 "connect_serialized", "packet_bytes"});
+                                 "connect_serialized", "connect_model", "connect_server_block", "packet_bytes"});
   c.network_model = r.string(net, "model", "[network]", std::string("analytic"));
   if (c.network_model != "analytic" && c.network_model != "flow" && c.network_model != "packet") {
     r.fail(net.get("model"), "'model' in [network] is '" + c.network_model + "'; expected \"analytic\", \"flow\" or \"packet\"");
@@ -164,12 +190,7 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
   c.hop_latency = us("hop_latency_us");
   c.connect_base = us("connect_base_us");
   c.connect_per_hop = us("connect_per_hop_us");
-  if (const toml::node* n = net.get("connect_serialized")) {
-    auto b = n->as_boolean();
-    if (!b) r.fail(n, "'connect_serialized' in [network] must be true or false");
-    c.connect_serialized = b->get();
-  }
-
+  read_connect_model(r, net, c);
   c.packet_bytes = static_cast<std::int64_t>(r.number(net, "packet_bytes", "[network]", 1, 1 << 30, 1024.0));
 
   const toml::table& ops = r.table(root, "ops", false);

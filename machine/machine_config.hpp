@@ -13,6 +13,9 @@
 
 namespace gcsim::machine {
 
+// How connection set-ups proceed side by side (machine/connection_service.hpp).
+enum class ConnectModel { parallel, serialized, servers };
+
 struct MachineConfig {
   std::string name;
   std::string source;                  // file it came from ("<embedded>" for the built-in default)
@@ -38,9 +41,9 @@ struct MachineConfig {
   SimTime hop_latency = 1 * kMicrosecond;       // each further hop
   SimTime connect_base = 550 * kMicrosecond;    // opening a virtual link
   SimTime connect_per_hop = 240 * kMicrosecond;
-  // Connection set-ups are handled one at a time machine-wide (a single connection server),
-  // instead of concurrently by the nodes involved.
-  bool connect_serialized = false;
+  ConnectModel connect_model = ConnectModel::parallel;
+  int connect_block_width = 4;   // with ConnectModel::servers: nodes per connection server, x
+  int connect_block_height = 4;  // and y
   // The packet model cuts messages into packets of at most this many bytes.
   std::int64_t packet_bytes = 1024;
 

@@ -6,27 +6,6 @@ namespace gcsim::machine {
 
 PacketNetwork::PacketNetwork(NetworkContext ctx) : NetworkModel(ctx), packet_bytes_(ctx.config.packet_bytes) {}
 
-void PacketNetwork::prune(std::vector<Busy>& calendar) const {
-  const SimTime now = ctx_.kernel.now();
-  auto first_live = std::find_if(calendar.begin(), calendar.end(), [now](const Busy& b) { return b.end > now; });
-  calendar.erase(calendar.begin(), first_live);
-}
-
-SimTime PacketNetwork::reserve(int ch, SimTime ready, SimTime length) {
-  std::vector<Busy>& cal = calendar_[ch];
-  prune(cal);
-  SimTime start = ready;
-  // Intervals do not overlap, so their ends are sorted too: skip those that end before we could
-  // start by binary search, then slide past every interval we would overlap.
-  auto it = std::partition_point(cal.begin(), cal.end(), [start](const Busy& b) { return b.end <= start; });
-  while (it != cal.end() && it->start < start + length) {
-    start = std::max(start, it->end);
-    ++it;
-  }
-  cal.insert(it, Busy{start, start + length});
-  return start;
-}
-
 void PacketNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action on_arrival) {
   ++messages_;
   const int hops = ctx_.mesh.hops(src, dst);
@@ -49,7 +28,9 @@ void PacketNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Actio
     const SimTime length = serialization(next) - serialization(sent);
     SimTime at = entry;
     for (std::size_t i = 0; i < route_.size(); ++i) {
-      at = reserve(route_[i], std::max(at, ready_[i]), length);
+      Calendar& channel = calendar_[route_[i]];
+      channel.forget_before(now);
+      at = channel.take(std::max(at, ready_[i]), length);
       if (first_start < 0) first_start = at;
       ready_[i] = at + length;  // the next packet of this message follows this one
       if (i + 1 < route_.size()) at += hop;

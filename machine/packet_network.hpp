@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "machine/calendar.hpp"
 #include "machine/network_model.hpp"
 
 namespace gcsim::machine {
@@ -34,17 +35,8 @@ class PacketNetwork final : public NetworkModel {
   std::uint64_t packets() const { return packets_; }
 
  private:
-  struct Busy {
-    SimTime start;
-    SimTime end;
-  };
-  // Earliest start >= ready of a gap of length `length` on channel ch; reserves it.
-  SimTime reserve(int ch, SimTime ready, SimTime length);
-  // Forgets intervals that ended before the current time.
-  void prune(std::vector<Busy>& calendar) const;
-
   std::int64_t packet_bytes_;
-  std::vector<std::vector<Busy>> calendar_;  // per channel, sorted by start, non-overlapping
+  std::vector<Calendar> calendar_;  // per channel: the intervals its packets occupy
   std::vector<int> route_;
   std::vector<SimTime> ready_;  // per hop: when the previous packet of this message left it
   std::uint64_t packets_ = 0;

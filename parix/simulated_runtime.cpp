@@ -12,6 +12,7 @@
 #include <boost/fiber/all.hpp>
 #include <fmt/format.h>
 
+#include "machine/connection_service.hpp"
 #include "machine/kernel.hpp"
 #include "machine/mesh.hpp"
 #include "machine/network_model.hpp"
@@ -108,7 +109,8 @@ class Simulation {
         mesh(config.mesh_width, config.mesh_height),
         trace(o.trace, config.nodes, config.mesh_width, config.mesh_height),
         network(machine::make_network_model(o.network_model.empty() ? config.network_model : o.network_model,
-                                            {kernel, mesh, config, trace.enabled() ? &trace : nullptr})) {
+                                            {kernel, mesh, config, trace.enabled() ? &trace : nullptr})),
+        connections(config, mesh) {
     for (int n = 0; n < config.nodes; ++n) nodes.emplace_back(kernel, config.cpus_per_node, config.memory_bytes);
     stats.resize(config.nodes);
   }
@@ -169,9 +171,6 @@ class Simulation {
     if (r->waiter) static_cast<SimProcess*>(r->waiter)->wake();
   }
 
-  machine::SimTime connect_time(int a, int b) const {
-    return config.connect_base + machine::SimTime(mesh.hops(a, b)) * config.connect_per_hop;
-  }
 
   std::string deadlock_report() const;
 
@@ -182,6 +181,7 @@ class Simulation {
   machine::Mesh mesh;
   machine::TraceWriter trace;
   std::unique_ptr<machine::NetworkModel> network;
+  machine::ConnectionService connections;
   std::deque<machine::Node> nodes;
   std::vector<ProcessorStats> stats;
   std::deque<LinkEnd> links;
@@ -197,7 +197,6 @@ class Simulation {
   };
   std::map<std::tuple<int, int, int>, std::deque<PendingConnect>> pending_connects;
   std::int64_t next_message = 0;
-  machine::SimTime connection_server_free = 0;  // with connect_serialized
   int runnable = 0;
   int live = 0;
   bool cancelling = false;
@@ -289,12 +288,7 @@ Link SimProcess::connect(int peer, int tag) {
     LinkEnd& eb = sim_.links[b];
     ea.owner = id_, ea.peer = peer, ea.peer_end = b;
     eb.owner = peer, eb.peer = id_, eb.peer_end = a;
-    machine::SimTime up = start + sim_.connect_time(id_, peer);
-    if (sim_.config.connect_serialized) {
-      // One connection server for the whole machine: set-ups queue for it.
-      up = std::max(start, sim_.connection_server_free) + sim_.connect_time(id_, peer);
-      sim_.connection_server_free = up;
-    }
+    const machine::SimTime up = sim_.connections.set_up(id_, peer, start);
     bool done = false;
     std::int64_t* theirs = other.result;
     SimProcess* them = other.who;

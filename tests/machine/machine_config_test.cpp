@@ -109,7 +109,7 @@ TEST(MachineConfig, MissingSectionAndSyntaxErrorsAreReported) {
 }
 
 TEST(MachineConfig, UnknownNetworkModelIsRejected) {
-  EXPECT_NE(error_of(with("model = \"flow\"", "model = \"packet-ish\"")).find("expected \"analytic\" or \"flow\""),
+  EXPECT_NE(error_of(with("model = \"flow\"", "model = \"packet-ish\"")).find("expected \"analytic\", \"flow\" or \"packet\""),
             std::string::npos);
 }
 
