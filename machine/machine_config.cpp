@@ -100,6 +100,33 @@ class Reader {
 
 constexpr double kMaxMicroseconds = 1e9;
 
+// [topology.shapes]: N = [w, h], the sub-mesh `--nodes N` uses instead of the GC's default.
+void read_shapes(const Reader& r, const toml::table& topo, MachineConfig& c) {
+  const toml::table& shapes = r.table(topo, "shapes", false);
+  for (const auto& [k, v] : shapes) {
+    int n = 0;
+    try {
+      std::size_t used = 0;
+      n = std::stoi(std::string(k.str()), &used);
+      if (used != k.str().size()) n = 0;
+    } catch (const std::exception&) {
+    }
+    const toml::array* a = v.as_array();
+    if (n < 1 || !a || a->size() != 2 || !a->get(0)->is_integer() || !a->get(1)->is_integer()) {
+      r.fail(&v, "[topology.shapes] entries are N = [width, height], e.g. 8 = [8, 1]");
+    }
+    const MeshShape s{static_cast<int>(a->get(0)->as_integer()->get()), static_cast<int>(a->get(1)->as_integer()->get())};
+    if (s.width < 1 || s.height < 1 || std::int64_t(s.width) * s.height != n || s.width > c.mesh_width ||
+        s.height > c.mesh_height) {
+      r.fail(&v, "[topology.shapes] " + std::to_string(n) + " = [" + std::to_string(s.width) + ", " +
+                     std::to_string(s.height) + "]: expected width * height == " + std::to_string(n) +
+                     " and a shape that fits in the " + std::to_string(c.mesh_width) + "x" +
+                     std::to_string(c.mesh_height) + " mesh");
+    }
+    c.shapes[n] = s;
+  }
+}
+
 // [network] connect_model = "parallel" | "serialized" | "servers", with connect_server_block =
 // [w, h] for "servers". The older connect_serialized = true means "serialized".
 void read_connect_model(const Reader& r, const toml::table& net, MachineConfig& c) {
@@ -143,7 +170,7 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
   c.name = r.string(root, "name", "the file", std::string("unnamed machine"));
 
   const toml::table& topo = r.table(root, "topology");
-  r.only_keys(topo, "[topology]", {"nodes", "mesh"});
+  r.only_keys(topo, "[topology]", {"nodes", "mesh", "shapes"});
   c.nodes = r.integer(topo, "nodes", "[topology]", 1, 1 << 20);
   const toml::node* mesh = topo.get("mesh");
   if (!mesh) r.fail(&topo, "missing key 'mesh' in [topology] (expected mesh = [width, height])");
@@ -159,6 +186,8 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
                      std::to_string(std::int64_t(c.mesh_width) * c.mesh_height) + " nodes but [topology] nodes = " +
                      std::to_string(c.nodes) + "; expected width * height == nodes");
   }
+
+  read_shapes(r, topo, c);
 
   const toml::table& node = r.table(root, "node");
   r.only_keys(node, "[node]", {"cpus", "clock_mhz", "memory_mb", "comm_processors", "links_per_comm_processor"});
@@ -222,18 +251,25 @@ MeshShape gc_mesh_shape(int n) {
   return {n / h, h};
 }
 
-MachineConfig with_nodes(const MachineConfig& c, int n) {
-  if (n == c.nodes) return c;
+MachineConfig with_nodes(const MachineConfig& c, int n, std::optional<MeshShape> shape) {
+  if (n == c.nodes && !shape) return c;
   if (n < 1 || n > c.nodes) {
     throw ConfigError(c.source, 0, "--nodes " + std::to_string(n) + " does not fit: the machine has " +
                                        std::to_string(c.nodes) + " nodes (expected 1.." + std::to_string(c.nodes) + ")");
   }
-  const MeshShape s = gc_mesh_shape(n);
+  const auto configured = c.shapes.find(n);
+  const bool chosen = shape || configured != c.shapes.end();
+  const MeshShape s = shape ? *shape : configured != c.shapes.end() ? configured->second : gc_mesh_shape(n);
+  const std::string name = std::to_string(s.width) + "x" + std::to_string(s.height);
+  if (std::int64_t(s.width) * s.height != n) {
+    throw ConfigError(c.source, 0, "shape " + name + " has " + std::to_string(std::int64_t(s.width) * s.height) +
+                                       " nodes, not " + std::to_string(n) + " (expected width * height == nodes)");
+  }
   const bool fits = s.width <= c.mesh_width && s.height <= c.mesh_height;
-  const bool fits_turned = s.height <= c.mesh_width && s.width <= c.mesh_height;
+  // The default shape may be turned to fit; a shape the user chose is taken as given.
+  const bool fits_turned = !chosen && s.height <= c.mesh_width && s.width <= c.mesh_height;
   if (!fits && !fits_turned) {
-    throw ConfigError(c.source, 0, "--nodes " + std::to_string(n) + " needs a " + std::to_string(s.width) + "x" +
-                                       std::to_string(s.height) + " mesh, which does not fit in the machine's " +
+    throw ConfigError(c.source, 0, "--nodes " + std::to_string(n) + " in a " + name + " mesh does not fit in the machine's " +
                                        std::to_string(c.mesh_width) + "x" + std::to_string(c.mesh_height) + " mesh");
   }
   MachineConfig out = c;
@@ -241,6 +277,23 @@ MachineConfig with_nodes(const MachineConfig& c, int n) {
   out.mesh_width = fits ? s.width : s.height;
   out.mesh_height = fits ? s.height : s.width;
   return out;
+}
+
+MeshShape parse_mesh_shape(std::string_view text) {
+  const auto x = text.find('x');
+  auto number = [&](std::string_view part) {
+    int v = 0;
+    if (part.empty() || part.size() > 7) return -1;
+    for (char ch : part) {
+      if (ch < '0' || ch > '9') return -1;
+      v = v * 10 + (ch - '0');
+    }
+    return v;
+  };
+  const int w = x == std::string_view::npos ? -1 : number(text.substr(0, x));
+  const int h = x == std::string_view::npos ? -1 : number(text.substr(x + 1));
+  if (w < 1 || h < 1) throw std::invalid_argument("shape '" + std::string(text) + "': expected WxH, e.g. 8x1");
+  return {w, h};
 }
 
 SimTime op_time(const MachineConfig& c, std::string_view op, std::int64_t count) {

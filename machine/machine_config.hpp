@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -12,6 +13,11 @@
 #include "machine/sim_time.hpp"
 
 namespace gcsim::machine {
+
+struct MeshShape {
+  int width;
+  int height;
+};
 
 // How connection set-ups proceed side by side (machine/connection_service.hpp).
 enum class ConnectModel { parallel, serialized, servers };
@@ -24,6 +30,8 @@ struct MachineConfig {
   int nodes = 64;
   int mesh_width = 8;                  // x extent of the physical 2D mesh
   int mesh_height = 8;                 // y extent
+  // Sub-meshes that `--nodes N` uses instead of the GC's default shape ([topology.shapes]).
+  std::map<int, MeshShape> shapes;
 
   // Node
   int cpus_per_node = 2;
@@ -70,13 +78,13 @@ std::string_view default_machine_config_text();
 
 // The mesh shape the GC uses for its first n nodes: 2=2x1, 4=2x2, 8=4x2, 16=4x4, 32=8x4, 64=8x8;
 // in general the most nearly square w x h with w >= h.
-struct MeshShape {
-  int width;
-  int height;
-};
 MeshShape gc_mesh_shape(int n);
-// The config restricted to its first n nodes in that shape; throws ConfigError if it does not fit.
-MachineConfig with_nodes(const MachineConfig& c, int n);
+// The config restricted to n nodes: in `shape` if given, else in the config's [topology.shapes]
+// entry for n, else in gc_mesh_shape(n) (turned if only that fits). Throws ConfigError if the
+// shape does not have n nodes or does not fit in the machine's mesh.
+MachineConfig with_nodes(const MachineConfig& c, int n, std::optional<MeshShape> shape = std::nullopt);
+// "WxH" -> shape; throws std::invalid_argument naming what was expected.
+MeshShape parse_mesh_shape(std::string_view text);
 
 // Simulated CPU time for count operations of the named kind on this machine.
 // Throws std::out_of_range naming the operation if the config has no cost for it.

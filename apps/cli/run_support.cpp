@@ -22,6 +22,10 @@ void add_machine_options(CLI::App* cmd, MachineOptions& o) {
   add_machine_choice_options(cmd, o);
   cmd->add_option("--nodes", o.nodes, "Use the first N nodes of the machine, in the GC's mesh shape (2=2x1, 4=2x2, 8=4x2, ...)")
       ->check(CLI::Range(1, 1 << 20));
+  cmd->add_option("--shape", o.shape,
+                  "Sub-mesh WxH the N nodes occupy (e.g. 8x1: a row); default: the machine file's [topology.shapes] "
+                  "entry, else the most nearly square shape the GC uses")
+      ->needs("--nodes");
   cmd->add_option("--trace", o.trace,
                   "Write a trace of simulated events: FILE.json (Chrome trace-event JSON, opens in Perfetto) with FILE.csv and "
                   "FILE.paje (ViTE) beside it; `gcsim plot FILE.json` draws it");
@@ -35,7 +39,9 @@ parix::SimulationOptions simulation_options(const MachineOptions& o, int default
   parix::SimulationOptions s;
   s.config = o.config.empty() ? machine::default_machine_config() : machine::load_machine_config(o.config);
   const int n = o.nodes > 0 ? o.nodes : std::min(default_nodes, s.config.nodes);
-  s.config = machine::with_nodes(s.config, n);
+  std::optional<machine::MeshShape> shape;
+  if (!o.shape.empty()) shape = machine::parse_mesh_shape(o.shape);
+  s.config = machine::with_nodes(s.config, n, shape);
   s.nodes = n;
   s.network_model = o.model;
   s.trace.path = o.trace;

@@ -13,6 +13,7 @@ namespace gcsim::cli {
 struct MachineOptions {
   std::string config;                 // "" : the built-in GC-PowerPlus (configs/gc-powerplus.toml)
   int nodes = 0;                      // 0 : the command's default
+  std::string shape;                  // "" : the machine file's shape for that many nodes
   std::string model;                  // "" : the config's network model
   std::string trace;                  // trace file (.json, with .csv beside it)
   std::string trace_level = "full";

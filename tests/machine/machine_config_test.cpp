@@ -154,3 +154,47 @@ TEST(MachineConfig, UnknownOperationIsNamed) {
 
 }  // namespace
 }  // namespace gcsim::machine
+
+namespace gcsim::machine {
+namespace {
+
+TEST(MeshShapes, ChosenShapeReplacesTheDefault) {
+  const MachineConfig gc = default_machine_config();
+  const MachineConfig row = with_nodes(gc, 8, MeshShape{8, 1});
+  EXPECT_EQ(row.mesh_width, 8);
+  EXPECT_EQ(row.mesh_height, 1);
+  const MachineConfig block = with_nodes(gc, 8);
+  EXPECT_EQ(block.mesh_width, 4);
+  EXPECT_EQ(block.mesh_height, 2);
+  EXPECT_THROW(with_nodes(gc, 8, MeshShape{3, 3}), ConfigError);   // 9 nodes, not 8
+  EXPECT_THROW(with_nodes(gc, 16, MeshShape{16, 1}), ConfigError);  // wider than the 8x8 mesh
+}
+
+TEST(MeshShapes, MachineFileNamesShapesPerNodeCount) {
+  std::string text(default_machine_config_text());
+  text.replace(text.find("[node]"), 6, "[topology.shapes]\n8 = [8, 1]\n\n[node]");
+  const MachineConfig c = parse_machine_config(text, "rows.toml");
+  EXPECT_EQ(with_nodes(c, 8).mesh_height, 1);
+  EXPECT_EQ(with_nodes(c, 16).mesh_height, 4);  // no entry: the default shape
+  std::string bad(default_machine_config_text());
+  bad.replace(bad.find("[node]"), 6, "[topology.shapes]\n8 = [3, 3]\n\n[node]");
+  try {
+    parse_machine_config(bad, "bad.toml");
+    FAIL() << "a 9-node shape for 8 nodes was accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.toml:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("width * height == 8"), std::string::npos) << e.what();
+  }
+}
+
+TEST(MeshShapes, ParsesWxH) {
+  EXPECT_EQ(parse_mesh_shape("8x1").width, 8);
+  EXPECT_EQ(parse_mesh_shape("8x1").height, 1);
+  EXPECT_THROW(parse_mesh_shape("8"), std::invalid_argument);
+  EXPECT_THROW(parse_mesh_shape("x4"), std::invalid_argument);
+  EXPECT_THROW(parse_mesh_shape("0x4"), std::invalid_argument);
+  EXPECT_THROW(parse_mesh_shape("-2x4"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace gcsim::machine
