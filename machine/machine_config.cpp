@@ -100,6 +100,20 @@ class Reader {
 
 constexpr double kMaxMicroseconds = 1e9;
 
+// [calibration] fitted = ["4.6", ...]: written by `gcsim calibrate`, read by `gcsim validate`.
+void read_calibration(const Reader& r, const toml::table& root, MachineConfig& c) {
+  const toml::table& cal = r.table(root, "calibration", false);
+  r.only_keys(cal, "[calibration]", {"fitted"});
+  if (const toml::node* n = cal.get("fitted")) {
+    const toml::array* a = n->as_array();
+    if (!a) r.fail(n, "'fitted' in [calibration] must be a list of table names, e.g. [\"4.6\"]");
+    for (const auto& item : *a) {
+      if (!item.is_string()) r.fail(&item, "'fitted' in [calibration] must be a list of table names, e.g. [\"4.6\"]");
+      c.calibrated_on.push_back(item.as_string()->get());
+    }
+  }
+}
+
 // [topology.shapes]: N = [w, h], the sub-mesh `--nodes N` uses instead of the GC's default.
 void read_shapes(const Reader& r, const toml::table& topo, MachineConfig& c) {
   const toml::table& shapes = r.table(topo, "shapes", false);
@@ -163,7 +177,7 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
     throw ConfigError(source, static_cast<int>(e.source().begin.line), std::string(e.description()));
   }
   Reader r(root, source);
-  r.only_keys(root, "the file", {"name", "topology", "node", "network", "ops"});
+  r.only_keys(root, "the file", {"name", "topology", "node", "network", "ops", "calibration"});
 
   MachineConfig c;
   c.source = source;
@@ -221,6 +235,8 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
   c.connect_per_hop = us("connect_per_hop_us");
   read_connect_model(r, net, c);
   c.packet_bytes = static_cast<std::int64_t>(r.number(net, "packet_bytes", "[network]", 1, 1 << 30, 1024.0));
+
+  read_calibration(r, root, c);
 
   const toml::table& ops = r.table(root, "ops", false);
   for (const auto& [k, v] : ops) {

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "machine/sim_time.hpp"
 
@@ -25,6 +26,7 @@ enum class ConnectModel { parallel, serialized, servers };
 struct MachineConfig {
   std::string name;
   std::string source;                  // file it came from ("<embedded>" for the built-in default)
+  std::vector<std::string> calibrated_on;  // [calibration] fitted: the tables a fit used (gcsim calibrate)
 
   // Topology
   int nodes = 64;

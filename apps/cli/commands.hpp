@@ -29,6 +29,9 @@ void add_radiosity_commands(CommandGroups& g);
 #ifdef GCSIM_HAVE_RAYTRACE_COMMANDS
 void add_raytrace_commands(CommandGroups& g);
 #endif
+#ifdef GCSIM_HAVE_CALIBRATION_COMMANDS
+void add_calibration_commands(CommandGroups& g);
+#endif
 #ifdef GCSIM_HAVE_TRACE_COMMANDS
 void add_trace_commands(CommandGroups& g);
 #endif

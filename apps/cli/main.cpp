@@ -84,6 +84,9 @@ int main(int argc, char** argv) {
 #ifdef GCSIM_HAVE_RAYTRACE_COMMANDS
   cli::add_raytrace_commands(g);
 #endif
+#ifdef GCSIM_HAVE_CALIBRATION_COMMANDS
+  cli::add_calibration_commands(g);
+#endif
 #ifdef GCSIM_HAVE_TRACE_COMMANDS
   cli::add_trace_commands(g);
 #endif

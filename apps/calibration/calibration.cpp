@@ -1,0 +1,136 @@
+#include "apps/calibration/calibration.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace gcsim::calibration {
+namespace {
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, sep)) out.push_back(item);
+  return out;
+}
+
+// Leaves only the rows whose node counts are listed ("1+8").
+void keep_rows(MeasuredTable& t, const std::string& rows, const std::string& spec) {
+  std::vector<int> keep;
+  for (const auto& item : split(rows, '+')) {
+    int n = 0;
+    try {
+      std::size_t used = 0;
+      n = std::stoi(item, &used);
+      if (used != item.size()) n = 0;
+    } catch (const std::exception&) {
+    }
+    if (n < 1 || t.row_of(n) < 0)
+      throw std::invalid_argument(fmt::format("--fit {}: '{}' is not a node count of table {}", spec, item, t.id));
+    keep.push_back(n);
+  }
+  for (std::size_t r = 0; r < t.nodes.size(); ++r)
+    if (std::find(keep.begin(), keep.end(), t.nodes[r]) == keep.end())
+      for (double& v : t.values[r]) v = kNotMeasured;
+}
+
+}  // namespace
+
+MeasuredTable table_from_spec(const std::string& spec) {
+  std::string source = spec, rows;
+  if (const auto at = spec.rfind('@'); at != std::string::npos) {
+    source = spec.substr(0, at);
+    rows = spec.substr(at + 1);
+  }
+  MeasuredTable t;
+  if (const auto colon = source.rfind(".csv:"); colon != std::string::npos) {
+    t = load_measured_csv(source.substr(0, colon + 4), source.substr(colon + 5));
+  } else {
+    t = thesis_table(source);
+  }
+  if (!rows.empty()) keep_rows(t, rows, spec);
+  return t;
+}
+
+std::vector<MeasuredTable> tables_from_specs(const std::string& specs) {
+  std::vector<MeasuredTable> out;
+  for (const auto& s : split(specs, ',')) {
+    if (s.empty()) throw std::invalid_argument("--fit: empty table name (expected e.g. 4.6 or 4.6,4.3@1)");
+    out.push_back(table_from_spec(s));
+  }
+  if (out.empty()) throw std::invalid_argument("--fit: no tables (expected e.g. 4.6 or 4.6,4.3@1)");
+  return out;
+}
+
+CalibrationResult calibrate(const MachineFile& file, const std::vector<MeasuredTable>& tables,
+                            const std::vector<std::string>& free, Predictor& predictor) {
+  if (free.empty()) throw std::invalid_argument("--free: no parameters to fit");
+  std::vector<double> initial;
+  for (const auto& key : free) {
+    file.check_free_key(key);
+    initial.push_back(file.value(key));
+    if (!(initial.back() > 0))
+      throw std::invalid_argument(fmt::format("--free {}: its value in {} is {}; give it a positive starting value", key,
+                                              file.source(), initial.back()));
+  }
+  auto values_at = [&](const std::vector<double>& x) {
+    std::map<std::string, double> v;
+    for (std::size_t i = 0; i < free.size(); ++i) v[free[i]] = initial[i] * std::exp(x[i]);
+    return v;
+  };
+  std::size_t cells = 0;
+  for (const auto& t : tables)
+    for (const auto& row : t.values)
+      for (double v : row) cells += !std::isnan(v);
+  auto residuals = [&](const std::vector<double>& x) {
+    const auto predicted = predictor.predict(tables, file.with(values_at(x)));
+    std::vector<double> r;
+    for (const auto& c : compare(tables, predicted)) r.push_back(c.error());
+    return r;
+  };
+  CalibrationResult out;
+  out.fit = least_squares(residuals, std::vector<double>(free.size(), 0.0), cells);
+  const auto best = values_at(out.fit.x);
+  for (std::size_t i = 0; i < free.size(); ++i)
+    out.parameters.push_back({free[i], initial[i], best.at(free[i]), best.at(free[i]) * out.fit.sigma[i]});
+  out.fitted = file.with(best);
+  out.cells = compare(tables, predictor.predict(tables, out.fitted));
+  for (auto& c : out.cells) c.fitted = true;
+  return out;
+}
+
+std::string fitted_file_text(const MachineFile& file, const std::string& out_path, const std::string& specs,
+                             const CalibrationResult& r, const std::string& command) {
+  std::string base = "builtin:gc-powerplus";
+  if (file.source().front() != '<') {
+    const auto dir = std::filesystem::absolute(out_path).parent_path();
+    base = std::filesystem::relative(std::filesystem::absolute(file.source()), dir).generic_string();
+  }
+  const auto s = summarize(r.cells);
+  std::string text = fmt::format("# {}, calibrated.\n# Written by:\n#   {}\n", file.config().name, command);
+  text += fmt::format("# Fitted by least squares (GSL Levenberg-Marquardt, {} iterations, {}) to {} measured figures:\n",
+                      r.fit.iterations, r.fit.reason, r.cells.size());
+  for (const auto& t : s)
+    text += fmt::format("#   table {}: {} cells, median |error| {:.1f} %, max {:.1f} %\n", t.table, t.cells,
+                        100 * t.median_error, 100 * t.max_error);
+  text += "# Every other table is a prediction: `gcsim validate --config " + out_path + "`.\n";
+  text += fmt::format("base = \"{}\"\nname = \"{} (calibrated on {})\"\n\n", base, file.config().name, specs);
+  text += fmt::format("[calibration]\nfitted = [");
+  for (std::size_t i = 0; auto t : split(specs, ',')) text += (i++ ? ", " : "") + fmt::format("\"{}\"", t);
+  text += "]\n";
+  std::string table;
+  for (const auto& p : r.parameters) {
+    const auto dot = p.key.find('.');
+    const std::string t = p.key.substr(0, dot);
+    if (t != table) text += fmt::format("\n[{}]\n", table = t);
+    text += fmt::format("{} = {:.6g}    # fitted: +- {:.2g} (one standard error); was {:.6g}\n", p.key.substr(dot + 1), p.value,
+                        p.sigma, p.initial);
+  }
+  return text;
+}
+
+}  // namespace gcsim::calibration

@@ -1,0 +1,49 @@
+#pragma once
+// gcsim calibrate: fit free parameters of a machine file to measured tables by least squares,
+// and write the fitted machine as a file that inherits the base and overrides only what was
+// fitted, saying in its header what was fitted to what. gcsim validate then predicts the tables
+// that played no part in the fit.
+#include <string>
+#include <vector>
+
+#include "apps/calibration/comparison.hpp"
+#include "apps/calibration/config_overrides.hpp"
+#include "apps/calibration/least_squares.hpp"
+#include "apps/calibration/measured_table.hpp"
+#include "apps/calibration/predictor.hpp"
+
+namespace gcsim::calibration {
+
+// "4.6" (a built-in table), "4.3@1" (only its 1-node row), "4.3@1+8", or "PATH.csv:4.6[@...]" (a
+// user's figures in table 4.6's layout). Cells outside the named rows are left out. Throws
+// std::invalid_argument naming what was expected.
+MeasuredTable table_from_spec(const std::string& spec);
+// Comma-separated specs.
+std::vector<MeasuredTable> tables_from_specs(const std::string& specs);
+
+struct FittedParameter {
+  std::string key;
+  double initial = 0;
+  double value = 0;
+  double sigma = 0;  // one standard error
+};
+
+struct CalibrationResult {
+  std::vector<FittedParameter> parameters;
+  std::vector<CellComparison> cells;  // the fitted cells at the optimum
+  LeastSquaresResult fit;
+  machine::MachineConfig fitted;
+};
+
+// Fits `free` keys of the machine file to every measured cell of `tables`. Each key is fitted
+// as a positive factor of its value in the file (log scale), so that keys of different units
+// are equally scaled; its value in the file must be positive.
+CalibrationResult calibrate(const MachineFile& file, const std::vector<MeasuredTable>& tables,
+                            const std::vector<std::string>& free, Predictor& predictor);
+
+// The fitted machine file: `base = ...` and the fitted keys, with a header naming the command,
+// the tables and the fit's quality.
+std::string fitted_file_text(const MachineFile& file, const std::string& out_path, const std::string& specs,
+                             const CalibrationResult& r, const std::string& command);
+
+}  // namespace gcsim::calibration

@@ -1,0 +1,182 @@
+// gcsim calibrate and gcsim validate: fit a machine file to measured tables, then predict the
+// tables that played no part in the fit.
+#include <memory>
+#include <sstream>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "apps/calibration/calibration.hpp"
+#include "apps/cli/commands.hpp"
+#include "apps/cli/run_support.hpp"
+
+namespace gcsim::cli {
+namespace {
+
+namespace cal = gcsim::calibration;
+
+struct PredictFlags {
+  std::string model;
+  int hemicube = 256;
+  double energy = 0.999;
+  int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+};
+
+void add_predict_options(CLI::App* cmd, PredictFlags& f) {
+  cmd->add_option("--model", f.model, "Network model for every run; default: the machine file's")
+      ->check(CLI::IsMember({"analytic", "flow", "packet"}));
+  cmd->add_option("--hemicube", f.hemicube, "Radiosity tables: hemicube resolution of the runs")
+      ->check(CLI::Range(8, 4096))
+      ->capture_default_str();
+  cmd->add_option("--energy", f.energy, "Radiosity tables: shot fraction at which a run stops (the thesis: 0.999)")
+      ->check(CLI::Range(0.5, 0.99999))
+      ->capture_default_str();
+  cmd->add_option("--jobs", f.jobs, "Simulations run side by side on this many host threads")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
+}
+
+cal::PredictionSettings settings(const PredictFlags& f) {
+  cal::PredictionSettings s;
+  s.model = f.model;
+  s.hemicube = f.hemicube;
+  s.energy = f.energy;
+  s.jobs = f.jobs;
+  return s;
+}
+
+std::vector<std::string> split_keys(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ',')) out.push_back(item);
+  return out;
+}
+
+void add_calibrate(CommandGroups& g) {
+  struct Flags {
+    std::string fit, free, config, out, json, csv;
+    PredictFlags predict;
+  };
+  auto f = std::make_shared<Flags>();
+  CLI::App* cmd = g.app->add_subcommand(
+      "calibrate",
+      "Fit free parameters of a machine file to measured tables by least squares.\n\n"
+      "Each measured figure is predicted by a simulated run of its experiment (tables 4.6/4.7: one\n"
+      "all-node broadcast; 4.3/4.4/4.5/4.8: radiosity of ROOM, PICROOM, CORNELL to 99.9%); the fit\n"
+      "minimises the sum of squared relative errors (GSL's Levenberg-Marquardt), each free key a\n"
+      "positive factor of its value in the file. Prints every fitted cell, the fitted values with\n"
+      "their standard errors, and writes a machine file that inherits --config and overrides only\n"
+      "the fitted keys. Then `gcsim validate --config OUT` predicts the tables that were not fitted.");
+  cmd->add_option("--fit", f->fit,
+                  "Tables to fit, comma-separated: 4.6, 4.7, 4.3, 4.4, 4.5, 4.8 (the thesis's, built in); "
+                  "TABLE@N+N keeps those node counts only (4.3@1: the 1-node figures); PATH.csv:TABLE is your "
+                  "own figures in that table's layout (header nodes,<its columns>)")
+      ->required();
+  cmd->add_option("--free", f->free, "Keys to fit, comma-separated, as table.key: network.connect_base_us, ops.polygon_project, ...")
+      ->required();
+  cmd->add_option("--config", f->config, "Base machine file; default: the built-in GC-PowerPlus as published")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--out", f->out, "Write the fitted machine file here")->required();
+  cmd->add_option("--json", f->json, "Write the fitted values and every cell as JSON");
+  cmd->add_option("--csv", f->csv, "Write every cell as CSV (gcsim plot --calibration draws it)");
+  add_predict_options(cmd, f->predict);
+  cmd->footer(
+      "\n\nExample (the shipped configs/gc-powerplus-calibrated.toml):\n"
+      "  gcsim calibrate --fit 4.6 --free network.connect_base_us,network.connect_per_hop_us,"
+      "network.link_bandwidth_mbps \\\n      --config configs/gc-powerplus.toml --out configs/gc-powerplus-calibrated.toml");
+  cmd->callback([f] {
+    const cal::MachineFile file(f->config);
+    const std::vector<cal::MeasuredTable> tables = cal::tables_from_specs(f->fit);
+    const std::vector<std::string> free = split_keys(f->free);
+    for (const auto& k : free) file.check_free_key(k);
+    write_json_file(f->out, nlohmann::json::object());  // fail now, not after the fit, if it cannot be written
+    cal::Predictor predictor(settings(f->predict));
+    fmt::print("fitting {} to table(s) {} on {} ...\n", f->free, f->fit, file.source());
+    const cal::CalibrationResult r = cal::calibrate(file, tables, free, predictor);
+    cal::print_cells(r.cells, tables);
+    cal::print_summaries(cal::summarize(r.cells));
+    fmt::print("\n{} after {} iterations ({} simulated runs)\n", r.fit.converged ? "converged" : "NOT converged",
+               r.fit.iterations, predictor.runs());
+    for (const auto& p : r.parameters)
+      fmt::print("  {:<32} {:>12.6g} +- {:<10.2g} (was {:.6g})\n", p.key, p.value, p.sigma, p.initial);
+    std::string command = "gcsim calibrate --fit " + f->fit + " --free " + f->free +
+                          (f->config.empty() ? "" : " --config " + f->config) + " --out " + f->out;
+    std::ofstream(f->out) << cal::fitted_file_text(file, f->out, f->fit, r, command);
+    fmt::print("wrote {}\n", f->out);
+    if (!f->csv.empty()) cal::write_csv(f->csv, r.cells);
+    if (!f->json.empty()) {
+      nlohmann::json j = cal::to_json(r.cells, cal::summarize(r.cells));
+      for (const auto& p : r.parameters) j["parameters"].push_back({{"key", p.key}, {"value", p.value}, {"sigma", p.sigma}, {"initial", p.initial}});
+      j["converged"] = r.fit.converged;
+      write_json_file(f->json, j);
+    }
+    if (!r.fit.converged) throw ExitStatus{4};
+  });
+}
+
+// The tables to validate: those named, or every built-in table not wholly fitted; cells the fit
+// used are marked.
+std::vector<cal::MeasuredTable> validation_tables(const std::string& named, const machine::MachineConfig& c) {
+  std::vector<cal::MeasuredTable> out;
+  if (!named.empty()) return cal::tables_from_specs(named);
+  for (const auto& id : cal::thesis_table_ids()) {
+    const bool wholly_fitted = std::find(c.calibrated_on.begin(), c.calibrated_on.end(), id) != c.calibrated_on.end();
+    if (!wholly_fitted) out.push_back(cal::thesis_table(id));
+  }
+  return out;
+}
+
+void mark_fitted(std::vector<cal::CellComparison>& cells, const machine::MachineConfig& c) {
+  for (const auto& spec : c.calibrated_on) {
+    const cal::MeasuredTable fitted = cal::table_from_spec(spec);
+    for (auto& cell : cells) {
+      const int r = fitted.row_of(cell.nodes), k = fitted.column_of(cell.column);
+      if (cell.table == fitted.id && r >= 0 && k >= 0 && !std::isnan(fitted.values[r][k])) cell.fitted = true;
+    }
+  }
+}
+
+void add_validate(CommandGroups& g) {
+  struct Flags {
+    std::string config, tables, json, csv;
+    PredictFlags predict;
+  };
+  auto f = std::make_shared<Flags>();
+  CLI::App* cmd = g.app->add_subcommand(
+      "validate",
+      "Predict measured tables with a machine file and compare, cell by cell.\n\n"
+      "By default every built-in thesis table (4.3-4.8) that the file's [calibration] section does not\n"
+      "name as fitted; cells the fit used are marked and left out of the summaries. Per table: the\n"
+      "largest and median relative error and the cells within 15 % and 25 %.");
+  cmd->add_option("--config", f->config, "Machine file; default: the built-in GC-PowerPlus as published")->check(CLI::ExistingFile);
+  cmd->add_option("--tables", f->tables, "Tables to predict, as for calibrate --fit; default: every table not fitted");
+  cmd->add_option("--json", f->json, "Write every cell and the summaries as JSON");
+  cmd->add_option("--csv", f->csv, "Write every cell as CSV (gcsim plot --calibration draws it)");
+  add_predict_options(cmd, f->predict);
+  cmd->callback([f] {
+    const cal::MachineFile file(f->config);
+    const auto tables = validation_tables(f->tables, file.config());
+    if (tables.empty()) throw std::invalid_argument("nothing to validate: every table was fitted (name some with --tables)");
+    cal::Predictor predictor(settings(f->predict));
+    std::string ids;
+    for (const auto& t : tables) ids += (ids.empty() ? "" : ", ") + t.id;
+    fmt::print("predicting table(s) {} with {} ...\n", ids, file.config().name);
+    auto cells = cal::compare(tables, predictor.predict(tables, file.config()));
+    mark_fitted(cells, file.config());
+    cal::print_cells(cells, tables);
+    const auto summaries = cal::summarize(cells);
+    cal::print_summaries(summaries);
+    if (!f->csv.empty()) cal::write_csv(f->csv, cells);
+    if (!f->json.empty()) write_json_file(f->json, cal::to_json(cells, summaries));
+  });
+}
+
+}  // namespace
+
+void add_calibration_commands(CommandGroups& g) {
+  add_calibrate(g);
+  add_validate(g);
+}
+
+}  // namespace gcsim::cli

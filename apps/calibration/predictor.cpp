@@ -1,0 +1,147 @@
+#include "apps/calibration/predictor.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <cmath>
+#include <future>
+#include <mutex>
+#include <stdexcept>
+
+#include "apps/cli/broadcast_experiment.hpp"
+#include "apps/radiosity/builtin_scenes.hpp"
+#include "apps/radiosity/parallel_radiosity.hpp"
+#include "parix/simulated_runtime.hpp"
+
+namespace gcsim::calibration {
+namespace {
+
+parix::SimulationOptions simulation(const machine::MachineConfig& c, int nodes, const std::string& model) {
+  parix::SimulationOptions s;
+  s.config = machine::with_nodes(c, nodes);
+  s.nodes = nodes;
+  s.network_model = model;
+  return s;
+}
+
+// Built-in scene names are lower case; table columns are the thesis's upper-case names.
+std::string scene_of(const std::string& column) {
+  std::string s = column;
+  for (char& ch : s) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return s;
+}
+
+bool is_broadcast(const MeasuredTable& t) { return t.id == "4.6" || t.id == "4.7"; }
+
+// Runs f(i) for i in [0, n) on up to `jobs` host threads; each call is an independent simulation.
+template <class F>
+void parallel_for(int n, int jobs, F f) {
+  if (jobs <= 1 || n <= 1) {
+    for (int i = 0; i < n; ++i) f(i);
+    return;
+  }
+  std::atomic<int> next{0};
+  std::vector<std::future<void>> workers;
+  for (int w = 0; w < std::min(jobs, n); ++w)
+    workers.push_back(std::async(std::launch::async, [&] {
+      for (int i = next++; i < n; i = next++) f(i);
+    }));
+  for (auto& w : workers) w.get();  // rethrows the first failure
+}
+
+}  // namespace
+
+Grid Predictor::predict_broadcast(const MeasuredTable& t, const machine::MachineConfig& c) {
+  const parix::BcastAlgo algo = t.id == "4.7" ? parix::BcastAlgo::tree : parix::BcastAlgo::sequential;
+  Grid g(t.nodes.size(), std::vector<double>(t.columns.size(), kNotMeasured));
+  std::vector<std::pair<int, int>> cells;
+  for (std::size_t r = 0; r < t.nodes.size(); ++r)
+    for (std::size_t k = 0; k < t.columns.size(); ++k)
+      if (!std::isnan(t.values[r][k])) cells.emplace_back(int(r), int(k));
+  parallel_for(int(cells.size()), settings_.jobs, [&](int i) {
+    const auto [r, k] = cells[i];
+    const int column = thesis_table(t.id).column_of(t.columns[k]);
+    const std::int64_t bytes = cli::kThesisBroadcastSizes[column];
+    const parix::RunResult run = parix::run_simulated(simulation(c, t.nodes[r], settings_.model), [&](parix::Processor& p) {
+      cli::all_node_broadcast(p, bytes, algo);
+    });
+    g[r][k] = machine::to_milliseconds(run.makespan);
+  });
+  runs_ += int(cells.size());
+  return g;
+}
+
+Predictor::RadiosityRun Predictor::one_node_from_counts(const std::string& scene, const machine::MachineConfig& c) {
+  RadiosityRun r;
+  machine::SimTime t = 0;
+  for (const auto& [op, count] : one_node_ops_.at(scene)) t += machine::op_time(c, op, count);
+  r.seconds = machine::to_seconds(t);
+  return r;
+}
+
+void Predictor::run_radiosity(const std::vector<RunKey>& keys, const machine::MachineConfig& c,
+                              std::map<RunKey, RadiosityRun>& out) {
+  std::vector<RunKey> todo;
+  for (const RunKey& k : keys) {
+    if (std::get<1>(k) == 1 && one_node_ops_.count(std::get<0>(k))) out[k] = one_node_from_counts(std::get<0>(k), c);
+    else todo.push_back(k);
+  }
+  std::mutex lock;
+  parallel_for(int(todo.size()), settings_.jobs, [&](int i) {
+    const auto& [scene_name, nodes, tree] = todo[i];
+    const radiosity::Scene scene = radiosity::flatten(radiosity::load_scene_world(scene_name));
+    radiosity::ParallelOptions o;
+    o.solver.hemicube.resolution = settings_.hemicube;
+    o.solver.shooters = settings_.shooters;
+    o.solver.energy = settings_.energy;
+    o.bcast = tree ? parix::BcastAlgo::tree : parix::BcastAlgo::sequential;
+    radiosity::ParallelOutcome outcome;
+    const parix::RunResult run = parix::run_simulated(simulation(c, nodes, settings_.model), [&](parix::Processor& p) {
+      radiosity::radiosity_program(p, scene, o, &outcome);
+    });
+    std::lock_guard<std::mutex> g(lock);
+    out[todo[i]] = {run.simulated_seconds(), run.mean_comm_seconds()};
+    if (nodes == 1) one_node_ops_[scene_name] = run.total_ops();
+  });
+  runs_ += int(todo.size());
+}
+
+std::vector<Grid> Predictor::predict(const std::vector<MeasuredTable>& tables, const machine::MachineConfig& c) {
+  // Gather every radiosity run the tables need, then simulate each once.
+  std::vector<RunKey> keys;
+  for (const MeasuredTable& t : tables) {
+    if (is_broadcast(t)) continue;
+    const bool tree = t.id == "4.8";
+    for (std::size_t r = 0; r < t.nodes.size(); ++r)
+      for (std::size_t k = 0; k < t.columns.size(); ++k) {
+        if (std::isnan(t.values[r][k])) continue;
+        keys.emplace_back(scene_of(t.columns[k]), t.nodes[r], tree);
+        if (t.id == "4.4") keys.emplace_back(scene_of(t.columns[k]), 1, false);  // speedup needs the 1-node time
+      }
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  std::map<RunKey, RadiosityRun> runs;
+  run_radiosity(keys, c, runs);
+
+  std::vector<Grid> out;
+  for (const MeasuredTable& t : tables) {
+    if (is_broadcast(t)) {
+      out.push_back(predict_broadcast(t, c));
+      continue;
+    }
+    Grid g(t.nodes.size(), std::vector<double>(t.columns.size(), kNotMeasured));
+    for (std::size_t r = 0; r < t.nodes.size(); ++r)
+      for (std::size_t k = 0; k < t.columns.size(); ++k) {
+        if (std::isnan(t.values[r][k])) continue;
+        const RadiosityRun& run = runs.at({scene_of(t.columns[k]), t.nodes[r], t.id == "4.8"});
+        if (t.id == "4.3" || t.id == "4.8") g[r][k] = run.seconds;
+        else if (t.id == "4.5") g[r][k] = run.comm_seconds;
+        else g[r][k] = 100.0 * runs.at({scene_of(t.columns[k]), 1, false}).seconds / run.seconds;  // 4.4
+      }
+    out.push_back(std::move(g));
+  }
+  return out;
+}
+
+}  // namespace gcsim::calibration

@@ -1,0 +1,55 @@
+#pragma once
+// What the simulated machine predicts for the cells of a measured table: each table names its
+// experiment (4.6/4.7: the thesis's all-node broadcast; 4.3/4.4/4.5/4.8: radiosity of ROOM,
+// PICROOM and CORNELL to 99.9% of the energy), and each cell is one simulated run of it.
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "apps/calibration/measured_table.hpp"
+#include "machine/machine_config.hpp"
+
+namespace gcsim::calibration {
+
+struct PredictionSettings {
+  std::string model;     // network model; "": the machine file's
+  int hemicube = 256;    // radiosity runs: hemicube resolution
+  int shooters = 2;      //                 patches shot per loop (the thesis: 2)
+  double energy = 0.999; //                 shot fraction at which a run stops (the thesis: 99.9%)
+  int jobs = 1;          // simulations run side by side on this many host threads
+};
+
+// Predictions in the layout of a table: kNotMeasured where the table has no figure.
+using Grid = std::vector<std::vector<double>>;
+
+class Predictor {
+ public:
+  explicit Predictor(PredictionSettings settings) : settings_(std::move(settings)) {}
+
+  // Predicts every measured cell of every table on machine c. Runs shared by several tables
+  // (4.3, 4.4 and 4.5 use the same runs) are simulated once.
+  std::vector<Grid> predict(const std::vector<MeasuredTable>& tables, const machine::MachineConfig& c);
+
+  // Simulated runs so far (each cell of a broadcast table, each distinct radiosity run).
+  int runs() const { return runs_; }
+
+ private:
+  struct RadiosityRun {
+    double seconds = 0;
+    double comm_seconds = 0;
+  };
+  using RunKey = std::tuple<std::string, int, bool>;  // scene, nodes, tree broadcast
+  void run_radiosity(const std::vector<RunKey>& keys, const machine::MachineConfig& c,
+                     std::map<RunKey, RadiosityRun>& out);
+  RadiosityRun one_node_from_counts(const std::string& scene, const machine::MachineConfig& c);
+  Grid predict_broadcast(const MeasuredTable& t, const machine::MachineConfig& c);
+
+  PredictionSettings settings_;
+  // One-node radiosity runs charge only counted operations, and the counts do not depend on the
+  // machine: they are kept, and a new machine's time is recomputed from them.
+  std::map<std::string, std::map<std::string, std::int64_t, std::less<>>> one_node_ops_;
+  int runs_ = 0;
+};
+
+}  // namespace gcsim::calibration
