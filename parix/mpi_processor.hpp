@@ -1,0 +1,76 @@
+#pragma once
+// One virtual processor on an MPI rank (or a node-local thread of it). See mpi_runtime.hpp.
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "machine/trace.hpp"
+#include "parix/processor.hpp"
+#include "parix/run_result.hpp"
+
+namespace gcsim::parix::mpi {
+
+// What the processor and its threads share on one rank.
+struct RankState {
+  int rank = 0;
+  int size = 1;
+  std::int64_t memory_limit = 0;
+  std::int64_t memory_used = 0;
+  std::chrono::steady_clock::time_point epoch;
+  bool tracing = false;
+  std::mutex lock;  // guards everything below and the counters of every processor on the rank
+  std::map<std::pair<int, int>, std::int64_t> links_opened;  // (peer, tag) -> connects so far
+  ProcessorStats stats;
+  std::vector<machine::TraceRecord> records;
+  std::vector<std::unique_ptr<std::string>> labels;  // storage the records' labels point into
+  std::atomic<int> next_thread{1};
+  std::exception_ptr failure;  // the first exception a spawned thread threw
+
+  SimTime now() const;
+  void record(machine::TraceRecord r, std::string_view label);
+};
+
+class MpiProcessor final : public Processor {
+ public:
+  MpiProcessor(RankState& rank, int thread) : rank_(rank), thread_(thread) {}
+  ~MpiProcessor() override;
+
+  int id() const override { return rank_.rank; }
+  int count() const override { return rank_.size; }
+  SimTime now() const override { return rank_.now(); }
+  void compute(std::span<const OpCount> ops) override;
+  void use_memory(std::int64_t bytes) override;
+  Link connect(int peer, int tag) override;
+  void send(Link& link, std::span<const std::byte> data) override;
+  Bytes recv(Link& link) override;
+  Request isend(Link& link, std::span<const std::byte> data) override;
+  Request irecv(Link& link) override;
+  void wait(Request& r) override;
+  std::size_t wait_any(std::span<Request* const> rs) override;
+  Thread spawn(std::function<void(Processor&)> body) override;
+
+ protected:
+  void close_link(std::int64_t handle) override;
+
+ private:
+  struct LinkInfo {
+    int peer;
+    int mpi_tag;
+  };
+  const LinkInfo& link_info(const Link& link, const char* call) const;
+  bool poll(RequestState& r);  // advances r; true once it is done
+  void block_on(RequestState& r, const char* call, machine::TraceKind kind);
+  void count_comm(SimTime start, SimTime end, int peer, std::int64_t bytes, const char* call, machine::TraceKind kind);
+
+  RankState& rank_;
+  int thread_;
+  std::map<std::int64_t, LinkInfo> links_;
+  std::int64_t next_link_ = 0;
+};
+
+}  // namespace gcsim::parix::mpi
