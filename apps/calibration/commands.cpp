@@ -1,5 +1,7 @@
 // gcsim calibrate and gcsim validate: fit a machine file to measured tables, then predict the
 // tables that played no part in the fit.
+#include <chrono>
+#include <fstream>
 #include <memory>
 #include <sstream>
 #include <thread>
@@ -172,11 +174,72 @@ void add_validate(CommandGroups& g) {
   });
 }
 
+// Table specs for `accuracy network`: the broadcast grid and the CORNELL sweeps.
+constexpr const char* kNetworkAccuracyTables = "4.6,4.7,4.3,4.8";
+
+void add_network_accuracy(CommandGroups& g) {
+  struct Flags {
+    std::string config, models = "analytic,flow,packet", tables = kNetworkAccuracyTables, scene = "CORNELL", json, csv;
+    PredictFlags predict;
+  };
+  auto f = std::make_shared<Flags>();
+  CLI::App* cmd = g.accuracy->add_subcommand(
+      "network",
+      "What each network model's fidelity buys and costs: the thesis's tables predicted under\n"
+      "analytic, flow and packet, with the error against the measured figures and the host time each\n"
+      "model took (the broadcast grid of tables 4.6/4.7 and one scene's columns of 4.3/4.8).");
+  cmd->add_option("--config", f->config, "Machine file; default: the built-in GC-PowerPlus as published")->check(CLI::ExistingFile);
+  cmd->add_option("--models", f->models, "Network models to compare")->capture_default_str();
+  cmd->add_option("--tables", f->tables, "Tables, as for calibrate --fit")->capture_default_str();
+  cmd->add_option("--scene", f->scene, "Radiosity tables: the scene column to predict (ROOM, PICROOM, CORNELL)")->capture_default_str();
+  cmd->add_option("--json", f->json, "Write the comparison as JSON");
+  cmd->add_option("--csv", f->csv, "Write model,table,median,max,within_15,cells,wall_s as CSV (gcsim plot draws error against time)");
+  add_predict_options(cmd, f->predict);
+  cmd->callback([f] {
+    const cal::MachineFile file(f->config);
+    std::vector<cal::MeasuredTable> tables = cal::tables_from_specs(f->tables);
+    for (auto& t : tables) {
+      if (t.id == "4.6" || t.id == "4.7") continue;
+      const int keep = t.column_of(f->scene);
+      if (keep < 0) throw std::invalid_argument("--scene: '" + f->scene + "' is not a column of table " + t.id);
+      for (auto& row : t.values)
+        for (std::size_t k = 0; k < row.size(); ++k)
+          if (int(k) != keep) row[k] = cal::kNotMeasured;
+    }
+    nlohmann::json j;
+    std::ofstream csv;
+    if (!f->csv.empty()) {
+      csv.open(f->csv);
+      if (!csv) throw std::runtime_error("cannot write CSV file '" + f->csv + "'");
+      csv << "model,table,median_error,max_error,within_15,cells,wall_s\n";
+    }
+    fmt::print("{:<9} {:<6} {:>6} {:>9} {:>9} {:>11} {:>9}\n", "model", "table", "cells", "median", "max", "within 15%", "wall_s");
+    for (const auto& model : split_keys(f->models)) {
+      PredictFlags pf = f->predict;
+      pf.model = model;
+      cal::Predictor predictor(settings(pf));
+      const auto wall_start = std::chrono::steady_clock::now();
+      const auto cells = cal::compare(tables, predictor.predict(tables, file.config()));
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+      for (const auto& s : cal::summarize(cells)) {
+        fmt::print("{:<9} {:<6} {:>6} {:>8.1f}% {:>8.1f}% {:>7}/{:<3} {:>9.2f}\n", model, s.table, s.cells, 100 * s.median_error,
+                   100 * s.max_error, s.within_15, s.cells, wall);
+        j["rows"].push_back({{"model", model}, {"table", s.table}, {"cells", s.cells}, {"median_error", s.median_error},
+                             {"max_error", s.max_error}, {"within_15", s.within_15}, {"wall_s", wall}});
+        if (csv) csv << fmt::format("{},{},{:.6f},{:.6f},{},{},{:.4f}\n", model, s.table, s.median_error, s.max_error, s.within_15, s.cells, wall);
+      }
+    }
+    fmt::print("wall_s: host seconds to predict all the tables under that model (--jobs {})\n", f->predict.jobs);
+    if (!f->json.empty()) write_json_file(f->json, j);
+  });
+}
+
 }  // namespace
 
 void add_calibration_commands(CommandGroups& g) {
   add_calibrate(g);
   add_validate(g);
+  add_network_accuracy(g);
 }
 
 }  // namespace gcsim::cli
