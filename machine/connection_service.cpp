@@ -1,6 +1,6 @@
 #include "machine/connection_service.hpp"
 
-#include <array>
+#include <algorithm>
 
 namespace gcsim::machine {
 
@@ -8,6 +8,7 @@ ConnectionService::ConnectionService(const MachineConfig& config, const Mesh& me
   switch (config.connect_model) {
     case ConnectModel::parallel: break;
     case ConnectModel::serialized: servers_.resize(1); break;
+    case ConnectModel::route: servers_.resize(static_cast<std::size_t>(mesh.nodes()) * 2); break;
     case ConnectModel::servers: {
       const int bx = (mesh.width() + config.connect_block_width - 1) / config.connect_block_width;
       const int by = (mesh.height() + config.connect_block_height - 1) / config.connect_block_height;
@@ -27,12 +28,30 @@ SimTime ConnectionService::duration(int a, int b) const {
   return config_.connect_base + SimTime(mesh_.hops(a, b)) * config_.connect_per_hop;
 }
 
+void ConnectionService::held_by(int a, int b, std::vector<Calendar*>& out) {
+  out.clear();
+  if (config_.connect_model == ConnectModel::route) {
+    // A link is named by its western or southern node: 2 * node for east-west, 2 * node + 1 for
+    // north-south, so both directions of a link are one calendar.
+    mesh_.route(a, b, route_);
+    for (int ch : route_) {
+      const MeshChannel e = mesh_.channel_ends(ch);
+      const bool horizontal = mesh_.y(e.from) == mesh_.y(e.to);
+      const int low = std::min(e.from, e.to);
+      out.push_back(&servers_[static_cast<std::size_t>(low) * 2 + (horizontal ? 0 : 1)]);
+    }
+    return;
+  }
+  const int sa = server_of(a), sb = server_of(b);
+  out.push_back(&servers_[sa]);
+  if (sb != sa) out.push_back(&servers_[sb]);
+}
+
 SimTime ConnectionService::set_up(int a, int b, SimTime requested) {
   const SimTime d = duration(a, b);
   if (config_.connect_model == ConnectModel::parallel) return requested + d;
-  const int sa = server_of(a), sb = server_of(b);
-  std::array<Calendar*, 2> held{&servers_[sa], &servers_[sb]};
-  const std::span<Calendar* const> all(held.data(), sa == sb ? 1 : 2);
+  held_by(a, b, held_);
+  const std::span<Calendar* const> all(held_);
   for (Calendar* c : all) c->forget_before(requested);
   const SimTime start = Calendar::earliest_common(all, requested, d);
   for (Calendar* c : all) c->reserve(start, d);

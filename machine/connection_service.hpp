@@ -9,6 +9,8 @@
 //               set-up holds the servers of both ends' blocks, so set-ups within a block queue,
 //               and set-ups in different blocks proceed side by side. A block as large as the mesh
 //               is `serialized`; a 1x1 block means each node handles one set-up at a time.
+//   route       a set-up holds every mesh link of its route (both directions) while it proceeds,
+//               so set-ups whose routes share a link queue, and disjoint ones proceed together.
 // A set-up takes connect_base + connect_per_hop * hops in every model; only the waiting differs.
 #include <vector>
 
@@ -30,9 +32,13 @@ class ConnectionService {
 
  private:
   int server_of(int node) const;
+  // The calendars a set-up between a and b holds.
+  void held_by(int a, int b, std::vector<Calendar*>& out);
   const MachineConfig& config_;
   const Mesh& mesh_;
-  std::vector<Calendar> servers_;
+  std::vector<Calendar> servers_;  // per server, or per undirected link (a node's east and north links)
+  std::vector<int> route_;
+  std::vector<Calendar*> held_;
 };
 
 }  // namespace gcsim::machine

@@ -141,7 +141,7 @@ void read_shapes(const Reader& r, const toml::table& topo, MachineConfig& c) {
   }
 }
 
-// [network] connect_model = "parallel" | "serialized" | "servers", with connect_server_block =
+// [network] connect_model = "parallel" | "serialized" | "servers" | "route", with connect_server_block =
 // [w, h] for "servers". The older connect_serialized = true means "serialized".
 void read_connect_model(const Reader& r, const toml::table& net, MachineConfig& c) {
   if (const toml::node* n = net.get("connect_serialized")) {
@@ -153,8 +153,9 @@ void read_connect_model(const Reader& r, const toml::table& net, MachineConfig& 
   const std::string model = r.string(net, "connect_model", "[network]", std::string("parallel"));
   if (model == "serialized") c.connect_model = ConnectModel::serialized;
   else if (model == "servers") c.connect_model = ConnectModel::servers;
+  else if (model == "route") c.connect_model = ConnectModel::route;
   else if (model != "parallel")
-    r.fail(net.get("connect_model"), "'connect_model' in [network] is '" + model + "'; expected \"parallel\", \"serialized\" or \"servers\"");
+    r.fail(net.get("connect_model"), "'connect_model' in [network] is '" + model + "'; expected \"parallel\", \"serialized\", \"servers\" or \"route\"");
   if (const toml::node* n = net.get("connect_server_block")) {
     const toml::array* a = n->as_array();
     if (!a || a->size() != 2 || !a->get(0)->is_integer() || !a->get(1)->is_integer() ||

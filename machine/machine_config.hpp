@@ -21,7 +21,7 @@ struct MeshShape {
 };
 
 // How connection set-ups proceed side by side (machine/connection_service.hpp).
-enum class ConnectModel { parallel, serialized, servers };
+enum class ConnectModel { parallel, serialized, servers, route };
 
 struct MachineConfig {
   std::string name;

@@ -87,3 +87,22 @@ TEST(ConnectionService, MachineFileChoosesTheModel) {
 
 }  // namespace
 }  // namespace gcsim::machine
+
+namespace gcsim::machine {
+namespace {
+
+// Route holding on the 8x8 mesh: 0->2 and 1->3 share the link 1-2 (in either direction), so the
+// second waits; 8->9 shares nothing with them.
+TEST(ConnectionService, RouteHoldingQueuesSetUpsThatShareALink) {
+  const Mesh mesh(8, 8);
+  MachineConfig c = with_nodes(default_machine_config(), 64);
+  c.connect_model = ConnectModel::route;
+  ConnectionService s(c, mesh);
+  const SimTime two_hops = kBase + 2 * kHop;
+  EXPECT_EQ(s.set_up(0, 2, 0), two_hops);
+  EXPECT_EQ(s.set_up(3, 1, 0), 2 * two_hops);  // westward over the same link 1-2
+  EXPECT_EQ(s.set_up(8, 9, 0), kBase + kHop);
+}
+
+}  // namespace
+}  // namespace gcsim::machine
