@@ -6,6 +6,10 @@
       writes DIR/gantt.png, DIR/mesh_heatmap.png, DIR/message_matrix.png, DIR/utilization.png
   plot_trace.py --sweep CSV --out DIR [--title T]
       writes DIR/sweep_<name of CSV>.png
+  plot_trace.py --calibration CSV --out DIR     (gcsim calibrate/validate --csv)
+      writes DIR/calibration_<name of CSV>.png: measured against predicted, per table
+  plot_trace.py --accuracy CSV --out DIR        (gcsim accuracy network --csv)
+      writes DIR/accuracy_<name of CSV>.png: error against host time, per network model
 
 Bad input ends with one line 'gcsim plot: error: ...' naming the file and what was expected, and
 exit status 2; never a Python traceback (set GCSIM_PLOT_DEBUG=1 to get one)."""
@@ -35,13 +39,17 @@ def parse_args(argv):
     p.add_argument("--to-ms", type=float, default=None, help="end of the time window, simulated ms")
     p.add_argument("--procs", default=None, help="processors to show, e.g. 0-7,12")
     p.add_argument("--sweep", default=None, help="a sweep CSV (nodes, simulated_s, comm_s, ...) instead of a trace")
+    p.add_argument("--calibration", default=None, help="a CSV of gcsim calibrate/validate --csv instead of a trace")
+    p.add_argument("--accuracy", default=None, help="a CSV of gcsim accuracy network --csv instead of a trace")
     p.add_argument("--title", default=None, help="title line of every plot")
     p.add_argument("--only", default=None, help="comma-separated subset of: " + ", ".join(PLOTS))
     args = p.parse_args(argv)
-    if args.sweep and args.trace:
-        raise PlotError("give either a TRACE or --sweep CSV, not both")
-    if not args.sweep and not args.trace:
-        raise PlotError("no input: give a TRACE (FILE.json or FILE.csv written by --trace) or --sweep CSV")
+    inputs = [x for x in (args.trace, args.sweep, args.calibration, args.accuracy) if x]
+    if len(inputs) > 1:
+        raise PlotError("give one input: a TRACE, --sweep CSV, --calibration CSV or --accuracy CSV")
+    if not inputs:
+        raise PlotError("no input: give a TRACE (FILE.json or FILE.csv written by --trace), --sweep CSV, "
+                        "--calibration CSV or --accuracy CSV")
     return args
 
 
@@ -109,12 +117,28 @@ def plot_sweep(args, plt):
     print(f"wrote {path}")
 
 
+def plot_table_csv(args, plt):
+    from gcsim_plots.calibration import plot_accuracy, plot_calibration
+    make_out_dir(args.out)
+    source, kind, draw = ((args.calibration, "calibration", plot_calibration) if args.calibration
+                          else (args.accuracy, "accuracy", plot_accuracy))
+    stem = os.path.splitext(os.path.basename(source))[0]
+    path = os.path.join(args.out, f"{kind}_{stem}.png")
+    try:
+        draw(plt, source, path, args.title)
+    except OSError as e:
+        raise PlotError(f"cannot write {path}: {e.strerror}")
+    print(f"wrote {path}")
+
+
 def main(argv):
     try:
         args = parse_args(argv)
         plt = load_matplotlib()
         if args.sweep:
             plot_sweep(args, plt)
+        elif args.calibration or args.accuracy:
+            plot_table_csv(args, plt)
         else:
             plot_trace(args, plt)
         return 0

@@ -23,6 +23,8 @@ struct PlotOptions {
   std::optional<double> to_ms;
   std::string procs;
   std::string sweep;
+  std::string calibration;
+  std::string accuracy;
   std::string title;
   std::string only;
 };
@@ -36,6 +38,10 @@ void add_plot_command(CLI::App* app) {
   cmd->add_option("--to-ms", o->to_ms, "End of the time window, in simulated milliseconds");
   cmd->add_option("--procs", o->procs, "Processors to show, e.g. 0-7,12 (default: all)");
   cmd->add_option("--sweep", o->sweep, "Plot a node-count sweep CSV (nodes, simulated_s, comm_s, ...) instead of a trace");
+  cmd->add_option("--calibration", o->calibration,
+                  "Plot measured against predicted from a CSV of `gcsim calibrate/validate --csv` instead of a trace");
+  cmd->add_option("--accuracy", o->accuracy,
+                  "Plot error against host time per network model from a CSV of `gcsim accuracy network --csv`");
   cmd->add_option("--title", o->title, "Title line of every plot (default: the trace's name and shape)");
   cmd->add_option("--only", o->only, "Some of: gantt, mesh_heatmap, message_matrix, utilization");
   cmd->footer(
@@ -45,7 +51,8 @@ void add_plot_command(CLI::App* app) {
       "Examples:\n"
       "  gcsim bcast --nodes 16 --size 4096 --algo tree --trace t.json && gcsim plot t.json --out plots/\n"
       "  gcsim plot t.json --out zoom/ --from-ms 2 --to-ms 6 --procs 0-7,12\n"
-      "  gcsim plot --sweep sweep.csv --out plots/");
+      "  gcsim plot --sweep sweep.csv --out plots/\n"
+      "  gcsim validate --config configs/gc-powerplus-calibrated.toml --csv v.csv && gcsim plot --calibration v.csv");
   cmd->callback([o] {
     std::vector<std::string> args;
     if (!o->trace.empty()) args.push_back(o->trace);
@@ -54,6 +61,8 @@ void add_plot_command(CLI::App* app) {
     if (o->to_ms) args.insert(args.end(), {"--to-ms", fmt::format("{}", *o->to_ms)});
     if (!o->procs.empty()) args.insert(args.end(), {"--procs", o->procs});
     if (!o->sweep.empty()) args.insert(args.end(), {"--sweep", o->sweep});
+    if (!o->calibration.empty()) args.insert(args.end(), {"--calibration", o->calibration});
+    if (!o->accuracy.empty()) args.insert(args.end(), {"--accuracy", o->accuracy});
     if (!o->title.empty()) args.insert(args.end(), {"--title", o->title});
     if (!o->only.empty()) args.insert(args.end(), {"--only", o->only});
     const int status = run_plot_script(args);
