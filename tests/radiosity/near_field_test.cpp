@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "apps/radiosity/analytic_form_factors.hpp"
+#include "apps/radiosity/convergence.hpp"
 #include "apps/radiosity/entity_builder.hpp"
 #include "apps/radiosity/progressive_solver.hpp"
 #include "test_scenes.hpp"
@@ -76,6 +77,44 @@ TEST(NearField, FurnaceBoxIsUniformOnEveryElement) {
     EXPECT_GT(lo, 2 * 0.98);
     EXPECT_LT(hi, 2 * 1.02);
   }
+}
+
+}  // namespace
+}  // namespace gcsim::radiosity
+
+namespace gcsim::radiosity {
+namespace {
+
+TEST(Convergence, ClosedBoxOfReflectanceOneIsRefusedNamingTheSurface) {
+  const Scene box = testing::closed_box(1.0, 1, 1, 1.0, 1.0);
+  try {
+    solve_progressive(box, converged_options(16));
+    FAIL() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("surface 0"), std::string::npos) << what;
+    EXPECT_NE(what.find("reflectance 1 in red"), std::string::npos) << what;
+    EXPECT_NE(what.find("closed"), std::string::npos) << what;
+  }
+  // Just below 1, or open (the facing squares with a perfect mirror-white receiver), it runs.
+  EXPECT_NO_THROW(check_energy_can_be_absorbed(testing::closed_box(1.0, 1, 1, 0.99, 1.0), HemicubeOptions{}));
+  EXPECT_NO_THROW(check_energy_can_be_absorbed(facing_squares(1.0, 1.0), HemicubeOptions{}));
+}
+
+TEST(Convergence, StoppingAtTheStepLimitIsAFailure) {
+  const Scene box = testing::closed_box(1.0, 1, 1, 0.9, 1.0);
+  SolverOptions o = converged_options(16);
+  o.max_steps = 3;
+  const auto r = solve_progressive(box, o);
+  EXPECT_FALSE(r.converged);
+  const auto why = convergence_failure(r.converged, r.state.shot_fraction(), o.energy, r.state.steps(), o.max_steps);
+  ASSERT_TRUE(why.has_value());
+  EXPECT_NE(why->find("step limit (3 steps)"), std::string::npos) << *why;
+  o.max_steps = 1000000;
+  o.energy = 0.999;
+  const auto done = solve_progressive(box, o);
+  EXPECT_FALSE(convergence_failure(done.converged, done.state.shot_fraction(), o.energy, done.state.steps(),
+                                   o.max_steps).has_value());
 }
 
 }  // namespace
