@@ -1,6 +1,7 @@
 #include "apps/radiosity/hemicube.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -13,16 +14,22 @@ namespace {
 
 constexpr double kSubpixel = 256;  // projected vertices live on a grid of 1/256 pixel
 
-std::vector<HemicubeCell> make_cells(const HemicubeOptions& o) {
+std::vector<HemicubeCell> make_cells(const HemicubeOptions& o, int resolution) {
   if (o.hierarchical_levels < 0 || o.hierarchical_levels > 8)
     throw std::invalid_argument("hierarchical levels must be in [0, 8]");
   int scale = 1 << o.hierarchical_levels;
-  if (o.resolution % (2 * scale) != 0)
+  if (resolution % (2 * scale) != 0)
     throw std::invalid_argument(fmt::format("hemicube resolution {} must be a multiple of {} for {} hierarchical levels",
-                                            o.resolution, 2 * scale, o.hierarchical_levels));
-  auto cells = hemicube_cells(o.resolution / scale, o.cells_per_side);
+                                            resolution, 2 * scale, o.hierarchical_levels));
+  auto cells = hemicube_cells(resolution / scale, o.cells_per_side);
   for (auto& c : cells) c.i0 *= scale, c.j0 *= scale, c.i1 *= scale, c.j1 *= scale;
   return cells;
+}
+
+// Whether a sample hemicube of resolution r keeps every cell non-empty and the hierarchical grid.
+bool usable_sample_resolution(const HemicubeOptions& o, int r) {
+  const int scale = 1 << o.hierarchical_levels;
+  return r >= 16 && r % (2 * scale) == 0 && r / scale >= o.cells_per_side;
 }
 
 // Face coordinates (a across, b up, d depth) from the shooter frame's (u, v, n) coordinates.
@@ -53,23 +60,37 @@ int clip(const Vec3* in, int n, Vec3* out, F f) {
 }  // namespace
 
 HemicubeRenderer::HemicubeRenderer(const Scene& scene, const HemicubeOptions& o)
-    : scene_(scene), options_(o), dff_(o.resolution), cells_(make_cells(o)), near_(1e-9 * scene.extent()) {
+    : scene_(scene), options_(o), near_(1e-9 * scene.extent()) {
+  if (o.max_shooter_samples < 1) throw std::invalid_argument("shooter samples per side must be at least 1");
+  if (!(o.near_field_ratio > 0)) throw std::invalid_argument("the near-field ratio must be positive");
+  grids_.push_back({o.resolution, DeltaFormFactors(o.resolution), make_cells(o, o.resolution)});
+  for (int n = 2; n <= o.max_shooter_samples && usable_sample_resolution(o, o.resolution / n); n *= 2)
+    grids_.push_back({o.resolution / n, DeltaFormFactors(o.resolution / n), make_cells(o, o.resolution / n)});
+  per_side_ = shooter_samples_per_side(scene, o.near_field_ratio, 1 << (grids_.size() - 1));
   acc_.assign(scene.elements.size(), 0.0);
 }
 
 void HemicubeRenderer::project(int shooter, OpCounts& ops) {
   shooter_ = shooter;
-  for (auto& f : faces_) f.clear();
-  const ScenePatch& sp = scene_.patches[shooter];
+  const int n = per_side_[shooter];
+  grid_ = &grids_[std::countr_zero(unsigned(n))];
+  samples_ = shooter_samples(scene_.patches[shooter], n);
+  faces_.resize(samples_.size());
+  for (std::size_t k = 0; k < samples_.size(); ++k) project_from(samples_[k].point, faces_[k], ops);
+}
+
+void HemicubeRenderer::project_from(const Vec3& origin, Faces& faces, OpCounts& ops) {
+  for (auto& f : faces) f.clear();
+  const ScenePatch& sp = scene_.patches[shooter_];
   const Frame fr = Frame::from_normal(sp.normal);
-  const double r = options_.resolution, eps = 1e-3 * near_;  // 1e-12 of the scene's extent
+  const double r = grid_->resolution, eps = 1e-3 * near_;  // 1e-12 of the scene's extent
   for (int e = 0; e < int(scene_.elements.size()); ++e) {
     const SceneElement& el = scene_.elements[e];
-    if (el.patch == shooter) continue;
+    if (el.patch == shooter_) continue;
     Vec3 local[4];
     double max_up = -std::numeric_limits<double>::infinity();
     for (int k = 0; k < el.count; ++k) {
-      local[k] = fr.to_local(el.polygon.v[k] - sp.center);
+      local[k] = fr.to_local(el.polygon.v[k] - origin);
       max_up = std::max(max_up, local[k].z);
     }
     if (max_up <= eps) continue;  // wholly behind the shooter's plane: never seen
@@ -122,12 +143,12 @@ void HemicubeRenderer::project(int shooter, OpCounts& ops) {
       x0 /= kSubpixel, x1 /= kSubpixel, y0 /= kSubpixel, y1 /= kSubpixel;
       p.fx0 = x0, p.fx1 = x1, p.fy0 = y0, p.fy1 = y1;
       // Pixels whose centres can be inside: centre i + 0.5 in [x0, x1].
-      int h = dff_.height(face);
+      int h = grid_->dff.height(face);
       p.bx0 = std::max(0, int(std::ceil(x0 - 0.5)));
-      p.bx1 = std::min(options_.resolution, int(std::floor(x1 - 0.5)) + 1);
+      p.bx1 = std::min(grid_->resolution, int(std::floor(x1 - 0.5)) + 1);
       p.by0 = std::max(0, int(std::ceil(y0 - 0.5)));
       p.by1 = std::min(h, int(std::floor(y1 - 0.5)) + 1);
-      faces_[face].push_back(p);
+      faces[face].push_back(p);
     }
   }
 }
@@ -147,7 +168,7 @@ bool HemicubeRenderer::inside(const Projected& poly, double px, double py) const
 }
 
 double HemicubeRenderer::depth(int face, const Projected& poly, double px, double py) const {
-  const double r = options_.resolution;
+  const double r = grid_->resolution;
   Vec3 ray{px * 2 / r - 1, face == kTopFace ? py * 2 / r - 1 : py * 2 / r, 1.0};
   double den = glm::dot(poly.plane_n, ray);
   if (den == 0) return std::numeric_limits<double>::infinity();
@@ -160,11 +181,13 @@ CellFormFactors HemicubeRenderer::cell_form_factors(int cell, OpCounts& ops) {
   CellFormFactors out;
   out.cell = cell;
   touched_.clear();
-  const HemicubeCell& c = cells_.at(cell);
-  if (options_.hierarchical_levels > 0)
-    hierarchical_cell(c, out, ops);
-  else
-    fixed_cell(c, out, ops);
+  const HemicubeCell& c = grid_->cells.at(cell);
+  for (std::size_t k = 0; k < samples_.size(); ++k) {
+    if (options_.hierarchical_levels > 0)
+      hierarchical_cell(faces_[k], c, samples_[k].weight, ops);
+    else
+      fixed_cell(faces_[k], c, samples_[k].weight, ops);
+  }
   std::sort(touched_.begin(), touched_.end());
   for (int e : touched_) {
     out.element.push_back(e);
@@ -175,11 +198,16 @@ CellFormFactors HemicubeRenderer::cell_form_factors(int cell, OpCounts& ops) {
   return out;
 }
 
-void HemicubeRenderer::fixed_cell(const HemicubeCell& c, CellFormFactors& out, OpCounts& ops) {
+void HemicubeRenderer::add(int element, double form_factor) {
+  if (acc_[element] == 0) touched_.push_back(element);
+  acc_[element] += form_factor;
+}
+
+void HemicubeRenderer::fixed_cell(const Faces& faces, const HemicubeCell& c, double weight, OpCounts& ops) {
   const int w = c.i1 - c.i0, h = c.j1 - c.j0;
   zbuf_.assign(std::size_t(w) * h, std::numeric_limits<double>::infinity());
   item_.assign(std::size_t(w) * h, -1);
-  for (const Projected& p : faces_[c.face]) {
+  for (const Projected& p : faces[c.face]) {
     int x0 = std::max(p.bx0, c.i0), x1 = std::min(p.bx1, c.i1);
     int y0 = std::max(p.by0, c.j0), y1 = std::min(p.by1, c.j1);
     if (x0 >= x1 || y0 >= y1) continue;
@@ -200,16 +228,16 @@ void HemicubeRenderer::fixed_cell(const HemicubeCell& c, CellFormFactors& out, O
     for (int i = 0; i < w; ++i) {
       int e = item_[std::size_t(j) * w + i];
       if (e < 0) continue;
-      if (acc_[e] == 0) touched_.push_back(e);
-      acc_[e] += dff_.at(c.face, c.i0 + i, c.j0 + j);
+      const double f = grid_->dff.at(c.face, c.i0 + i, c.j0 + j);
+      add(e, weight == 1.0 ? f : weight * f);
     }
 }
 
-int HemicubeRenderer::sample(int face, const std::vector<int>& candidates, double px, double py,
+int HemicubeRenderer::sample(const Faces& faces, int face, const std::vector<int>& candidates, double px, double py,
                              OpCounts& ops) const {
   double best = std::numeric_limits<double>::infinity();
   int item = -1;
-  const auto& polys = faces_[face];
+  const auto& polys = faces[face];
   ops.hemicube_sample += std::int64_t(candidates.size());
   for (int ci : candidates) {
     const Projected& p = polys[ci];
@@ -223,16 +251,17 @@ int HemicubeRenderer::sample(int face, const std::vector<int>& candidates, doubl
   return item;
 }
 
-void HemicubeRenderer::subdivide(int face, const std::vector<int>& parent, int i0, int j0, int size, OpCounts& ops) {
+void HemicubeRenderer::subdivide(const Faces& faces, int face, const std::vector<int>& parent, int i0, int j0, int size,
+                                 double weight, OpCounts& ops) {
   // Only elements whose projection reaches this square can be seen in it.
   std::vector<int> candidates;
-  const auto& polys = faces_[face];
+  const auto& polys = faces[face];
   ops.hemicube_cull += std::int64_t(parent.size());
   for (int k : parent) {
     const Projected& p = polys[k];
     if (p.fx0 <= i0 + size && p.fx1 >= i0 && p.fy0 <= j0 + size && p.fy1 >= j0) candidates.push_back(k);
   }
-  int centre = sample(face, candidates, i0 + size * 0.5, j0 + size * 0.5, ops);
+  int centre = sample(faces, face, candidates, i0 + size * 0.5, j0 + size * 0.5, ops);
   bool uniform = size == 1;
   if (!uniform) {
     uniform = true;
@@ -240,26 +269,27 @@ void HemicubeRenderer::subdivide(int face, const std::vector<int>& parent, int i
     for (int k = 0; k < 4 && uniform; ++k) {
       // Corners pulled a hair inside so they belong to this square.
       double px = i0 + (cx[k] == 0 ? 1e-6 : size - 1e-6), py = j0 + (cy[k] == 0 ? 1e-6 : size - 1e-6);
-      uniform = sample(face, candidates, px, py, ops) == centre;
+      uniform = sample(faces, face, candidates, px, py, ops) == centre;
     }
   }
   if (uniform) {
     if (centre >= 0) {
-      if (acc_[centre] == 0) touched_.push_back(centre);
-      acc_[centre] += dff_.rect_sum(face, i0, j0, i0 + size, j0 + size);
+      const double f = grid_->dff.rect_sum(face, i0, j0, i0 + size, j0 + size);
+      add(centre, weight == 1.0 ? f : weight * f);
     }
     return;
   }
   int half = size / 2;
-  for (int q = 0; q < 4; ++q) subdivide(face, candidates, i0 + (q & 1) * half, j0 + (q >> 1) * half, half, ops);
+  for (int q = 0; q < 4; ++q)
+    subdivide(faces, face, candidates, i0 + (q & 1) * half, j0 + (q >> 1) * half, half, weight, ops);
 }
 
-void HemicubeRenderer::hierarchical_cell(const HemicubeCell& c, CellFormFactors& out, OpCounts& ops) {
+void HemicubeRenderer::hierarchical_cell(const Faces& faces, const HemicubeCell& c, double weight, OpCounts& ops) {
   const int size = 1 << options_.hierarchical_levels;
-  std::vector<int> all(faces_[c.face].size());
+  std::vector<int> all(faces[c.face].size());
   for (int k = 0; k < int(all.size()); ++k) all[k] = k;
   for (int j = c.j0; j < c.j1; j += size)
-    for (int i = c.i0; i < c.i1; i += size) subdivide(c.face, all, i, j, size, ops);
+    for (int i = c.i0; i < c.i1; i += size) subdivide(faces, c.face, all, i, j, size, weight, ops);
 }
 
 std::vector<double> HemicubeRenderer::form_factor_row(int shooter, OpCounts& ops) {

@@ -4,6 +4,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "apps/radiosity/convergence.hpp"
+
 namespace gcsim::radiosity {
 
 ProgressiveState::ProgressiveState(const Scene& scene) : scene_(&scene) {
@@ -112,6 +114,7 @@ std::vector<Rgb> ProgressiveState::patch_radiosity() const {
 SolveResult solve_progressive(const Scene& scene, const SolverOptions& o, OpCounts* ops_out,
                               const std::function<void(const StepRecord&, const ProgressiveState&)>& on_step) {
   if (o.shooters < 1) throw std::invalid_argument("shooters per step must be at least 1");
+  check_energy_can_be_absorbed(scene, o.hemicube);
   SolveResult r{ProgressiveState(scene), {}, false};
   HemicubeRenderer hemicube(scene, o.hemicube);
   OpCounts local;

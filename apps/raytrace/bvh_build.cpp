@@ -11,9 +11,20 @@ namespace {
 
 constexpr std::size_t kClusterGroupSize = 2048;
 
+// 2 (xy + yz + zx) of the box's extent, in double. Float extents of finite boxes are at most
+// 2 * FLT_MAX (finite in double), their products at most ~1e77 and at least ~1e-90: neither
+// overflows nor underflows, so the clustering compares real areas on any finite geometry.
+double surface_area_in_double(const Bounds3& b) {
+  if (b.empty()) return 0.0;
+  const double x = double(b.hi.x) - double(b.lo.x), y = double(b.hi.y) - double(b.lo.y),
+               z = double(b.hi.z) - double(b.lo.z);
+  return 2.0 * (x * y + y * z + z * x);
+}
+
 struct Builder {
   std::vector<BvhNode> nodes;  // in creation order
   const std::vector<Bounds3>* prim_bounds = nullptr;
+  bool areas_in_double = false;  // see float_areas_suffice
 
   Bounds3 bounds_of(NodeRef r) const {
     return is_primitive(r) ? (*prim_bounds)[primitive_of(r)] : nodes[r].box;
@@ -42,20 +53,24 @@ struct Builder {
       active.pop_back();
       position[c] = -1;
     };
-    auto cost = [&](int a, int b) { return union_of(pool[a].box, pool[b].box).surface_area(); };
+    auto cost = [&](int a, int b) {
+      const Bounds3 u = union_of(pool[a].box, pool[b].box);
+      return areas_in_double ? surface_area_in_double(u) : double(u.surface_area());
+    };
 
     std::vector<int> chain;
     while (active.size() > 1) {
       if (chain.empty()) chain.push_back(active.front());
       const int a = chain.back();
       const int prev = chain.size() >= 2 ? chain[chain.size() - 2] : -1;
-      // Keeping prev on ties guarantees the chain ends in a reciprocal pair.
+      // Keeping prev on ties guarantees the chain ends in a reciprocal pair. A chain of one
+      // always takes a neighbour, whatever the costs, so it can never pop what it does not hold.
       int best = prev;
-      float best_cost = prev >= 0 ? cost(a, prev) : kInfinity;
+      double best_cost = prev >= 0 ? cost(a, prev) : 0.0;
       for (int c : active) {
-        if (c == a) continue;
-        const float d = cost(a, c);
-        if (d < best_cost) { best_cost = d; best = c; }
+        if (c == a || c == prev) continue;
+        const double d = cost(a, c);
+        if (best < 0 || d < best_cost) { best_cost = d; best = c; }
       }
       if (best == prev) {
         chain.pop_back();
@@ -100,6 +115,19 @@ int depth_of(const Bvh& bvh, NodeRef r) {
   return 1 + std::max(depth_of(bvh, bvh.nodes[r].child[0]), depth_of(bvh, bvh.nodes[r].child[1]));
 }
 
+// Float areas of every union box stay finite and normal when the scene's extent is within these
+// bounds (areas up to ~1e37, down to ~1e-30): then the clustering keeps float areas, the trees
+// the figures were recorded with. Outside them (a vertex at 1e23, a scene 1e-30 across) float
+// areas overflow to infinity or underflow to zero and tie everything, so they are taken in double.
+bool float_areas_suffice(const std::vector<Bounds3>& prim_bounds) {
+  Bounds3 all;
+  for (const Bounds3& b : prim_bounds) all.extend(b);
+  const double x = double(all.hi.x) - double(all.lo.x), y = double(all.hi.y) - double(all.lo.y),
+               z = double(all.hi.z) - double(all.lo.z);
+  const double extent = std::max({x, y, z});
+  return extent >= 1e-15 && extent <= 1e18;
+}
+
 }  // namespace
 
 int Bvh::depth() const { return depth_of(*this, root); }
@@ -111,10 +139,12 @@ Bvh build_bvh_by_clustering(const Scene& scene) {
   std::vector<glm::vec3> centroid(n);
   for (int i = 0; i < n; ++i) {
     bvh.prim_bounds[i] = scene.prim_bounds(i);
-    centroid[i] = bvh.prim_bounds[i].center();
+    // Halves first: lo + hi overflows for boxes near FLT_MAX; halving is exact otherwise.
+    centroid[i] = 0.5f * bvh.prim_bounds[i].lo + 0.5f * bvh.prim_bounds[i].hi;
   }
   Builder b;
   b.prim_bounds = &bvh.prim_bounds;
+  b.areas_in_double = n > 0 && !float_areas_suffice(bvh.prim_bounds);
   std::vector<int> prims(n);
   std::iota(prims.begin(), prims.end(), 0);
   const NodeRef root = n == 0 ? primitive_ref(0) : b.build(prims, 0, prims.size(), centroid);

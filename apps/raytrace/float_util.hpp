@@ -11,6 +11,12 @@ inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 // Bound on the relative error after n floating-point operations: n*eps / (1 - n*eps).
 constexpr float gamma(int n) { return (n * kMachineEpsilon) / (1 - n * kMachineEpsilon); }
+// The same for arithmetic in T (float or double).
+template <class T>
+constexpr T gamma_of(int n) {
+  constexpr T eps = std::numeric_limits<T>::epsilon() * T(0.5);
+  return (n * eps) / (1 - n * eps);
+}
 
 // Component-wise |v| without branches (glm::abs compiles to compare-and-branch).
 template <class V>

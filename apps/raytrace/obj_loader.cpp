@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "apps/raytrace/builtin_scenes.hpp"
+#include "apps/raytrace/coordinate_limit.hpp"
 
 namespace gcsim::raytrace {
 
@@ -53,6 +54,7 @@ Scene parse_obj_scene(std::istream& in, const std::string& source) {
         const auto r = std::from_chars(w.data(), w.data() + w.size(), value);
         if (r.ec != std::errc() || r.ptr != w.data() + w.size() || !std::isfinite(value))
           fail("expected a finite number for coordinate " + std::to_string(i + 1) + " of a vertex, got '" + std::string(w) + "'");
+        if (const std::string problem = vertex_coordinate_error(value, i); !problem.empty()) fail(problem);
         p[i] = value;
       }
       vertices.push_back(p);

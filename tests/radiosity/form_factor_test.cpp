@@ -21,6 +21,7 @@ double hemicube_point(FormFactorCase c, int res, double scale = 1.0) {
   FormFactorSetup setup = form_factor_setup(c, scale, 1);
   HemicubeOptions o;
   o.resolution = res;
+  o.max_shooter_samples = 1;  // the hemicube at the patch centre: the point form factor
   HemicubeRenderer r(setup.scene, o);
   OpCounts ops;
   return patch_sum(r.form_factor_row(0, ops), setup.scene, setup.receiver_patch);
@@ -98,6 +99,7 @@ TEST(HemicubeFormFactor, ElementAcrossFaceBoundariesIsCountedOnEveryFace) {
   FormFactorSetup s = form_factor_setup(FormFactorCase::perpendicular_squares, 1.0, 1);
   HemicubeOptions o;
   o.resolution = 64;
+  o.max_shooter_samples = 1;
   o.cells_per_side = 2;  // cells: 4 top, then 2 per side face
   HemicubeRenderer r(s.scene, o);
   OpCounts ops;
@@ -120,6 +122,7 @@ TEST(HemicubeFormFactor, HierarchicalAgreesWithFixed) {
     FormFactorSetup s = form_factor_setup(c, 1.0, 1);
     HemicubeOptions fixed, hier;
     fixed.resolution = hier.resolution = 128;
+    fixed.max_shooter_samples = hier.max_shooter_samples = 1;
     hier.hierarchical_levels = 3;
     OpCounts a, b;
     HemicubeRenderer rf(s.scene, fixed), rh(s.scene, hier);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "apps/raytrace/builtin_scenes.hpp"
+#include "apps/raytrace/coordinate_limit.hpp"
 #include "apps/raytrace/obj_loader.hpp"
 
 namespace gcsim::raytrace {
@@ -64,6 +65,20 @@ TEST(Obj, ErrorsNameFileLineAndExpectation) {
   EXPECT_NE(obj_error("v 0 0\n").find("bad.obj:1: expected 'v x y z'"), std::string::npos);
   EXPECT_NE(obj_error("v nan 0 0\n").find("bad.obj:1:"), std::string::npos);
   EXPECT_THROW(load_obj_scene("/nonexistent/file.obj"), ObjError);
+}
+
+TEST(Obj, CoordinatesAreCappedAsInWorldFiles) {
+  // Issue 13: `v 1 1e23 -1` crashed the BVH builder; files now stop at the WORLD parser's 1e15.
+  const std::string cube_tail = "v 1 1 1\nv -1 1 1\nv -1 -1 1\nf 1 2 3\nf 2 3 4\n";
+  EXPECT_EQ(obj_error("v 1 1e23 -1\n" + cube_tail),
+            "bad.obj:1: vertex y coordinate 1e+23 is too large; expected a magnitude of at most 1e15");
+  EXPECT_NE(obj_error("v 0 0 0\nv 0 0 -2e15\n").find("bad.obj:2: vertex z coordinate"), std::string::npos);
+  EXPECT_EQ(obj_error("v 1 1e15 -1\n" + cube_tail), "");
+  EXPECT_EQ(vertex_coordinate_error(1e15, 0), "");
+  EXPECT_EQ(vertex_coordinate_error(-1e-300, 2), "");
+  EXPECT_NE(vertex_coordinate_error(1.0000001e15, 0), "");
+  EXPECT_NE(vertex_coordinate_error(std::numeric_limits<double>::infinity(), 1), "");
+  EXPECT_NE(vertex_coordinate_error(std::nan(""), 1), "");
 }
 
 }  // namespace

@@ -1,0 +1,25 @@
+#pragma once
+// Helpers shared by the fuzz targets: the input as text, and a scratch file for parsers that read
+// a path. One file per process (the pid in its name), so parallel fuzzers never share it.
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <string_view>
+
+namespace gcsim::fuzz {
+
+inline std::string_view as_text(const std::uint8_t* data, std::size_t size) {
+  return {reinterpret_cast<const char*>(data), size};
+}
+
+// Writes the input to a per-process scratch file with the given extension and returns its path.
+inline std::string scratch_file(std::string_view text, const std::string& extension) {
+  const std::string path = "/tmp/gcsim-fuzz-" + std::to_string(::getpid()) + extension;
+  std::ofstream(path, std::ios::binary | std::ios::trunc).write(text.data(), std::streamsize(text.size()));
+  return path;
+}
+
+}  // namespace gcsim::fuzz
