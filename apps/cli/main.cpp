@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "apps/cli/commands.hpp"
+#include "apps/pipeline/app_registry.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/simulated_runtime.hpp"
 
@@ -78,17 +79,10 @@ int main(int argc, char** argv) {
   for (CLI::App* verb : {g.run, g.sweep, g.table, g.accuracy, g.bench, g.scene}) verb->require_subcommand(1);
 
   cli::add_machine_commands(g);
-#ifdef GCSIM_HAVE_RADIOSITY_COMMANDS
-  cli::add_radiosity_commands(g);
-#endif
-#ifdef GCSIM_HAVE_RAYTRACE_COMMANDS
-  cli::add_raytrace_commands(g);
-#endif
-#ifdef GCSIM_HAVE_TRACE_COMMANDS
+  pipeline::add_app_commands(g);  // run APP, sweep APP and the commands of every registered app
   cli::add_trace_commands(g);
-#endif
   summarize_descriptions(&app);
-  // Verbs that no command family filled in are hidden rather than offered empty.
+  // Verbs that no application or command family filled in are hidden rather than offered empty.
   for (CLI::App* verb : {g.run, g.sweep, g.table, g.accuracy, g.bench, g.scene}) {
     if (verb->get_subcommands({}).empty()) app.remove_subcommand(verb);
   }

@@ -1,4 +1,4 @@
-#include "apps/cli/run_support.hpp"
+#include "apps/pipeline/machine_options.hpp"
 
 #include <fstream>
 #include <stdexcept>
@@ -9,9 +9,12 @@
 #include "machine/network_model.hpp"
 #include "machine/trace.hpp"
 
-namespace gcsim::cli {
+namespace gcsim::pipeline {
 
 void add_machine_choice_options(CLI::App* cmd, MachineOptions& o) {
+  cmd->add_option("--backend", o.backend, "Where the program runs: simulated (the model of the machine)")
+      ->check(CLI::IsMember(parix::backend_names()))
+      ->capture_default_str();
   cmd->add_option("--config", o.config, "Machine file (configs/*.toml); default: the built-in GC-PowerPlus as published")
       ->check(CLI::ExistingFile);
   cmd->add_option("--model", o.model, "Network model: analytic (no contention) or flow (links shared); default: the config's")
@@ -43,6 +46,13 @@ parix::SimulationOptions simulation_options(const MachineOptions& o, int default
   return s;
 }
 
+parix::RunOptions run_options(const MachineOptions& o, int default_nodes) {
+  parix::RunOptions r;
+  r.backend = o.backend;
+  r.simulation = simulation_options(o, default_nodes);
+  return r;
+}
+
 void write_json_file(const std::string& path, const nlohmann::json& j) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write JSON file '" + path + "'");
@@ -67,4 +77,4 @@ void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohma
   }
 }
 
-}  // namespace gcsim::cli
+}  // namespace gcsim::pipeline

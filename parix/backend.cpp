@@ -1,0 +1,37 @@
+#include "parix/backend.hpp"
+
+#include <stdexcept>
+
+namespace gcsim::parix {
+
+namespace {
+
+RunResult run_on_simulated_machine(const RunOptions& options, const Program& program) {
+  return run_simulated(options.simulation, program);
+}
+
+}  // namespace
+
+// A new backend is one more entry here (and its files beside simulated_runtime.cpp).
+const std::vector<Backend>& backends() {
+  static const std::vector<Backend> all{
+      {"simulated", "the discrete-event model of the machine (simulated time)", &run_on_simulated_machine},
+  };
+  return all;
+}
+
+std::vector<std::string> backend_names() {
+  std::vector<std::string> names;
+  for (const Backend& b : backends()) names.emplace_back(b.name);
+  return names;
+}
+
+RunResult run(const RunOptions& options, const Program& program) {
+  for (const Backend& b : backends())
+    if (b.name == options.backend) return b.run(options, program);
+  std::string known;
+  for (const Backend& b : backends()) known += (known.empty() ? "" : ", ") + std::string(b.name);
+  throw std::invalid_argument("unknown backend '" + options.backend + "': expected one of " + known);
+}
+
+}  // namespace gcsim::parix
