@@ -50,7 +50,7 @@ struct RowWriter {
     if (first) first_seconds = t, first_nodes = nodes;
     double base = first_seconds;
     if (table.speedup_base() == SpeedupBase::first_point_scaled) base *= first_nodes;
-    const SweepRow row{nodes, out, base / t, first};
+    const SweepRow row{nodes, out, t > 0 ? base / t : 0.0, first};  // 0: nothing to compare (no time)
     table.print_row(row);
     std::fflush(stdout);
     if (csv.is_open()) csv << table.csv_row(row) << '\n';
