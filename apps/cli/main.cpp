@@ -95,6 +95,7 @@ int main(int argc, char** argv) {
       "  gcsim bench ring --nodes 64 --iterations 2000     kernel throughput in simulated messages/s\n"
       "  gcsim run radiosity --scene cornell --nodes 8 --image c.png   parallel radiosity, thesis ch. 4\n"
       "  gcsim run raytrace --scene teapots --algo A4 --nodes 16 --image t.png\n"
+      "  gcsim sweep radiosity --scene cornell --jobs 2     node counts 1..64, two simulations at a time\n"
       "  gcsim plot t.json --out plots/                    pictures of a trace written with --trace t.json");
   // (after the subcommands exist, so they do not inherit it)
 

@@ -1,6 +1,7 @@
 #include "apps/pipeline/machine_options.hpp"
 
 #include <fstream>
+#include <initializer_list>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -11,6 +12,15 @@
 
 namespace gcsim::pipeline {
 
+namespace {
+
+// Help lists these under their own heading, after the command's own options.
+void group_as_machine_options(CLI::App* cmd, std::initializer_list<const char*> names) {
+  for (const char* name : names) cmd->get_option(name)->group("Machine and run");
+}
+
+}  // namespace
+
 void add_machine_choice_options(CLI::App* cmd, MachineOptions& o) {
   cmd->add_option("--backend", o.backend, "Where the program runs: simulated (the model of the machine)")
       ->check(CLI::IsMember(parix::backend_names()))
@@ -19,6 +29,7 @@ void add_machine_choice_options(CLI::App* cmd, MachineOptions& o) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--model", o.model, "Network model: analytic (no contention) or flow (links shared); default: the config's")
       ->check(CLI::IsMember({"analytic", "flow"}));
+  group_as_machine_options(cmd, {"--backend", "--config", "--model"});
 }
 
 void add_machine_options(CLI::App* cmd, MachineOptions& o) {
@@ -32,6 +43,7 @@ void add_machine_options(CLI::App* cmd, MachineOptions& o) {
       ->check(CLI::IsMember({"summary", "messages", "full"}))
       ->capture_default_str();
   cmd->add_option("--json", o.json, "Write the run's simulated and wall times and counters as JSON");
+  group_as_machine_options(cmd, {"--nodes", "--trace", "--trace-level", "--json"});
 }
 
 parix::SimulationOptions simulation_options(const MachineOptions& o, int default_nodes) {

@@ -34,6 +34,7 @@ void add_sweep_options(CLI::App* cmd, SweepFlags& f) {
                   "and in the same order whatever the number")
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
+  for (const char* name : {"--nodes", "--csv", "--json", "--jobs"}) cmd->get_option(name)->group("Sweep");
 }
 
 // Receives the points in node-count order: speedup, printed row, CSV line, JSON.
