@@ -1,39 +1,24 @@
 #pragma once
-// The gcsim command line is assembled from command families, each in its own file
-// (machine_commands.cpp, radiosity_commands.cpp, raytrace_commands.cpp, trace_commands.cpp).
-// A family adds subcommands under the shared verbs below; e.g. `gcsim run radiosity` is added by
-// the radiosity family to `run`. A subcommand does its work in its CLI11 callback.
-#include <CLI/CLI.hpp>
+// The gcsim command's own families: machine commands (topo, bcast, bench ring, demo) and the trace
+// commands (plot, report, paje). Applications are not listed here: they register themselves
+// (apps/pipeline/app_registry.hpp) and the pipeline adds their commands.
+#include "apps/pipeline/command_groups.hpp"
+#include "apps/pipeline/machine_options.hpp"
 
 namespace gcsim::cli {
 
-struct CommandGroups {
-  CLI::App* app = nullptr;       // gcsim itself (for top-level commands such as topo, bcast, plot)
-  CLI::App* run = nullptr;       // gcsim run APP ...
-  CLI::App* sweep = nullptr;     // gcsim sweep APP ...   (node-count sweeps)
-  CLI::App* table = nullptr;     // gcsim table APP ...   (paper tables)
-  CLI::App* accuracy = nullptr;  // gcsim accuracy APP ...(what accuracy costs)
-  CLI::App* bench = nullptr;     // gcsim bench WHAT ...  (host speed)
-  CLI::App* scene = nullptr;     // gcsim scene ...       (scene information)
-};
-
-// A subcommand that must end the process with a given status throws this.
-struct ExitStatus {
-  int code;
-};
+using pipeline::CommandGroups;
+using pipeline::ExitStatus;
+using pipeline::MachineOptions;
+using pipeline::add_machine_choice_options;
+using pipeline::add_machine_options;
+using pipeline::report_run;
+using pipeline::run_options;
+using pipeline::simulation_options;
+using pipeline::write_json_file;
 
 void add_machine_commands(CommandGroups& g);
-#ifdef GCSIM_HAVE_RADIOSITY_COMMANDS
-void add_radiosity_commands(CommandGroups& g);
-#endif
-#ifdef GCSIM_HAVE_RAYTRACE_COMMANDS
-void add_raytrace_commands(CommandGroups& g);
-#endif
-#ifdef GCSIM_HAVE_CALIBRATION_COMMANDS
 void add_calibration_commands(CommandGroups& g);
-#endif
-#ifdef GCSIM_HAVE_TRACE_COMMANDS
 void add_trace_commands(CommandGroups& g);
-#endif
 
 }  // namespace gcsim::cli

@@ -10,7 +10,7 @@
 #include "apps/cli/broadcast_experiment.hpp"
 #include "apps/cli/commands.hpp"
 #include "apps/cli/ring_program.hpp"
-#include "apps/cli/run_support.hpp"
+#include "parix/backend.hpp"
 #include "machine/mesh.hpp"
 #include "machine/topology.hpp"
 
@@ -104,12 +104,12 @@ void print_bcast_table(const MachineOptions& mo) {
       const int n = thesis[row].nodes;
       fmt::print("  {:>5}", n);
       for (int s = 0; s < 4; ++s) {
-        parix::SimulationOptions so = whole_machine;
-        so.config = machine::with_nodes(whole_machine.config, n);
-        so.nodes = n;
+        parix::RunOptions so{whole.backend, whole_machine};
+        so.simulation.config = machine::with_nodes(whole_machine.config, n);
+        so.simulation.nodes = n;
         const std::int64_t bytes = kThesisBroadcastSizes[s];
         const parix::BcastAlgo a = parse_algo(algo);
-        parix::RunResult r = parix::run_simulated(so, [&](parix::Processor& p) { all_node_broadcast(p, bytes, a); });
+        parix::RunResult r = parix::run(so, [&](parix::Processor& p) { all_node_broadcast(p, bytes, a); });
         fmt::print(" | {:>11.2f} {:>7.2f}", machine::to_milliseconds(r.makespan), thesis[row].ms[s]);
       }
       fmt::print("\n");
@@ -145,10 +145,10 @@ void add_bcast(CommandGroups& g) {
       print_bcast_table(o->machine);
       return;
     }
-    parix::SimulationOptions so = simulation_options(o->machine, 64);
+    const parix::RunOptions so = run_options(o->machine, 64);
     const parix::BcastAlgo a = parse_algo(o->algo);
     const std::int64_t bytes = o->size;
-    parix::RunResult r = parix::run_simulated(so, [&](parix::Processor& p) { all_node_broadcast(p, bytes, a); });
+    parix::RunResult r = parix::run(so, [&](parix::Processor& p) { all_node_broadcast(p, bytes, a); });
     fmt::print("all-node broadcast, {} algorithm, {} bytes per message, {} nodes\n", o->algo, bytes, r.nodes);
     report_run(r, o->machine, {{"experiment", "bcast"}, {"algo", o->algo}, {"size_bytes", bytes}});
   });
@@ -169,10 +169,10 @@ void add_bench_ring(CommandGroups& g) {
   cmd->add_option("--iterations", o->iterations, "Messages each processor sends")->check(CLI::Range(1, 1 << 30))->capture_default_str();
   cmd->add_option("--size", o->size, "Bytes per message")->transform(CLI::AsSizeValue(false))->capture_default_str();
   cmd->callback([o] {
-    parix::SimulationOptions so = simulation_options(o->machine, 64);
+    const parix::RunOptions so = run_options(o->machine, 64);
     const int iterations = o->iterations;
     const std::int64_t bytes = o->size;
-    parix::RunResult r = parix::run_simulated(so, [&](parix::Processor& p) { ring_exchange(p, iterations, bytes); });
+    parix::RunResult r = parix::run(so, [&](parix::Processor& p) { ring_exchange(p, iterations, bytes); });
     const double messages = static_cast<double>(r.total_messages());
     fmt::print("ring of {} processors, {} iterations of {} bytes: {} messages\n", r.nodes, iterations, bytes, r.total_messages());
     report_run(r, o->machine, {{"benchmark", "ring"}, {"messages_per_wall_s", messages / r.wall_seconds}});
@@ -191,8 +191,8 @@ void add_demo(CommandGroups& g) {
       "with a report naming each blocked processor, its call and its peer, and exits with status 3.");
   add_machine_options(cmd, *machine);
   cmd->callback([machine] {
-    parix::SimulationOptions so = simulation_options(*machine, 2);
-    parix::run_simulated(so, [](parix::Processor& p) {
+    const parix::RunOptions so = run_options(*machine, 2);
+    parix::run(so, [](parix::Processor& p) {
       if (p.id() > 1) return;
       parix::Link l = p.connect(1 - p.id());
       p.recv(l);

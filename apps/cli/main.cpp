@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "apps/cli/commands.hpp"
+#include "apps/pipeline/app_registry.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/simulated_runtime.hpp"
 
@@ -78,20 +79,11 @@ int main(int argc, char** argv) {
   for (CLI::App* verb : {g.run, g.sweep, g.table, g.accuracy, g.bench, g.scene}) verb->require_subcommand(1);
 
   cli::add_machine_commands(g);
-#ifdef GCSIM_HAVE_RADIOSITY_COMMANDS
-  cli::add_radiosity_commands(g);
-#endif
-#ifdef GCSIM_HAVE_RAYTRACE_COMMANDS
-  cli::add_raytrace_commands(g);
-#endif
-#ifdef GCSIM_HAVE_CALIBRATION_COMMANDS
-  cli::add_calibration_commands(g);
-#endif
-#ifdef GCSIM_HAVE_TRACE_COMMANDS
+  pipeline::add_app_commands(g);  // run APP, sweep APP and the commands of every registered app
+  cli::add_calibration_commands(g);  // calibrate, validate, accuracy network
   cli::add_trace_commands(g);
-#endif
   summarize_descriptions(&app);
-  // Verbs that no command family filled in are hidden rather than offered empty.
+  // Verbs that no application or command family filled in are hidden rather than offered empty.
   for (CLI::App* verb : {g.run, g.sweep, g.table, g.accuracy, g.bench, g.scene}) {
     if (verb->get_subcommands({}).empty()) app.remove_subcommand(verb);
   }
@@ -104,6 +96,7 @@ int main(int argc, char** argv) {
       "  gcsim bench ring --nodes 64 --iterations 2000     kernel throughput in simulated messages/s\n"
       "  gcsim run radiosity --scene cornell --nodes 8 --image c.png   parallel radiosity, thesis ch. 4\n"
       "  gcsim run raytrace --scene teapots --algo A4 --nodes 16 --image t.png\n"
+      "  gcsim sweep radiosity --scene cornell --jobs 2     node counts 1..64, two simulations at a time\n"
       "  gcsim plot t.json --out plots/                    pictures of a trace written with --trace t.json");
   // (after the subcommands exist, so they do not inherit it)
 

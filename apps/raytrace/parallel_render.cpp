@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cstring>
 #include <deque>
+#include <memory>
 
 #include "apps/raytrace/pixel_encoding.hpp"
 #include "apps/raytrace/render.hpp"
 #include "apps/raytrace/scene.hpp"
 #include "apps/raytrace/tile_renderer.hpp"
+#include "parix/backend.hpp"
 #include "parix/collectives.hpp"
 
 namespace gcsim::raytrace {
@@ -45,25 +47,22 @@ struct NodeWork {
   const Bvh& bvh;
   const RenderSettings& settings;
   Tiling tiling;
-  ParallelRender& out;  // host-side: counters and primary hit ids
-  std::vector<TileRenderer> renderers;  // one per processor (state: row planes, classifier)
+  ParallelRender& out;     // node 0: the image; every node: its own check slot (counters, hit ids)
+  TileRenderer& renderer;  // this processor's own (state: row planes, classifier)
 
-  parix::Bytes render(parix::Processor& p, TileRenderer& r, int tile) {
+  parix::Bytes render(parix::Processor& p, int tile) {
     const auto rect = tiling.rect(tile);
     std::vector<glm::vec3> colors(rect.pixels());
     std::vector<std::int32_t> prims(rect.pixels());
     TraceCounters c;
-    r.render_tile(rect.x0, rect.y0, rect.x1, rect.y1, colors, prims, c);
+    renderer.render_tile(rect.x0, rect.y0, rect.x1, rect.y1, colors, prims, c);
     std::vector<parix::OpCount> ops;
     for (const auto& [name, count] : c.ops())
       if (count > 0) ops.push_back({name, count});
     p.compute(ops);
     out.per_node[p.id()] += c;
     ++out.tiles_per_node[p.id()];
-    const int w = rect.x1 - rect.x0;
-    for (int y = rect.y0; y < rect.y1; ++y)
-      for (int x = rect.x0; x < rect.x1; ++x)
-        out.prim_ids[std::size_t(y) * settings.width + x] = prims[std::size_t(y - rect.y0) * w + (x - rect.x0)];
+    out.node_prims[p.id()].push_back({tile, std::move(prims)});  // check-only: not sent, merged after the run
     parix::Bytes b;
     const std::int32_t t = tile;
     append(b, &t, sizeof t);
@@ -109,7 +108,7 @@ void run_static(parix::Processor& p, NodeWork& work, Distribution d) {
   const int n = p.count(), me = p.id(), tiles = work.tiling.count();
   parix::Bytes mine;
   auto do_tile = [&](int t) {
-    parix::Bytes b = work.render(p, work.renderers[me], t);
+    parix::Bytes b = work.render(p, t);
     mine.insert(mine.end(), b.begin(), b.end());
   };
   if (d == Distribution::static_blocks) {
@@ -190,7 +189,7 @@ void run_dynamic(parix::Processor& p, NodeWork& work) {
       queue.pop_front();
       parix::Bytes result;  // the run's pixels; sending them also asks for more work
       for (int t = c.first; t < c.first + c.count; ++t) {
-        const parix::Bytes b = work.render(p, work.renderers[me], t);
+        const parix::Bytes b = work.render(p, t);
         result.insert(result.end(), b.begin(), b.end());
       }
       sends.push_back(p.isend(master, result));
@@ -203,7 +202,7 @@ void run_dynamic(parix::Processor& p, NodeWork& work) {
   int next = 0;
   parix::Thread local = p.spawn([&](parix::Processor& q) {
     for (Chunk c = next_chunk(next, tiles, tiles_x, n); c.first >= 0; c = next_chunk(next, tiles, tiles_x, n))
-      for (int t = c.first; t < c.first + c.count; ++t) work.assemble(q, work.render(q, work.renderers[0], t));
+      for (int t = c.first; t < c.first + c.count; ++t) work.assemble(q, work.render(q, t));
   });
   std::vector<parix::Link> links = connect_root_to_all(p);
   std::vector<int> outstanding(n, 0);  // runs assigned to a worker and not yet returned
@@ -247,29 +246,56 @@ void run_dynamic(parix::Processor& p, NodeWork& work) {
 
 }  // namespace
 
-ParallelRender render_parallel(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Distribution distribution,
-                               const parix::SimulationOptions& options) {
+ParallelRenderJob::ParallelRenderJob(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                                     Distribution distribution)
+    : scene_(scene), bvh_(bvh), settings_(settings), distribution_(distribution) {}
+
+ParallelRender ParallelRenderJob::new_result(int nodes) const {
   ParallelRender out;
-  const int nodes = options.nodes > 0 ? options.nodes : options.config.nodes;
-  out.image = apps::Image(settings.width, settings.height);
-  out.prim_ids.assign(std::size_t(settings.width) * settings.height, -1);
+  out.image = apps::Image(settings_.width, settings_.height);
   out.per_node.assign(nodes, TraceCounters{});
   out.tiles_per_node.assign(nodes, 0);
-  NodeWork work{scene, bvh, settings, Tiling{settings.width, settings.height, settings.tile}, out, {}};
-  work.renderers.reserve(nodes);
-  for (int i = 0; i < nodes; ++i) work.renderers.emplace_back(scene, bvh, settings);
+  out.node_prims.assign(nodes, {});
+  return out;
+}
+
+void ParallelRenderJob::program(parix::Processor& p, ParallelRender& out) const {
   // What each node holds: the scene and the tree.
-  const std::int64_t scene_bytes = std::int64_t(scene.spheres.size()) * sizeof(Sphere) +
-                                   std::int64_t(scene.triangles.size()) * sizeof(Triangle) +
-                                   std::int64_t(bvh.nodes.size()) * sizeof(BvhNode) +
-                                   std::int64_t(bvh.prim_bounds.size()) * sizeof(Bounds3);
-  out.run = parix::run_simulated(options, [&](parix::Processor& p) {
-    p.use_memory(scene_bytes);
-    if (p.id() == 0) p.use_memory(std::int64_t(settings.width) * settings.height * 3);
-    if (distribution == Distribution::dynamic) run_dynamic(p, work);
-    else run_static(p, work, distribution);
-  });
+  const std::int64_t scene_bytes = std::int64_t(scene_.spheres.size()) * sizeof(Sphere) +
+                                   std::int64_t(scene_.triangles.size()) * sizeof(Triangle) +
+                                   std::int64_t(bvh_.nodes.size()) * sizeof(BvhNode) +
+                                   std::int64_t(bvh_.prim_bounds.size()) * sizeof(Bounds3);
+  p.use_memory(scene_bytes);
+  if (p.id() == 0) p.use_memory(std::int64_t(settings_.width) * settings_.height * 3);
+  // Built here, by the processor that uses it (on the heap: fiber stacks are small).
+  const auto renderer = std::make_unique<TileRenderer>(scene_, bvh_, settings_);
+  NodeWork work{scene_, bvh_, settings_, Tiling{settings_.width, settings_.height, settings_.tile}, out, *renderer};
+  if (distribution_ == Distribution::dynamic) run_dynamic(p, work);
+  else run_static(p, work, distribution_);
+}
+
+void ParallelRenderJob::finish(ParallelRender& out) const {
+  out.counters = TraceCounters{};
   for (const auto& c : out.per_node) out.counters += c;
+  const Tiling tiling{settings_.width, settings_.height, settings_.tile};
+  out.prim_ids.assign(std::size_t(settings_.width) * settings_.height, -1);
+  for (const auto& tiles : out.node_prims)
+    for (const auto& [tile, prims] : tiles) {
+      const auto rect = tiling.rect(tile);
+      const int w = rect.x1 - rect.x0;
+      for (int y = rect.y0; y < rect.y1; ++y)
+        for (int x = rect.x0; x < rect.x1; ++x)
+          out.prim_ids[std::size_t(y) * settings_.width + x] = prims[std::size_t(y - rect.y0) * w + (x - rect.x0)];
+    }
+  out.node_prims.clear();
+}
+
+ParallelRender render_parallel(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Distribution distribution,
+                               const parix::SimulationOptions& options) {
+  const ParallelRenderJob job(scene, bvh, settings, distribution);
+  ParallelRender out = job.new_result(options.nodes > 0 ? options.nodes : options.config.nodes);
+  out.run = parix::run({"simulated", options}, [&](parix::Processor& p) { job.program(p, out); });
+  job.finish(out);
   return out;
 }
 

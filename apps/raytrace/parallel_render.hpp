@@ -1,8 +1,8 @@
 #pragma once
 // The image rendered by the nodes of the simulated GC: subregions (tiles) are distributed over
-// the processors, each renders its tiles with its own TileRenderer (every node holds the scene
-// and the tree), charges the counted operations to its CPU, and the pixels travel to node 0,
-// which assembles the image.
+// the processors, each renders its tiles with its own TileRenderer, built by the processor itself
+// (every node holds the scene and the tree), charges the counted operations to its CPU, and the
+// pixels travel to node 0, which assembles the image.
 //   static       each node takes one contiguous block of tiles (scanline order)
 //   interleaved  tile i goes to node i mod N
 //   dynamic      node 0 is a master handing out runs of tiles on request (guided
@@ -29,15 +29,43 @@ enum class Distribution { static_blocks, interleaved, dynamic };
 std::optional<Distribution> parse_distribution(std::string_view s);  // static, interleaved, dynamic
 std::string_view name_of(Distribution d);
 
+// Primary-hit ids of one tile, as its node found them.
+struct TilePrims {
+  int tile = -1;
+  std::vector<std::int32_t> prims;
+};
+
+// What a parallel render produces. Only node 0 writes the image (from the pixels it received).
+// per_node, tiles_per_node and node_prims are check data: node i writes only element i, never
+// reads another's, and nothing in them is sent (sending the hit ids with the pixels would change
+// the message sizes, and so the simulated times); ParallelRenderJob::finish merges them on the host
+// after the run. A distributed backend gathers these slots after the run, outside measured time.
 struct ParallelRender {
   parix::RunResult run;
   apps::Image image;                       // as assembled on node 0
-  std::vector<std::int32_t> prim_ids;      // primary hits (host-side check, not sent)
+  std::vector<std::int32_t> prim_ids;      // primary hits, merged from node_prims after the run
   TraceCounters counters;                  // all nodes
   std::vector<TraceCounters> per_node;
   std::vector<int> tiles_per_node;
+  std::vector<std::vector<TilePrims>> node_prims;  // per node; emptied by finish()
 };
 
+// The per-processor program of a parallel render, run by whichever backend the caller chooses.
+class ParallelRenderJob {
+ public:
+  ParallelRenderJob(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Distribution distribution);
+  ParallelRender new_result(int nodes) const;  // image and per-node slots sized for `nodes`
+  void program(parix::Processor& p, ParallelRender& out) const;
+  void finish(ParallelRender& out) const;      // sums the counters, merges the hit ids
+
+ private:
+  const Scene& scene_;
+  const Bvh& bvh_;
+  RenderSettings settings_;
+  Distribution distribution_;
+};
+
+// Runs the job on the simulated machine (for tests and callers without a pipeline).
 ParallelRender render_parallel(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Distribution distribution,
                                const parix::SimulationOptions& options);
 

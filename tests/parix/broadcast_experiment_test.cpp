@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parix/simulated_runtime.hpp"
+#include "parix/backend.hpp"
 
 namespace gcsim::cli {
 namespace {
@@ -16,7 +16,7 @@ double broadcast_ms(const std::string& config_file, int nodes, std::int64_t byte
   o.nodes = nodes;
   o.network_model = model;
   return machine::to_milliseconds(
-      parix::run_simulated(o, [&](parix::Processor& p) { all_node_broadcast(p, bytes, algo); }).makespan);
+      parix::run({"simulated", o}, [&](parix::Processor& p) { all_node_broadcast(p, bytes, algo); }).makespan);
 }
 
 TEST(BroadcastExperiment, TreeBeatsSequentialAt64NodesAnd16KB) {

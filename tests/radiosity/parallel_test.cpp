@@ -5,7 +5,7 @@
 #include "apps/radiosity/builtin_scenes.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "machine/machine_config.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/backend.hpp"
 #include "test_scenes.hpp"
 
 namespace gcsim::radiosity {
@@ -23,7 +23,7 @@ ParallelOutcome run(const Scene& scene, const ParallelOptions& o, int nodes, par
   sim.config = machine::with_nodes(machine::default_machine_config(), nodes);
   sim.nodes = nodes;
   ParallelOutcome out;
-  auto r = parix::run_simulated(sim, [&](parix::Processor& p) { radiosity_program(p, scene, o, &out); });
+  auto r = parix::run({"simulated", sim}, [&](parix::Processor& p) { radiosity_program(p, scene, o, &out); });
   if (result) *result = r;
   return out;
 }

@@ -5,12 +5,13 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "parix/backend.hpp"
 #include "parix/run_result.hpp"
-#include "parix/simulated_runtime.hpp"
 
-namespace gcsim::cli {
+namespace gcsim::pipeline {
 
 struct MachineOptions {
+  std::string backend = "simulated";  // parix::backend_names()
   std::string config;                 // "" : the built-in GC-PowerPlus (configs/gc-powerplus.toml)
   int nodes = 0;                      // 0 : the command's default
   std::string shape;                  // "" : the machine file's shape for that many nodes
@@ -22,13 +23,15 @@ struct MachineOptions {
 
 // Adds --config, --model, --nodes, --trace, --trace-level and --json to cmd.
 void add_machine_options(CLI::App* cmd, MachineOptions& o);
-// Adds only --config and --model: for commands that run several node counts (sweeps).
+// Adds only --backend, --config and --model: for commands that run several node counts (sweeps).
 void add_machine_choice_options(CLI::App* cmd, MachineOptions& o);
 // Loads the config (or the built-in one) restricted to o.nodes (or default_nodes) nodes.
 parix::SimulationOptions simulation_options(const MachineOptions& o, int default_nodes);
+// The backend and simulation options of one run on o.nodes (or default_nodes) nodes.
+parix::RunOptions run_options(const MachineOptions& o, int default_nodes);
 // Prints "simulated X s   wall Y s ..." and, with --json, writes result.to_json() merged with extra.
 void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohmann::json& extra = {});
 // Writes JSON to a file, failing with a clear message.
 void write_json_file(const std::string& path, const nlohmann::json& j);
 
-}  // namespace gcsim::cli
+}  // namespace gcsim::pipeline

@@ -10,7 +10,6 @@
 
 #include "apps/calibration/calibration.hpp"
 #include "apps/cli/commands.hpp"
-#include "apps/cli/run_support.hpp"
 
 namespace gcsim::cli {
 namespace {

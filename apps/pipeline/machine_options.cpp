@@ -1,6 +1,7 @@
-#include "apps/cli/run_support.hpp"
+#include "apps/pipeline/machine_options.hpp"
 
 #include <fstream>
+#include <initializer_list>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -9,13 +10,26 @@
 #include "machine/network_model.hpp"
 #include "machine/trace.hpp"
 
-namespace gcsim::cli {
+namespace gcsim::pipeline {
+
+namespace {
+
+// Help lists these under their own heading, after the command's own options.
+void group_as_machine_options(CLI::App* cmd, std::initializer_list<const char*> names) {
+  for (const char* name : names) cmd->get_option(name)->group("Machine and run");
+}
+
+}  // namespace
 
 void add_machine_choice_options(CLI::App* cmd, MachineOptions& o) {
+  cmd->add_option("--backend", o.backend, "Where the program runs: simulated (the model of the machine) or mpi (real processes: mpirun -np N gcsim ... --backend mpi)")
+      ->check(CLI::IsMember(parix::backend_names()))
+      ->capture_default_str();
   cmd->add_option("--config", o.config, "Machine file (configs/*.toml); default: the built-in GC-PowerPlus as published")
       ->check(CLI::ExistingFile);
   cmd->add_option("--model", o.model, "Network model: analytic (no contention), flow (links shared max-min fairly) or packet (packets queue for each link); default: the config's")
       ->check(CLI::IsMember({"analytic", "flow", "packet"}));
+  group_as_machine_options(cmd, {"--backend", "--config", "--model"});
 }
 
 void add_machine_options(CLI::App* cmd, MachineOptions& o) {
@@ -33,6 +47,7 @@ void add_machine_options(CLI::App* cmd, MachineOptions& o) {
       ->check(CLI::IsMember({"summary", "messages", "full"}))
       ->capture_default_str();
   cmd->add_option("--json", o.json, "Write the run's simulated and wall times and counters as JSON");
+  group_as_machine_options(cmd, {"--nodes", "--shape", "--trace", "--trace-level", "--json"});
 }
 
 parix::SimulationOptions simulation_options(const MachineOptions& o, int default_nodes) {
@@ -47,6 +62,13 @@ parix::SimulationOptions simulation_options(const MachineOptions& o, int default
   s.trace.path = o.trace;
   s.trace.level = machine::parse_trace_level(o.trace_level);
   return s;
+}
+
+parix::RunOptions run_options(const MachineOptions& o, int default_nodes) {
+  parix::RunOptions r;
+  r.backend = o.backend;
+  r.simulation = simulation_options(o, default_nodes);
+  return r;
 }
 
 void write_json_file(const std::string& path, const nlohmann::json& j) {
@@ -73,4 +95,4 @@ void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohma
   }
 }
 
-}  // namespace gcsim::cli
+}  // namespace gcsim::pipeline

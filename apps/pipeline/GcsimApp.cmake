@@ -1,0 +1,31 @@
+# gcsim_add_app(NAME name SOURCES file.cpp ... [LIBS target ...])
+#
+# Declares an application of the gcsim command: its sources (which register it with
+# apps/pipeline/app_registry.hpp through a static AppRegistrar) become an OBJECT library, so every
+# registrar is linked into the executable even though nothing refers to it by name. The app is
+# appended to the global property GCSIM_APPS (or GCSIM_<SET>_APPS when GCSIM_APP_SET is set, as
+# tests/apps does), from which gcsim_add_gcsim_executable links it.
+function(gcsim_add_app)
+  cmake_parse_arguments(APP "" "NAME" "SOURCES;LIBS" ${ARGN})
+  if(NOT APP_NAME OR NOT APP_SOURCES)
+    message(FATAL_ERROR "gcsim_add_app: NAME and SOURCES are required")
+  endif()
+  set(target gcsim_app_${APP_NAME})
+  add_library(${target} OBJECT ${APP_SOURCES})
+  target_link_libraries(${target} PUBLIC gcsim_pipeline ${APP_LIBS})
+  if(GCSIM_APP_SET)
+    set(property GCSIM_${GCSIM_APP_SET}_APPS)
+  else()
+    set(property GCSIM_APPS)
+  endif()
+  set_property(GLOBAL APPEND PROPERTY ${property} ${APP_NAME})
+endfunction()
+
+# gcsim_add_gcsim_executable(target app-name ...): the gcsim command line with these applications.
+function(gcsim_add_gcsim_executable target)
+  add_executable(${target})
+  target_link_libraries(${target} PRIVATE gcsim_cli)
+  foreach(app ${ARGN})
+    target_link_libraries(${target} PRIVATE gcsim_app_${app})
+  endforeach()
+endfunction()

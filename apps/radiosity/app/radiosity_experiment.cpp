@@ -1,0 +1,102 @@
+#include "apps/radiosity/app/radiosity_experiment.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "apps/pipeline/list_parsing.hpp"
+#include "apps/radiosity/builtin_scenes.hpp"
+
+namespace gcsim::radiosity::app {
+
+RadiosityExperiment::RadiosityExperiment(const SolveFlags& solve, const RunOutputs& outputs)
+    : solve_(solve), outputs_(outputs), scene_(flatten(load_scene_world(solve.scene))), options_(parallel_options(solve)) {
+  // Checked before the run, so that a typo does not cost a whole simulation.
+  if (!outputs_.camera.empty()) camera_ = parse_camera(outputs_.camera);
+  if (!outputs_.snapshots.empty()) {
+    if (outputs_.image.empty()) throw std::invalid_argument("--snapshots needs --image (the snapshots are named after it)");
+    options_.snapshot_loops = pipeline::parse_int_list(outputs_.snapshots, "--snapshots");
+  }
+}
+
+std::unique_ptr<pipeline::Outcome> RadiosityExperiment::new_outcome(int) const {
+  return std::make_unique<RadiosityOutcome>();
+}
+
+parix::Program RadiosityExperiment::program(pipeline::Outcome& out) const {
+  ParallelOutcome* result = &pipeline::outcome_as<RadiosityOutcome>(out).result;
+  return [this, result](parix::Processor& p) { radiosity_program(p, scene_, options_, result); };
+}
+
+void RadiosityExperiment::print_setup(int nodes) const {
+  const auto c = scene_.counts();
+  const ParallelOptions& o = options_;
+  fmt::print("scene     {}: {} instances, {} surfaces, {} patches, {} elements, {} vertices\n", scene_.name, c.instances,
+             c.surfaces, c.patches, c.elements, c.vertices);
+  fmt::print("solver    {} on {} nodes, bcast {}{}{}{}, hemicube {}, {} shooters per loop, energy {}\n",
+             to_string(o.algorithm), nodes, solve_.bcast, o.aggregate ? ", aggregated" : "", o.keep_links ? ", links kept" : "",
+             o.solver.order == ShootingOrder::energy ? "" : fmt::format(", order {}", to_string(o.solver.order)),
+             o.solver.hemicube.resolution, o.solver.shooters, o.solver.energy);
+}
+
+namespace {
+
+nlohmann::json run_json(const Scene& scene, const ParallelOptions& o, const std::string& bcast, const ParallelOutcome& r) {
+  const auto c = scene.counts();
+  return {{"scene", scene.name},
+          {"counts", {{"instances", c.instances}, {"surfaces", c.surfaces}, {"patches", c.patches},
+                      {"elements", c.elements}, {"vertices", c.vertices}}},
+          {"parallel", to_string(o.algorithm)},
+          {"bcast", bcast},
+          {"aggregate", o.aggregate},
+          {"keep_links", o.keep_links},
+          {"order", to_string(o.solver.order)},
+          {"hemicube", o.solver.hemicube.resolution},
+          {"shooters", o.solver.shooters},
+          {"energy_threshold", o.solver.energy},
+          {"loops", r.steps.size()},
+          {"shot_fraction", r.steps.empty() ? 1.0 : r.steps.back().shot_fraction},
+          {"converged", r.converged}};
+}
+
+void print_convergence(const ParallelOutcome& r) {
+  fmt::print("loops     {} (shot fraction {:.6f}{})\n", r.steps.size(), r.steps.empty() ? 1.0 : r.steps.back().shot_fraction,
+             r.converged ? "" : ", threshold NOT reached");
+  const Rgb bal = r.energy.emitted - r.energy.unshot - r.energy.absorbed - r.energy.escaped;
+  fmt::print("energy    emitted {:.6g}, absorbed {:.6g}, unshot {:.6g}, escaped {:.6g}, imbalance {:.3g}\n",
+             channel_sum(r.energy.emitted), channel_sum(r.energy.absorbed), channel_sum(r.energy.unshot),
+             channel_sum(r.energy.escaped), channel_sum(bal));
+}
+
+}  // namespace
+
+void RadiosityExperiment::report(const pipeline::Outcome& out, nlohmann::json& extra) const {
+  const ParallelOutcome& r = pipeline::outcome_as<RadiosityOutcome>(out).result;
+  print_convergence(r);
+  extra["radiosity"] = run_json(scene_, options_, solve_.bcast, r);
+  if (outputs_.gauss_seidel)
+    extra["radiosity"]["gauss_seidel_max_difference"] = compare_with_gauss_seidel(scene_, options_.solver.hemicube, r);
+  print_loops_table(r, scene_.name, options_.solver.shooters);
+  fmt::print("\n");
+  if (!outputs_.steps_csv.empty()) {
+    write_steps_csv(outputs_.steps_csv, r);
+    fmt::print("csv       {}\n", outputs_.steps_csv);
+  }
+  if (!outputs_.image.empty()) {
+    write_images(scene_, r, outputs_, camera_ ? *camera_ : (scene_.camera ? *scene_.camera : default_camera(scene_)));
+    extra["radiosity"]["image"] = outputs_.image;
+  }
+}
+
+void RadiosityExperiment::print_sweep_setup() const {
+  const ParallelOptions& o = options_;
+  fmt::print("{}: {} / bcast {}{}{} / hemicube {} / K {} / energy {}\n", scene_.name, to_string(o.algorithm), solve_.bcast,
+             o.aggregate ? " aggregated" : "", o.keep_links ? " links kept" : "", o.solver.hemicube.resolution,
+             o.solver.shooters, o.solver.energy);
+}
+
+std::unique_ptr<pipeline::SweepTable> RadiosityExperiment::sweep_table() const {
+  return thesis_sweep_table(scene_, options_);
+}
+
+}  // namespace gcsim::radiosity::app

@@ -1,0 +1,60 @@
+#pragma once
+// One radiosity experiment: a scene and the solver's options, run by the pipeline on any number of
+// nodes. Every node runs radiosity_program on its own replica of the scene; node 0's replica is
+// the result.
+#include <optional>
+#include <string>
+
+#include "apps/pipeline/experiment.hpp"
+#include "apps/radiosity/app/solve_options.hpp"
+#include "apps/radiosity/parallel_radiosity.hpp"
+#include "apps/radiosity/scene.hpp"
+
+namespace gcsim::radiosity::app {
+
+// Options only `run radiosity` has: outputs and checks of the one run.
+struct RunOutputs {
+  std::string image, camera, steps_csv, snapshots;
+  int width = 0, height = 0;
+  double exposure = 0;
+  bool gauss_seidel = false;
+};
+
+struct RadiosityOutcome : pipeline::Outcome {
+  ParallelOutcome result;  // node 0's replica after the run
+};
+
+class RadiosityExperiment : public pipeline::Experiment {
+ public:
+  // Loads the scene and checks every option; throws with the reason.
+  RadiosityExperiment(const SolveFlags& solve, const RunOutputs& outputs);
+
+  std::unique_ptr<pipeline::Outcome> new_outcome(int nodes) const override;
+  parix::Program program(pipeline::Outcome& out) const override;
+  void print_setup(int nodes) const override;
+  void report(const pipeline::Outcome& out, nlohmann::json& extra) const override;
+  void print_sweep_setup() const override;
+  std::unique_ptr<pipeline::SweepTable> sweep_table() const override;
+
+  const Scene& scene() const { return scene_; }
+
+ private:
+  SolveFlags solve_;
+  RunOutputs outputs_;
+  Scene scene_;
+  ParallelOptions options_;
+  std::optional<Camera> camera_;
+};
+
+// Reports of one run (run_report.cpp).
+void print_loops_table(const ParallelOutcome& r, const std::string& scene_name, int shooters);
+void write_steps_csv(const std::string& path, const ParallelOutcome& r);
+// Full-matrix Gauss-Seidel on the host: prints how far r is from it, returns the largest difference.
+double compare_with_gauss_seidel(const Scene& scene, const HemicubeOptions& hemicube, const ParallelOutcome& r);
+// Writes the final image and the snapshots; camera: the one asked for, or the scene's.
+void write_images(const Scene& scene, const ParallelOutcome& r, const RunOutputs& o, const Camera& camera);
+
+// The sweep's table with the thesis's tables 4.3/4.5/4.8 beside it (sweep_table.cpp).
+std::unique_ptr<pipeline::SweepTable> thesis_sweep_table(const Scene& scene, const ParallelOptions& o);
+
+}  // namespace gcsim::radiosity::app

@@ -1,0 +1,111 @@
+#include "apps/radiosity/app/solve_options.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "apps/pipeline/list_parsing.hpp"
+#include "apps/radiosity/hemicube.hpp"
+
+namespace gcsim::radiosity::app {
+
+void add_solve_options(CLI::App* cmd, SolveFlags& f) {
+  cmd->add_option("--scene", f.scene, "room, picroom, cornell (thesis table 4.1) or the path of a WORLD file")
+      ->capture_default_str();
+  cmd->add_option("--hemicube", f.hemicube,
+                  "Hemicube resolution: pixels across the top face (side faces are half as high). Cost and "
+                  "accuracy of the form factors grow with it")
+      ->check(CLI::Range(8, 4096))
+      ->capture_default_str();
+  cmd->add_option("--shooters", f.shooters, "K: patches that shoot per loop, those with the most unshot energy (thesis: 2)")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  cmd->add_option("--energy", f.energy, "Stop once this fraction of the energy has been shot (thesis: 0.999)")
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {
+            double x = -1;
+            try {
+              std::size_t used = 0;
+              x = std::stod(v, &used);
+              if (used != v.size()) return "'" + v + "' is not a number";
+            } catch (const std::exception&) {
+              return "'" + v + "' is not a number";
+            }
+            return x >= 0 && x < 1 ? "" : "must be in [0, 1): reflected light keeps some energy unshot forever";
+          },
+          "in [0, 1)"))
+      ->capture_default_str();
+  cmd->add_option("--parallel", f.parallel,
+                  "hemicube-fixed (4.3: hemicube cells spread over the nodes), hemicube-hierarchical (4.5: "
+                  "border cells split into four, recursively), patch (4.2.2: each shooter's owner computes "
+                  "its whole hemicube)")
+      ->check(CLI::IsMember({"hemicube-fixed", "hemicube-hierarchical", "patch"}))
+      ->capture_default_str();
+  cmd->add_option("--bcast", f.bcast,
+                  "All-node broadcast: sequential (everyone to the root in turn and back, table 4.6) or tree "
+                  "(leaves to root and back, table 4.7)")
+      ->check(CLI::IsMember({"sequential", "tree"}))
+      ->capture_default_str();
+  cmd->add_flag("--aggregate", f.aggregate,
+                "4.4.3: one larger exchange per loop (the replicas choose the shooters themselves and every "
+                "shooter's form factors travel together) instead of K + 1 exchanges");
+  cmd->add_flag("--keep-links", f.keep_links,
+                "Open each link once and reuse it (the thesis opened a connection for every message)");
+  cmd->add_option("--levels", f.levels, "hemicube-hierarchical: levels of subdivision below the coarse cells")
+      ->check(CLI::Range(1, 6))
+      ->capture_default_str();
+  cmd->add_option("--cells", f.cells,
+                  "Hemicube partition: T x T cells on the top face, T x T/2 per side face (even)")
+      ->check(CLI::Range(2, 512))
+      ->capture_default_str();
+  cmd->add_option("--order", f.order,
+                  "How shooters are chosen: energy (the K largest unshot energies, 3.5.2), index (patch order "
+                  "without sorting, 4.4.1: saves the proposal exchange but converges more slowly), "
+                  "energy-then-index (sort until --sort-until, then index order, 4.4.1)")
+      ->check(CLI::IsMember({"energy", "index", "energy-then-index"}))
+      ->capture_default_str();
+  cmd->add_option("--sort-until", f.sort_until, "energy-then-index: shot fraction at which sorting stops")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--max-steps", f.max_steps, "Give up after this many loops")
+      ->check(CLI::Range(1, 1 << 30))
+      ->capture_default_str();
+}
+
+ParallelOptions parallel_options(const SolveFlags& f) {
+  ParallelOptions o;
+  o.solver.hemicube.resolution = f.hemicube;
+  o.solver.hemicube.cells_per_side = f.cells;
+  o.solver.shooters = f.shooters;
+  o.solver.energy = f.energy;
+  o.solver.max_steps = f.max_steps;
+  o.solver.order = parse_shooting_order(f.order);
+  o.solver.sort_until = f.sort_until;
+  o.algorithm = parse_parallel_algorithm(f.parallel);
+  o.bcast = f.bcast == "tree" ? parix::BcastAlgo::tree : parix::BcastAlgo::sequential;
+  o.aggregate = f.aggregate;
+  o.keep_links = f.keep_links;
+  o.hierarchical_levels = f.levels;
+  // Fail early, with the reason, on an impossible hemicube / partition combination.
+  HemicubeOptions check = o.solver.hemicube;
+  if (o.algorithm == ParallelAlgorithm::hemicube_hierarchical) check.hierarchical_levels = f.levels;
+  Scene empty;
+  HemicubeRenderer probe(empty, check);
+  return o;
+}
+
+// "ex,ey,ez,tx,ty,tz[,fov]"
+Camera parse_camera(const std::string& s) {
+  const std::vector<double> v = pipeline::parse_number_list(s, "--camera", "a number (expected ex,ey,ez,tx,ty,tz[,fov])");
+  if (v.size() != 6 && v.size() != 7)
+    throw std::invalid_argument(fmt::format("--camera: expected 6 or 7 numbers (ex,ey,ez,tx,ty,tz[,fov]), got {}", v.size()));
+  Camera c;
+  c.eye = {v[0], v[1], v[2]};
+  c.target = {v[3], v[4], v[5]};
+  if (v.size() == 7) c.fov_y_degrees = v[6];
+  if (!(c.fov_y_degrees > 0.01 && c.fov_y_degrees < 179)) throw std::invalid_argument("--camera: field of view must be in (0.01, 179) degrees");
+  if (glm::length(c.target - c.eye) == 0) throw std::invalid_argument("--camera: eye and target coincide");
+  return c;
+}
+
+}  // namespace gcsim::radiosity::app

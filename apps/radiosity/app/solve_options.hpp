@@ -1,0 +1,34 @@
+#pragma once
+// The radiosity solver's command-line options (shared by run and sweep) and what they become.
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "apps/radiosity/parallel_radiosity.hpp"
+#include "apps/radiosity/scene.hpp"
+
+namespace gcsim::radiosity::app {
+
+struct SolveFlags {
+  std::string scene = "cornell";
+  int hemicube = 256;
+  int shooters = 2;
+  double energy = 0.999;
+  std::string parallel = "hemicube-fixed";
+  std::string bcast = "sequential";
+  bool aggregate = false;
+  bool keep_links = false;
+  int levels = 3;
+  int cells = 8;
+  int max_steps = 1000000;
+  std::string order = "energy";
+  double sort_until = 0.9;
+};
+
+void add_solve_options(CLI::App* cmd, SolveFlags& f);
+// Checks the hemicube / partition combination (throws with the reason) and converts.
+ParallelOptions parallel_options(const SolveFlags& f);
+// "ex,ey,ez,tx,ty,tz[,fov]"
+Camera parse_camera(const std::string& s);
+
+}  // namespace gcsim::radiosity::app

@@ -1,0 +1,86 @@
+// gcsim bench raytrace: host speed of primary rays, next to Intel Embree when it is available.
+#include <chrono>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "apps/pipeline/command_groups.hpp"
+#include "apps/raytrace/algorithm.hpp"
+#include "apps/raytrace/app/commands.hpp"
+#include "apps/raytrace/app/render_options.hpp"
+#include "apps/raytrace/camera.hpp"
+#include "apps/raytrace/embree_reference.hpp"
+#include "apps/raytrace/primary_tracer.hpp"
+#include "apps/raytrace/render.hpp"
+
+namespace gcsim::raytrace::app {
+
+void add_bench_command(pipeline::CommandGroups& g) {
+  struct Opts {
+    RenderOptions render;
+    int repeat = 5;
+    bool embree = true;
+  };
+  auto o = std::make_shared<Opts>();
+  CLI::App* cmd = g.bench->add_subcommand(
+      "raytrace",
+      "Host speed of primary rays: nearest hits for every pixel with the chosen algorithm on one thread,\n"
+      "no shading, in millions of rays per second (best of --repeat runs; subtree and beam building included).");
+  add_render_options(cmd, o->render, false);
+  cmd->add_option("--repeat", o->repeat, "Runs; the best is reported")->check(CLI::Range(1, 1000))->capture_default_str();
+  cmd->add_flag("!--no-embree", o->embree,
+                "Skip the comparison with Intel Embree's rtcIntersect1 on the same rays (done when gcsim was built with libembree-dev)");
+  cmd->callback([o] {
+    const Scene scene = load_scene_or_fail(o->render.scene);
+    const auto t0 = std::chrono::steady_clock::now();
+    const Bvh bvh = build_bvh_by_clustering(scene);
+    const double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const Algorithm a = *parse_algorithm(o->render.algo);
+    print_scene(scene, bvh);
+    fmt::print("build     {:.3f} s (clustering)\n", build);
+    const int size = o->render.size;
+    const Camera camera(scene.camera, size, size);
+    const Tiling tiling{size, size, o->render.tile};
+    double best = 1e30;
+    std::int64_t checksum = 0;
+    for (int rep = 0; rep < o->repeat; ++rep) {
+      PrimaryTracer tracer(scene, bvh, camera, a);
+      TraceCounters c;
+      std::vector<Hit> hits;
+      const auto start = std::chrono::steady_clock::now();
+      for (int i = 0; i < tiling.count(); ++i) {
+        const auto r = tiling.rect(i);
+        tracer.trace_tile(r.x0, r.y0, r.x1, r.y1, hits, c);
+        for (const Hit& h : hits) checksum += h.prim;
+      }
+      best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    const double rays = double(size) * size;
+    fmt::print("bench     {} on {}x{}, {}x{} tiles: {:.3f} ms per frame, {:.2f} Mrays/s (one thread, best of {})\n",
+               paper_name_of(a), size, size, o->render.tile, o->render.tile, best * 1e3, rays / best / 1e6, o->repeat);
+    std::int64_t hits = 0;
+    {
+      PrimaryTracer tracer(scene, bvh, camera, a);
+      TraceCounters c;
+      std::vector<Hit> tile_hits;
+      for (int i = 0; i < tiling.count(); ++i) {
+        const auto r = tiling.rect(i);
+        tracer.trace_tile(r.x0, r.y0, r.x1, r.y1, tile_hits, c);
+        for (const Hit& h : tile_hits) hits += h.valid();
+      }
+    }
+    if (o->embree) {
+      const auto e = time_embree_primary_rays(scene, camera, o->repeat);
+      if (!e) {
+        fmt::print("embree    not available (gcsim was built without libembree-dev)\n");
+      } else {
+        fmt::print("embree    rtcIntersect1, one thread: {:.3f} ms per frame, {:.2f} Mrays/s; {} hits (ours {})\n",
+                   e->seconds_per_frame * 1e3, rays / e->seconds_per_frame / 1e6, e->hits, hits);
+        fmt::print("ratio     ours / Embree = {:.2f}\n", e->seconds_per_frame / best);
+      }
+    }
+    (void)checksum;
+  });
+}
+
+}  // namespace gcsim::raytrace::app

@@ -1,0 +1,41 @@
+#pragma once
+// One entry point for running an SPMD program: the backend is a name in RunOptions, so an
+// application never calls a particular runtime. "simulated" runs the program on the discrete-event
+// model of the machine (simulated_runtime.hpp); another backend (e.g. "mpi") registers beside it.
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "parix/processor.hpp"
+#include "parix/run_result.hpp"
+#include "parix/simulated_runtime.hpp"
+
+namespace gcsim::parix {
+
+// What every processor runs.
+using Program = std::function<void(Processor&)>;
+
+struct RunOptions {
+  std::string backend = "simulated";  // a name from backend_names()
+  SimulationOptions simulation;       // machine, node count, network model, trace
+};
+
+// A backend runs program on every processor of options and returns when all have returned.
+using BackendRunner = RunResult (*)(const RunOptions& options, const Program& program);
+
+struct Backend {
+  std::string_view name;
+  std::string_view summary;
+  BackendRunner run;
+};
+
+// The backends this build has, "simulated" first.
+const std::vector<Backend>& backends();
+std::vector<std::string> backend_names();
+
+// Runs program on the backend options names. Throws std::invalid_argument for an unknown
+// backend (naming the known ones), and whatever the backend throws (e.g. DeadlockError).
+RunResult run(const RunOptions& options, const Program& program);
+
+}  // namespace gcsim::parix

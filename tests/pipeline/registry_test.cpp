@@ -1,0 +1,61 @@
+// The app registry and the backend entry point: names are unique, lists are sorted, and an
+// unknown backend is refused with the known ones named.
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "apps/pipeline/app_registry.hpp"
+#include "parix/backend.hpp"
+
+namespace gcsim::pipeline {
+namespace {
+
+AppSpec spec(const std::string& name) {
+  AppSpec s;
+  s.name = name;
+  s.summary = "a test application";
+  s.options = [](CLI::App&, Verb) -> ExperimentFactory { return [] { return std::unique_ptr<Experiment>(); }; };
+  return s;
+}
+
+TEST(AppRegistry, ListsAppsSortedByNameAndRefusesDuplicates) {
+  register_app(spec("zz-registry-test"));
+  register_app(spec("aa-registry-test"));
+  const auto apps = registered_apps();
+  for (std::size_t i = 1; i < apps.size(); ++i) EXPECT_LT(apps[i - 1]->name, apps[i]->name);
+  EXPECT_THROW(register_app(spec("aa-registry-test")), std::logic_error);
+  AppSpec nameless = spec("");
+  EXPECT_THROW(register_app(nameless), std::logic_error);
+}
+
+TEST(Backend, SimulatedRunsTheProgramOnEveryNode) {
+  parix::RunOptions o;
+  o.simulation.config = machine::with_nodes(machine::default_machine_config(), 4);
+  o.simulation.nodes = 4;
+  int ran = 0;
+  const parix::RunResult r = parix::run(o, [&](parix::Processor& p) {
+    ++ran;
+    p.compute("flop", 1000 * (p.id() + 1));
+  });
+  EXPECT_EQ(ran, 4);
+  EXPECT_EQ(r.nodes, 4);
+  // The slowest node did 4000 operations; the run takes exactly as long as run_simulated says.
+  EXPECT_EQ(r.makespan, parix::run_simulated(o.simulation, [](parix::Processor& p) { p.compute("flop", 1000 * (p.id() + 1)); }).makespan);
+}
+
+TEST(Backend, UnknownBackendIsRefusedNamingTheKnownOnes) {
+  parix::RunOptions o;
+  o.backend = "carrier-pigeon";
+  o.simulation.config = machine::default_machine_config();
+  try {
+    parix::run(o, [](parix::Processor&) {});
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("simulated"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("carrier-pigeon"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace gcsim::pipeline
