@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "apps/radiosity/convergence.hpp"
+
 namespace gcsim::radiosity {
 
 ParallelAlgorithm parse_parallel_algorithm(const std::string& s) {
@@ -79,6 +81,8 @@ CellFormFactors get_cell(Reader& r) {
 }  // namespace
 
 void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOptions& o, ParallelOutcome* outcome) {
+  // Refused before any work (every replica decides alike): a closed scene that never absorbs.
+  check_energy_can_be_absorbed(scene, o.solver.hemicube);
   const int id = p.id(), n = p.count();
   const int np = int(scene.patches.size()), ne = int(scene.elements.size());
   // The replica of the environment and of the solver state on this node.

@@ -67,7 +67,7 @@ TEST(NearField, FurnaceBoxIsUniformOnEveryElement) {
   for (auto [patches, elements] : {std::pair{2, 2}, std::pair{4, 2}}) {
     const Scene box = testing::closed_box(1.0, patches, elements, 0.5, 1.0);
     SolverOptions o = converged_options(256);
-    o.energy = 1 - 1e-6;  // B within 2e-6 of its limit
+    o.energy = 1 - 1e-4;  // B within 2e-4 of its limit: far inside the 2% asked
     o.hemicube.max_shooter_samples = 2;
     o.hemicube.near_field_ratio = 1.0;
     const auto r = solve_progressive(box, o);

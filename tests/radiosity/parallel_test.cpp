@@ -91,6 +91,13 @@ TEST(ParallelRadiosity, ShootingFromSeveralPointsStaysBitIdentical) {
   }
 }
 
+TEST(ParallelRadiosity, AClosedSceneThatNeverAbsorbsIsRefusedOnEveryNodeCount) {
+  const Scene box = testing::closed_box(1.0, 1, 1, 1.0, 1.0);
+  ParallelOptions o;
+  o.solver.hemicube.resolution = 16;
+  for (int nodes : {1, 4}) EXPECT_THROW(run(box, o, nodes), std::invalid_argument) << nodes;
+}
+
 TEST(ParallelRadiosity, IndexOrderVariantsEqualSequentialToo) {
   Scene scene = testing::lit_room();
   for (ShootingOrder order : {ShootingOrder::index, ShootingOrder::energy_then_index}) {
