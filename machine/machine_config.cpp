@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "machine/config_inheritance.hpp"
+#include "machine/network_registry.hpp"
 
 namespace gcsim::machine {
 
@@ -222,8 +223,8 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
                                  "hop_latency_us", "connect_base_us", "connect_per_hop_us",
                                  "connect_serialized", "connect_model", "connect_server_block", "packet_bytes"});
   c.network_model = r.string(net, "model", "[network]", std::string("analytic"));
-  if (c.network_model != "analytic" && c.network_model != "flow" && c.network_model != "packet") {
-    r.fail(net.get("model"), "'model' in [network] is '" + c.network_model + "'; expected \"analytic\", \"flow\" or \"packet\"");
+  if (!is_network_model(c.network_model)) {
+    r.fail(net.get("model"), "'model' in [network] is '" + c.network_model + "'; expected one of: " + network_model_list());
   }
   c.link_bandwidth = r.number(net, "link_bandwidth_mbps", "[network]", 1e-9, 1e9) * 1e6;
   auto us = [&](std::string_view key) {
