@@ -7,6 +7,9 @@
 
 #include <toml++/toml.h>
 
+#include "machine/config_inheritance.hpp"
+#include "machine/network_registry.hpp"
+
 namespace gcsim::machine {
 
 ConfigError::ConfigError(const std::string& f, int l, const std::string& what)
@@ -20,8 +23,11 @@ class Reader {
 
   int line_of(const toml::node& n) const { return static_cast<int>(n.source().begin.line); }
 
+  // Names the file the node came from: after inheritance (config_inheritance.hpp) a key may come
+  // from the file or from one of its bases.
   [[noreturn]] void fail(const toml::node* n, const std::string& what) const {
-    throw ConfigError(source_, n ? line_of(*n) : 0, what);
+    const auto& path = n ? n->source().path : nullptr;
+    throw ConfigError(path ? *path : source_, n ? line_of(*n) : 0, what);
   }
 
   const toml::table& table(const toml::table& parent, std::string_view key, bool required = true) const {
@@ -171,12 +177,7 @@ void read_connect_model(const Reader& r, const toml::table& net, MachineConfig& 
 }  // namespace
 
 MachineConfig parse_machine_config(std::string_view text, const std::string& source) {
-  toml::table root;
-  try {
-    root = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    throw ConfigError(source, static_cast<int>(e.source().begin.line), std::string(e.description()));
-  }
+  const toml::table root = parse_with_bases(text, source);
   Reader r(root, source);
   r.only_keys(root, "the file", {"name", "topology", "node", "network", "ops", "calibration"});
 
@@ -222,8 +223,8 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
                                  "hop_latency_us", "connect_base_us", "connect_per_hop_us",
                                  "connect_serialized", "connect_model", "connect_server_block", "packet_bytes"});
   c.network_model = r.string(net, "model", "[network]", std::string("analytic"));
-  if (c.network_model != "analytic" && c.network_model != "flow" && c.network_model != "packet") {
-    r.fail(net.get("model"), "'model' in [network] is '" + c.network_model + "'; expected \"analytic\", \"flow\" or \"packet\"");
+  if (!is_network_model(c.network_model)) {
+    r.fail(net.get("model"), "'model' in [network] is '" + c.network_model + "'; expected one of: " + network_model_list());
   }
   c.link_bandwidth = r.number(net, "link_bandwidth_mbps", "[network]", 1e-9, 1e9) * 1e6;
   auto us = [&](std::string_view key) {

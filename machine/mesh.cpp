@@ -11,12 +11,6 @@ Mesh::Mesh(int width, int height) : width_(width), height_(height) {
 
 int Mesh::hops(int a, int b) const { return std::abs(x(a) - x(b)) + std::abs(y(a) - y(b)); }
 
-std::vector<int> Mesh::route(int a, int b) const {
-  std::vector<int> out;
-  route(a, b, out);
-  return out;
-}
-
 void Mesh::route(int a, int b, std::vector<int>& out) const {
   out.clear();
   int cx = x(a), cy = y(a);

@@ -5,35 +5,32 @@
 #include <cstdint>
 #include <vector>
 
+#include "machine/routing.hpp"
+
 namespace gcsim::machine {
 
 enum class Direction : std::uint8_t { east = 0, west = 1, north = 2, south = 3 };
 
-struct MeshChannel {
-  int from;
-  int to;
-};
-
-class Mesh {
+class Mesh final : public Routing {
  public:
   Mesh(int width, int height);
 
   int width() const { return width_; }
   int height() const { return height_; }
-  int nodes() const { return width_ * height_; }
+  int nodes() const override { return width_ * height_; }
   int x(int node) const { return node % width_; }
   int y(int node) const { return node / width_; }
   int node_at(int x, int y) const { return y * width_ + x; }
 
-  int hops(int a, int b) const;
+  int hops(int a, int b) const override;
   // Channel ids along the X-then-Y route from a to b (empty when a == b).
-  std::vector<int> route(int a, int b) const;
-  void route(int a, int b, std::vector<int>& out) const;
+  using Routing::route;
+  void route(int a, int b, std::vector<int>& out) const override;
 
   // Channels are numbered node * 4 + direction; some ids (edges of the mesh) are unused.
-  int channel_count() const { return nodes() * 4; }
+  int channel_count() const override { return nodes() * 4; }
   int channel(int node, Direction d) const { return node * 4 + static_cast<int>(d); }
-  MeshChannel channel_ends(int channel) const;
+  MeshChannel channel_ends(int channel) const override;
   bool channel_exists(int channel) const;
 
  private:

@@ -3,9 +3,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "machine/analytic_network.hpp"
-#include "machine/flow_network.hpp"
-#include "machine/packet_network.hpp"
 
 namespace gcsim::machine {
 
@@ -36,11 +33,11 @@ void NetworkModel::account(const std::vector<int>& route, std::int64_t bytes, Si
 }
 
 std::unique_ptr<NetworkModel> make_network_model(std::string_view name, NetworkContext ctx) {
-  if (name == "analytic") return std::make_unique<AnalyticNetwork>(ctx);
-  if (name == "flow") return std::make_unique<FlowNetwork>(ctx);
-  if (name == "packet") return std::make_unique<PacketNetwork>(ctx);
+  for (const auto& m : network_models()) {
+    if (m.name == name) return m.make(ctx);
+  }
   throw std::invalid_argument("unknown network model '" + std::string(name) + "' (expected one of: " +
-                              std::string(kNetworkModelNames) + ")");
+                              network_model_list() + ")");
 }
 
 }  // namespace gcsim::machine

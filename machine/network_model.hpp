@@ -12,14 +12,15 @@
 
 #include "machine/kernel.hpp"
 #include "machine/machine_config.hpp"
-#include "machine/mesh.hpp"
+#include "machine/network_registry.hpp"
+#include "machine/routing.hpp"
 #include "machine/trace.hpp"
 
 namespace gcsim::machine {
 
 struct NetworkContext {
   Kernel& kernel;
-  const Mesh& mesh;
+  const Routing& mesh;  // the physical network's routes (machine/mesh.hpp for the GC)
   const MachineConfig& config;
   TraceWriter* trace;  // may be null
 };
@@ -53,8 +54,7 @@ class NetworkModel {
   std::vector<SimTime> channel_busy_;
 };
 
-// Names the models a run may ask for.
-inline constexpr std::string_view kNetworkModelNames = "analytic, flow, packet";
+// Builds the model registered under name (machine/network_registry.hpp).
 // Throws std::invalid_argument listing the valid names if name is unknown.
 std::unique_ptr<NetworkModel> make_network_model(std::string_view name, NetworkContext ctx);
 

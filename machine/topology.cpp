@@ -1,95 +1,73 @@
 #include "machine/topology.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <deque>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
-#include "machine/machine_config.hpp"
+#include "machine/topologies/families.hpp"
 
 namespace gcsim::machine {
 
-TopologyKind parse_topology_kind(std::string_view s) {
-  if (s == "mesh") return TopologyKind::mesh;
-  if (s == "torus") return TopologyKind::torus;
-  if (s == "ring") return TopologyKind::ring;
-  if (s == "tree") return TopologyKind::tree;
-  if (s == "hypercube") return TopologyKind::hypercube;
-  throw std::invalid_argument("unknown topology '" + std::string(s) + "' (expected one of: " + std::string(kTopologyNames) + ")");
+// ---- registry ------------------------------------------------------------------------------------
+
+const std::vector<const TopologyFamily*>& topology_families() {
+  // One line per topology (machine/topologies/): adding one is a new file and a line here.
+  static const std::vector<const TopologyFamily*> families = {
+      &topologies::mesh(), &topologies::torus(), &topologies::ring(), &topologies::binary_tree(), &topologies::hypercube(),
+  };
+  return families;
 }
 
-std::string_view to_string(TopologyKind k) {
-  switch (k) {
-    case TopologyKind::mesh: return "mesh";
-    case TopologyKind::torus: return "torus";
-    case TopologyKind::ring: return "ring";
-    case TopologyKind::tree: return "tree";
-    case TopologyKind::hypercube: return "hypercube";
+std::vector<std::string> topology_names() {
+  std::vector<std::string> names;
+  for (const auto* f : topology_families()) names.emplace_back(f->name());
+  return names;
+}
+
+std::string topology_name_list() {
+  std::string list;
+  for (const auto* f : topology_families()) list += (list.empty() ? "" : ", ") + std::string(f->name());
+  return list;
+}
+
+const TopologyFamily& topology_family(std::string_view name) {
+  for (const auto* f : topology_families()) {
+    if (f->name() == name) return *f;
   }
-  return "?";
+  throw std::invalid_argument("unknown topology '" + std::string(name) + "' (expected one of: " + topology_name_list() + ")");
 }
 
-namespace {
+TopologyKind parse_topology_kind(std::string_view s) { return topology_family(s).name(); }
 
-void add_edge(VirtualTopology& t, int a, int b) {
-  if (a == b) return;
-  t.neighbours[a].push_back(b);
-  t.neighbours[b].push_back(a);
+TopologyMetrics TopologyFamily::thesis_formulas(int) const {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return {nan, nan, nan, nan, nan, nan};
 }
-
-bool is_power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
-
-}  // namespace
 
 VirtualTopology make_topology(TopologyKind kind, int n) {
+  const TopologyFamily& family = topology_family(kind);
   if (n < 1) throw std::invalid_argument("a topology needs at least one processor");
-  VirtualTopology t{kind};
-  t.neighbours.resize(n);
-  switch (kind) {
-    case TopologyKind::mesh:
-    case TopologyKind::torus: {
-      const MeshShape s = gc_mesh_shape(n);
-      t.width = s.width;
-      t.height = s.height;
-      for (int y = 0; y < s.height; ++y) {
-        for (int x = 0; x < s.width; ++x) {
-          const int v = y * s.width + x;
-          if (x + 1 < s.width) add_edge(t, v, v + 1);
-          if (y + 1 < s.height) add_edge(t, v, v + s.width);
-          if (kind == TopologyKind::torus) {
-            if (x == s.width - 1 && s.width > 2) add_edge(t, v, y * s.width);
-            if (y == s.height - 1 && s.height > 2) add_edge(t, v, x);
-          }
-        }
-      }
-      break;
-    }
-    case TopologyKind::ring:
-      for (int v = 0; v + 1 < n; ++v) add_edge(t, v, v + 1);
-      if (n > 2) add_edge(t, n - 1, 0);
-      break;
-    case TopologyKind::tree:
-      for (int v = 1; v < n; ++v) add_edge(t, v, (v - 1) / 2);
-      break;
-    case TopologyKind::hypercube:
-      if (!is_power_of_two(n)) {
-        throw std::invalid_argument("a hypercube needs a power-of-two processor count, not " + std::to_string(n));
-      }
-      for (int v = 0; v < n; ++v) {
-        for (int bit = 1; bit < n; bit <<= 1) {
-          if ((v ^ bit) > v) add_edge(t, v, v ^ bit);
-        }
-      }
-      break;
-  }
-  for (auto& nb : t.neighbours) {
+  return family.graph(n);
+}
+
+TopologyMetrics thesis_formulas(TopologyKind kind, int n) { return topology_family(kind).thesis_formulas(n); }
+
+void VirtualTopology::add_edge(int a, int b) {
+  if (a == b) return;
+  neighbours[a].push_back(b);
+  neighbours[b].push_back(a);
+}
+
+void VirtualTopology::finish() {
+  for (auto& nb : neighbours) {
     std::sort(nb.begin(), nb.end());
     nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
   }
-  return t;
 }
+
+// ---- parameters ----------------------------------------------------------------------------------
 
 TopologyMetrics exact_metrics(const VirtualTopology& t) {
   const int n = t.size();
@@ -156,96 +134,13 @@ TopologyMetrics exact_metrics(const VirtualTopology& t) {
   return m;
 }
 
-TopologyMetrics thesis_formulas(TopologyKind kind, int n) {
-  const double N = n;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  switch (kind) {
-    case TopologyKind::mesh:  // eqs. 2.1-2.6
-      return {2 * std::sqrt(N), 2.0 / 3.0 * std::sqrt(N), std::sqrt(N * N * N) / 2, std::sqrt(N * N * N) / 3, 4,
-              std::sqrt(N)};
-    case TopologyKind::tree:  // eqs. 2.8-2.12
-      return {2 * std::log2(N), 2 * std::log2(N), 5.0 / 16.0 * N * N, N * std::log2(N), 2, 2 * std::log2(N)};
-    case TopologyKind::hypercube:  // eqs. 2.13-2.17
-      return {std::log2(N), std::log2(N) / 2, N * std::log2(N) / 4, N * std::log2(N) / 4, std::log2(N), std::log2(N)};
-    case TopologyKind::torus:
-    case TopologyKind::ring:
-      return {nan, nan, nan, nan, nan, nan};
-  }
-  return {};
-}
-
-namespace {
-
-// Position i of a ring of length len folded so that neighbours, including the wrap, are <= 2 apart.
-int fold(int i, int len) { return i < (len + 1) / 2 ? 2 * i : 2 * (len - 1 - i) + 1; }
-
-// Mesh nodes in the order of a Hamiltonian cycle (height even, or width even by symmetry), or of a
-// boustrophedon path when neither dimension is even.
-std::vector<int> ring_order(const Mesh& mesh, int n) {
-  const int w = mesh.width(), h = mesh.height();
-  std::vector<int> order;
-  if (n != w * h) {
-    for (int v = 0; v < n; ++v) order.push_back(v);
-    return order;
-  }
-  auto walk = [&](bool transpose) {
-    const int W = transpose ? h : w, H = transpose ? w : h;
-    auto at = [&](int x, int y) { return transpose ? mesh.node_at(y, x) : mesh.node_at(x, y); };
-    std::vector<int> o;
-    for (int y = 0; y < H; ++y) {
-      if (y % 2 == 0) {
-        for (int x = (y == 0 ? 0 : 1); x < W; ++x) o.push_back(at(x, y));
-      } else {
-        for (int x = W - 1; x >= 1; --x) o.push_back(at(x, y));
-      }
-    }
-    for (int y = H - 1; y >= 1; --y) o.push_back(at(0, y));
-    return o;
-  };
-  if (w >= 2 && h >= 2 && h % 2 == 0) return walk(false);
-  if (w >= 2 && h >= 2 && w % 2 == 0) return walk(true);
-  for (int y = 0; y < h; ++y) {
-    for (int i = 0; i < w; ++i) order.push_back(mesh.node_at(y % 2 == 0 ? i : w - 1 - i, y));
-  }
-  return order;
-}
-
-}  // namespace
+// ---- mapping -------------------------------------------------------------------------------------
 
 MeshMapping map_onto_mesh(const VirtualTopology& t, const Mesh& mesh) {
   const int n = t.size();
   if (n > mesh.nodes()) throw std::invalid_argument("topology has more processors than the mesh has nodes");
   MeshMapping m;
-  m.node_of.resize(n);
-  switch (t.kind) {
-    case TopologyKind::mesh:
-    case TopologyKind::torus:
-      for (int v = 0; v < n; ++v) {
-        int x = v % t.width, y = v / t.width;
-        if (t.kind == TopologyKind::torus) {
-          x = fold(x, t.width);
-          y = fold(y, t.height);
-        }
-        if (t.width <= mesh.width() && t.height <= mesh.height()) m.node_of[v] = mesh.node_at(x, y);
-        else m.node_of[v] = mesh.node_at(y, x);  // the virtual grid is the turned physical one
-      }
-      break;
-    case TopologyKind::ring: {
-      const std::vector<int> order = ring_order(mesh, n);
-      for (int v = 0; v < n; ++v) m.node_of[v] = order[v];
-      break;
-    }
-    case TopologyKind::tree:
-      for (int v = 0; v < n; ++v) m.node_of[v] = v;
-      break;
-    case TopologyKind::hypercube: {
-      int xbits = 0;
-      while ((1 << (xbits + 1)) <= mesh.width() && (1 << (xbits + 1)) <= n) ++xbits;
-      const int xmask = (1 << xbits) - 1;
-      for (int v = 0; v < n; ++v) m.node_of[v] = mesh.node_at(v & xmask, v >> xbits);
-      break;
-    }
-  }
+  m.node_of = topology_family(t.kind).placement(t, mesh);
   std::vector<int> load(mesh.channel_count(), 0);
   std::vector<int> route;
   double hop_sum = 0;

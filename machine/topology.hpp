@@ -3,6 +3,9 @@
 // interconnect parameters computed exactly on those graphs (table 2.1), the thesis's formulas for
 // comparison, and a mapping onto the physical mesh with its dilation and congestion.
 //
+// Each topology is one small TopologyFamily object in machine/topologies/, registered by name in
+// topology_registry.cpp; everything here works on any registered family.
+//
 // Definitions (thesis 2.3): the processor distance of two PEs is the number of relays on a shortest
 // path plus one, i.e. the hop count. D = maximum and d = mean distance over ordered pairs of
 // distinct PEs. The relay load of a PE is the number of shortest paths between pairs of other PEs
@@ -18,26 +21,55 @@
 
 namespace gcsim::machine {
 
-enum class TopologyKind { mesh, torus, ring, tree, hypercube };
-inline constexpr std::string_view kTopologyNames = "mesh, torus, ring, tree, hypercube";
-TopologyKind parse_topology_kind(std::string_view s);  // throws std::invalid_argument
-std::string_view to_string(TopologyKind k);
+class TopologyFamily;
+
+// A registered topology's name ("mesh", "torus", "ring", "tree", "hypercube").
+using TopologyKind = std::string_view;
+// The registered name equal to s; throws std::invalid_argument listing the names.
+TopologyKind parse_topology_kind(std::string_view s);
+inline std::string_view to_string(TopologyKind k) { return k; }
 
 struct VirtualTopology {
   TopologyKind kind;
-  int width = 0;   // mesh and torus: the virtual grid (the GC shape for n)
+  int width = 0;   // grids (mesh, torus): the virtual grid (the GC shape for n)
   int height = 0;
   std::vector<std::vector<int>> neighbours;  // sorted, no duplicates
   int size() const { return static_cast<int>(neighbours.size()); }
+
+  // For families building the graph: an undirected edge (self-loops ignored), then finish().
+  void add_edge(int a, int b);
+  void finish();  // sorts each neighbour list and drops duplicates
 };
-// Throws std::invalid_argument for sizes the topology cannot take (hypercube: a power of two).
-VirtualTopology make_topology(TopologyKind kind, int n);
 
 struct TopologyMetrics {
   double D = 0, d = 0, R = 0, r = 0, k = 0, B = 0;
 };
+
+// One kind of virtual topology: its graph on n processors, where it places each processor on the
+// physical mesh, and the thesis's closed forms for its parameters.
+class TopologyFamily {
+ public:
+  virtual ~TopologyFamily() = default;
+  virtual std::string_view name() const = 0;
+  // Throws std::invalid_argument for sizes the topology cannot take (hypercube: a power of two).
+  virtual VirtualTopology graph(int n) const = 0;
+  // node_of[v]: the physical node of virtual processor v (t has at most mesh.nodes() processors).
+  virtual std::vector<int> placement(const VirtualTopology& t, const Mesh& mesh) const = 0;
+  // The thesis's table 2.1 formulas; NaN where the thesis gives none.
+  virtual TopologyMetrics thesis_formulas(int n) const;
+};
+
+// The registered families, in the order help texts list them.
+const std::vector<const TopologyFamily*>& topology_families();
+std::vector<std::string> topology_names();
+// "mesh, torus, ring, tree, hypercube": for error messages.
+std::string topology_name_list();
+// Throws std::invalid_argument listing the names if none is registered under name.
+const TopologyFamily& topology_family(std::string_view name);
+
+// Throws std::invalid_argument for unknown names and sizes the topology cannot take.
+VirtualTopology make_topology(TopologyKind kind, int n);
 TopologyMetrics exact_metrics(const VirtualTopology& t);
-// The thesis's table 2.1 formulas; NaN where the thesis gives none (torus, ring).
 TopologyMetrics thesis_formulas(TopologyKind kind, int n);
 
 struct MeshMapping {
@@ -46,9 +78,9 @@ struct MeshMapping {
   double mean_dilation = 0;
   int congestion = 0;        // most virtual edges (each direction) sharing one physical channel
 };
-// Maps t onto the mesh: meshes as they are, tori folded (wrap edges stay short), rings along a
-// Hamiltonian cycle of the mesh where one exists, trees in breadth-first order, hypercubes with
-// the low address bits along x and the high bits along y.
+// Maps t onto the mesh by its family's placement: meshes as they are, tori folded (wrap edges stay
+// short), rings along a Hamiltonian cycle of the mesh where one exists, trees in breadth-first
+// order, hypercubes with the low address bits along x and the high bits along y.
 MeshMapping map_onto_mesh(const VirtualTopology& t, const Mesh& mesh);
 
 }  // namespace gcsim::machine

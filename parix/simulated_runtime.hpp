@@ -4,6 +4,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "machine/machine_config.hpp"
 #include "machine/trace.hpp"
@@ -17,6 +18,9 @@ struct SimulationOptions {
   int nodes = 0;                       // 0: every node of the config
   std::string network_model;           // "" : the config's default
   machine::TraceOptions trace;         // no path: no trace
+  // Processor i runs on node placement[i]; empty: processor i on node i. A permutation of the
+  // nodes, e.g. machine::map_onto_mesh(...).node_of for a virtual topology (parix/virtual_topology.hpp).
+  std::vector<int> placement;
 };
 
 // Every processor blocked and no event pending. what() is the report naming each blocked

@@ -10,6 +10,7 @@
 
 #include "apps/calibration/calibration.hpp"
 #include "apps/cli/commands.hpp"
+#include "machine/network_registry.hpp"
 
 namespace gcsim::cli {
 namespace {
@@ -25,7 +26,7 @@ struct PredictFlags {
 
 void add_predict_options(CLI::App* cmd, PredictFlags& f) {
   cmd->add_option("--model", f.model, "Network model for every run; default: the machine file's")
-      ->check(CLI::IsMember({"analytic", "flow", "packet"}));
+      ->check(CLI::IsMember(machine::network_model_names()));
   cmd->add_option("--hemicube", f.hemicube, "Radiosity tables: hemicube resolution of the runs")
       ->check(CLI::Range(8, 4096))
       ->capture_default_str();

@@ -34,7 +34,7 @@ void add_topo(CommandGroups& g) {
       "distance from the best-placed managing processor.");
   cmd->add_option("--config", o->config, "Machine file; default: the built-in GC-PowerPlus")->check(CLI::ExistingFile);
   cmd->add_option("--topology", o->topology, "mesh, torus, ring, tree or hypercube")
-      ->check(CLI::IsMember({"mesh", "torus", "ring", "tree", "hypercube"}))
+      ->check(CLI::IsMember(machine::topology_names()))
       ->capture_default_str();
   cmd->add_option("--nodes", o->nodes, "Number of processors (hypercube: a power of two)")
       ->check(CLI::Range(1, 1 << 16))

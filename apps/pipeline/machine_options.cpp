@@ -8,6 +8,7 @@
 
 #include "machine/machine_config.hpp"
 #include "machine/network_model.hpp"
+#include "machine/network_registry.hpp"
 #include "machine/trace.hpp"
 
 namespace gcsim::pipeline {
@@ -28,7 +29,7 @@ void add_machine_choice_options(CLI::App* cmd, MachineOptions& o) {
   cmd->add_option("--config", o.config, "Machine file (configs/*.toml); default: the built-in GC-PowerPlus as published")
       ->check(CLI::ExistingFile);
   cmd->add_option("--model", o.model, "Network model: analytic (no contention), flow (links shared max-min fairly) or packet (packets queue for each link); default: the config's")
-      ->check(CLI::IsMember({"analytic", "flow", "packet"}));
+      ->check(CLI::IsMember(machine::network_model_names()));
   group_as_machine_options(cmd, {"--backend", "--config", "--model"});
 }
 

@@ -109,7 +109,7 @@ TEST(MachineConfig, MissingSectionAndSyntaxErrorsAreReported) {
 }
 
 TEST(MachineConfig, UnknownNetworkModelIsRejected) {
-  EXPECT_NE(error_of(with("model = \"flow\"", "model = \"packet-ish\"")).find("expected \"analytic\", \"flow\" or \"packet\""),
+  EXPECT_NE(error_of(with("model = \"flow\"", "model = \"packet-ish\"")).find("expected one of: analytic, flow, packet"),
             std::string::npos);
 }
 

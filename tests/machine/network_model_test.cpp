@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "machine/mesh.hpp"
+
 #include <vector>
 
 #include "machine/flow_network.hpp"
@@ -115,6 +117,38 @@ TEST(Network, UnknownModelListsTheValidOnes) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("analytic, flow, packet"), std::string::npos);
   }
+}
+
+}  // namespace
+}  // namespace gcsim::machine
+
+namespace gcsim::machine {
+namespace {
+
+// The registry is the one list: every name builds the model of that name, and they all agree on a
+// lone message (the property every model promises).
+TEST(NetworkRegistry, EveryRegisteredNameBuildsThatModel) {
+  EXPECT_EQ(network_model_names(), (std::vector<std::string>{"analytic", "flow", "packet"}));
+  for (const std::string& name : network_model_names()) {
+    ASSERT_TRUE(is_network_model(name));
+    Fixture f(name);
+    EXPECT_EQ(f.net->name(), name);
+    SimTime arrived = -1;
+    f.net->transfer(0, f.mesh.node_at(3, 2), 5000, [&] { arrived = f.kernel.now(); });
+    f.kernel.run();
+    EXPECT_EQ(arrived, f.net->uncontended_time(5, 5000)) << name;
+  }
+  EXPECT_FALSE(is_network_model("carrier-pigeon"));
+}
+
+// Models see the network only through Routing, so a mesh behind the interface routes the same.
+TEST(NetworkRegistry, MeshRoutesThroughTheRoutingInterface) {
+  const Mesh mesh(4, 3);
+  const Routing& r = mesh;
+  EXPECT_EQ(r.nodes(), 12);
+  EXPECT_EQ(r.hops(0, 11), 5);
+  EXPECT_EQ(r.route(0, 11).size(), 5u);
+  for (int ch : r.route(0, 11)) EXPECT_GE(r.channel_ends(ch).to, 0);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "machine/mesh.hpp"
+
 #include <algorithm>
 #include <memory>
 #include <vector>

@@ -1,0 +1,119 @@
+#include "machine/config_inheritance.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "machine/machine_config.hpp"
+
+namespace gcsim::machine {
+namespace {
+
+// Keys that say the same thing in different ways: a file that sets one replaces the whole group.
+const std::vector<std::vector<std::string_view>> kAlternativeKeys = {
+    {"connect_model", "connect_serialized", "connect_server_block"},
+};
+
+void drop_replaced_alternatives(toml::table& base, const toml::table& overlay) {
+  for (const auto& group : kAlternativeKeys) {
+    bool overlay_sets_one = false;
+    for (auto key : group) overlay_sets_one = overlay_sets_one || overlay.contains(key);
+    if (!overlay_sets_one) continue;
+    for (auto key : group) {
+      if (!overlay.contains(key)) base.erase(key);
+    }
+  }
+}
+
+toml::table parse_text(std::string_view text, const std::string& source) {
+  try {
+    return toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw ConfigError(source, static_cast<int>(e.source().begin.line), std::string(e.description()));
+  }
+}
+
+int line_of(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
+
+// The identity of a base in the chain, for finding cycles.
+std::string identity(const std::string& source) {
+  if (source.empty() || source.front() == '<' || source == kBuiltinBase) return std::string(kBuiltinBase);
+  std::error_code ec;
+  const auto p = std::filesystem::weakly_canonical(source, ec);
+  return ec ? source : p.string();
+}
+
+toml::table load_chain(std::string_view text, const std::string& source, std::vector<std::string>& chain);
+
+// Reads the file a `base` key names, relative to the file that names it.
+toml::table load_base(const toml::node& key, const std::string& child, std::vector<std::string>& chain) {
+  const auto* name = key.as_string();
+  if (!name) {
+    throw ConfigError(child, line_of(key),
+                      "'base' must be a string: a machine file (relative to this one) or \"" + std::string(kBuiltinBase) + "\"");
+  }
+  std::string source;
+  std::string text;
+  if (name->get() == kBuiltinBase) {
+    source = "<built-in configs/gc-powerplus.toml>";
+    text = std::string(default_machine_config_text());
+  } else if (name->get().rfind("builtin:", 0) == 0) {
+    throw ConfigError(child, line_of(key),
+                      "base '" + name->get() + "' is not built in; expected \"" + std::string(kBuiltinBase) + "\" or a file");
+  } else {
+    const std::filesystem::path here = child.empty() || child.front() == '<' ? "" : std::filesystem::path(child).parent_path();
+    const std::filesystem::path file = here / name->get();
+    std::ifstream in(file);
+    if (!in) throw ConfigError(child, line_of(key), "base '" + name->get() + "': cannot open " + file.string() + " (does it exist?)");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    source = file.string();
+    text = ss.str();
+  }
+  for (const auto& seen : chain) {
+    if (seen == identity(source)) {
+      std::string cycle;
+      for (const auto& s : chain) cycle += s + " -> ";
+      throw ConfigError(child, line_of(key), "machine files name each other as base: " + cycle + identity(source));
+    }
+  }
+  return load_chain(text, source, chain);
+}
+
+toml::table load_chain(std::string_view text, const std::string& source, std::vector<std::string>& chain) {
+  chain.push_back(identity(source));
+  toml::table own = parse_text(text, source);
+  const toml::node* key = own.get(kBaseKey);
+  if (!key) {
+    chain.pop_back();
+    return own;
+  }
+  toml::table merged = load_base(*key, source, chain);
+  own.erase(kBaseKey);
+  overlay_tables(merged, std::move(own));
+  chain.pop_back();
+  return merged;
+}
+
+}  // namespace
+
+void overlay_tables(toml::table& base, toml::table&& overlay) {
+  drop_replaced_alternatives(base, overlay);
+  for (auto&& [key, value] : overlay) {
+    toml::node* mine = base.get(key.str());
+    if (mine && mine->is_table() && value.is_table()) {
+      overlay_tables(*mine->as_table(), std::move(*value.as_table()));
+    } else {
+      // Moving keeps the node's source (file and line); copying would lose it.
+      base.insert_or_assign(key, std::move(value));
+    }
+  }
+}
+
+toml::table parse_with_bases(std::string_view text, const std::string& source) {
+  std::vector<std::string> chain;
+  return load_chain(text, source, chain);
+}
+
+}  // namespace gcsim::machine

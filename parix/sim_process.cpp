@@ -1,0 +1,280 @@
+// The calls a simulated processor makes (parix/processor.hpp), as one fiber of the simulation.
+#include <algorithm>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "parix/simulation.hpp"
+
+namespace gcsim::parix::detail {
+
+using machine::TraceKind;
+
+// ---- SimProcess ------------------------------------------------------------------------------
+
+int SimProcess::id() const { return id_; }
+int SimProcess::count() const { return sim_.config.nodes; }
+SimTime SimProcess::now() const { return sim_.kernel.now(); }
+
+void SimProcess::block(const char* call, int peer) {
+  if (sim_.cancelling) {
+    if (std::uncaught_exceptions() == 0) throw Cancelled{};
+    return;  // already unwinding: let the caller give up
+  }
+  blocked_call = call;
+  blocked_peer = peer;
+  blocked_since = sim_.kernel.now();
+  asleep = true;
+  --sim_.runnable;
+  fiber.suspend();
+  blocked_call = nullptr;
+  if (sim_.cancelling && std::uncaught_exceptions() == 0) throw Cancelled{};
+}
+
+void SimProcess::wake() {
+  if (!asleep) return;
+  asleep = false;
+  ++sim_.runnable;
+  fiber.resume();
+}
+
+bool SimProcess::wait_for_activity(Activity& a, const char* call, int peer) {
+  while (!a.test()) {
+    a.on_complete = [this] { wake(); };
+    block(call, peer);
+    a.on_complete = nullptr;
+    if (sim_.cancelling) {
+      a.cancel();
+      return false;
+    }
+  }
+  return true;
+}
+
+void SimProcess::compute(std::span<const OpCount> ops) {
+  machine::SimTime duration = 0;
+  auto& s = sim_.stats[id_];
+  for (const OpCount& op : ops) {
+    if (op.count < 0) throw ParixError("compute: negative count for operation '" + std::string(op.op) + "'");
+    try {
+      duration += machine::op_time(sim_.config, op.op, op.count);
+    } catch (const std::out_of_range& e) {
+      throw ParixError(e.what());
+    }
+    auto it = s.ops.find(op.op);
+    if (it == s.ops.end()) s.ops.emplace(std::string(op.op), op.count);
+    else it->second += op.count;
+  }
+  if (duration == 0) return;
+  const machine::SimTime start = sim_.kernel.now();
+  Activity computation;
+  sim_.nodes[sim_.node_of[id_]].compute(duration, [&computation] { computation.complete(); });
+  if (!wait_for_activity(computation, "compute", -1)) return;
+  s.compute += duration;
+  if (sim_.trace.enabled()) {
+    sim_.trace.record({TraceKind::compute, id_, -1, start, sim_.kernel.now(), 0, -1,
+                       ops.size() == 1 ? ops[0].op : std::string_view("compute"), thread_});
+  }
+}
+
+void SimProcess::use_memory(std::int64_t bytes) {
+  machine::Node& node = sim_.nodes[sim_.node_of[id_]];
+  if (!node.use_memory(bytes)) {
+    throw ParixError(fmt::format("processor {}: out of memory: {} bytes in use + {} requested > {} bytes on the node",
+                                 id_, node.memory_used(), bytes, node.memory_bytes()));
+  }
+}
+
+Link SimProcess::connect(int peer, int tag) {
+  if (peer < 0 || peer >= count()) {
+    throw ParixError(fmt::format("processor {}: connect to processor {}, which does not exist (0..{})", id_, peer, count() - 1));
+  }
+  if (peer == id_) throw ParixError(fmt::format("processor {}: connect to itself; a link needs two processors", id_));
+  const machine::SimTime start = sim_.kernel.now();
+  std::int64_t mine = -1;
+  Activity set_up;  // completed by the set-up event, whichever side schedules it
+  if (auto paired = sim_.connect_matcher.match_or_wait(id_, peer, tag, {this, &mine, &set_up, start})) {
+    const Simulation::PendingConnect other = *paired;
+    const std::int64_t a = sim_.new_link_end(), b = sim_.new_link_end();
+    LinkEnd& ea = sim_.links[a];
+    LinkEnd& eb = sim_.links[b];
+    ea.owner = id_, ea.peer = peer, ea.peer_end = b;
+    eb.owner = peer, eb.peer = id_, eb.peer_end = a;
+    const machine::SimTime up = sim_.connections.set_up(sim_.node_of[id_], sim_.node_of[peer], start);
+    std::int64_t* theirs = other.result;
+    SimProcess* them = other.who;
+    const machine::SimTime their_start = other.since;
+    // Both ends' set-ups complete at once; the waiting end wakes first.
+    sim_.kernel.at(up, [theirs, their_set_up = other.set_up, &set_up, b] {
+      *theirs = b;
+      their_set_up->complete();
+      set_up.complete();
+    });
+    if (!wait_for_activity(set_up, "connect", peer)) return {};
+    mine = a;
+    sim_.stats[peer].connections += 1;
+    sim_.stats[id_].connections += 1;
+    if (sim_.trace.enabled()) {
+      sim_.trace.record({TraceKind::connect, peer, id_, their_start, up, 0, -1, "connect", them->thread()});
+      sim_.trace.record({TraceKind::connect, id_, peer, start, up, 0, -1, "connect", thread_});
+    }
+  } else if (!wait_for_activity(set_up, "connect", peer)) {
+    return {};
+  }
+  const machine::SimTime took = sim_.kernel.now() - start;
+  sim_.stats[id_].comm += took;
+  sim_.stats[id_].connect += took;
+  return Link(this, peer, tag, mine);
+}
+
+void SimProcess::close_link(std::int64_t handle) {
+  if (handle >= 0 && handle < static_cast<std::int64_t>(sim_.links.size())) sim_.links[handle].open = false;
+}
+
+LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
+  if (!link.valid()) throw ParixError(fmt::format("processor {}: {} on a link that is not open", id_, call));
+  LinkEnd& e = sim_.links.at(link.handle());
+  if (e.owner != id_) throw ParixError(fmt::format("processor {}: {} on a link owned by processor {}", id_, call, e.owner));
+  return e;
+}
+
+Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool synchronous) {
+  LinkEnd& e = end_of(link, "send");
+  auto req = std::make_shared<RequestState>();
+  req->link = link.handle();
+  req->peer = e.peer;
+  Message m;
+  m.data.assign(data.begin(), data.end());
+  m.send = req;
+  m.synchronous = synchronous;
+  m.id = sim_.next_message++;
+  m.link_seq = e.sent++;
+  m.src = id_;
+  m.sent = sim_.kernel.now();
+  auto& s = sim_.stats[id_];
+  ++s.messages_sent;
+  s.bytes_sent += static_cast<std::int64_t>(data.size());
+  m.dst_end = e.peer_end;
+  // The arrival callback captures only (simulation, slot): small enough for std::function to
+  // store inline, which keeps the per-message cost free of extra allocations.
+  const std::int64_t slot = sim_.park(std::move(m));
+  sim_.network->transfer(sim_.node_of[id_], sim_.node_of[e.peer], static_cast<std::int64_t>(data.size()),
+                         [sim = &sim_, slot] { sim->deliver(sim->unpark(slot)); });
+  return Request(req);
+}
+
+void Simulation::deliver(Message&& m) {
+  LinkEnd& e = links[m.dst_end];
+  const std::int64_t seq = m.link_seq;
+  e.order.arrive(seq, std::move(m), [this, &e](Message&& next) { accept(e, std::move(next)); });
+}
+
+void Simulation::accept(LinkEnd& e, Message&& m) {
+  if (trace.enabled()) {
+    trace.record({TraceKind::message, m.src, e.owner, m.sent, kernel.now(), static_cast<std::int64_t>(m.data.size()),
+                  m.id, "message"});
+  }
+  if (!m.synchronous) complete(m.send);
+  if (!e.receives.empty()) {
+    std::shared_ptr<RequestState> r = std::move(e.receives.front());
+    e.receives.pop_front();
+    r->data = std::move(m.data);
+    if (m.synchronous) complete(m.send);
+    complete(r);
+  } else {
+    e.arrived.push_back(std::move(m));
+  }
+}
+
+Request SimProcess::isend(Link& link, std::span<const std::byte> data) { return post_send(link, data, false); }
+
+void SimProcess::send(Link& link, std::span<const std::byte> data) {
+  Request r = post_send(link, data, true);
+  wait_for(*r.state(), "send", TraceKind::send);
+}
+
+Request SimProcess::irecv(Link& link) {
+  LinkEnd& e = end_of(link, "recv");
+  auto req = std::make_shared<RequestState>();
+  req->is_receive = true;
+  req->link = link.handle();
+  req->peer = e.peer;
+  if (!e.arrived.empty()) {
+    Message m = std::move(e.arrived.front());
+    e.arrived.pop_front();
+    req->data = std::move(m.data);
+    req->done = true;
+    if (m.synchronous) sim_.complete(m.send);
+  } else {
+    e.receives.push_back(req);
+  }
+  return Request(req);
+}
+
+Bytes SimProcess::recv(Link& link) {
+  Request r = irecv(link);
+  wait_for(*r.state(), "recv", TraceKind::recv);
+  return r.take();
+}
+
+void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {
+  const machine::SimTime start = sim_.kernel.now();
+  while (!r.done) {
+    r.waiter = this;
+    block(call, r.peer);
+    r.waiter = nullptr;
+    if (sim_.cancelling) return;
+  }
+  const machine::SimTime end = sim_.kernel.now();
+  sim_.stats[id_].comm += end - start;
+  if (sim_.trace.enabled() && end > start) {
+    sim_.trace.record({kind, id_, r.peer, start, end, static_cast<std::int64_t>(r.data.size()), -1, call, thread_});
+  }
+}
+
+void SimProcess::wait(Request& r) {
+  if (!r.valid()) throw ParixError(fmt::format("processor {}: wait on an empty request", id_));
+  wait_for(*r.state(), "wait", TraceKind::wait);
+}
+
+std::size_t SimProcess::wait_any(std::span<Request* const> rs) {
+  if (rs.empty()) throw ParixError(fmt::format("processor {}: wait_any on no requests", id_));
+  const machine::SimTime start = sim_.kernel.now();
+  auto first_done = [&]() -> std::size_t {
+    for (std::size_t i = 0; i < rs.size(); ++i) {
+      if (!rs[i]->valid()) throw ParixError(fmt::format("processor {}: wait_any on an empty request", id_));
+      if (rs[i]->done()) return i;
+    }
+    return rs.size();
+  };
+  std::size_t i;
+  while ((i = first_done()) == rs.size()) {
+    for (Request* r : rs) r->state()->waiter = this;
+    block("wait_any", rs.size() == 1 ? rs[0]->state()->peer : -1);
+    for (Request* r : rs) r->state()->waiter = nullptr;
+    if (sim_.cancelling) return 0;
+  }
+  const machine::SimTime end = sim_.kernel.now();
+  sim_.stats[id_].comm += end - start;
+  if (sim_.trace.enabled() && end > start) {
+    sim_.trace.record({TraceKind::wait, id_, rs[i]->state()->peer, start, end, 0, -1, "wait_any", thread_});
+  }
+  return i;
+}
+
+Thread SimProcess::spawn(std::function<void(Processor&)> body) {
+  const int thread = static_cast<int>(std::count_if(sim_.processes.begin(), sim_.processes.end(),
+                                                    [&](const auto& p) { return p->id() == id_; }));
+  sim_.processes.push_back(std::make_unique<SimProcess>(sim_, id_, thread));
+  SimProcess* t = sim_.processes.back().get();
+  sim_.launch(t, std::move(body));
+  return Thread([this, t] {
+    while (!t->finished) {
+      t->joiner = this;
+      block("join", id_);
+      if (sim_.cancelling) return;
+    }
+  });
+}
+
+}  // namespace gcsim::parix::detail

@@ -1,0 +1,210 @@
+#pragma once
+// The simulated runtime's state, shared by its units: processes (SimProcess, one per processor and
+// thread, each a fiber), the links between them and the Simulation that owns the kernel, the
+// network and the machine. Internal to parix/: applications use parix/simulated_runtime.hpp.
+#include <deque>
+#include <exception>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "machine/connection_service.hpp"
+#include "machine/kernel.hpp"
+#include "machine/mesh.hpp"
+#include "machine/network_model.hpp"
+#include "machine/node.hpp"
+#include "machine/trace.hpp"
+#include "parix/activity.hpp"
+#include "parix/connection_matcher.hpp"
+#include "parix/fiber_processes.hpp"
+#include "parix/in_order_delivery.hpp"
+#include "parix/simulated_runtime.hpp"
+
+namespace gcsim::parix::detail {
+
+using machine::Kernel;
+using machine::TraceKind;
+using machine::TraceRecord;
+
+// Thrown into a blocked fiber to unwind it when the run is abandoned (deadlock or an error
+// elsewhere). Deliberately not a std::exception, so application handlers do not catch it.
+struct Cancelled {};
+
+class Simulation;
+
+// A message on its way or waiting in a link's queue.
+struct Message {
+  Bytes data;
+  std::shared_ptr<RequestState> send;  // completed when received (synchronous) or delivered
+  bool synchronous = false;
+  std::int64_t id = 0;
+  std::int64_t link_seq = 0;  // position on its link: a link delivers in sending order
+  std::int64_t dst_end = -1;  // the link end it goes to
+  int src = -1;
+  machine::SimTime sent = 0;
+};
+
+// One end of a virtual link.
+struct LinkEnd {
+  int owner = -1;
+  int peer = -1;
+  std::int64_t peer_end = -1;
+  bool open = true;
+  std::int64_t sent = 0;                                 // messages sent from this end
+  InOrderDelivery<Message> order;                        // holds messages that overtook a predecessor
+  std::deque<Message> arrived;                           // delivered, not yet received
+  std::deque<std::shared_ptr<RequestState>> receives;    // posted, waiting for a message
+};
+
+class SimProcess final : public Processor {
+ public:
+  SimProcess(Simulation& sim, int id, int thread) : sim_(sim), id_(id), thread_(thread) {}
+  ~SimProcess() override { drop_persistent_links(); }
+
+  int id() const override;
+  int count() const override;
+  SimTime now() const override;
+  void compute(std::span<const OpCount> ops) override;
+  void use_memory(std::int64_t bytes) override;
+  Link connect(int peer, int tag) override;
+  void send(Link& link, std::span<const std::byte> data) override;
+  Bytes recv(Link& link) override;
+  Request isend(Link& link, std::span<const std::byte> data) override;
+  Request irecv(Link& link) override;
+  void wait(Request& r) override;
+  std::size_t wait_any(std::span<Request* const> rs) override;
+  Thread spawn(std::function<void(Processor&)> body) override;
+
+  // Suspends this fiber until wake(); `call` and `peer` describe the wait for deadlock reports.
+  void block(const char* call, int peer);
+  void wake();
+  // Blocks until a completes; false when the run was abandoned meanwhile (a is then cancelled).
+  bool wait_for_activity(Activity& a, const char* call, int peer);
+
+  int thread() const { return thread_; }
+  bool finished = false;
+  bool asleep = false;
+  const char* blocked_call = nullptr;
+  int blocked_peer = -1;
+  machine::SimTime blocked_since = 0;
+  FiberContext fiber;
+  SimProcess* joiner = nullptr;  // who waits in Thread::join for this thread
+
+ protected:
+  void close_link(std::int64_t handle) override;
+
+ private:
+  Request post_send(Link& link, std::span<const std::byte> data, bool synchronous);
+  LinkEnd& end_of(const Link& link, const char* call);
+  void wait_for(RequestState& r, const char* call, TraceKind kind);
+  Simulation& sim_;
+  int id_;
+  int thread_;
+};
+
+// options.placement checked to be a permutation of 0..nodes-1; identity when empty.
+std::vector<int> checked_placement(const std::vector<int>& placement, int nodes);
+
+class Simulation {
+ public:
+  explicit Simulation(const SimulationOptions& o)
+      : config(o.nodes > 0 ? machine::with_nodes(o.config, o.nodes) : o.config),
+        mesh(config.mesh_width, config.mesh_height),
+        trace(o.trace, config.nodes, config.mesh_width, config.mesh_height),
+        network(machine::make_network_model(o.network_model.empty() ? config.network_model : o.network_model,
+                                            {kernel, mesh, config, trace.enabled() ? &trace : nullptr})),
+        connections(config, mesh) {
+    for (int n = 0; n < config.nodes; ++n) nodes.emplace_back(kernel, config.cpus_per_node, config.memory_bytes);
+    stats.resize(config.nodes);
+    node_of = checked_placement(o.placement, config.nodes);
+  }
+
+  RunResult run(const std::function<void(Processor&)>& program);
+
+  void launch(SimProcess* p, std::function<void(Processor&)> body) {
+    ++runnable;
+    ++live;
+    fibers.launch([this, p, body = std::move(body)] {
+      p->fiber.bind_to_current();
+      try {
+        body(*p);
+      } catch (const Cancelled&) {
+      } catch (...) {
+        if (!failure) failure = std::current_exception();
+      }
+      p->drop_persistent_links();
+      finish(p);
+    });
+  }
+
+  void finish(SimProcess* p) {
+    p->finished = true;
+    auto& s = stats[p->id()];
+    s.finish = std::max(s.finish, kernel.now());
+    if (p->joiner) p->joiner->wake();
+    --runnable;
+    --live;
+  }
+
+  std::int64_t new_link_end() {
+    links.emplace_back();
+    return static_cast<std::int64_t>(links.size()) - 1;
+  }
+
+  void deliver(Message&& m);
+  // Messages in the network wait in a slab, so callbacks can refer to them by index.
+  std::int64_t park(Message&& m) {
+    if (free_slots.empty()) {
+      in_flight.push_back(std::move(m));
+      return static_cast<std::int64_t>(in_flight.size()) - 1;
+    }
+    const std::int64_t slot = free_slots.back();
+    free_slots.pop_back();
+    in_flight[slot] = std::move(m);
+    return slot;
+  }
+  Message unpark(std::int64_t slot) {
+    Message m = std::move(in_flight[slot]);
+    free_slots.push_back(slot);
+    return m;
+  }
+  void accept(LinkEnd& e, Message&& m);
+  void complete(const std::shared_ptr<RequestState>& r) {
+    r->done = true;
+    if (r->waiter) static_cast<SimProcess*>(r->waiter)->wake();
+  }
+
+
+  std::string deadlock_report() const;
+
+  machine::MachineConfig config;
+  std::vector<int> node_of;  // processor -> node (SimulationOptions::placement)
+  machine::Kernel kernel;
+  machine::Mesh mesh;
+  machine::TraceWriter trace;
+  std::unique_ptr<machine::NetworkModel> network;
+  machine::ConnectionService connections;
+  std::deque<machine::Node> nodes;
+  std::vector<ProcessorStats> stats;
+  std::deque<LinkEnd> links;
+  std::vector<Message> in_flight;
+  std::vector<std::int64_t> free_slots;
+  std::vector<std::unique_ptr<SimProcess>> processes;
+  FiberPool fibers;
+  // A connect call waiting for its other end.
+  struct PendingConnect {
+    SimProcess* who;
+    std::int64_t* result;  // the link end it gets
+    Activity* set_up;      // completed when the link is up
+    machine::SimTime since;
+  };
+  ConnectionMatcher<PendingConnect> connect_matcher;
+  std::int64_t next_message = 0;
+  int runnable = 0;
+  int live = 0;
+  bool cancelling = false;
+  std::exception_ptr failure;
+};
+
+}  // namespace gcsim::parix::detail

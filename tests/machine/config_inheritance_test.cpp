@@ -1,0 +1,169 @@
+// Machine files that inherit: a child names a base and overrides only the keys it names.
+#include "machine/config_inheritance.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "machine/machine_config.hpp"
+
+namespace gcsim::machine {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh directory per test, for files that name each other.
+class Inheritance : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("gcsim_inherit_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return (dir_ / name).string();
+  }
+  std::string error_loading(const std::string& file) {
+    try {
+      load_machine_config(file);
+    } catch (const ConfigError& e) {
+      return e.what();
+    }
+    return "(no error)";
+  }
+  fs::path dir_;
+};
+
+// Every field a file can set, so "same values" means the same machine.
+void expect_same_machine(const MachineConfig& a, const MachineConfig& b) {
+  EXPECT_EQ(a.nodes, b.nodes);
+  EXPECT_EQ(a.mesh_width, b.mesh_width);
+  EXPECT_EQ(a.mesh_height, b.mesh_height);
+  EXPECT_EQ(a.cpus_per_node, b.cpus_per_node);
+  EXPECT_EQ(a.clock_hz, b.clock_hz);
+  EXPECT_EQ(a.memory_bytes, b.memory_bytes);
+  EXPECT_EQ(a.comm_processors, b.comm_processors);
+  EXPECT_EQ(a.links_per_comm_processor, b.links_per_comm_processor);
+  EXPECT_EQ(a.cycles_per_op, b.cycles_per_op);
+  EXPECT_EQ(a.network_model, b.network_model);
+  EXPECT_EQ(a.link_bandwidth, b.link_bandwidth);
+  EXPECT_EQ(a.message_setup, b.message_setup);
+  EXPECT_EQ(a.network_latency, b.network_latency);
+  EXPECT_EQ(a.hop_latency, b.hop_latency);
+  EXPECT_EQ(a.connect_base, b.connect_base);
+  EXPECT_EQ(a.connect_per_hop, b.connect_per_hop);
+  EXPECT_EQ(a.connect_model, b.connect_model);
+  EXPECT_EQ(a.packet_bytes, b.packet_bytes);
+}
+
+TEST_F(Inheritance, ChildOverridesOnlyTheKeysItNames) {
+  write("gc.toml", std::string(default_machine_config_text()));
+  const auto child = write("child.toml", "base = \"gc.toml\"\nname = \"slow\"\n[network]\nlink_bandwidth_mbps = 1.0\n"
+                                         "[ops]\nflop = 3\n");
+  const MachineConfig c = load_machine_config(child);
+  MachineConfig expected = default_machine_config();
+  expected.link_bandwidth = 1e6;
+  expected.cycles_per_op["flop"] = 3;
+  expect_same_machine(c, expected);
+  EXPECT_EQ(c.name, "slow");
+  EXPECT_EQ(c.source, child);
+  EXPECT_GT(c.cycles_per_op.size(), 10u);  // the [ops] table came from the base
+}
+
+TEST_F(Inheritance, BuiltinBaseIsTheEmbeddedDefault) {
+  const auto child = write("child.toml", "base = \"builtin:gc-powerplus\"\n[topology]\nnodes = 16\nmesh = [4, 4]\n");
+  const MachineConfig c = load_machine_config(child);
+  MachineConfig expected = default_machine_config();
+  expected.nodes = 16;
+  expected.mesh_width = expected.mesh_height = 4;
+  expect_same_machine(c, expected);
+  EXPECT_EQ(c.name, default_machine_config().name);  // not named: inherited
+}
+
+TEST_F(Inheritance, ChainsOfBasesApplyInOrder) {
+  write("a.toml", std::string(default_machine_config_text()));
+  write("b.toml", "base = \"a.toml\"\n[network]\nhop_latency_us = 7\nconnect_base_us = 9\n");
+  const auto c = load_machine_config(write("c.toml", "base = \"b.toml\"\n[network]\nconnect_base_us = 11\n"));
+  EXPECT_EQ(c.hop_latency, 7 * kMicrosecond);
+  EXPECT_EQ(c.connect_base, 11 * kMicrosecond);
+}
+
+TEST_F(Inheritance, ShippedFilesEqualTheirOldFullCopies) {
+  const std::string dir = GCSIM_SOURCE_DIR "/configs/";
+  const MachineConfig gc = default_machine_config();
+  MachineConfig calibrated = gc;
+  calibrated.link_bandwidth = 1.67e6;
+  expect_same_machine(load_machine_config(dir + "gc-powerplus-calibrated.toml"), calibrated);
+  MachineConfig big = gc;
+  big.nodes = 1024;
+  big.mesh_width = big.mesh_height = 32;
+  expect_same_machine(load_machine_config(dir + "whatif-1024-nodes.toml"), big);
+  MachineConfig fast = gc;
+  fast.link_bandwidth = 21.875e6;
+  fast.connect_base = 55 * kMicrosecond;
+  fast.connect_per_hop = 24 * kMicrosecond;
+  expect_same_machine(load_machine_config(dir + "whatif-fast-links.toml"), fast);
+}
+
+TEST_F(Inheritance, BadKeyInTheChildNamesTheChildAndItsLine) {
+  const auto child = write("child.toml", "base = \"builtin:gc-powerplus\"\n\n[network]\nlink_bandwith_mbps = 1.0\n");
+  const std::string e = error_loading(child);
+  EXPECT_NE(e.find(child + ":4:"), std::string::npos) << e;
+  EXPECT_NE(e.find("link_bandwith_mbps"), std::string::npos) << e;
+}
+
+TEST_F(Inheritance, BadValueInTheBaseNamesTheBase) {
+  std::string text(default_machine_config_text());
+  text.replace(text.find("cpus = 2"), 8, "cpus = -2");
+  const auto base = write("base.toml", text);
+  const std::string e = error_loading(write("child.toml", "base = \"base.toml\"\n"));
+  EXPECT_NE(e.find(base + ":"), std::string::npos) << e;
+  EXPECT_NE(e.find("cpus"), std::string::npos) << e;
+}
+
+TEST_F(Inheritance, MissingBaseNamesTheLineOfBase) {
+  const auto child = write("child.toml", "name = \"x\"\nbase = \"nowhere.toml\"\n");
+  const std::string e = error_loading(child);
+  EXPECT_NE(e.find(child + ":2:"), std::string::npos) << e;
+  EXPECT_NE(e.find("nowhere.toml"), std::string::npos) << e;
+  EXPECT_NE(error_loading(write("b.toml", "base = 3\n")).find("'base' must be a string"), std::string::npos);
+  EXPECT_NE(error_loading(write("c.toml", "base = \"builtin:cray\"\n")).find("not built in"), std::string::npos);
+}
+
+TEST_F(Inheritance, ACycleOfBasesIsAnError) {
+  const auto a = write("a.toml", "base = \"b.toml\"\n");
+  write("b.toml", "\nbase = \"a.toml\"\n");
+  const std::string e = error_loading(a);
+  EXPECT_NE(e.find("name each other as base"), std::string::npos) << e;
+  EXPECT_NE(error_loading(write("self.toml", "base = \"self.toml\"\n")).find("name each other"), std::string::npos);
+}
+
+TEST_F(Inheritance, ChildMaySwitchTheConnectModelOfItsBase) {
+  std::string text(default_machine_config_text());
+  text.replace(text.find("connect_model = \"parallel\""), 26, "connect_model = \"servers\"\nconnect_server_block = [2, 2]");
+  write("servers.toml", text);
+  EXPECT_EQ(load_machine_config(write("s.toml", "base = \"servers.toml\"\n")).connect_model, ConnectModel::servers);
+  const auto c = load_machine_config(write("c.toml", "base = \"servers.toml\"\n[network]\nconnect_serialized = true\n"));
+  EXPECT_EQ(c.connect_model, ConnectModel::serialized);
+}
+
+TEST_F(Inheritance, CalibratedFileAsGcsimCalibrateWritesItLoads) {
+  write("gc.toml", std::string(default_machine_config_text()));
+  const auto fitted = write("fitted.toml",
+                            "# written by gcsim calibrate\nbase = \"gc.toml\"\nname = \"GC (calibrated on 4.6)\"\n\n"
+                            "[calibration]\nfitted = [\"4.6\"]\n\n[network]\nlink_bandwidth_mbps = 1.71    # fitted\n"
+                            "connect_base_us = 540\n");
+  const MachineConfig c = load_machine_config(fitted);
+  EXPECT_EQ(c.calibrated_on, std::vector<std::string>{"4.6"});
+  EXPECT_EQ(c.link_bandwidth, 1.71e6);
+  EXPECT_EQ(c.connect_base, 540 * kMicrosecond);
+  EXPECT_EQ(c.cycles_per_op, default_machine_config().cycles_per_op);
+}
+
+}  // namespace
+}  // namespace gcsim::machine

@@ -1,0 +1,104 @@
+// The runtime's units on their own, without running a simulation: connection matching, in-order
+// delivery on a link and the deadlock report.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "parix/activity.hpp"
+#include "parix/connection_matcher.hpp"
+#include "parix/deadlock_report.hpp"
+#include "parix/in_order_delivery.hpp"
+
+namespace gcsim::parix {
+namespace {
+
+TEST(ConnectionMatcher, PairsCallsInCallOrder) {
+  ConnectionMatcher<int> m;
+  // Processor 0 connects to 1 three times (calls 10, 11, 12) before 1 answers.
+  EXPECT_FALSE(m.match_or_wait(0, 1, 7, 10));
+  EXPECT_FALSE(m.match_or_wait(0, 1, 7, 11));
+  EXPECT_FALSE(m.match_or_wait(0, 1, 7, 12));
+  EXPECT_EQ(m.waiting(), 3u);
+  EXPECT_EQ(m.match_or_wait(1, 0, 7, 20), 10);
+  EXPECT_EQ(m.match_or_wait(1, 0, 7, 21), 11);
+  EXPECT_EQ(m.match_or_wait(1, 0, 7, 22), 12);
+  EXPECT_EQ(m.waiting(), 0u);
+}
+
+TEST(ConnectionMatcher, KeepsTagsAndDirectionsApart) {
+  ConnectionMatcher<int> m;
+  EXPECT_FALSE(m.match_or_wait(0, 1, 1, 100));
+  EXPECT_FALSE(m.match_or_wait(1, 0, 2, 200));  // other tag: waits too
+  EXPECT_FALSE(m.match_or_wait(0, 1, 1, 101));  // same direction: never pairs with itself
+  EXPECT_FALSE(m.match_or_wait(2, 1, 1, 300));  // other processor
+  EXPECT_EQ(m.waiting(), 4u);
+  EXPECT_EQ(m.match_or_wait(0, 1, 2, 102), 200);
+  EXPECT_EQ(m.match_or_wait(1, 0, 1, 201), 100);
+  EXPECT_EQ(m.match_or_wait(1, 2, 1, 202), 300);
+  EXPECT_EQ(m.waiting(), 1u);  // 0 -> 1 tag 1, call 101
+}
+
+TEST(InOrderDelivery, HoldsAMessageUntilItsPredecessorArrives) {
+  InOrderDelivery<std::string> link;
+  std::vector<std::string> got;
+  auto deliver = [&](std::string&& m) { got.push_back(std::move(m)); };
+  link.arrive(2, "c", deliver);
+  link.arrive(1, "b", deliver);
+  EXPECT_TRUE(got.empty());
+  EXPECT_EQ(link.held(), 2u);
+  link.arrive(0, "a", deliver);  // releases b and c at once
+  EXPECT_EQ(got, (std::vector<std::string>{"a", "b", "c"}));
+  EXPECT_EQ(link.held(), 0u);
+  link.arrive(3, "d", deliver);
+  EXPECT_EQ(got.back(), "d");
+  EXPECT_EQ(link.delivered(), 4);
+}
+
+TEST(InOrderDelivery, AnyArrivalOrderDeliversInSendingOrder) {
+  const std::vector<int> arrival = {5, 0, 3, 1, 7, 2, 6, 4};
+  InOrderDelivery<int> link;
+  std::vector<int> got;
+  for (int seq : arrival) link.arrive(seq, int(seq), [&](int&& m) { got.push_back(m); });
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(got.at(i), i);
+}
+
+TEST(DeadlockReport, NamesEachBlockedProcessCallAndPeer) {
+  const std::vector<BlockedProcess> blocked = {
+      {0, 0, "recv", 1, 2 * machine::kMillisecond},
+      {1, 0, "send", 0, 3 * machine::kMillisecond},
+      {1, 2, "join", -1, 0},
+  };
+  const std::string r = deadlock_report(5 * machine::kMillisecond, blocked);
+  EXPECT_NE(r.find("deadlock at simulated time 5 ms"), std::string::npos) << r;
+  EXPECT_NE(r.find("processor 0: blocked in recv on processor 1 since 2 ms"), std::string::npos) << r;
+  EXPECT_NE(r.find("processor 1: blocked in send to processor 0 since 3 ms"), std::string::npos) << r;
+  EXPECT_NE(r.find("processor 1 (thread 2): blocked in join since 0 ms"), std::string::npos) << r;
+}
+
+TEST(Activity, CompletesOnceAndWakesWhoeverWaits) {
+  detail::Activity a;
+  int woken = 0;
+  EXPECT_FALSE(a.test());
+  a.complete();  // nobody waits yet: only the state changes
+  EXPECT_TRUE(a.test());
+  detail::Activity b;
+  b.on_complete = [&] { ++woken; };
+  b.complete();
+  b.complete();  // a second completion is ignored
+  EXPECT_EQ(woken, 1);
+}
+
+TEST(Activity, ACancelledActivityIgnoresItsCompletion) {
+  detail::Activity a;
+  int woken = 0;
+  a.on_complete = [&] { ++woken; };
+  a.cancel();
+  a.complete();
+  EXPECT_EQ(a.state(), detail::Activity::State::cancelled);
+  EXPECT_FALSE(a.test());
+  EXPECT_EQ(woken, 0);
+}
+
+}  // namespace
+}  // namespace gcsim::parix
