@@ -1,10 +1,10 @@
-#include "apps/raytrace/triangle.hpp"
+#include "apps/common/geometry/triangle.hpp"
 
 #include <cmath>
 
-#include "apps/raytrace/float_util.hpp"
+#include "apps/common/geometry/float_util.hpp"
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 
 namespace {
 
@@ -73,4 +73,4 @@ bool intersect_triangle(const Triangle& tri, const Ray& ray, float tmax, float* 
   }
 }
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

@@ -1,12 +1,12 @@
-#include "apps/raytrace/bvh.hpp"
+#include "apps/common/geometry/bvh.hpp"
 
 #include <algorithm>
 #include <numeric>
 #include <functional>
 
-#include "apps/raytrace/scene.hpp"
+#include "apps/common/geometry/primitive_arrays.hpp"
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 namespace {
 
 constexpr std::size_t kClusterGroupSize = 2048;
@@ -104,13 +104,13 @@ int depth_of(const Bvh& bvh, NodeRef r) {
 
 int Bvh::depth() const { return depth_of(*this, root); }
 
-Bvh build_bvh_by_clustering(const Scene& scene) {
+Bvh build_bvh_by_clustering(const PrimitiveArrays& primitives) {
   Bvh bvh;
-  const int n = scene.prim_count();
+  const int n = primitives.prim_count();
   bvh.prim_bounds.resize(n);
   std::vector<glm::vec3> centroid(n);
   for (int i = 0; i < n; ++i) {
-    bvh.prim_bounds[i] = scene.prim_bounds(i);
+    bvh.prim_bounds[i] = primitives.prim_bounds(i);
     centroid[i] = bvh.prim_bounds[i].center();
   }
   Builder b;
@@ -140,4 +140,4 @@ Bvh build_bvh_by_clustering(const Scene& scene) {
   return bvh;
 }
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry
