@@ -20,7 +20,7 @@
 #include "apps/radiosity/gouraud_renderer.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "apps/radiosity/thesis_tables.hpp"
-#include "apps/radiosity/world_parser.hpp"
+#include "apps/common/scene/world_loader.hpp"
 
 namespace gcsim::cli {
 
