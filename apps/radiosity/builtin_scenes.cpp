@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "apps/radiosity/entity_builder.hpp"
-#include "apps/radiosity/world_parser.hpp"
+#include "apps/common/scene/world_loader.hpp"
 
 namespace gcsim::radiosity {
 

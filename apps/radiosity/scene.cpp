@@ -8,18 +8,6 @@
 
 namespace gcsim::radiosity {
 
-Vec3 Placement::apply(const Vec3& p0) const {
-  Vec3 p = p0 * scale;
-  auto rad = rotation_degrees * (std::numbers::pi / 180.0);
-  double c = std::cos(rad.x), s = std::sin(rad.x);
-  p = {p.x, c * p.y - s * p.z, s * p.y + c * p.z};
-  c = std::cos(rad.y), s = std::sin(rad.y);
-  p = {c * p.x + s * p.z, p.y, -s * p.x + c * p.z};
-  c = std::cos(rad.z), s = std::sin(rad.z);
-  p = {c * p.x - s * p.y, s * p.x + c * p.y, p.z};
-  return p + translation;
-}
-
 double Scene::extent() const {
   if (vertices.empty()) return 1.0;
   Vec3 lo = vertices[0], hi = vertices[0];

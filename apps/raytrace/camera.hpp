@@ -6,7 +6,8 @@
 
 #include <glm/glm.hpp>
 
-#include "apps/raytrace/ray.hpp"
+#include "apps/common/geometry/ray.hpp"
+#include "apps/raytrace/geometry_names.hpp"
 #include "apps/raytrace/scene.hpp"
 
 namespace gcsim::raytrace {

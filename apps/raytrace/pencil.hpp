@@ -17,7 +17,8 @@
 #include <glm/glm.hpp>
 
 #include "apps/raytrace/camera.hpp"
-#include "apps/raytrace/ray.hpp"
+#include "apps/common/geometry/ray.hpp"
+#include "apps/raytrace/geometry_names.hpp"
 #include "apps/raytrace/subtree.hpp"
 
 namespace gcsim::raytrace {

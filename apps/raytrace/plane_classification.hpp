@@ -2,9 +2,10 @@
 // Which side of a plane a box lies on: the flags of section 2.2.1 (inside, outside, crossing).
 #include <glm/glm.hpp>
 
-#include "apps/raytrace/float_util.hpp"
+#include "apps/common/geometry/float_util.hpp"
 
-#include "apps/raytrace/bounds.hpp"
+#include "apps/common/geometry/bounds.hpp"
+#include "apps/raytrace/geometry_names.hpp"
 #include "apps/raytrace/camera.hpp"
 
 namespace gcsim::raytrace {

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <optional>
 
-#include "apps/raytrace/traversal.hpp"
+#include "apps/common/geometry/traversal.hpp"
+#include "apps/raytrace/geometry_names.hpp"
 
 namespace gcsim::raytrace {
 

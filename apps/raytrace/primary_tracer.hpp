@@ -6,10 +6,11 @@
 #include <vector>
 
 #include "apps/raytrace/algorithm.hpp"
-#include "apps/raytrace/bvh.hpp"
+#include "apps/common/geometry/bvh.hpp"
 #include "apps/raytrace/camera.hpp"
 #include "apps/raytrace/counters.hpp"
-#include "apps/raytrace/hit.hpp"
+#include "apps/common/geometry/hit.hpp"
+#include "apps/raytrace/geometry_names.hpp"
 #include "apps/raytrace/ray_classification.hpp"
 #include "apps/raytrace/subtree.hpp"
 

@@ -10,11 +10,12 @@
 #include <memory>
 #include <vector>
 
-#include "apps/raytrace/bvh.hpp"
+#include "apps/common/geometry/bvh.hpp"
 #include "apps/raytrace/camera.hpp"
 #include "apps/raytrace/counters.hpp"
-#include "apps/raytrace/hit.hpp"
-#include "apps/raytrace/primitive_test.hpp"
+#include "apps/common/geometry/hit.hpp"
+#include "apps/common/geometry/primitive_test.hpp"
+#include "apps/raytrace/geometry_names.hpp"
 
 namespace gcsim::raytrace {
 

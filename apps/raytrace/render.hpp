@@ -5,7 +5,8 @@
 #include <vector>
 
 #include "apps/common/image.hpp"
-#include "apps/raytrace/bvh.hpp"
+#include "apps/common/geometry/bvh.hpp"
+#include "apps/raytrace/geometry_names.hpp"
 #include "apps/raytrace/counters.hpp"
 #include "apps/raytrace/render_settings.hpp"
 

@@ -3,7 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "apps/raytrace/float_util.hpp"
+#include "apps/common/geometry/float_util.hpp"
+#include "apps/raytrace/geometry_names.hpp"
 
 namespace gcsim::raytrace {
 

@@ -7,10 +7,13 @@
 
 #include <glm/glm.hpp>
 
-#include "apps/raytrace/bounds.hpp"
+#include "apps/common/geometry/bounds.hpp"
 #include "apps/raytrace/material.hpp"
-#include "apps/raytrace/sphere.hpp"
-#include "apps/raytrace/triangle.hpp"
+#include "apps/common/geometry/sphere.hpp"
+#include "apps/common/geometry/triangle.hpp"
+#include "apps/common/geometry/primitive_arrays.hpp"
+#include "apps/common/geometry/surface_point.hpp"
+#include "apps/raytrace/geometry_names.hpp"
 
 namespace gcsim::raytrace {
 
@@ -21,20 +24,9 @@ struct CameraSpec {
   float fov_degrees = 40.0f;  // vertical field of view
 };
 
-// Where a ray hit, what is needed to shade and spawn secondary rays.
-struct SurfacePoint {
-  glm::vec3 position{0.0f};
-  glm::vec3 position_error{0.0f};  // bound on the rounding error of position, per axis
-  glm::vec3 geometric_normal{0.0f};  // unit, facing the side the ray came from
-  glm::vec3 shading_normal{0.0f};    // unit, same side as geometric_normal
-  bool entering = true;              // the ray hit the front (outward) side
-};
-
-class Scene {
+class Scene : public PrimitiveArrays {
  public:
   std::string name;
-  std::vector<Sphere> spheres;
-  std::vector<Triangle> triangles;
   // Optional per-vertex normals of triangles (for smooth shading); empty or one per triangle.
   struct VertexNormals { glm::vec3 n0, n1, n2; };
   std::vector<VertexNormals> triangle_normals;
@@ -45,16 +37,9 @@ class Scene {
   glm::vec3 ambient{0.12f};
   CameraSpec camera;
 
-  int sphere_count() const { return static_cast<int>(spheres.size()); }
-  int prim_count() const { return static_cast<int>(spheres.size() + triangles.size()); }
-  bool is_sphere(int prim) const { return prim < sphere_count(); }
-  const Triangle& triangle(int prim) const { return triangles[prim - sphere_count()]; }
   const Material& material_of(int prim) const { return materials[prim_material[prim]]; }
   bool has_secondary_effects() const;
 
-  Bounds3 prim_bounds(int prim) const {
-    return is_sphere(prim) ? spheres[prim].bounds() : triangle(prim).bounds();
-  }
   Bounds3 bounds() const;
 
   // Adds primitives with a material (returns the material's index).

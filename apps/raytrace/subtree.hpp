@@ -14,7 +14,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "apps/raytrace/bvh.hpp"
+#include "apps/common/geometry/bvh.hpp"
+#include "apps/raytrace/geometry_names.hpp"
 #include "apps/raytrace/camera.hpp"
 #include "apps/raytrace/counters.hpp"
 #include "apps/raytrace/plane_classification.hpp"

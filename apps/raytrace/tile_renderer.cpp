@@ -3,8 +3,9 @@
 #include <cmath>
 
 #include "apps/raytrace/optics.hpp"
-#include "apps/raytrace/ray_offset.hpp"
-#include "apps/raytrace/traversal.hpp"
+#include "apps/common/geometry/ray_offset.hpp"
+#include "apps/common/geometry/traversal.hpp"
+#include "apps/raytrace/geometry_names.hpp"
 
 namespace gcsim::raytrace {
 

@@ -9,7 +9,8 @@
 
 #include <glm/glm.hpp>
 
-#include "apps/raytrace/bvh.hpp"
+#include "apps/common/geometry/bvh.hpp"
+#include "apps/raytrace/geometry_names.hpp"
 #include "apps/raytrace/camera.hpp"
 #include "apps/raytrace/counters.hpp"
 #include "apps/raytrace/pencil.hpp"

@@ -3,7 +3,8 @@
 // std::invalid_argument naming the record.
 #include <stdexcept>
 
-#include "apps/radiosity/world_parser.hpp"
+#include "apps/common/scene/world_loader.hpp"
+#include "apps/radiosity/scene.hpp"
 #include "tests/fuzz/fuzz_input.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "apps/raytrace/bvh.hpp"
+#include "apps/common/geometry/bvh.hpp"
 #include "apps/raytrace/obj_loader.hpp"
 #include "tests/fuzz/fuzz_input.hpp"
 

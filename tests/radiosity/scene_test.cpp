@@ -7,7 +7,7 @@
 
 #include "apps/radiosity/builtin_scenes.hpp"
 #include "apps/radiosity/progressive_solver.hpp"
-#include "apps/radiosity/world_parser.hpp"
+#include "apps/common/scene/world_loader.hpp"
 
 namespace gcsim::radiosity {
 namespace {

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "apps/common/rng.hpp"
-#include "apps/raytrace/bvh.hpp"
+#include "apps/common/geometry/bvh.hpp"
 #include "apps/raytrace/scene.hpp"
-#include "apps/raytrace/traversal.hpp"
+#include "apps/common/geometry/traversal.hpp"
 
 namespace gcsim::raytrace {
 namespace {

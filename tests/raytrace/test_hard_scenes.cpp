@@ -6,7 +6,8 @@
 #include "apps/raytrace/camera.hpp"
 #include "apps/raytrace/primary_tracer.hpp"
 #include "apps/raytrace/render.hpp"
-#include "apps/raytrace/traversal.hpp"
+#include "apps/common/geometry/traversal.hpp"
+#include "apps/raytrace/geometry_names.hpp"
 
 namespace gcsim::raytrace {
 namespace {

@@ -5,9 +5,10 @@
 #include <gtest/gtest.h>
 
 #include "apps/common/rng.hpp"
-#include "apps/raytrace/bounds.hpp"
-#include "apps/raytrace/sphere.hpp"
-#include "apps/raytrace/triangle.hpp"
+#include "apps/common/geometry/bounds.hpp"
+#include "apps/common/geometry/sphere.hpp"
+#include "apps/common/geometry/triangle.hpp"
+#include "apps/raytrace/geometry_names.hpp"
 
 namespace gcsim::raytrace {
 namespace {

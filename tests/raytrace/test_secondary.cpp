@@ -8,9 +8,10 @@
 #include "apps/raytrace/builtin_scenes.hpp"
 #include "apps/raytrace/optics.hpp"
 #include "apps/raytrace/pencil.hpp"
-#include "apps/raytrace/ray_offset.hpp"
+#include "apps/common/geometry/ray_offset.hpp"
 #include "apps/raytrace/render.hpp"
-#include "apps/raytrace/traversal.hpp"
+#include "apps/common/geometry/traversal.hpp"
+#include "apps/raytrace/geometry_names.hpp"
 
 namespace gcsim::raytrace {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "apps/radiosity/app/commands.hpp"
 #include "apps/radiosity/builtin_scenes.hpp"
-#include "apps/radiosity/world_parser.hpp"
+#include "apps/common/scene/world_loader.hpp"
 
 namespace gcsim::radiosity::app {
 

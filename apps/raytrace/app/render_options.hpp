@@ -5,7 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "apps/raytrace/bvh.hpp"
+#include "apps/common/geometry/bvh.hpp"
 #include "apps/raytrace/counters.hpp"
 #include "apps/raytrace/render_settings.hpp"
 #include "apps/raytrace/scene.hpp"

@@ -5,13 +5,13 @@
 #include <cstdint>
 #include <vector>
 
-#include "apps/raytrace/bounds.hpp"
-#include "apps/raytrace/packed_tree.hpp"
-#include "apps/raytrace/tree_node.hpp"
+#include "apps/common/geometry/bounds.hpp"
+#include "apps/common/geometry/packed_tree.hpp"
+#include "apps/common/geometry/tree_node.hpp"
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 
-class Scene;
+struct PrimitiveArrays;
 
 struct Bvh {
   std::vector<BvhNode> nodes;       // depth-first order, root first (when the root is a node)
@@ -26,6 +26,6 @@ struct Bvh {
 // common box has the least surface area (nearest-neighbour chains make this O(n^2)). Scenes with
 // more than a few thousand primitives are first split top-down at centroid medians into groups
 // that are clustered separately, which keeps large OBJ files tractable.
-Bvh build_bvh_by_clustering(const Scene& scene);
+Bvh build_bvh_by_clustering(const PrimitiveArrays& prims);
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

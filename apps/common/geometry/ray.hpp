@@ -6,9 +6,9 @@
 
 #include <glm/glm.hpp>
 
-#include "apps/raytrace/float_util.hpp"
+#include "apps/common/geometry/float_util.hpp"
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 
 struct Ray {
   glm::vec3 origin{0.0f};
@@ -41,4 +41,4 @@ struct Ray {
   }
 };
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

@@ -3,9 +3,9 @@
 // < 0 is the primitive ~ref. The same layout serves the whole tree and per-subregion subtrees.
 #include <cstdint>
 
-#include "apps/raytrace/bounds.hpp"
+#include "apps/common/geometry/bounds.hpp"
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 
 using NodeRef = std::int32_t;
 inline bool is_primitive(NodeRef r) { return r < 0; }
@@ -17,4 +17,4 @@ struct BvhNode {
   NodeRef child[2];
 };
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

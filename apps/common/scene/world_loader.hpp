@@ -9,9 +9,9 @@
 #include <string>
 #include <string_view>
 
-#include "apps/radiosity/scene.hpp"
+#include "apps/common/scene/world_format.hpp"
 
-namespace gcsim::radiosity {
+namespace gcsim::scene {
 
 // A malformed file: what() reads "FILE:LINE: MESSAGE".
 class ParseError : public std::runtime_error {
@@ -31,4 +31,13 @@ Entity parse_entity(std::string_view text, const std::string& file_name);
 std::string format_entity(const Entity& e);
 std::string format_world(const World& w, const std::vector<std::string>& entity_file_names);
 
+}  // namespace gcsim::scene
+
+namespace gcsim::radiosity {
+using scene::format_entity;
+using scene::format_world;
+using scene::load_world;
+using scene::parse_entity;
+using scene::parse_world;
+using scene::ParseError;
 }  // namespace gcsim::radiosity

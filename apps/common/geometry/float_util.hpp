@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 
 inline constexpr float kMachineEpsilon = std::numeric_limits<float>::epsilon() * 0.5f;
 inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
@@ -28,4 +28,4 @@ inline V abs_components(V v) {
 inline float next_float_up(float v) { return std::nextafter(v, kInfinity); }
 inline float next_float_down(float v) { return std::nextafter(v, -kInfinity); }
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

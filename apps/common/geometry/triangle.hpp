@@ -4,10 +4,10 @@
 // shared edge with bit-identical arithmetic and no ray slips through a crack.
 #include <glm/glm.hpp>
 
-#include "apps/raytrace/bounds.hpp"
-#include "apps/raytrace/ray.hpp"
+#include "apps/common/geometry/bounds.hpp"
+#include "apps/common/geometry/ray.hpp"
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 
 struct Triangle {
   glm::vec3 p0{0.0f}, p1{0.0f}, p2{0.0f};
@@ -25,4 +25,4 @@ struct Triangle {
 // Degenerate (zero-area) triangles are never hit.
 bool intersect_triangle(const Triangle& tri, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2);
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

@@ -1,6 +1,6 @@
-#include "apps/raytrace/packed_tree.hpp"
+#include "apps/common/geometry/packed_tree.hpp"
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 
 void pack_tree(const std::vector<BvhNode>& nodes, NodeRef root, bool empty, const std::vector<Bounds3>& prim_bounds,
                PackedTree& out) {
@@ -23,4 +23,4 @@ void pack_tree(const std::vector<BvhNode>& nodes, NodeRef root, bool empty, cons
   }
 }
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

@@ -1,12 +1,12 @@
-#include "apps/raytrace/triangle.hpp"
+#include "apps/common/geometry/triangle.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <type_traits>
 
-#include "apps/raytrace/float_util.hpp"
+#include "apps/common/geometry/float_util.hpp"
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 
 namespace {
 
@@ -100,4 +100,4 @@ bool intersect_triangle(const Triangle& tri, const Ray& ray, float tmax, float* 
   return intersect_in<double>(tri, ray, tmax, t_hit, b1, b2);
 }
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

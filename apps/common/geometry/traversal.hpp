@@ -5,17 +5,17 @@
 //  - ordered (A2, A3; section 2.2.2): children are visited nearest-entry first, and a child whose
 //    box starts beyond the nearest hit found so far is pruned (figure 3).
 // A primitive child is tested directly; only node children cost a box test.
-#include "apps/raytrace/hit.hpp"
-#include "apps/raytrace/packed_tree.hpp"
-#include "apps/raytrace/primitive_test.hpp"
+#include "apps/common/geometry/hit.hpp"
+#include "apps/common/geometry/packed_tree.hpp"
+#include "apps/common/geometry/primitive_test.hpp"
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 
-void traverse_unordered(const Scene& scene, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally);
-void traverse_ordered(const Scene& scene, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally);
+void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally);
+void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally);
 // True if any primitive is hit with tmin < t < tmax (shadow rays); stops at the first.
-bool traverse_any_hit(const Scene& scene, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally);
+bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally);
 // Every primitive, no tree: the reference the tests compare with.
-void intersect_brute_force(const Scene& scene, const Ray& ray, Hit& hit, TestTally& tally);
+void intersect_brute_force(const PrimitiveArrays& prims, const Ray& ray, Hit& hit, TestTally& tally);
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

@@ -1,19 +1,34 @@
-#include "apps/radiosity/world_parser.hpp"
+#include "apps/common/scene/world_loader.hpp"
 
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <sstream>
 #include <vector>
 
 #include <fmt/format.h>
 
-namespace gcsim::radiosity {
+namespace gcsim::scene {
+
+using namespace gcsim::geometry;  // the double-precision polygons the area checks use
 
 ParseError::ParseError(std::string f, int l, const std::string& m)
     : std::runtime_error(fmt::format("{}:{}: {}", f, l, m)), file(std::move(f)), line(l), message(m) {}
+
+Vec3 Placement::apply(const Vec3& p0) const {
+  Vec3 p = p0 * scale;
+  auto rad = rotation_degrees * (std::numbers::pi / 180.0);
+  double c = std::cos(rad.x), s = std::sin(rad.x);
+  p = {p.x, c * p.y - s * p.z, s * p.y + c * p.z};
+  c = std::cos(rad.y), s = std::sin(rad.y);
+  p = {c * p.x + s * p.z, p.y, -s * p.x + c * p.z};
+  c = std::cos(rad.z), s = std::sin(rad.z);
+  p = {c * p.x - s * p.y, s * p.x + c * p.y, p.z};
+  return p + translation;
+}
 
 namespace {
 
@@ -233,7 +248,7 @@ World parse_world(std::string_view text, const std::string& file, const std::fil
       continue;
     }
     if (c.accept("CAMERA")) {
-      Camera cam;
+      WorldCamera cam;
       cam.eye = c.triple('<', '>', "camera eye");
       cam.target = c.triple('<', '>', "camera target");
       cam.up = c.triple('<', '>', "camera up vector");
@@ -318,4 +333,4 @@ std::string format_world(const World& w, const std::vector<std::string>& files) 
   return s + "END_FILE\n";
 }
 
-}  // namespace gcsim::radiosity
+}  // namespace gcsim::scene

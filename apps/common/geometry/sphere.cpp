@@ -1,8 +1,8 @@
-#include "apps/raytrace/sphere.hpp"
+#include "apps/common/geometry/sphere.hpp"
 
 #include <cmath>
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 
 bool intersect_sphere(const Sphere& s, const Ray& ray, float tmax, float* t_hit) {
   const glm::dvec3 d(ray.direction);
@@ -25,4 +25,4 @@ bool intersect_sphere(const Sphere& s, const Ray& ray, float tmax, float* t_hit)
   return *t_hit > ray.tmin && *t_hit <= tmax;
 }
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

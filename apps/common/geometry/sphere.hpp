@@ -4,10 +4,10 @@
 // starting far away (a textbook b^2 - 4ac cancels catastrophically there).
 #include <glm/glm.hpp>
 
-#include "apps/raytrace/bounds.hpp"
-#include "apps/raytrace/ray.hpp"
+#include "apps/common/geometry/bounds.hpp"
+#include "apps/common/geometry/ray.hpp"
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 
 struct Sphere {
   glm::vec3 center{0.0f};
@@ -22,4 +22,4 @@ struct Sphere {
 // The smallest root t with ray.tmin < t <= tmax, if any.
 bool intersect_sphere(const Sphere& s, const Ray& ray, float tmax, float* t_hit);
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

@@ -1,4 +1,4 @@
-#include "apps/raytrace/traversal.hpp"
+#include "apps/common/geometry/traversal.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <immintrin.h>
 #endif
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 namespace {
 
 constexpr int kStackSize = 256;  // clustered trees of the built-in scenes are < 64 deep
@@ -102,17 +102,17 @@ bool walk_depth_first(const PackedTree& tree, const Ray& ray, float tmax, TestTa
 
 }  // namespace
 
-void traverse_unordered(const Scene& scene, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
   walk_depth_first(tree, ray, kInfinity, tally, [&](int p) {
-    test_primitive(scene, p, ray, hit, tally);
+    test_primitive(prims, p, ray, hit, tally);
     return false;
   });
 }
 
-void traverse_ordered(const Scene& scene, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
   if (tree.empty) return;
   if (is_primitive(tree.root)) {
-    test_primitive(scene, primitive_of(tree.root), ray, hit, tally);
+    test_primitive(prims, primitive_of(tree.root), ray, hit, tally);
     return;
   }
   struct Entry { NodeRef node; float entry; };
@@ -131,8 +131,8 @@ void traverse_ordered(const Scene& scene, const PackedTree& tree, const Ray& ray
     int count = 0;
     // Primitive children first: their hits tighten the distance the boxes are tested against.
     const bool prim0 = is_primitive(n.child[0]), prim1 = is_primitive(n.child[1]);
-    if (prim0) test_primitive(scene, primitive_of(n.child[0]), ray, hit, tally);
-    if (prim1) test_primitive(scene, primitive_of(n.child[1]), ray, hit, tally);
+    if (prim0) test_primitive(prims, primitive_of(n.child[0]), ray, hit, tally);
+    if (prim1) test_primitive(prims, primitive_of(n.child[1]), ray, hit, tally);
     if (!(prim0 && prim1)) {
       float entries[2];
       const unsigned mask = both_children(n, slab, ray.tmin, hit.t, entries);
@@ -155,12 +155,12 @@ void traverse_ordered(const Scene& scene, const PackedTree& tree, const Ray& ray
   }
 }
 
-bool traverse_any_hit(const Scene& scene, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally) {
-  return walk_depth_first(tree, ray, tmax, tally, [&](int p) { return occludes(scene, p, ray, tmax, tally); });
+bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally) {
+  return walk_depth_first(tree, ray, tmax, tally, [&](int p) { return occludes(prims, p, ray, tmax, tally); });
 }
 
-void intersect_brute_force(const Scene& scene, const Ray& ray, Hit& hit, TestTally& tally) {
-  for (int p = 0; p < scene.prim_count(); ++p) test_primitive(scene, p, ray, hit, tally);
+void intersect_brute_force(const PrimitiveArrays& prims, const Ray& ray, Hit& hit, TestTally& tally) {
+  for (int p = 0; p < prims.prim_count(); ++p) test_primitive(prims, p, ray, hit, tally);
 }
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

@@ -1,12 +1,12 @@
-#include "apps/raytrace/bvh.hpp"
+#include "apps/common/geometry/bvh.hpp"
 
 #include <algorithm>
 #include <numeric>
 #include <functional>
 
-#include "apps/raytrace/scene.hpp"
+#include "apps/common/geometry/primitive_arrays.hpp"
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 namespace {
 
 constexpr std::size_t kClusterGroupSize = 2048;
@@ -132,13 +132,13 @@ bool float_areas_suffice(const std::vector<Bounds3>& prim_bounds) {
 
 int Bvh::depth() const { return depth_of(*this, root); }
 
-Bvh build_bvh_by_clustering(const Scene& scene) {
+Bvh build_bvh_by_clustering(const PrimitiveArrays& primitives) {
   Bvh bvh;
-  const int n = scene.prim_count();
+  const int n = primitives.prim_count();
   bvh.prim_bounds.resize(n);
   std::vector<glm::vec3> centroid(n);
   for (int i = 0; i < n; ++i) {
-    bvh.prim_bounds[i] = scene.prim_bounds(i);
+    bvh.prim_bounds[i] = primitives.prim_bounds(i);
     // Halves first: lo + hi overflows for boxes near FLT_MAX; halving is exact otherwise.
     centroid[i] = 0.5f * bvh.prim_bounds[i].lo + 0.5f * bvh.prim_bounds[i].hi;
   }
@@ -170,4 +170,4 @@ Bvh build_bvh_by_clustering(const Scene& scene) {
   return bvh;
 }
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

@@ -6,10 +6,10 @@
 
 #include <glm/glm.hpp>
 
-#include "apps/raytrace/float_util.hpp"
-#include "apps/raytrace/ray.hpp"
+#include "apps/common/geometry/float_util.hpp"
+#include "apps/common/geometry/ray.hpp"
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 
 struct Bounds3 {
   glm::vec3 lo{kInfinity};
@@ -69,4 +69,4 @@ inline bool intersect_box(const Bounds3& b, const Ray& r, float tmax, float* ent
   return true;
 }
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "apps/raytrace/tree_node.hpp"
+#include "apps/common/geometry/tree_node.hpp"
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 
 struct alignas(64) PairNode {
   float bounds[3][4];  // [axis][lo child 0, lo child 1, hi child 0, hi child 1]
@@ -25,4 +25,4 @@ struct PackedTree {
 void pack_tree(const std::vector<BvhNode>& nodes, NodeRef root, bool empty, const std::vector<Bounds3>& prim_bounds,
                PackedTree& out);
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

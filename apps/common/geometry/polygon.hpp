@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-namespace gcsim::radiosity {
+namespace gcsim::geometry {
 
 using Vec3 = glm::dvec3;
 using Rgb = glm::dvec3;
@@ -60,4 +60,4 @@ struct Frame {
 
 inline double channel_sum(const Rgb& c) { return c.r + c.g + c.b; }
 
-}  // namespace gcsim::radiosity
+}  // namespace gcsim::geometry

@@ -4,10 +4,10 @@
 // new ray goes, and then one more ulp outwards (the addition itself rounds).
 #include <glm/glm.hpp>
 
-#include "apps/raytrace/float_util.hpp"
-#include "apps/raytrace/scene.hpp"
+#include "apps/common/geometry/float_util.hpp"
+#include "apps/common/geometry/surface_point.hpp"
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 
 inline glm::vec3 offset_ray_origin(const SurfacePoint& sp, glm::vec3 direction) {
   const glm::vec3 n = sp.geometric_normal;
@@ -22,4 +22,4 @@ inline glm::vec3 offset_ray_origin(const SurfacePoint& sp, glm::vec3 direction) 
   return p;
 }
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

@@ -4,9 +4,9 @@
 // force, report the same primitive.
 #include <cstdint>
 
-#include "apps/raytrace/float_util.hpp"
+#include "apps/common/geometry/float_util.hpp"
 
-namespace gcsim::raytrace {
+namespace gcsim::geometry {
 
 struct Hit {
   float t = kInfinity;
@@ -18,4 +18,4 @@ struct Hit {
   bool improved_by(float t_new, std::int32_t id) const { return t_new < t || (t_new == t && id < prim); }
 };
 
-}  // namespace gcsim::raytrace
+}  // namespace gcsim::geometry

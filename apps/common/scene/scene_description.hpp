@@ -1,0 +1,102 @@
+#pragma once
+// The scene description every renderer reads, in double precision (as pbrt separates the parsed
+// scene from its primitives): shapes with a material each, lights, one camera and the image.
+// Radiosity lowers it to its patch/element mesh, the ray tracer to float primitive arrays, the
+// media renderer to its volumes. Loaders (WORLD/ENTITY, OBJ, built-ins) build it.
+#include <array>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "apps/common/scene/triangle_mesh.hpp"
+
+namespace gcsim::scene {
+
+using Rgb = glm::dvec3;
+
+// A participating medium inside a closed bounding surface (the shape that carries the material).
+enum class PhaseKind { isotropic, henyey_greenstein };
+struct Medium {
+  Rgb sigma_s{0.0};  // scattering coefficient, per unit length
+  Rgb sigma_a{0.0};  // absorption coefficient, per unit length
+  PhaseKind phase = PhaseKind::isotropic;
+  double phase_g = 0.0;  // Henyey-Greenstein asymmetry in (-1, 1)
+  double boundary_ior = 1.0;  // index of the bounding surface (1: no refraction at the boundary)
+};
+
+struct Material {
+  std::string name;
+  Rgb diffuse{0.8};     // reflectance rho per channel, in [0, 1)
+  Rgb emission{0.0};    // self-emitted exitance: a shape with it is an area light
+  double specular = 0.0, shininess = 32.0;  // Phong highlight (ray tracing)
+  double mirror = 0.0;  // mirror weight
+  double transmittance = 0.0;  // > 0: glass refracting with index ior
+  double ior = 1.5;
+  std::optional<Rgb> checker_other;  // second checkerboard colour
+  double checker_size = 1.0;
+  std::optional<Medium> medium;  // the shape bounds a participating medium
+};
+
+// A planar convex polygon of 3 or 4 vertices (radiosity's patches, subdivided into elements).
+struct Polygon {
+  std::array<glm::dvec3, 4> vertex{};
+  int count = 4;
+  int element_rows = 1, element_columns = 1;  // elements per patch, for radiosity
+};
+struct Sphere {
+  glm::dvec3 center{0.0};
+  double radius = 1.0;
+};
+struct Box {
+  glm::dvec3 lo{0.0}, hi{1.0};
+};
+struct Mesh {
+  TriangleMesh mesh;
+  std::vector<std::array<glm::dvec3, 3>> vertex_normals;  // empty, or one triple per triangle
+};
+
+struct Shape {
+  std::variant<Polygon, Sphere, Box, Mesh> geometry;
+  int material = 0;  // index into SceneDescription::materials
+};
+
+struct PointLight {
+  glm::dvec3 position{0.0};
+  Rgb intensity{1.0};  // radiant intensity; falls off with the square of the distance
+};
+struct SpotLight {
+  glm::dvec3 position{0.0}, direction{0.0, -1.0, 0.0};
+  Rgb intensity{1.0};
+  double cone_degrees = 30.0;  // half-angle of the cone
+};
+using Light = std::variant<PointLight, SpotLight>;  // area lights are shapes with emission
+
+struct Camera {
+  glm::dvec3 eye{0.0, 0.0, 5.0}, look_at{0.0}, up{0.0, 1.0, 0.0};
+  double fov_y_degrees = 40.0;
+};
+
+struct ImageSettings {
+  int width = 512, height = 512;
+  Rgb background{0.05, 0.06, 0.09};
+  Rgb ambient{0.12};
+};
+
+struct SceneDescription {
+  std::string name;
+  std::vector<Material> materials;
+  std::vector<Shape> shapes;
+  std::vector<Light> lights;
+  std::optional<Camera> camera;  // none: each renderer frames the scene itself
+  ImageSettings image;
+
+  int add_material(const Material& m) {
+    materials.push_back(m);
+    return static_cast<int>(materials.size()) - 1;
+  }
+};
+
+}  // namespace gcsim::scene
