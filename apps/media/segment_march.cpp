@@ -41,7 +41,10 @@ double march_segment_in_scatter(const SegmentQuery& q, const MarchSettings& s,
   if (s.estimator == Estimator::radiance || s.estimator == Estimator::mis || s.estimator == Estimator::grid) {
     RayHistogram h = q.grid->histogram(q.origin, q.direction, 0.0, q.length);
     counters.sh_evals += h.values.size();
-    if (h.values.empty()) h = {{0.0, q.length}, {0.0}};  // segment outside the grid: h = 0
+    // Where the segment leaves the grid, h = 0 (the defensive mixture still samples there).
+    if (h.values.empty()) h = {{0.0, q.length}, {0.0}};
+    if (h.edges.front() > 0.0) h.edges.insert(h.edges.begin(), 0.0), h.values.insert(h.values.begin(), 0.0);
+    if (h.edges.back() < q.length) h.edges.push_back(q.length), h.values.push_back(0.0);
     h.edges.front() = 0.0, h.edges.back() = q.length;
     hist = std::make_unique<HistogramDistance>(seg, h.edges, h.values, s.defensive_alpha);
   }
