@@ -32,5 +32,8 @@ void add_raytrace_commands(CommandGroups& g);
 #ifdef GCSIM_HAVE_TRACE_COMMANDS
 void add_trace_commands(CommandGroups& g);
 #endif
+#ifdef GCSIM_HAVE_MEDIA_COMMANDS
+void add_media_commands(CommandGroups& g);  // in apps/media/commands.cpp
+#endif
 
 }  // namespace gcsim::cli

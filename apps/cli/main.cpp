@@ -87,6 +87,9 @@ int main(int argc, char** argv) {
 #ifdef GCSIM_HAVE_TRACE_COMMANDS
   cli::add_trace_commands(g);
 #endif
+#ifdef GCSIM_HAVE_MEDIA_COMMANDS
+  cli::add_media_commands(g);
+#endif
   summarize_descriptions(&app);
   // Verbs that no command family filled in are hidden rather than offered empty.
   for (CLI::App* verb : {g.run, g.sweep, g.table, g.accuracy, g.bench, g.scene}) {

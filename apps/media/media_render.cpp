@@ -41,7 +41,7 @@ double render_pixel(const MediaScene& scene, const SceneCaches& caches, const Ma
       const glm::dvec3 start = o + t0 * d;
       auto li = [&](const glm::dvec3& p) { return region.map->in_scattered(p, -d, m, scene.k_nearest); };
       SegmentQuery q{start, d, t1 - t0, &m, region.grid.get(), std::nullopt};
-      if (!inside) q.light = scene.light;
+      if (!inside && !scene.area_light) q.light = scene.light;  // equiangular needs a point light
       radiance += throughput * march_segment_in_scatter(q, settings, li, rng, counters.march);
     }
     throughput *= transmittance(m.sigma_t, std::max(0.0, t1 - t0));

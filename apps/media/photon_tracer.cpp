@@ -19,15 +19,32 @@ glm::dvec3 cross_boundary(const BoundaryHit& hit, const glm::dvec3& d, double io
   return refracted ? *refracted : reflect_direction(d, hit.normal);
 }
 
+// A photon leaving the point light (uniform directions) or the directional disk light: a uniform point
+// on the disk, a direction with density ∝ cos^n θ (inverse CDF: cos θ = ξ^{1/(n+1)}) [radiance ∝ cos^{n−1}].
+void emit_photon(const MediaScene& scene, apps::Rng& rng, glm::dvec3& x, glm::dvec3& w) {
+  if (!scene.area_light) {
+    x = scene.light.position;
+    w = uniform_sphere(rng.uniform_double(), rng.uniform_double());
+    return;
+  }
+  const DirectionalAreaLight& l = *scene.area_light;
+  glm::dvec3 b1, b2;
+  orthonormal_basis(l.normal, b1, b2);
+  const double r = l.radius * std::sqrt(rng.uniform_double()), phi = 2.0 * kPi * rng.uniform_double();
+  x = l.centre + r * std::cos(phi) * b1 + r * std::sin(phi) * b2;
+  w = direction_around(l.normal, std::pow(rng.uniform_double(), 1.0 / (l.exponent + 1.0)), rng.uniform_double());
+}
+
 }  // namespace
 
 PhotonPassResult trace_photons(const MediaScene& scene, std::size_t first, std::size_t last) {
   PhotonPassResult out;
-  const auto power = static_cast<float>(4.0 * kPi * scene.light.intensity / double(scene.photons_emitted));
+  const double flux = scene.area_light ? scene.area_light->power : 4.0 * kPi * scene.light.intensity;
+  const auto power = static_cast<float>(flux / double(scene.photons_emitted));
   for (std::size_t i = first; i < last; ++i) {
     apps::Rng rng(scene.seed, 0x70686f746f6eULL + i);
-    glm::dvec3 x = scene.light.position;
-    glm::dvec3 w = uniform_sphere(rng.uniform_double(), rng.uniform_double());
+    glm::dvec3 x, w;
+    emit_photon(scene, rng, x, w);
     bool inside = scene.object && scene.object->inside(x);
     int events = 0;
     for (; events < scene.max_photon_events; ++events) {

@@ -1,5 +1,6 @@
 #pragma once
-// The photon pass of a scene (Jensen style; paper section 2): photons leave the point light uniformly,
+// The photon pass of a scene (Jensen style; paper section 2): photons leave the point light uniformly
+// (or the directional disk light, see emit_photon),
 // fly by transmittance sampling in the medium they are in, reflect or refract at the dielectric
 // boundary by Russian roulette on the Fresnel reflectance (total internal reflection included), and are
 // stored at every medium interaction before the albedo roulette [A4], in the inside or outside map.
