@@ -1,0 +1,28 @@
+#pragma once
+// The ray-marching renderer (paper section 3): camera paths through the outside fog and, via Fresnel
+// reflection/refraction chosen by Russian roulette, through the object; each homogeneous segment is
+// one call of march_segment_in_scatter. Pixel p draws from its own random stream (seed, p), so the
+// image does not depend on how the pixels are split over tiles or nodes.
+#include <cstdint>
+
+#include "apps/common/image.hpp"
+#include "apps/media/scene_caches.hpp"
+#include "apps/media/segment_march.hpp"
+
+namespace gcsim::media {
+
+struct RenderCounters {
+  MarchCounters march;
+  std::uint64_t surface_events = 0, pixels = 0;
+  void add(const RenderCounters& o) { march.add(o.march), surface_events += o.surface_events, pixels += o.pixels; }
+};
+
+// Radiance (luminance) of pixel (x, y), row 0 at the top.
+double render_pixel(const MediaScene& scene, const SceneCaches& caches, const MarchSettings& settings,
+                    std::uint64_t seed, int x, int y, RenderCounters& counters);
+
+// Rows [y0, y1) of the image into `image` (already sized).
+void render_rows(const MediaScene& scene, const SceneCaches& caches, const MarchSettings& settings,
+                 std::uint64_t seed, int y0, int y1, apps::Image& image, RenderCounters& counters);
+
+}  // namespace gcsim::media

@@ -1,0 +1,60 @@
+#include "apps/media/media_scene.hpp"
+
+#include <stdexcept>
+
+namespace gcsim::media {
+
+MediaScene small_scene() {
+  MediaScene s;
+  s.name = "small";
+  s.fog_box = {{-2, -1.5, -2}, {2, 1.5, 2}, {1, 1, 1}};
+  s.outside = {1.0, 0.3, 0.0, Phase::isotropic()};          // experiment 1's outside medium
+  s.inside = {8.0, 6.4, 0.0, Phase::schlick(0.5)};         // a thinner, bright version of its inside
+  s.object = std::make_shared<SphereBoundary>(glm::dvec3(0.0, -0.2, 0.3), 0.8);
+  s.light = {{-1.2, 1.0, -0.6}, 3.0};
+  s.camera = {{0, 0.2, -3.9}, {0, -0.1, 0}, {0, 1, 0}, 50.0, 64, 48};
+  return s;
+}
+
+namespace {
+constexpr double kLuminanceOfExp1Sigma = 0.2126 * 0.8 + 0.7152 * 0.9 + 0.0722 * 0.8;  // 0.87152
+}
+
+MediaScene experiment1_scene(Exp1Reading reading) {
+  MediaScene s;
+  s.name = reading == Exp1Reading::albedo ? "exp1" : "exp1-literal";
+  s.fog_box = {{-3, -2, -3}, {3, 2, 4}, {1, 1, 1}};
+  s.outside = {1.0, 0.3, 0.0, Phase::isotropic()};
+  const double sigma_s = reading == Exp1Reading::albedo ? kLuminanceOfExp1Sigma * 50.0 : kLuminanceOfExp1Sigma;
+  s.inside = {50.0, sigma_s, 0.0, Phase::schlick(0.5)};
+  s.object = std::make_shared<SphereBoundary>(glm::dvec3(0.0, -0.4, 0.5), 1.1);
+  s.light = {{-1.5, 1.4, -0.5}, 4.0};
+  s.camera = {{0, 0.3, -2.9}, {0, -0.3, 0.5}, {0, 1, 0}, 55.0, 640, 480};
+  s.photons_emitted = 100000;
+  s.k_nearest = 100;
+  return s;
+}
+
+MediaScene experiment2_scene() {
+  MediaScene s;
+  s.name = "exp2";
+  s.fog_box = {{-3, -2, -3}, {3, 2, 4}, {1, 1, 1}};
+  s.outside = {1.0, 1.0, 0.0, Phase::isotropic()};
+  s.inside = {200.0, 120.0, 0.0, Phase::schlick(0.6)};
+  s.object = std::make_shared<SphereBoundary>(glm::dvec3(0.0, -0.4, 0.5), 1.1);
+  s.area_light = DirectionalAreaLight{{0.0, 1.9, 0.5}, {0.0, -1.0, 0.0}, 0.5, 50.0, 40.0};
+  s.camera = {{0, 0.3, -2.9}, {0, -0.3, 0.5}, {0, 1, 0}, 55.0, 640, 480};
+  s.photons_emitted = 100000;
+  s.k_nearest = 100;
+  return s;
+}
+
+MediaScene scene_by_name(const std::string& name) {
+  if (name == "small") return small_scene();
+  if (name == "exp1") return experiment1_scene(Exp1Reading::albedo);
+  if (name == "exp1-literal") return experiment1_scene(Exp1Reading::literal);
+  if (name == "exp2") return experiment2_scene();
+  throw std::invalid_argument("media scene '" + name + "': expected small, exp1, exp1-literal or exp2");
+}
+
+}  // namespace gcsim::media

@@ -1,0 +1,29 @@
+#pragma once
+// The media renderer on the simulated GC (parix): photons traced in parallel (photon i on its own
+// random stream, so any split gives the same photons), the photon maps replicated by all-gather, the
+// SH grids built voxel-slice by voxel-slice and all-gathered, image rows interleaved over the nodes
+// and gathered on node 0. Compute is charged from counted operations ([ops] media_* in the machine file).
+#include <cstdint>
+
+#include "apps/common/image.hpp"
+#include "apps/media/media_render.hpp"
+#include "parix/run_result.hpp"
+#include "parix/simulated_runtime.hpp"
+
+namespace gcsim::media {
+
+struct ParallelMediaResult {
+  parix::RunResult run;
+  apps::Image image;
+  RenderCounters counters;            // summed over the nodes
+  std::uint64_t photon_bytes = 0;     // one node's photon contribution to the all-gather (node 0)
+  std::uint64_t photon_bytes_all = 0; // the whole replicated photon maps, per node
+  std::uint64_t grid_bytes_all = 0;   // the whole SH grids (inside + outside), per node
+  std::size_t outside_photons = 0, inside_photons = 0;
+  glm::ivec3 outside_dims{0}, inside_dims{0};
+};
+
+ParallelMediaResult render_media_parallel(const MediaScene& scene, const MarchSettings& settings, std::uint64_t seed,
+                                          const parix::SimulationOptions& sim);
+
+}  // namespace gcsim::media

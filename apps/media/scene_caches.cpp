@@ -1,0 +1,41 @@
+#include "apps/media/scene_caches.hpp"
+
+#include <algorithm>
+
+namespace gcsim::media {
+
+UniformGrid grid_for_photons(const std::vector<Photon>& photons, std::size_t k) {
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const Photon& p : photons) {
+    lo = glm::min(lo, glm::dvec3(p.position));
+    hi = glm::max(hi, glm::dvec3(p.position));
+  }
+  const glm::dvec3 pad = 1e-6 * glm::max(hi - lo, glm::dvec3(1.0));
+  lo -= pad, hi += pad;
+  return {lo, hi, radiance_grid_dims(lo, hi, photons.size(), k)};
+}
+
+namespace {
+
+RegionCache build_region(std::vector<Photon> photons, const HomogeneousMedium& medium, std::size_t k,
+                         SceneCaches& totals) {
+  RegionCache region;
+  if (photons.empty()) return region;
+  const UniformGrid grid = grid_for_photons(photons, k);
+  region.map = std::make_unique<PhotonMap>(std::move(photons));
+  region.grid = std::make_unique<RadianceGrid>(grid, *region.map, medium, k);
+  totals.knn_lookups += grid.voxel_count();
+  totals.sh_photon_adds += region.grid->photon_adds();
+  return region;
+}
+
+}  // namespace
+
+SceneCaches build_caches(const MediaScene& scene, PhotonPassResult photons) {
+  SceneCaches caches;
+  caches.outside = build_region(std::move(photons.outside), scene.outside, scene.k_nearest, caches);
+  caches.inside = build_region(std::move(photons.inside), scene.inside, scene.k_nearest, caches);
+  return caches;
+}
+
+}  // namespace gcsim::media

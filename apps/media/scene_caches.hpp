@@ -1,0 +1,28 @@
+#pragma once
+// What the photon pass leaves for rendering: a photon map and an SH radiance grid per medium region
+// (inside and outside are separate, paper section 3.1), each grid over its photons' bounding box with
+// n = a N / k voxels (eqs. 12–13).
+#include <memory>
+
+#include "apps/media/media_scene.hpp"
+#include "apps/media/photon_tracer.hpp"
+#include "apps/media/radiance_grid.hpp"
+
+namespace gcsim::media {
+
+struct RegionCache {
+  std::unique_ptr<PhotonMap> map;      // null when no photon was stored in the region
+  std::unique_ptr<RadianceGrid> grid;
+};
+
+struct SceneCaches {
+  RegionCache outside, inside;
+  std::uint64_t knn_lookups = 0, sh_photon_adds = 0;  // spent building the grids
+};
+
+// The grid geometry for a photon set: its bounding box (slightly padded) and eq. (12–13) dimensions.
+UniformGrid grid_for_photons(const std::vector<Photon>& photons, std::size_t k);
+
+SceneCaches build_caches(const MediaScene& scene, PhotonPassResult photons);
+
+}  // namespace gcsim::media

@@ -1,0 +1,45 @@
+#pragma once
+// One homogeneous segment of a camera ray (eq. 6 and its variants): the radiance it adds,
+//   L = σa S Le + σs I + e^{−Δx σt} L(x_{k+1}),  I = ∫_0^{Δx} e^{−σt t} Li(t) dt,
+// with I estimated by the chosen distance estimator from M = b·S (eq. 21) or b·S_h (eq. 22) samples,
+// rounded stochastically [A12]. Li comes from the photon map (eq. 4); the histogram from the SH grid.
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+#include "apps/common/rng.hpp"
+#include "apps/media/estimator.hpp"
+#include "apps/media/medium.hpp"
+#include "apps/media/radiance_grid.hpp"
+#include "apps/media/single_scattering.hpp"
+
+namespace gcsim::media {
+
+struct MarchSettings {
+  Estimator estimator = Estimator::radiance;
+  double b = 16.0;                  // samples per unit of S (eq. 21)
+  double b_histogram = 0.0;         // > 0: radiance IS takes M = b_h S_h (eq. 22); else M = b S
+  double defensive_alpha = 0.1;     // transmittance share of the radiance density [A11]
+};
+
+struct MarchCounters {
+  std::uint64_t samples = 0;       // Li evaluations (each a k-NN lookup)
+  std::uint64_t sh_evals = 0;      // histogram bins reconstructed (16-term dot products)
+  std::uint64_t segments = 0;
+  void add(const MarchCounters& o) { samples += o.samples, sh_evals += o.sh_evals, segments += o.segments; }
+};
+
+struct SegmentQuery {
+  glm::dvec3 origin, direction;  // the segment is origin + t direction, t in [0, length]
+  double length;
+  const HomogeneousMedium* medium;
+  const RadianceGrid* grid;            // needed by radiance, mis and grid
+  std::optional<PointLight> light;     // needed by equiangular (and used by mis)
+};
+
+// The in-scattered part σs I (without emission and the transmitted background) of one segment.
+double march_segment_in_scatter(const SegmentQuery& q, const MarchSettings& s,
+                                const std::function<double(const glm::dvec3&)>& li, apps::Rng& rng,
+                                MarchCounters& counters);
+
+}  // namespace gcsim::media

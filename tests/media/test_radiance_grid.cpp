@@ -1,0 +1,74 @@
+// The SH radiance grid: sizes of eqs. (12–13), voxels equal to the SH projection of the k-NN estimate,
+// histograms along rays.
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include "apps/media/photon_tracer_infinite.hpp"
+#include "apps/media/radiance_grid.hpp"
+#include "tests/media/quadrature.hpp"
+
+namespace gcsim::media {
+namespace {
+
+TEST(RadianceGrid, DimensionsFollowEquationsTwelveAndThirteen) {
+  // A cube: n = a N / k split evenly; a 1×2×4 box keeps the aspect ratio.
+  EXPECT_EQ(radiance_grid_dims({0, 0, 0}, {1, 1, 1}, 100000, 100), glm::ivec3(50));  // 125000 = 50³
+  glm::ivec3 d = radiance_grid_dims({0, 0, 0}, {1, 2, 4}, 100000, 125);             // n = 100000
+  EXPECT_EQ(d, glm::ivec3(23, 46, 93));
+  EXPECT_NEAR(double(d.x) * d.y * d.z, 100000.0, 0.03 * 100000.0);
+  EXPECT_EQ(radiance_grid_dims({0, 0, 0}, {1, 1, 1}, 10, 100), glm::ivec3(2));  // cbrt(12.5) → 2
+  EXPECT_THROW(radiance_grid_dims({0, 0, 0}, {1, 0, 1}, 10, 10), std::invalid_argument);
+}
+
+TEST(RadianceGrid, VoxelsAreTheShProjectionOfTheKnnEstimate) {
+  HomogeneousMedium m{1.0, 0.8, 0.0, Phase::henyey_greenstein(0.4)};
+  auto traced = trace_point_light_infinite(m, glm::dvec3(0), 5.0, 20000, 8, 3);
+  PhotonMap map(std::move(traced.photons));
+  UniformGrid g{{-1, -1, -1}, {1, 1, 1}, {3, 3, 3}};
+  const std::size_t k = 50;
+  RadianceGrid grid(g, map, m, k);
+  EXPECT_EQ(grid.photon_adds(), 27u * k);
+  for (glm::ivec3 c : {glm::ivec3(0, 0, 0), glm::ivec3(1, 1, 1), glm::ivec3(2, 0, 1)}) {
+    const glm::dvec3 x = g.cell_center(c);
+    // Project Li(x, ω) of eq. (4) on the SH basis by quadrature over the sphere.
+    std::vector<double> z, w;
+    testing::gauss_legendre(96, z, w);
+    ShBasis ref{};
+    for (int i = 0; i < 96; ++i) {
+      double r = std::sqrt(1 - z[i] * z[i]);
+      for (int j = 0; j < 192; ++j) {
+        double phi = 2 * kPi * (j + 0.5) / 192;
+        glm::dvec3 dir(r * std::cos(phi), r * std::sin(phi), z[i]);
+        double li = map.in_scattered(x, dir, m, k);
+        ShBasis y = sh_basis(dir);
+        for (int l = 0; l < kShCoefficients; ++l) ref[l] += w[i] * (2 * kPi / 192) * li * y[l];
+      }
+    }
+    const ShCoefficients& f = grid.voxel(g.linear_index(c));
+    for (int l = 0; l < kShCoefficients; ++l) EXPECT_NEAR(f[l], ref[l], 1e-5 * std::abs(ref[0])) << l;
+  }
+}
+
+TEST(RadianceGrid, HistogramFollowsTheVoxelsAlongTheRay) {
+  HomogeneousMedium m{1.0, 0.8, 0.0, Phase::isotropic()};
+  auto traced = trace_point_light_infinite(m, glm::dvec3(0), 5.0, 5000, 4, 3);
+  PhotonMap map(std::move(traced.photons));
+  UniformGrid g{{-1, -1, -1}, {1, 1, 1}, {4, 4, 4}};
+  RadianceGrid grid(g, map, m, 30);
+  const glm::dvec3 o(-2, 0.1, 0.2), d = glm::normalize(glm::dvec3(1, 0.1, 0.05));
+  RayHistogram h = grid.histogram(o, d, 0, 10);
+  ASSERT_EQ(h.edges.size(), h.values.size() + 1);
+  ASSERT_GE(h.values.size(), 4u);
+  const ShBasis y = sh_basis(-d);
+  for (std::size_t i = 0; i < h.values.size(); ++i) {
+    const glm::dvec3 mid = o + 0.5 * (h.edges[i] + h.edges[i + 1]) * d;
+    EXPECT_DOUBLE_EQ(h.values[i], grid.eval(mid, y));
+    // Isotropic phase: only band 0 is non-zero, and h is the k-NN estimate at the voxel centre.
+    const glm::dvec3 centre = g.cell_center(g.cell_of(mid));
+    EXPECT_NEAR(h.values[i], map.in_scattered(centre, -d, m, 30), 1e-5 * h.values[i]);
+  }
+}
+
+}  // namespace
+}  // namespace gcsim::media
