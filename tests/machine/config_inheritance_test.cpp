@@ -58,7 +58,15 @@ void expect_same_machine(const MachineConfig& a, const MachineConfig& b) {
   EXPECT_EQ(a.connect_base, b.connect_base);
   EXPECT_EQ(a.connect_per_hop, b.connect_per_hop);
   EXPECT_EQ(a.connect_model, b.connect_model);
+  EXPECT_EQ(a.connect_block_width, b.connect_block_width);
+  EXPECT_EQ(a.connect_block_height, b.connect_block_height);
   EXPECT_EQ(a.packet_bytes, b.packet_bytes);
+  EXPECT_EQ(a.shapes.size(), b.shapes.size());
+  for (const auto& [n, s] : b.shapes) {
+    ASSERT_TRUE(a.shapes.count(n)) << n;
+    EXPECT_EQ(a.shapes.at(n).width, s.width);
+    EXPECT_EQ(a.shapes.at(n).height, s.height);
+  }
 }
 
 TEST_F(Inheritance, ChildOverridesOnlyTheKeysItNames) {
@@ -96,9 +104,20 @@ TEST_F(Inheritance, ChainsOfBasesApplyInOrder) {
 TEST_F(Inheritance, ShippedFilesEqualTheirOldFullCopies) {
   const std::string dir = GCSIM_SOURCE_DIR "/configs/";
   const MachineConfig gc = default_machine_config();
-  MachineConfig calibrated = gc;
-  calibrated.link_bandwidth = 1.67e6;
-  expect_same_machine(load_machine_config(dir + "gc-powerplus-calibrated.toml"), calibrated);
+  // The mechanisms file changes only the connection model and the 8-node shape; the calibrated
+  // file inherits it and overrides only the three keys gcsim calibrate fitted.
+  MachineConfig mechanisms = gc;
+  mechanisms.connect_model = ConnectModel::servers;
+  mechanisms.connect_block_width = mechanisms.connect_block_height = 4;
+  mechanisms.shapes[8] = MeshShape{8, 1};
+  expect_same_machine(load_machine_config(dir + "gc-powerplus-mechanisms.toml"), mechanisms);
+  const MachineConfig calibrated = load_machine_config(dir + "gc-powerplus-calibrated.toml");
+  MachineConfig fitted = mechanisms;
+  fitted.connect_base = calibrated.connect_base;
+  fitted.connect_per_hop = calibrated.connect_per_hop;
+  fitted.link_bandwidth = calibrated.link_bandwidth;
+  expect_same_machine(calibrated, fitted);
+  EXPECT_EQ(calibrated.calibrated_on, std::vector<std::string>{"4.6"});
   MachineConfig big = gc;
   big.nodes = 1024;
   big.mesh_width = big.mesh_height = 32;
