@@ -16,6 +16,8 @@ void add_run_outputs(CLI::App& cmd, RunOutputs& f) {
   cmd.add_option("--height", f.height, "Image height (default 512, 384 for the rooms)")->check(CLI::Range(8, 8192));
   cmd.add_option("--exposure", f.exposure, "Multiply radiosities by this before display; default: automatic");
   cmd.add_option("--steps-csv", f.steps_csv, "Write the shot fraction after every loop as CSV (table 4.2 analog)");
+  cmd.add_option("--radiosities", f.radiosities,
+                 "Write every element's radiosity (id, patch, surface, area, r, g, b): FILE.json as JSON, else CSV");
   cmd.add_option("--snapshots", f.snapshots,
                  "With --image: also write the image after these loops (e.g. 1,10,50), as IMAGE_loopN.png: "
                  "the progression of figures 4.10-4.12");

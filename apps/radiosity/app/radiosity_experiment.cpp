@@ -6,6 +6,7 @@
 
 #include "apps/pipeline/list_parsing.hpp"
 #include "apps/radiosity/builtin_scenes.hpp"
+#include "apps/radiosity/radiosity_output.hpp"
 
 namespace gcsim::radiosity::app {
 
@@ -81,6 +82,10 @@ void RadiosityExperiment::report(const pipeline::Outcome& out, nlohmann::json& e
   if (!outputs_.steps_csv.empty()) {
     write_steps_csv(outputs_.steps_csv, r);
     fmt::print("csv       {}\n", outputs_.steps_csv);
+  }
+  if (!outputs_.radiosities.empty()) {
+    write_radiosities(outputs_.radiosities, scene_, r.element_radiosity);
+    fmt::print("elements  {} (per-element radiosities)\n", outputs_.radiosities);
   }
   if (!outputs_.image.empty()) {
     write_images(scene_, r, outputs_, camera_ ? *camera_ : (scene_.camera ? *scene_.camera : default_camera(scene_)));

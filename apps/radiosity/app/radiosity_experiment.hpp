@@ -14,7 +14,7 @@ namespace gcsim::radiosity::app {
 
 // Options only `run radiosity` has: outputs and checks of the one run.
 struct RunOutputs {
-  std::string image, camera, steps_csv, snapshots;
+  std::string image, camera, steps_csv, snapshots, radiosities;
   int width = 0, height = 0;
   double exposure = 0;
   bool gauss_seidel = false;
