@@ -20,6 +20,5 @@ using pipeline::write_json_file;
 void add_machine_commands(CommandGroups& g);
 void add_calibration_commands(CommandGroups& g);
 void add_trace_commands(CommandGroups& g);
-void add_media_commands(CommandGroups& g);  // in apps/media/commands.cpp, not yet on the app registry
 
 }  // namespace gcsim::cli

@@ -82,7 +82,6 @@ int main(int argc, char** argv) {
   pipeline::add_app_commands(g);  // run APP, sweep APP and the commands of every registered app
   cli::add_calibration_commands(g);  // calibrate, validate, accuracy network
   cli::add_trace_commands(g);
-  cli::add_media_commands(g);
   summarize_descriptions(&app);
   // Verbs that no application or command family filled in are hidden rather than offered empty.
   for (CLI::App* verb : {g.run, g.sweep, g.table, g.accuracy, g.bench, g.scene}) {

@@ -52,13 +52,9 @@ void charge_render(parix::Processor& p, const RenderCounters& c, std::size_t k) 
 
 }  // namespace
 
-ParallelMediaResult render_media_parallel(const MediaScene& scene, const MarchSettings& settings, std::uint64_t seed,
-                                          const parix::SimulationOptions& sim) {
-  ParallelMediaResult result;
-  const int width = scene.camera.width, height = scene.camera.height;
-  result.image = apps::Image(width, height);
-  std::vector<RenderCounters> per_node(static_cast<std::size_t>(sim.nodes));
-  result.run = parix::run_simulated(sim, [&](parix::Processor& p) {
+void media_program(parix::Processor& p, const MediaScene& scene, const MarchSettings& settings, std::uint64_t seed,
+                   ParallelMediaResult& result, std::vector<RenderCounters>& per_node) {
+    const int width = scene.camera.width, height = scene.camera.height;
     const int id = p.id(), nodes = p.count();
     PhotonPassResult photons = trace_photons(scene, share_begin(scene.photons_emitted, id, nodes),
                                              share_begin(scene.photons_emitted, id + 1, nodes));
@@ -95,7 +91,15 @@ ParallelMediaResult render_media_parallel(const MediaScene& scene, const MarchSe
     result.inside_photons = caches.inside.map ? caches.inside.map->photons().size() : 0;
     if (caches.outside.grid) result.outside_dims = caches.outside.grid->grid().dims;
     if (caches.inside.grid) result.inside_dims = caches.inside.grid->grid().dims;
-  });
+}
+
+ParallelMediaResult render_media_parallel(const MediaScene& scene, const MarchSettings& settings, std::uint64_t seed,
+                                          const parix::SimulationOptions& sim) {
+  ParallelMediaResult result;
+  result.image = apps::Image(scene.camera.width, scene.camera.height);
+  std::vector<RenderCounters> per_node(static_cast<std::size_t>(sim.nodes));
+  result.run = parix::run_simulated(
+      sim, [&](parix::Processor& p) { media_program(p, scene, settings, seed, result, per_node); });
   for (const RenderCounters& c : per_node) result.counters.add(c);
   return result;
 }

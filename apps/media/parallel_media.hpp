@@ -4,6 +4,7 @@
 // SH grids built voxel-slice by voxel-slice and all-gathered, image rows interleaved over the nodes
 // and gathered on node 0. Compute is charged from counted operations ([ops] media_* in the machine file).
 #include <cstdint>
+#include <vector>
 
 #include "apps/common/image.hpp"
 #include "apps/media/media_render.hpp"
@@ -22,6 +23,12 @@ struct ParallelMediaResult {
   std::size_t outside_photons = 0, inside_photons = 0;
   glm::ivec3 outside_dims{0}, inside_dims{0};
 };
+
+// The SPMD program: every processor runs it; result.image (sized by the caller) and the byte and
+// photon figures are filled by processor 0, per_node[id] (one slot per processor, never sent) by
+// each processor for the host-side sum of counters after the run.
+void media_program(parix::Processor& p, const MediaScene& scene, const MarchSettings& settings, std::uint64_t seed,
+                   ParallelMediaResult& result, std::vector<RenderCounters>& per_node);
 
 ParallelMediaResult render_media_parallel(const MediaScene& scene, const MarchSettings& settings, std::uint64_t seed,
                                           const parix::SimulationOptions& sim);

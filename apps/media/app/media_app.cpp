@@ -1,0 +1,137 @@
+// Registers the participating-media renderer (Tokuyoshi and Maruyama) with the gcsim pipeline:
+// `gcsim run media` and `gcsim sweep media`.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "apps/common/image.hpp"
+#include "apps/media/parallel_media.hpp"
+#include "apps/pipeline/app_registry.hpp"
+
+namespace gcsim::media::app {
+namespace {
+
+struct MediaFlags {
+  std::string scene = "small";
+  std::string estimator = "radiance";
+  double b = 8.0;
+  double b_histogram = 0.0;
+  double alpha = 0.1;
+  long photons = 0;  // 0: the scene's
+  int k = 0;         // 0: the scene's
+  int width = 0, height = 0;
+  unsigned long long seed = 1;
+  std::string image;
+  float exposure = 1.0f;
+};
+
+struct MediaOutcome : pipeline::Outcome {
+  ParallelMediaResult result;
+  std::vector<RenderCounters> per_node;  // one slot per processor, never sent; summed after the run
+};
+
+class MediaExperiment final : public pipeline::Experiment {
+ public:
+  explicit MediaExperiment(const MediaFlags& f)
+      : flags_(f), scene_(scene_by_name(f.scene)), settings_{*parse_estimator(f.estimator), f.b, f.b_histogram, f.alpha} {
+    if (f.photons > 0) scene_.photons_emitted = static_cast<std::size_t>(f.photons);
+    if (f.k > 0) scene_.k_nearest = static_cast<std::size_t>(f.k);
+    if (f.width > 0) scene_.camera.width = f.width;
+    if (f.height > 0) scene_.camera.height = f.height;
+    scene_.seed = f.seed;
+  }
+
+  std::unique_ptr<pipeline::Outcome> new_outcome(int nodes) const override {
+    auto o = std::make_unique<MediaOutcome>();
+    o->result.image = apps::Image(scene_.camera.width, scene_.camera.height);
+    o->per_node.resize(static_cast<std::size_t>(nodes));
+    return o;
+  }
+  parix::Program program(pipeline::Outcome& out) const override {
+    auto& o = pipeline::outcome_as<MediaOutcome>(out);
+    return [this, &o](parix::Processor& p) { media_program(p, scene_, settings_, flags_.seed, o.result, o.per_node); };
+  }
+  void after_run(pipeline::Outcome& out) const override {
+    auto& o = pipeline::outcome_as<MediaOutcome>(out);
+    for (const RenderCounters& c : o.per_node) o.result.counters.add(c);
+  }
+  void print_setup(int nodes) const override { fmt::print("media     {}, {} nodes\n", setup_line(), nodes); }
+  void report(const pipeline::Outcome& out, nlohmann::json& extra) const override;
+  void print_sweep_setup() const override { fmt::print("media     {}\n", setup_line()); }
+
+ private:
+  std::string setup_line() const {
+    return fmt::format("scene {}, {}x{}, {} photons emitted, k = {}, estimator {}, b = {}", scene_.name, scene_.camera.width,
+                       scene_.camera.height, scene_.photons_emitted, scene_.k_nearest, flags_.estimator, flags_.b);
+  }
+  MediaFlags flags_;
+  MediaScene scene_;
+  MarchSettings settings_;
+};
+
+void MediaExperiment::report(const pipeline::Outcome& out, nlohmann::json& extra) const {
+  const ParallelMediaResult& r = pipeline::outcome_as<MediaOutcome>(out).result;
+  fmt::print("photons   {} stored outside, {} inside; grids {}x{}x{} and {}x{}x{} voxels\n", r.outside_photons,
+             r.inside_photons, r.outside_dims.x, r.outside_dims.y, r.outside_dims.z, r.inside_dims.x, r.inside_dims.y,
+             r.inside_dims.z);
+  fmt::print("messages  photon maps {} B per node after all-gather ({} B from node 0), SH grids {} B per node\n",
+             r.photon_bytes_all, r.photon_bytes, r.grid_bytes_all);
+  fmt::print("work      {} march samples, {} SH evaluations, {} segments\n", r.counters.march.samples,
+             r.counters.march.sh_evals, r.counters.march.segments);
+  if (!flags_.image.empty()) {
+    apps::write_png(flags_.image, r.image, flags_.exposure);
+    fmt::print("image     {}\n", flags_.image);
+  }
+  extra["media"] = {{"scene", scene_.name},
+                    {"estimator", flags_.estimator},
+                    {"march_samples", r.counters.march.samples},
+                    {"sh_evals", r.counters.march.sh_evals},
+                    {"segments", r.counters.march.segments},
+                    {"surface_events", r.counters.surface_events},
+                    {"photons_outside", r.outside_photons},
+                    {"photons_inside", r.inside_photons},
+                    {"photon_map_bytes", r.photon_bytes_all},
+                    {"sh_grid_bytes", r.grid_bytes_all}};
+}
+
+pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) {
+  auto f = std::make_shared<MediaFlags>();
+  cmd.add_option("--scene", f->scene, "small, exp1 (sigma_s read as albedo), exp1-literal, exp2")->capture_default_str();
+  cmd.add_option("--estimator", f->estimator, "uniform, transmittance, radiance, equiangular, mis or grid")
+      ->check(CLI::IsMember({"uniform", "transmittance", "radiance", "equiangular", "mis", "grid"}))
+      ->capture_default_str();
+  cmd.add_option("--b", f->b, "samples per unit of the segment integral S (M = b S, eq. 21)")->capture_default_str();
+  cmd.add_option("--b-histogram", f->b_histogram, "radiance estimator: M = b_h S_h (eq. 22) when > 0");
+  cmd.add_option("--alpha", f->alpha, "transmittance share of the defensive radiance density")->capture_default_str();
+  cmd.add_option("--photons", f->photons, "photons emitted (default: the scene's)");
+  cmd.add_option("--k", f->k, "nearest photons per estimate (default: the scene's)");
+  cmd.add_option("--width", f->width, "image width (default: the scene's)");
+  cmd.add_option("--height", f->height, "image height (default: the scene's)");
+  cmd.add_option("--seed", f->seed, "random seed of photons and pixels")->capture_default_str();
+  if (verb == pipeline::Verb::run) {
+    cmd.add_option("--image", f->image, "Write the image as PNG");
+    cmd.add_option("--exposure", f->exposure, "PNG exposure")->capture_default_str();
+  }
+  return [f] { return std::make_unique<MediaExperiment>(*f); };
+}
+
+pipeline::AppSpec media_app() {
+  pipeline::AppSpec s;
+  s.name = "media";
+  s.summary =
+      "Participating media with a photon map and SH radiance-importance sampling (Tokuyoshi and Maruyama)\n"
+      "on the simulated GC: photons traced in parallel, photon maps and SH grids all-gathered, image rows\n"
+      "interleaved over the nodes. The image does not depend on the node count.";
+  s.run_footer = "\nExample:\n  gcsim run media --scene small --estimator radiance --nodes 16 --image m.png --json m.json";
+  s.default_nodes = 16;
+  s.options = declare_options;
+  return s;
+}
+
+const pipeline::AppRegistrar registrar{media_app()};
+
+}  // namespace
+}  // namespace gcsim::media::app
