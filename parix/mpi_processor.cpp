@@ -25,6 +25,12 @@ int mpi_tag(int parix_tag, std::int64_t instance) {
   return static_cast<int>((instance % 32768) * 65536 + (static_cast<unsigned>(parix_tag) & 0xffffu));
 }
 
+// Polling loops yield first, then back off: ranks may share host cores (mpirun --oversubscribe).
+void back_off(int spins) {
+  if (spins < 1000) std::this_thread::yield();
+  else std::this_thread::sleep_for(std::chrono::microseconds(50));
+}
+
 void check(int status, const char* what) {
   if (status != MPI_SUCCESS) throw ParixError(fmt::format("MPI error in {}", what));
 }
@@ -167,11 +173,7 @@ bool MpiProcessor::poll(RequestState& state) {
 
 void MpiProcessor::block_on(RequestState& r, const char* call, machine::TraceKind kind) {
   const SimTime start = now();
-  for (int spins = 0; !poll(r); ++spins) {
-    // Yield first, then back off: ranks may share host cores (mpirun --oversubscribe).
-    if (spins < 1000) std::this_thread::yield();
-    else std::this_thread::sleep_for(std::chrono::microseconds(50));
-  }
+  for (int spins = 0; !poll(r); ++spins) back_off(spins);
   count_comm(start, now(), r.peer, static_cast<std::int64_t>(r.data.size()), call, kind);
 }
 
@@ -197,8 +199,7 @@ std::size_t MpiProcessor::wait_any(std::span<Request* const> rs) {
         return i;
       }
     }
-    if (spins < 1000) std::this_thread::yield();
-    else std::this_thread::sleep_for(std::chrono::microseconds(50));
+    back_off(spins);
   }
 }
 

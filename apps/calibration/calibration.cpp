@@ -8,9 +8,8 @@
 #include <fmt/format.h>
 
 namespace gcsim::calibration {
-namespace {
 
-std::vector<std::string> split(const std::string& s, char sep) {
+std::vector<std::string> split_list(const std::string& s, char sep) {
   std::vector<std::string> out;
   std::stringstream ss(s);
   std::string item;
@@ -18,10 +17,12 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return out;
 }
 
+namespace {
+
 // Leaves only the rows whose node counts are listed ("1+8").
 void keep_rows(MeasuredTable& t, const std::string& rows, const std::string& spec) {
   std::vector<int> keep;
-  for (const auto& item : split(rows, '+')) {
+  for (const auto& item : split_list(rows, '+')) {
     int n = 0;
     try {
       std::size_t used = 0;
@@ -58,7 +59,7 @@ MeasuredTable table_from_spec(const std::string& spec) {
 
 std::vector<MeasuredTable> tables_from_specs(const std::string& specs) {
   std::vector<MeasuredTable> out;
-  for (const auto& s : split(specs, ',')) {
+  for (const auto& s : split_list(specs, ',')) {
     if (s.empty()) throw std::invalid_argument("--fit: empty table name (expected e.g. 4.6 or 4.6,4.3@1)");
     out.push_back(table_from_spec(s));
   }
@@ -120,7 +121,7 @@ std::string fitted_file_text(const MachineFile& file, const std::string& out_pat
   text += "# Every other table is a prediction: `gcsim validate --config " + out_path + "`.\n";
   text += fmt::format("base = \"{}\"\nname = \"{} (calibrated on {})\"\n\n", base, file.config().name, specs);
   text += fmt::format("[calibration]\nfitted = [");
-  for (std::size_t i = 0; auto t : split(specs, ',')) text += (i++ ? ", " : "") + fmt::format("\"{}\"", t);
+  for (std::size_t i = 0; auto t : split_list(specs, ',')) text += (i++ ? ", " : "") + fmt::format("\"{}\"", t);
   text += "]\n";
   std::string table;
   for (const auto& p : r.parameters) {

@@ -14,6 +14,9 @@
 
 namespace gcsim::calibration {
 
+// "a,b,c" -> {"a", "b", "c"} (empty items kept, so callers can name them in errors).
+std::vector<std::string> split_list(const std::string& s, char sep = ',');
+
 // "4.6" (a built-in table), "4.3@1" (only its 1-node row), "4.3@1+8", or "PATH.csv:4.6[@...]" (a
 // user's figures in table 4.6's layout). Cells outside the named rows are left out. Throws
 // std::invalid_argument naming what was expected.

@@ -58,9 +58,10 @@ Grid Predictor::predict_broadcast(const MeasuredTable& t, const machine::Machine
   for (std::size_t r = 0; r < t.nodes.size(); ++r)
     for (std::size_t k = 0; k < t.columns.size(); ++k)
       if (!std::isnan(t.values[r][k])) cells.emplace_back(int(r), int(k));
+  const MeasuredTable layout = thesis_table(t.id);  // t's columns may be a subset, in any order
   parallel_for(int(cells.size()), settings_.jobs, [&](int i) {
     const auto [r, k] = cells[i];
-    const int column = thesis_table(t.id).column_of(t.columns[k]);
+    const int column = layout.column_of(t.columns[k]);
     const std::int64_t bytes = cli::kThesisBroadcastSizes[column];
     const parix::RunResult run = parix::run_simulated(simulation(c, t.nodes[r], settings_.model), [&](parix::Processor& p) {
       cli::all_node_broadcast(p, bytes, algo);
@@ -86,10 +87,14 @@ void Predictor::run_radiosity(const std::vector<RunKey>& keys, const machine::Ma
     if (std::get<1>(k) == 1 && one_node_ops_.count(std::get<0>(k))) out[k] = one_node_from_counts(std::get<0>(k), c);
     else todo.push_back(k);
   }
+  // Each scene is loaded once per prediction, not once per run; runs only read it.
+  std::map<std::string, radiosity::Scene> scenes;
+  for (const RunKey& k : todo)
+    if (!scenes.count(std::get<0>(k))) scenes.emplace(std::get<0>(k), radiosity::flatten(radiosity::load_scene_world(std::get<0>(k))));
   std::mutex lock;
   parallel_for(int(todo.size()), settings_.jobs, [&](int i) {
     const auto& [scene_name, nodes, tree] = todo[i];
-    const radiosity::Scene scene = radiosity::flatten(radiosity::load_scene_world(scene_name));
+    const radiosity::Scene& scene = scenes.at(scene_name);
     radiosity::ParallelOptions o;
     o.solver.hemicube.resolution = settings_.hemicube;
     o.solver.shooters = settings_.shooters;

@@ -47,14 +47,6 @@ cal::PredictionSettings settings(const PredictFlags& f) {
   return s;
 }
 
-std::vector<std::string> split_keys(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ',')) out.push_back(item);
-  return out;
-}
-
 void add_calibrate(CommandGroups& g) {
   struct Flags {
     std::string fit, free, config, out, json, csv;
@@ -90,7 +82,7 @@ void add_calibrate(CommandGroups& g) {
   cmd->callback([f] {
     const cal::MachineFile file(f->config);
     const std::vector<cal::MeasuredTable> tables = cal::tables_from_specs(f->fit);
-    const std::vector<std::string> free = split_keys(f->free);
+    const std::vector<std::string> free = cal::split_list(f->free);
     for (const auto& k : free) file.check_free_key(k);
     write_json_file(f->out, nlohmann::json::object());  // fail now, not after the fit, if it cannot be written
     cal::Predictor predictor(settings(f->predict));
@@ -214,7 +206,7 @@ void add_network_accuracy(CommandGroups& g) {
       csv << "model,table,median_error,max_error,within_15,cells,wall_s\n";
     }
     fmt::print("{:<9} {:<6} {:>6} {:>9} {:>9} {:>11} {:>9}\n", "model", "table", "cells", "median", "max", "within 15%", "wall_s");
-    for (const auto& model : split_keys(f->models)) {
+    for (const auto& model : cal::split_list(f->models)) {
       PredictFlags pf = f->predict;
       pf.model = model;
       cal::Predictor predictor(settings(pf));
