@@ -95,8 +95,8 @@ Link MpiProcessor::connect(int peer, int tag) {
   // Both ends must have called connect: each sends an empty message on the link and waits for
   // the other's, which is also the first message on the link's tag.
   MPI_Request handshake;
-  check(MPI_Isend(nullptr, 0, MPI_BYTE, peer, t, MPI_COMM_WORLD, &handshake), "connect");
-  check(MPI_Recv(nullptr, 0, MPI_BYTE, peer, t, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "connect");
+  check(MPI_Isend(nullptr, 0, MPI_BYTE, rank_.rank_of_processor(peer), t, MPI_COMM_WORLD, &handshake), "connect");
+  check(MPI_Recv(nullptr, 0, MPI_BYTE, rank_.rank_of_processor(peer), t, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "connect");
   check(MPI_Wait(&handshake, MPI_STATUS_IGNORE), "connect");
   const std::int64_t handle = next_link_++;
   links_.emplace(handle, LinkInfo{peer, t});
@@ -117,7 +117,7 @@ void MpiProcessor::send(Link& link, std::span<const std::byte> data) {
   const LinkInfo& l = link_info(link, "send");
   const SimTime start = now();
   // Synchronous mode: returns once the receiver has started to take the message, as PARIX's send.
-  check(MPI_Ssend(data.data(), static_cast<int>(data.size()), MPI_BYTE, l.peer, l.mpi_tag, MPI_COMM_WORLD), "send");
+  check(MPI_Ssend(data.data(), static_cast<int>(data.size()), MPI_BYTE, rank_.rank_of_processor(l.peer), l.mpi_tag, MPI_COMM_WORLD), "send");
   {
     std::lock_guard<std::mutex> g(rank_.lock);
     ++rank_.stats.messages_sent;
@@ -132,7 +132,7 @@ Request MpiProcessor::isend(Link& link, std::span<const std::byte> data) {
   r->peer = l.peer;
   r->link = link.handle();
   r->buffer.assign(data.begin(), data.end());
-  check(MPI_Isend(r->buffer.data(), static_cast<int>(r->buffer.size()), MPI_BYTE, l.peer, l.mpi_tag, MPI_COMM_WORLD, &r->request),
+  check(MPI_Isend(r->buffer.data(), static_cast<int>(r->buffer.size()), MPI_BYTE, rank_.rank_of_processor(l.peer), l.mpi_tag, MPI_COMM_WORLD, &r->request),
         "isend");
   std::lock_guard<std::mutex> g(rank_.lock);
   ++rank_.stats.messages_sent;
@@ -162,7 +162,7 @@ bool MpiProcessor::poll(RequestState& state) {
   int flag = 0;
   MPI_Message message;
   MPI_Status status;
-  check(MPI_Improbe(r.peer, r.tag, MPI_COMM_WORLD, &flag, &message, &status), "recv");
+  check(MPI_Improbe(rank_.rank_of_processor(r.peer), r.tag, MPI_COMM_WORLD, &flag, &message, &status), "recv");
   if (!flag) return false;
   int size = 0;
   MPI_Get_count(&status, MPI_BYTE, &size);

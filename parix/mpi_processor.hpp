@@ -19,6 +19,8 @@ namespace gcsim::parix::mpi {
 struct RankState {
   int rank = 0;
   int size = 1;
+  int processor = 0;         // the virtual processor this rank runs (SimulationOptions::placement)
+  std::vector<int> rank_of;  // processor -> the rank that runs it; identity when empty
   std::int64_t memory_limit = 0;
   std::int64_t memory_used = 0;
   std::chrono::steady_clock::time_point epoch;
@@ -32,6 +34,7 @@ struct RankState {
   std::exception_ptr failure;  // the first exception a spawned thread threw
 
   SimTime now() const;
+  int rank_of_processor(int p) const { return rank_of.empty() ? p : rank_of[static_cast<std::size_t>(p)]; }
   void record(machine::TraceRecord r, std::string_view label);
 };
 
@@ -40,7 +43,7 @@ class MpiProcessor final : public Processor {
   MpiProcessor(RankState& rank, int thread) : rank_(rank), thread_(thread) {}
   ~MpiProcessor() override;
 
-  int id() const override { return rank_.rank; }
+  int id() const override { return rank_.processor; }
   int count() const override { return rank_.size; }
   SimTime now() const override { return rank_.now(); }
   void compute(std::span<const OpCount> ops) override;

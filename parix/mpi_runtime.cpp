@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "parix/mpi_processor.hpp"
+#include "parix/simulation.hpp"  // checked_placement
 
 namespace gcsim::parix {
 namespace {
@@ -149,6 +150,9 @@ MpiRunResult run_mpi(const SimulationOptions& options, const std::function<void(
   mpi::RankState state;
   state.rank = mpi_rank();
   state.size = size;
+  // Processor i runs on rank placement[i], as it would run on node placement[i] when simulated.
+  state.rank_of = detail::checked_placement(options.placement, size);
+  state.processor = static_cast<int>(std::find(state.rank_of.begin(), state.rank_of.end(), state.rank) - state.rank_of.begin());
   state.memory_limit = config.memory_bytes;
   state.tracing = !options.trace.path.empty() && options.trace.level != machine::TraceLevel::summary;
   MPI_Barrier(MPI_COMM_WORLD);
@@ -159,14 +163,15 @@ MpiRunResult run_mpi(const SimulationOptions& options, const std::function<void(
     program(p);
   } catch (const std::exception& e) {
     // The other ranks would wait for this one forever: say what happened and end the job.
-    std::fprintf(stderr, "gcsim: error: processor %d: %s\n", state.rank, e.what());
+    std::fprintf(stderr, "gcsim: error: processor %d (rank %d): %s\n", state.processor, state.rank, e.what());
     MPI_Abort(MPI_COMM_WORLD, 1);
   }
   if (state.failure) {
     try {
       std::rethrow_exception(state.failure);
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "gcsim: error: processor %d (a spawned thread): %s\n", state.rank, e.what());
+      std::fprintf(stderr, "gcsim: error: processor %d (rank %d, a spawned thread): %s\n", state.processor, state.rank,
+                   e.what());
     }
     MPI_Abort(MPI_COMM_WORLD, 1);
   }
@@ -185,7 +190,10 @@ MpiRunResult run_mpi(const SimulationOptions& options, const std::function<void(
   std::vector<machine::TraceRecord> records;
   std::deque<std::string> labels;
   out.result.processors.resize(static_cast<std::size_t>(size));
-  for (int i = 0; i < size; ++i) unpack(parts[i].data(), out.result.processors[i], records, labels);
+  for (int r = 0; r < size; ++r) {
+    const auto processor = std::find(state.rank_of.begin(), state.rank_of.end(), r) - state.rank_of.begin();
+    unpack(parts[r].data(), out.result.processors[static_cast<std::size_t>(processor)], records, labels);
+  }
   for (const auto& p : out.result.processors) out.result.makespan = std::max(out.result.makespan, p.finish);
   if (!options.trace.path.empty()) write_trace(options, config, records);
   out.result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

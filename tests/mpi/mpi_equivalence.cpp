@@ -1,6 +1,9 @@
-// Run under mpirun with N ranks: the same programs on the MPI backend and, on rank 0, on the
-// simulated backend with N processors; their results must be equal bit for bit. Prints
-// "P passed, F failed" and exits non-zero on a failure.
+// Run under mpirun with N ranks: the same programs on the MPI backend and on the simulated backend
+// with N processors; their results must be equal bit for bit. Each program captures its result on
+// processor 0, which runs on rank 0 unless a placement moves it. Prints "P passed, F failed" on
+// rank 0 and exits non-zero on a failure.
+#include <mpi.h>
+
 #include <cstdio>
 #include <cstring>
 #include <functional>
@@ -25,22 +28,40 @@ void expect(bool ok, const std::string& what) {
   (ok ? passed : failed) += 1;
 }
 
-parix::SimulationOptions options(int n) {
+parix::SimulationOptions options(int n, bool reversed) {
   parix::SimulationOptions o;
   o.config = machine::with_nodes(machine::default_machine_config(), n);
   o.nodes = n;
+  if (reversed)
+    for (int i = 0; i < n; ++i) o.placement.push_back(n - 1 - i);  // processor i on rank n-1-i
   return o;
 }
 
-// Both backends run program; rank 0 compares what it captured.
+// Both backends run program; the rank that ran processor 0 compares what it captured, and rank 0
+// reports the verdict of all.
 template <class T>
-void compare(const std::string& name, const std::function<void(parix::Processor&, T&)>& program) {
+void compare(const std::string& name, const std::function<void(parix::Processor&, T&)>& program, bool reversed = false) {
   const int n = parix::mpi_size();
   T real{}, simulated{};
-  const parix::MpiRunResult r = parix::run_mpi(options(n), [&](parix::Processor& p) { program(p, real); });
-  if (!r.root) return;
-  parix::run_simulated(options(n), [&](parix::Processor& p) { program(p, simulated); });
-  expect(real == simulated, name + " on " + std::to_string(n) + " ranks equals the simulated backend");
+  int ran_processor_0 = 0;
+  parix::run_mpi(options(n, reversed), [&](parix::Processor& p) {
+    if (p.id() == 0) ran_processor_0 = 1;
+    program(p, real);
+  });
+  int ok = 1;
+  if (ran_processor_0) {
+    parix::run_simulated(options(n, reversed), [&](parix::Processor& p) { program(p, simulated); });
+    ok = real == simulated && real != T{};
+  }
+  int all_ok = 0, holders = 0, holder_rank = -1;
+  const int my_rank_if_holder = ran_processor_0 ? parix::mpi_rank() : -1;
+  MPI_Allreduce(&ok, &all_ok, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD);
+  MPI_Allreduce(&ran_processor_0, &holders, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(&my_rank_if_holder, &holder_rank, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  expect(holders == 1 && holder_rank == (reversed ? n - 1 : 0),
+         name + ": processor 0 ran on rank " + std::to_string(holder_rank) + " as placed");
+  expect(all_ok && holders == 1, name + " on " + std::to_string(n) + " ranks" + (reversed ? ", placement reversed," : "") +
+                                     " equals the simulated backend");
 }
 
 void collectives(parix::Processor& p, std::vector<double>& out) {
@@ -99,6 +120,8 @@ int main() {
   compare<std::vector<double>>("collectives", collectives);
   compare<std::vector<float>>("CORNELL radiosities", cornell_radiosities);
   compare<std::vector<int>>("node-local threads", threads);
+  compare<std::vector<double>>("collectives", collectives, true);
+  compare<std::vector<int>>("node-local threads", threads, true);
   if (parix::mpi_rank() == 0) std::printf("%d passed, %d failed\n", passed, failed);
   return failed == 0 ? 0 : 1;
 }
