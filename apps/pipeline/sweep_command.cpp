@@ -101,6 +101,11 @@ void add_sweep_command(CLI::App& sweep, const AppSpec& app) {
   if (!app.sweep_footer.empty()) cmd->footer(app.sweep_footer);
   cmd->callback([flags, prepare] {
     parse_int_list(flags->nodes, "--nodes");  // a bad list fails before the scene is loaded
+    // Under mpirun the ranks are the machine: one node count per job, so a sweep is one mpirun per point.
+    if (flags->machine.backend != "simulated")
+      throw std::invalid_argument("--backend " + flags->machine.backend +
+                                  ": a sweep needs the simulated backend (under MPI the node count is the number of "
+                                  "ranks: run `mpirun -np N gcsim run ...` once per node count)");
     const std::unique_ptr<Experiment> e = prepare();
     run_sweep(*flags, *e);
   });
