@@ -78,9 +78,14 @@ CalibrationResult calibrate(const MachineFile& file, const std::vector<MeasuredT
       throw std::invalid_argument(fmt::format("--free {}: its value in {} is {}; give it a positive starting value", key,
                                               file.source(), initial.back()));
   }
-  auto values_at = [&](const std::vector<double>& x) {
+  // The fitter moves y; a key's value is initial * exp(L tanh(y / L)): positive, and never more than
+  // a factor e^L = 1000 from its start, so a key the tables barely determine cannot step to a value
+  // that overflows the simulated clock. Near the start the map is the plain log scale.
+  const double L = std::log(1000.0);
+  auto log_factor = [L](double y) { return L * std::tanh(y / L); };
+  auto values_at = [&](const std::vector<double>& y) {
     std::map<std::string, double> v;
-    for (std::size_t i = 0; i < free.size(); ++i) v[free[i]] = initial[i] * std::exp(x[i]);
+    for (std::size_t i = 0; i < free.size(); ++i) v[free[i]] = initial[i] * std::exp(log_factor(y[i]));
     return v;
   };
   std::size_t cells = 0;
@@ -96,8 +101,14 @@ CalibrationResult calibrate(const MachineFile& file, const std::vector<MeasuredT
   CalibrationResult out;
   out.fit = least_squares(residuals, std::vector<double>(free.size(), 0.0), cells);
   const auto best = values_at(out.fit.x);
-  for (std::size_t i = 0; i < free.size(); ++i)
-    out.parameters.push_back({free[i], initial[i], best.at(free[i]), best.at(free[i]) * out.fit.sigma[i]});
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    const double slope = 1.0 / std::pow(std::cosh(out.fit.x[i] / L), 2);  // d log(value) / dy
+    out.parameters.push_back({free[i], initial[i], best.at(free[i]), best.at(free[i]) * slope * out.fit.sigma[i]});
+    if (std::abs(log_factor(out.fit.x[i])) > 0.99 * L)
+      out.warnings.push_back(fmt::format("{} ended {} times its start ({} -> {:.6g}): the fitted tables hardly determine it; "
+                                         "fix it in the machine file and leave it out of --free",
+                                         free[i], best.at(free[i]) / initial[i], initial[i], best.at(free[i])));
+  }
   out.fitted = file.with(best);
   out.cells = compare(tables, predictor.predict(tables, out.fitted));
   for (auto& c : out.cells) c.fitted = true;

@@ -36,11 +36,12 @@ struct CalibrationResult {
   std::vector<CellComparison> cells;  // the fitted cells at the optimum
   LeastSquaresResult fit;
   machine::MachineConfig fitted;
+  std::vector<std::string> warnings;  // keys that ended at the bound of their range
 };
 
 // Fits `free` keys of the machine file to every measured cell of `tables`. Each key is fitted
 // as a positive factor of its value in the file (log scale), so that keys of different units
-// are equally scaled; its value in the file must be positive.
+// are equally scaled, bounded to 1/1000..1000 of that value; its value in the file must be positive.
 CalibrationResult calibrate(const MachineFile& file, const std::vector<MeasuredTable>& tables,
                             const std::vector<std::string>& free, Predictor& predictor);
 

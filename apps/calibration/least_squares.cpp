@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_errno.h>
@@ -14,13 +15,20 @@ struct Problem {
   const Residuals* f;
   std::size_t m;
   int evaluations = 0;
+  std::string failure;  // what the last failed evaluation said
 };
 
 int gsl_residuals(const gsl_vector* x, void* data, gsl_vector* out) {
   auto* p = static_cast<Problem*>(data);
   std::vector<double> xs(x->size);
   for (std::size_t i = 0; i < xs.size(); ++i) xs[i] = gsl_vector_get(x, i);
-  const std::vector<double> r = (*p->f)(xs);
+  std::vector<double> r;
+  try {
+    r = (*p->f)(xs);
+  } catch (const std::exception& e) {
+    p->failure = e.what();  // e.g. a simulated clock overflow at an extreme trial point
+    return GSL_EDOM;
+  }
   ++p->evaluations;
   if (r.size() != p->m) return GSL_EBADLEN;
   for (std::size_t i = 0; i < r.size(); ++i) {
@@ -36,7 +44,7 @@ LeastSquaresResult least_squares(const Residuals& f, std::vector<double> x0, std
                                  int max_iterations) {
   const std::size_t n = x0.size();
   if (n == 0 || m < n) throw std::invalid_argument("least squares: need at least as many measured figures as free parameters");
-  Problem problem{&f, m};
+  Problem problem{&f, m, 0, {}};
   gsl_multifit_nlinear_fdf fdf{};
   fdf.f = gsl_residuals;
   fdf.df = nullptr;  // forward differences
@@ -57,6 +65,7 @@ LeastSquaresResult least_squares(const Residuals& f, std::vector<double> x0, std
   out.iterations = static_cast<int>(gsl_multifit_nlinear_niter(w));
   out.converged = status == GSL_SUCCESS;
   out.reason = status == GSL_SUCCESS ? (info == 1 ? "small step" : "small gradient") : gsl_strerror(status);
+  if (status != GSL_SUCCESS && !problem.failure.empty()) out.reason += " (" + problem.failure + ")";
   const gsl_vector* x = gsl_multifit_nlinear_position(w);
   const gsl_vector* r = gsl_multifit_nlinear_residual(w);
   for (std::size_t i = 0; i < n; ++i) out.x.push_back(gsl_vector_get(x, i));

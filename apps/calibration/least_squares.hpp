@@ -4,6 +4,7 @@
 // estimates; the residuals here are simulations, so the Jacobian is taken by forward differences
 // with a step large enough to see past the picosecond rounding of simulated time.
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace gcsim::calibration {
@@ -16,7 +17,7 @@ struct LeastSquaresResult {
   int iterations = 0;
   int evaluations = 0;
   bool converged = false;
-  const char* reason = "";
+  std::string reason;
 };
 
 using Residuals = std::function<std::vector<double>(const std::vector<double>& x)>;

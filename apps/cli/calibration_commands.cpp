@@ -90,8 +90,9 @@ void add_calibrate(CommandGroups& g) {
     const cal::CalibrationResult r = cal::calibrate(file, tables, free, predictor);
     cal::print_cells(r.cells, tables);
     cal::print_summaries(cal::summarize(r.cells));
-    fmt::print("\n{} after {} iterations ({} simulated runs)\n", r.fit.converged ? "converged" : "NOT converged",
-               r.fit.iterations, predictor.runs());
+    fmt::print("\n{} after {} iterations ({} simulated runs){}\n", r.fit.converged ? "converged" : "NOT converged",
+               r.fit.iterations, predictor.runs(), r.fit.converged ? "" : ": " + r.fit.reason);
+    for (const auto& w : r.warnings) fmt::print(stderr, "gcsim: warning: {}\n", w);
     for (const auto& p : r.parameters)
       fmt::print("  {:<32} {:>12.6g} +- {:<10.2g} (was {:.6g})\n", p.key, p.value, p.sigma, p.initial);
     std::string command = "gcsim calibrate --fit " + f->fit + " --free " + f->free +
