@@ -19,6 +19,7 @@ void FlowNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action 
     channel_visited_.assign(channels, 0);
     left_.assign(channels, 0.0);
     unassigned_.assign(channels, 0);
+    candidate_round_.assign(channels, 0);
   }
   const std::uint64_t id = next_id_++;
   Flow& f = flows_[id];
@@ -107,19 +108,24 @@ void FlowNetwork::fill_progressively() {
     const int n = unassigned_[c.channel];
     if (n == 0 || left_[c.channel] / n != c.share) continue;  // stale
     const double share = c.share;
+    just_assigned_.clear();
     for (Flow* f : on_channel_[c.channel]) {
       if (f->assigned) continue;
       f->assigned = true;
       f->new_rate = share;
-      --to_assign;
+      just_assigned_.push_back(f);
       for (int ch : f->route) {
         left_[ch] -= share;
         --unassigned_[ch];
       }
     }
-    for (Flow* f : on_channel_[c.channel]) {
+    to_assign -= just_assigned_.size();
+    // The channels whose share changed get a fresh candidate.
+    ++fill_round_;
+    for (Flow* f : just_assigned_) {
       for (int ch : f->route) {
-        if (unassigned_[ch] == 0) continue;
+        if (unassigned_[ch] == 0 || candidate_round_[ch] == fill_round_) continue;
+        candidate_round_[ch] = fill_round_;
         candidates_.push_back({left_[ch] / unassigned_[ch], ch});
         std::push_heap(candidates_.begin(), candidates_.end(), later);
       }

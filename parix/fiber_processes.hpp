@@ -25,8 +25,10 @@ class FiberContext {
     check_stack();
     ctx_->suspend();
   }
-  // From any fiber: make the process runnable again.
-  void resume() { boost::fibers::context::active()->schedule(ctx_); }
+  // From any fiber of the same host thread: make the process runnable again. Straight to its
+  // scheduler: context::active()->schedule() would first look up the running fiber in
+  // thread-local storage, which costs more than the rest of a wake-up.
+  void resume() { ctx_->get_scheduler()->schedule(ctx_); }
   void check_stack() const {
     if (canary_ && !canary_->intact()) report_stack_overflow(stack_bytes_);
   }
