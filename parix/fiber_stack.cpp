@@ -14,6 +14,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -99,10 +100,14 @@ void install_fault_handler() {
     has_alt_stack = true;  // someone (a sanitizer) already gave this thread one
     return;
   }
-  static thread_local std::array<char, 64 * 1024> alt;
+  // Allocated on demand (a thread_local array would grow every thread's TLS block); kept for the
+  // thread's life, as the kernel may switch to it at any fault.
+  constexpr std::size_t kAltStackBytes = 64 * 1024;
+  static thread_local std::unique_ptr<char[]> alt;
+  alt = std::make_unique<char[]>(kAltStackBytes);
   stack_t st{};
-  st.ss_sp = alt.data();
-  st.ss_size = alt.size();
+  st.ss_sp = alt.get();
+  st.ss_size = kAltStackBytes;
   has_alt_stack = sigaltstack(&st, nullptr) == 0;
 }
 

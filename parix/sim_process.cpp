@@ -160,7 +160,7 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   const std::int64_t slot = sim_.park(std::move(m));
   sim_.network->transfer(sim_.node_of[id_], sim_.node_of[e.peer], static_cast<std::int64_t>(data.size()),
                          [sim = &sim_, slot] { sim->deliver(sim->unpark(slot)); });
-  return Request(req);
+  return Request(std::move(req));
 }
 
 void Simulation::deliver(Message&& m) {
