@@ -10,6 +10,7 @@
 
 #include "parix/fiber_processes.hpp"
 #include "parix/fiber_stack.hpp"
+#include "parix/simulated_runtime.hpp"
 
 namespace gcsim::parix {
 namespace {
@@ -99,6 +100,35 @@ TEST(FiberStackPoolDeathTest, OverflowOverACanaryNamesTheSetting) {
   GTEST_FLAG_SET(death_test_style, "threadsafe");
   EXPECT_EXIT(overflow_third_fiber(false), ::testing::ExitedWithCode(kStackOverflowExitCode),
               "overflowed its fiber stack of 16 KiB; raise fiber_stack_kib");
+}
+
+// End to end: a simulated program that needs more stack than the machine file gives it.
+void run_deep_program() {
+  SimulationOptions o;
+  o.config = machine::default_machine_config();
+  o.config.fiber_stack_bytes = 16 << 10;
+  o.nodes = 4;
+  run_simulated(o, [](Processor& p) {
+    if (p.id() == 3) dig(40);
+  });
+}
+
+TEST(FiberStackPoolDeathTest, ASimulatedProgramThatOverflowsGetsTheMessage) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(run_deep_program(), ::testing::ExitedWithCode(kStackOverflowExitCode),
+              "overflowed its fiber stack of 16 KiB; raise fiber_stack_kib in the \\[runtime\\] table");
+}
+
+// The same program with room enough runs.
+TEST(FiberStackPool, TheSameProgramRunsWithALargerStack) {
+  SimulationOptions o;
+  o.config = machine::default_machine_config();
+  o.config.fiber_stack_bytes = 256 << 10;
+  o.nodes = 4;
+  const RunResult r = run_simulated(o, [](Processor& p) {
+    if (p.id() == 3) dig(40);
+  });
+  EXPECT_EQ(r.nodes, 4);
 }
 
 // The canary check itself: painted is intact, any of its checked depths written is not.
