@@ -1,8 +1,6 @@
 #include "machine/flow_network.hpp"
 
 #include <algorithm>
-#include <limits>
-#include <set>
 
 namespace gcsim::machine {
 
@@ -15,14 +13,25 @@ void FlowNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action 
     ctx_.kernel.after(lat, std::move(on_arrival));
     return;
   }
-  if (on_channel_.empty()) on_channel_.resize(ctx_.mesh.channel_count());
+  if (on_channel_.empty()) {
+    const auto channels = static_cast<std::size_t>(ctx_.mesh.channel_count());
+    on_channel_.resize(channels);
+    channel_visited_.assign(channels, 0);
+    left_.assign(channels, 0.0);
+    unassigned_.assign(channels, 0);
+    candidate_round_.assign(channels, 0);
+  }
   const std::uint64_t id = next_id_++;
-  Flow f;
-  f.route = ctx_.mesh.route(src, dst);
+  Flow& f = flows_[id];
+  f.id = id;
+  if (!spare_routes_.empty()) {
+    f.route = std::move(spare_routes_.back());
+    spare_routes_.pop_back();
+  }
+  ctx_.mesh.route(src, dst, f.route);
   f.bytes = bytes;
   f.remaining = static_cast<double>(bytes);
   f.on_arrival = std::move(on_arrival);
-  flows_.emplace(id, std::move(f));
   ctx_.kernel.after(lat, [this, id] { start_flow(id); });
 }
 
@@ -30,90 +39,117 @@ void FlowNetwork::start_flow(std::uint64_t id) {
   Flow& f = flows_.at(id);
   f.started = f.updated = ctx_.kernel.now();
   f.transmitting = true;
-  for (int ch : f.route) on_channel_[ch].push_back(id);
+  for (int ch : f.route) on_channel_[ch].push_back(&f);
   reshare(f.route);
 }
 
 void FlowNetwork::finish_flow(std::uint64_t id, std::uint64_t version) {
   auto it = flows_.find(id);
   if (it == flows_.end() || it->second.version != version) return;  // rescheduled since
-  Flow f = std::move(it->second);
-  flows_.erase(it);
+  Flow& f = it->second;
   for (int ch : f.route) {
     auto& v = on_channel_[ch];
-    v.erase(std::find(v.begin(), v.end(), id));
+    v.erase(std::find(v.begin(), v.end(), &f));
   }
   account(f.route, f.bytes, f.started, ctx_.kernel.now());
   reshare(f.route);
-  f.on_arrival();
+  Kernel::Action on_arrival = std::move(f.on_arrival);
+  spare_routes_.push_back(std::move(f.route));
+  flows_.erase(it);
+  on_arrival();
+}
+
+// The component of flows linked through shared channels; no other flow's rate can change.
+void FlowNetwork::collect_component(const std::vector<int>& seed) {
+  ++solve_;
+  component_channels_.clear();
+  component_flows_.clear();
+  frontier_.assign(seed.begin(), seed.end());
+  while (!frontier_.empty()) {
+    const int ch = frontier_.back();
+    frontier_.pop_back();
+    if (channel_visited_[ch] == solve_) continue;
+    channel_visited_[ch] = solve_;
+    component_channels_.push_back(ch);
+    for (Flow* f : on_channel_[ch]) {
+      if (f->visited == solve_) continue;
+      f->visited = solve_;
+      f->assigned = false;
+      component_flows_.push_back(f);
+      for (int c : f->route) {
+        if (channel_visited_[c] != solve_) frontier_.push_back(c);
+      }
+    }
+  }
+}
+
+// Max-min fair rates by progressive filling: repeatedly saturate the channel that offers the
+// smallest equal share to the flows still unassigned (the lowest-numbered one on a tie), and fix
+// those flows at that share. The candidates heap holds every channel's current share (and stale
+// ones, skipped when popped), so the choice and every floating-point operation are those of a
+// scan over all the component's channels in channel order.
+void FlowNetwork::fill_progressively() {
+  const double capacity = ctx_.config.channel_bandwidth();
+  auto later = [](const Candidate& a, const Candidate& b) {
+    return a.share != b.share ? a.share > b.share : a.channel > b.channel;
+  };
+  candidates_.clear();
+  for (int ch : component_channels_) {
+    left_[ch] = capacity;
+    unassigned_[ch] = static_cast<int>(on_channel_[ch].size());
+    if (unassigned_[ch] > 0) candidates_.push_back({left_[ch] / unassigned_[ch], ch});
+  }
+  std::make_heap(candidates_.begin(), candidates_.end(), later);
+  std::size_t to_assign = component_flows_.size();
+  while (to_assign > 0 && !candidates_.empty()) {
+    std::pop_heap(candidates_.begin(), candidates_.end(), later);
+    const Candidate c = candidates_.back();
+    candidates_.pop_back();
+    const int n = unassigned_[c.channel];
+    if (n == 0 || left_[c.channel] / n != c.share) continue;  // stale
+    const double share = c.share;
+    just_assigned_.clear();
+    for (Flow* f : on_channel_[c.channel]) {
+      if (f->assigned) continue;
+      f->assigned = true;
+      f->new_rate = share;
+      just_assigned_.push_back(f);
+      for (int ch : f->route) {
+        left_[ch] -= share;
+        --unassigned_[ch];
+      }
+    }
+    to_assign -= just_assigned_.size();
+    // The channels whose share changed get a fresh candidate.
+    ++fill_round_;
+    for (Flow* f : just_assigned_) {
+      for (int ch : f->route) {
+        if (unassigned_[ch] == 0 || candidate_round_[ch] == fill_round_) continue;
+        candidate_round_[ch] = fill_round_;
+        candidates_.push_back({left_[ch] / unassigned_[ch], ch});
+        std::push_heap(candidates_.begin(), candidates_.end(), later);
+      }
+    }
+  }
 }
 
 void FlowNetwork::reshare(const std::vector<int>& seed) {
-  // The component of flows linked through shared channels; no other flow's rate can change.
-  std::set<std::uint64_t> component;
-  std::set<int> channels;
-  std::vector<int> frontier(seed.begin(), seed.end());
-  while (!frontier.empty()) {
-    const int ch = frontier.back();
-    frontier.pop_back();
-    if (!channels.insert(ch).second) continue;
-    for (std::uint64_t id : on_channel_[ch]) {
-      if (component.insert(id).second) {
-        for (int c : flows_.at(id).route) {
-          if (!channels.count(c)) frontier.push_back(c);
-        }
-      }
-    }
-  }
-  if (component.empty()) return;
-
-  // Max-min fair rates by progressive filling: repeatedly saturate the channel that offers the
-  // smallest equal share to the flows still unassigned, and fix those flows at that share.
-  const double capacity = ctx_.config.channel_bandwidth();
-  std::map<int, double> left;
-  std::map<int, int> unassigned;
-  for (int ch : channels) {
-    left[ch] = capacity;
-    unassigned[ch] = static_cast<int>(on_channel_[ch].size());
-  }
-  std::map<std::uint64_t, double> rate;
-  std::vector<std::uint64_t> todo(component.begin(), component.end());
-  while (!todo.empty()) {
-    int bottleneck = -1;
-    double share = std::numeric_limits<double>::infinity();
-    for (const auto& [ch, n] : unassigned) {
-      if (n > 0 && left[ch] / n < share) {
-        share = left[ch] / n;
-        bottleneck = ch;
-      }
-    }
-    std::vector<std::uint64_t> rest;
-    for (std::uint64_t id : todo) {
-      const Flow& f = flows_.at(id);
-      if (std::find(f.route.begin(), f.route.end(), bottleneck) == f.route.end()) {
-        rest.push_back(id);
-        continue;
-      }
-      rate[id] = share;
-      for (int ch : f.route) {
-        left[ch] -= share;
-        --unassigned[ch];
-      }
-    }
-    todo.swap(rest);
-  }
-
+  collect_component(seed);
+  if (component_flows_.empty()) return;
+  fill_progressively();
+  // Completions are scheduled in flow order, so that simultaneous ones keep their order.
+  std::sort(component_flows_.begin(), component_flows_.end(), [](const Flow* a, const Flow* b) { return a->id < b->id; });
   const SimTime now = ctx_.kernel.now();
-  for (auto [id, r] : rate) {
-    Flow& f = flows_.at(id);
-    if (f.version != 0 && r == f.rate) continue;  // unchanged: its completion event still holds
-    f.remaining = std::max(0.0, f.remaining - f.rate * to_seconds(now - f.updated));
-    f.updated = now;
-    f.rate = r;
-    ++f.version;
+  for (Flow* f : component_flows_) {
+    const double r = f->new_rate;
+    if (f->version != 0 && r == f->rate) continue;  // unchanged: its completion event still holds
+    f->remaining = std::max(0.0, f->remaining - f->rate * to_seconds(now - f->updated));
+    f->updated = now;
+    f->rate = r;
+    ++f->version;
     // Same expression as NetworkModel::serialization, so a lone flow matches the analytic model.
-    const SimTime eta = now + from_seconds(f.remaining / f.rate);
-    ctx_.kernel.at(eta, [this, id = id, v = f.version] { finish_flow(id, v); });
+    const SimTime eta = now + from_seconds(f->remaining / f->rate);
+    ctx_.kernel.at(eta, [this, id = f->id, v = f->version] { finish_flow(id, v); });
   }
 }
 

@@ -5,24 +5,71 @@
 
 namespace gcsim::machine {
 
-void Kernel::at(SimTime t, Action action) {
+std::uint32_t Kernel::take_slot() {
+  if (free_slots_.empty()) {
+    const auto first = static_cast<std::uint32_t>(chunks_.size() * kChunk);
+    chunks_.push_back(std::make_unique<Action[]>(kChunk));
+    free_slots_.reserve(free_slots_.size() + kChunk);
+    for (std::uint32_t i = kChunk; i-- > 0;) free_slots_.push_back(first + i);
+  }
+  const std::uint32_t slot = free_slots_.back();
+  free_slots_.pop_back();
+  return slot;
+}
+
+void Kernel::at(SimTime t, Action a) {
   if (t < now_) {
     throw std::logic_error("Kernel::at: event scheduled in the past (" + std::to_string(t) + " ps < now " +
                            std::to_string(now_) + " ps)");
   }
-  queue_.push(Event{t, seq_++, std::move(action)});
+  const std::uint32_t slot = take_slot();
+  action(slot) = std::move(a);
+  // Sift up: a hole moves towards the root while the parent is later.
+  const Key key{t, seq_++, slot};
+  std::size_t i = heap_.size();
+  heap_.push_back(key);
+  while (i > 0) {
+    const std::size_t parent = (i - 1) / 2;
+    if (!(key < heap_[parent])) break;
+    heap_[i] = heap_[parent];
+    i = parent;
+  }
+  heap_[i] = key;
 }
 
 bool Kernel::step() {
-  if (queue_.empty()) return false;
-  // priority_queue::top is const; the action is moved out through a const_cast before pop, which
-  // is safe because the element is removed immediately and the ordering keys are untouched.
-  Event& top = const_cast<Event&>(queue_.top());
+  if (heap_.empty()) return false;
+  const Key top = heap_.front();
+  // Sift the last key down from the root.
+  const Key last = heap_.back();
+  heap_.pop_back();
+  const std::size_t n = heap_.size();
+  if (n > 0) {
+    std::size_t i = 0;
+    for (;;) {
+      std::size_t child = 2 * i + 1;
+      if (child >= n) break;
+      if (child + 1 < n && heap_[child + 1] < heap_[child]) ++child;
+      if (!(heap_[child] < last)) break;
+      heap_[i] = heap_[child];
+      i = child;
+    }
+    heap_[i] = last;
+  }
   now_ = top.time;
-  Action action = std::move(top.action);
-  queue_.pop();
   ++processed_;
-  action();
+  Action& a = action(top.slot);
+  // The slot is released only after the action ran: it may schedule events, which must not reuse it.
+  struct Release {
+    Kernel& k;
+    Action& a;
+    std::uint32_t slot;
+    ~Release() {
+      a.reset();
+      k.free_slots_.push_back(slot);
+    }
+  } release{*this, a, top.slot};
+  a();
   return true;
 }
 

@@ -1,23 +1,26 @@
 #pragma once
 // The discrete-event kernel: a clock and a queue of actions ordered by (time, sequence number).
 // Ties at equal times run in the order they were scheduled, so a run is deterministic.
+// The queue is a binary heap of small (time, sequence, slot) keys; the actions themselves stay
+// in place in a pool of fixed-size chunks whose slots are reused, so scheduling an event
+// allocates nothing once the pool has grown to the run's peak number of pending events.
 #include <cstdint>
-#include <functional>
-#include <queue>
+#include <memory>
 #include <vector>
 
+#include "machine/kernel_action.hpp"
 #include "machine/sim_time.hpp"
 
 namespace gcsim::machine {
 
 class Kernel {
  public:
-  using Action = std::function<void()>;
+  using Action = KernelAction;
 
   SimTime now() const { return now_; }
   std::uint64_t events_processed() const { return processed_; }
-  bool idle() const { return queue_.empty(); }
-  std::size_t pending() const { return queue_.size(); }
+  bool idle() const { return heap_.empty(); }
+  std::size_t pending() const { return heap_.size(); }
 
   // Schedules action at absolute time t (t >= now()).
   void at(SimTime t, Action action);
@@ -32,17 +35,21 @@ class Kernel {
   }
 
  private:
-  struct Event {
+  struct Key {
     SimTime time;
     std::uint64_t seq;
-    Action action;
+    std::uint32_t slot;
+    bool operator<(const Key& o) const { return time != o.time ? time < o.time : seq < o.seq; }
   };
-  struct Later {
-    bool operator()(const Event& a, const Event& b) const {
-      return a.time != b.time ? a.time > b.time : a.seq > b.seq;
-    }
-  };
-  std::priority_queue<Event, std::vector<Event>, Later> queue_;
+  static constexpr std::uint32_t kChunkBits = 10;
+  static constexpr std::uint32_t kChunk = 1u << kChunkBits;
+  Action& action(std::uint32_t slot) { return chunks_[slot >> kChunkBits][slot & (kChunk - 1)]; }
+  std::uint32_t take_slot();
+
+  std::vector<Key> heap_;  // min-heap on (time, seq)
+  // Chunks never move, so an action runs in place even if it schedules more events.
+  std::vector<std::unique_ptr<Action[]>> chunks_;
+  std::vector<std::uint32_t> free_slots_;
   SimTime now_ = 0;
   std::uint64_t seq_ = 0;
   std::uint64_t processed_ = 0;

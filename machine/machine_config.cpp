@@ -179,7 +179,7 @@ void read_connect_model(const Reader& r, const toml::table& net, MachineConfig& 
 MachineConfig parse_machine_config(std::string_view text, const std::string& source) {
   const toml::table root = parse_with_bases(text, source);
   Reader r(root, source);
-  r.only_keys(root, "the file", {"name", "topology", "node", "network", "ops", "calibration"});
+  r.only_keys(root, "the file", {"name", "topology", "node", "network", "ops", "calibration", "runtime"});
 
   MachineConfig c;
   c.source = source;
@@ -239,6 +239,10 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
   c.packet_bytes = static_cast<std::int64_t>(r.number(net, "packet_bytes", "[network]", 1, 1 << 30, 1024.0));
 
   read_calibration(r, root, c);
+
+  const toml::table& runtime = r.table(root, "runtime", false);
+  r.only_keys(runtime, "[runtime]", {"fiber_stack_kib"});
+  c.fiber_stack_bytes = std::int64_t(r.number(runtime, "fiber_stack_kib", "[runtime]", 16, 1 << 20, 64.0)) << 10;
 
   const toml::table& ops = r.table(root, "ops", false);
   for (const auto& [k, v] : ops) {

@@ -57,6 +57,9 @@ struct MachineConfig {
   // The packet model cuts messages into packets of at most this many bytes.
   std::int64_t packet_bytes = 1024;
 
+  // Runtime (the host, not the simulated machine): bytes of stack per simulated process's fiber.
+  std::int64_t fiber_stack_bytes = 64 << 10;
+
   int links_per_node() const { return comm_processors * links_per_comm_processor; }
   // The links of a node are spread evenly over its four mesh directions.
   int links_per_direction() const { return links_per_node() / 4; }

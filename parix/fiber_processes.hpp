@@ -19,21 +19,46 @@ class FiberContext {
  public:
   // Called first thing in the process's fiber.
   void bind_to_current() { ctx_ = boost::fibers::context::active(); }
-  // From the process itself: sleep until resume().
-  void suspend() { ctx_->suspend(); }
-  // From any fiber: make the process runnable again.
-  void resume() { boost::fibers::context::active()->schedule(ctx_); }
+  // From the process itself: sleep until resume(). Checks the stack first (see fiber_stack.hpp):
+  // no other fiber may run after this one smashed a neighbour's stack.
+  void suspend() {
+    check_stack();
+    ctx_->suspend();
+  }
+  // From any fiber of the same host thread: make the process runnable again. Straight to its
+  // scheduler: context::active()->schedule() would first look up the running fiber in
+  // thread-local storage, which costs more than the rest of a wake-up.
+  void resume() { ctx_->get_scheduler()->schedule(ctx_); }
+  void check_stack() const {
+    if (canary_ && !canary_->intact()) report_stack_overflow(stack_bytes_);
+  }
 
  private:
+  friend class FiberPool;
   boost::fibers::context* ctx_ = nullptr;
+  const StackCanary* canary_ = nullptr;  // null: the stack has a guard page
+  std::size_t stack_bytes_ = 0;
 };
 
 class FiberPool {
  public:
-  static constexpr std::size_t kStackBytes = 1 << 20;
-  // Starts body in a new fiber; it first runs at the next yield().
-  void launch(std::function<void()> body) {
-    fibers_.emplace_back(boost::fibers::launch::post, std::allocator_arg, FiberStack(kStackBytes), std::move(body));
+  explicit FiberPool(std::size_t stack_bytes) : stacks_(std::make_shared<FiberStackPool>(stack_bytes)) {}
+  FiberPool(const FiberPool&) = delete;
+  FiberPool& operator=(const FiberPool&) = delete;
+  ~FiberPool() {
+    fibers_.clear();  // joined by join_all (or never started: std::terminate, as for any fiber)
+    yield();          // lets Boost release the terminated fibers now, returning their stacks
+  }
+  // Starts body in a new fiber whose stack `context` watches; it first runs at the next yield().
+  // Throws (std::runtime_error) and starts nothing if no stack can be mapped.
+  void launch(FiberContext& context, std::function<void()> body) {
+    fibers_.emplace_back(boost::fibers::launch::post, std::allocator_arg, FiberStack(stacks_),
+                         [&context, body = std::move(body)] {
+                           body();
+                           context.check_stack();
+                         });
+    context.canary_ = stacks_->last_canary();
+    context.stack_bytes_ = stacks_->stack_bytes();
   }
   // From the simulation's main fiber: lets the ready fibers run.
   static void yield() { boost::this_fiber::yield(); }
@@ -41,8 +66,10 @@ class FiberPool {
   void join_all() {
     for (auto& f : fibers_) f.join();
   }
+  FiberStackPool& stacks() { return *stacks_; }
 
  private:
+  std::shared_ptr<FiberStackPool> stacks_;  // shared with the fibers, which return their stacks to it
   std::vector<boost::fibers::fiber> fibers_;
 };
 

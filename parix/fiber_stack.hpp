@@ -1,53 +1,109 @@
 #pragma once
-// Stacks for the simulated processors' fibers: guard-paged (an overflow faults instead of
-// corrupting a neighbour) and registered with valgrind when its header is available, so that
-// memcheck understands the stack switches instead of reporting every access to a fiber's locals.
-// (Boost's own BOOST_USE_VALGRIND would change stack_context's layout and break the ABI of the
-// distribution's compiled Boost.Fiber.)
+// Stacks for the simulated processors' fibers, carved from a few large memory maps.
+//
+// A guard-paged stack per fiber costs two kernel memory maps (the guard and the stack), and the
+// system allows about 65,530 per process: one mapping per fiber stops near 32,700 fibers. So the
+// pool carves stacks from slabs of kStacksPerSlab stacks each, and protects them in one of two ways:
+//   - guarded slabs, while the map budget allows (the first ~25,000 stacks with the default limit):
+//     a PROT_NONE page below every stack, so an overflow faults at once, before it writes anything;
+//     the fault handler (fiber_stack_pool.cpp) names the cause instead of a bare segmentation fault;
+//   - painted slabs beyond that (one map per slab): a canary at the bottom of every stack, checked
+//     each time the fiber switches out or returns. The overflowing fiber is the only one running
+//     until its next switch-out (one host thread), so no other fiber ever runs on a smashed stack.
+//     A frame that skips the whole canary without writing it would escape; the canary is 1 KiB
+//     and checked at several depths, and the guarded stacks cover the machine's first nodes.
+// Either way an overflow ends the run with a message naming [runtime] fiber_stack_kib, never with
+// silent corruption. Stacks are recycled on the pool's free list and unmapped with the pool.
 #include <cstddef>
+#include <cstdint>
+#include <map>
+#include <memory>
 #include <unordered_map>
+#include <vector>
 
-#include <boost/context/protected_fixedsize_stack.hpp>
-
-#if __has_include(<valgrind/valgrind.h>)
-#include <valgrind/valgrind.h>
-#define GCSIM_VALGRIND_STACKS 1
-#endif
+#include <boost/context/stack_context.hpp>
 
 namespace gcsim::parix {
 
-class FiberStack {
+// Exit status of a run that overflowed a fiber stack.
+inline constexpr int kStackOverflowExitCode = 70;
+
+// The bottom of a painted stack; intact() is false once something has written over it.
+class StackCanary {
  public:
-  explicit FiberStack(std::size_t bytes) : inner_(bytes) {}
-
-  boost::context::stack_context allocate() {
-    boost::context::stack_context s = inner_.allocate();
-#ifdef GCSIM_VALGRIND_STACKS
-    registered()[s.sp] = VALGRIND_STACK_REGISTER(static_cast<char*>(s.sp) - s.size, s.sp);
-#endif
-    return s;
-  }
-
-  void deallocate(boost::context::stack_context& s) noexcept {
-#ifdef GCSIM_VALGRIND_STACKS
-    auto it = registered().find(s.sp);
-    if (it != registered().end()) {
-      VALGRIND_STACK_DEREGISTER(it->second);
-      registered().erase(it);
-    }
-#endif
-    inner_.deallocate(s);
+  static constexpr std::size_t kBytes = 1024;
+  static constexpr std::uint64_t kPattern = 0x9e3779b97f4a7c15ull;
+  void paint();
+  bool intact() const {
+    // Deepest-reached first: an overflow writes downwards from the top of the canary.
+    return words_[kWords - 1] == kPattern && words_[kWords / 2] == kPattern && words_[kWords / 4] == kPattern &&
+           words_[0] == kPattern;
   }
 
  private:
-#ifdef GCSIM_VALGRIND_STACKS
-  // Stack top -> valgrind's id; fibers are created and destroyed on one host thread.
-  static std::unordered_map<void*, unsigned>& registered() {
-    static thread_local std::unordered_map<void*, unsigned> ids;
-    return ids;
-  }
-#endif
-  boost::context::protected_fixedsize_stack inner_;
+  static constexpr std::size_t kWords = kBytes / sizeof(std::uint64_t);
+  std::uint64_t words_[kWords];
+};
+
+// Ends the process with the overflow message (the stack can no longer be trusted: no unwinding).
+[[noreturn]] void report_stack_overflow(std::size_t stack_bytes);
+
+class FiberStackPool {
+ public:
+  static constexpr std::size_t kStacksPerSlab = 64;
+  // stack_bytes: usable bytes per stack, rounded up to whole pages.
+  explicit FiberStackPool(std::size_t stack_bytes);
+  ~FiberStackPool();
+  FiberStackPool(const FiberStackPool&) = delete;
+  FiberStackPool& operator=(const FiberStackPool&) = delete;
+
+  // Throws std::runtime_error naming the sizes if the host cannot map more memory.
+  boost::context::stack_context allocate();
+  void deallocate(boost::context::stack_context& s) noexcept;
+
+  // The canary of the stack last returned by allocate(); null if that stack has a guard page.
+  StackCanary* last_canary() const { return last_canary_; }
+  std::size_t stack_bytes() const { return stack_bytes_; }
+  std::size_t guarded_stacks() const { return guarded_; }
+  std::size_t painted_stacks() const { return painted_; }
+
+  // For tests: carve no more guarded slabs, as if the map budget were spent.
+  void stop_guarding() { guarding_ = false; }
+
+ private:
+  struct Stack {
+    char* bottom;  // lowest usable byte
+    bool guarded;
+  };
+  void add_slab();
+  bool guard_budget_allows() const;
+
+  std::size_t stack_bytes_;
+  std::size_t page_;
+  bool guarding_ = true;
+  struct Slab {
+    std::size_t bytes;
+    bool guarded;
+  };
+  std::map<char*, Slab> slabs_;  // by base address
+  std::vector<Stack> free_;
+  std::size_t guarded_ = 0;
+  std::size_t painted_ = 0;
+  StackCanary* last_canary_ = nullptr;
+  std::unordered_map<void*, unsigned> valgrind_ids_;  // stack top -> id, only under valgrind
+};
+
+// The allocator handed to Boost.Fiber: a share of the pool. Boost keeps a copy in each fiber's
+// record and releases terminated fibers lazily (at its scheduler's next dispatch), so the pool
+// lives until the last stack is back, whenever that is.
+class FiberStack {
+ public:
+  explicit FiberStack(std::shared_ptr<FiberStackPool> pool) : pool_(std::move(pool)) {}
+  boost::context::stack_context allocate() { return pool_->allocate(); }
+  void deallocate(boost::context::stack_context& s) noexcept { pool_->deallocate(s); }
+
+ private:
+  std::shared_ptr<FiberStackPool> pool_;
 };
 
 }  // namespace gcsim::parix

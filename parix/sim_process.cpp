@@ -140,7 +140,7 @@ LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
 
 Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool synchronous) {
   LinkEnd& e = end_of(link, "send");
-  auto req = std::make_shared<RequestState>();
+  auto req = new_request(sim_.request_blocks);
   req->link = link.handle();
   req->peer = e.peer;
   Message m;
@@ -160,7 +160,7 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   const std::int64_t slot = sim_.park(std::move(m));
   sim_.network->transfer(sim_.node_of[id_], sim_.node_of[e.peer], static_cast<std::int64_t>(data.size()),
                          [sim = &sim_, slot] { sim->deliver(sim->unpark(slot)); });
-  return Request(req);
+  return Request(std::move(req));
 }
 
 void Simulation::deliver(Message&& m) {
@@ -195,7 +195,7 @@ void SimProcess::send(Link& link, std::span<const std::byte> data) {
 
 Request SimProcess::irecv(Link& link) {
   LinkEnd& e = end_of(link, "recv");
-  auto req = std::make_shared<RequestState>();
+  auto req = new_request(sim_.request_blocks);
   req->is_receive = true;
   req->link = link.handle();
   req->peer = e.peer;

@@ -47,7 +47,12 @@ std::string Simulation::deadlock_report() const {
 RunResult Simulation::run(const std::function<void(Processor&)>& program) {
   const auto wall_start = std::chrono::steady_clock::now();
   for (int i = 0; i < config.nodes; ++i) processes.push_back(std::make_unique<SimProcess>(*this, i, 0));
-  for (int i = 0; i < config.nodes; ++i) launch(processes[i].get(), program);
+  try {
+    for (int i = 0; i < config.nodes; ++i) launch(processes[i].get(), program);
+  } catch (...) {
+    failure = std::current_exception();  // out of host memory: unwind what was launched
+    cancelling = true;
+  }
 
   bool deadlock = false;
   for (;;) {

@@ -19,6 +19,7 @@
 #include "parix/connection_matcher.hpp"
 #include "parix/fiber_processes.hpp"
 #include "parix/in_order_delivery.hpp"
+#include "parix/request_pool.hpp"
 #include "parix/simulated_runtime.hpp"
 
 namespace gcsim::parix::detail {
@@ -114,7 +115,8 @@ class Simulation {
         trace(o.trace, config.nodes, config.mesh_width, config.mesh_height),
         network(machine::make_network_model(o.network_model.empty() ? config.network_model : o.network_model,
                                             {kernel, mesh, config, trace.enabled() ? &trace : nullptr})),
-        connections(config, mesh) {
+        connections(config, mesh),
+        fibers(static_cast<std::size_t>(config.fiber_stack_bytes)) {
     for (int n = 0; n < config.nodes; ++n) nodes.emplace_back(kernel, config.cpus_per_node, config.memory_bytes);
     stats.resize(config.nodes);
     node_of = checked_placement(o.placement, config.nodes);
@@ -122,13 +124,12 @@ class Simulation {
 
   RunResult run(const std::function<void(Processor&)>& program);
 
+  // Starts p's fiber; throws, with nothing started, if no fiber stack can be mapped.
   void launch(SimProcess* p, std::function<void(Processor&)> body) {
-    ++runnable;
-    ++live;
-    fibers.launch([this, p, body = std::move(body)] {
+    fibers.launch(p->fiber, [this, p, body = std::move(body)] {
       p->fiber.bind_to_current();
       try {
-        body(*p);
+        if (!cancelling) body(*p);  // a run abandoned before this fiber first ran skips it
       } catch (const Cancelled&) {
       } catch (...) {
         if (!failure) failure = std::current_exception();
@@ -136,6 +137,8 @@ class Simulation {
       p->drop_persistent_links();
       finish(p);
     });
+    ++runnable;
+    ++live;
   }
 
   void finish(SimProcess* p) {
@@ -178,6 +181,7 @@ class Simulation {
 
   std::string deadlock_report() const;
 
+  BlockPool request_blocks;  // first member: outlives every request the others hold
   machine::MachineConfig config;
   std::vector<int> node_of;  // processor -> node (SimulationOptions::placement)
   machine::Kernel kernel;

@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <functional>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace gcsim::machine {
@@ -63,6 +66,53 @@ TEST(Kernel, KeepsPicosecondResolutionOverLongRuns) {
   k.run();
   EXPECT_EQ(seen, month + 1);
   EXPECT_LT(3 * month, std::numeric_limits<SimTime>::max());  // 106 days fit
+}
+
+// Actions of every kind -- small and trivially movable, owning (a shared_ptr), too big to store
+// inline -- run once each, in (time, order of scheduling) order, and are destroyed exactly once,
+// also when they reschedule while the slot pool grows under them.
+TEST(Kernel, ActionsOfEverySizeRunOnceAndAreReleased) {
+  Kernel k;
+  auto token = std::make_shared<int>(0);
+  std::vector<int> order;
+  struct Big {
+    char pad[200];
+  };
+  for (int i = 0; i < 3000; ++i) {
+    const SimTime t = (i * 7919) % 101;
+    if (i % 3 == 0) k.at(t, [&order, i] { order.push_back(i); });
+    else if (i % 3 == 1) k.at(t, [&order, i, token] { order.push_back(i); });
+    else k.at(t, [&order, i, big = Big{}] { order.push_back(i + big.pad[0]); });
+  }
+  EXPECT_EQ(token.use_count(), 1 + 1000);
+  // An action that schedules more while it runs (the pool grows by chunks meanwhile).
+  int chained = 0;
+  std::function<void()> chain = [&] {
+    if (++chained < 5000) k.after(0, [&] { chain(); });
+  };
+  k.at(200, [&] { chain(); });
+  k.run();
+  EXPECT_EQ(chained, 5000);
+  EXPECT_EQ(token.use_count(), 1);  // every copy destroyed after running
+  ASSERT_EQ(order.size(), 3000u);
+  std::vector<int> expected(3000);
+  for (int i = 0; i < 3000; ++i) expected[i] = i;
+  std::stable_sort(expected.begin(), expected.end(),
+                   [](int a, int b) { return (a * 7919) % 101 < (b * 7919) % 101; });
+  EXPECT_EQ(order, expected);
+}
+
+TEST(KernelAction, MovesLeaveTheSourceEmpty) {
+  auto token = std::make_shared<int>(7);
+  int seen = 0;
+  KernelAction a = [&seen, token] { seen = *token; };
+  KernelAction b = std::move(a);
+  EXPECT_FALSE(a);  // NOLINT(bugprone-use-after-move): moved-from is empty by contract
+  EXPECT_TRUE(b);
+  b();
+  EXPECT_EQ(seen, 7);
+  b.reset();
+  EXPECT_EQ(token.use_count(), 1);
 }
 
 TEST(SimTime, ConversionsRoundCostsUp) {

@@ -63,10 +63,25 @@ TEST(MachineConfig, BuiltInDefaultIsThePublishedGC) {
 TEST(MachineConfig, ShippedFilesLoad) {
   const std::string dir = GCSIM_SOURCE_DIR "/configs/";
   for (const char* f : {"gc-powerplus.toml", "gc-powerplus-calibrated.toml", "whatif-1024-nodes.toml",
-                        "whatif-fast-links.toml"}) {
+                        "whatif-fast-links.toml", "whatif-4096-nodes.toml", "whatif-16384-nodes.toml",
+                        "whatif-65536-nodes.toml"}) {
     EXPECT_NO_THROW(load_machine_config(dir + f)) << f;
   }
   EXPECT_EQ(load_machine_config(dir + "whatif-1024-nodes.toml").nodes, 1024);
+  const MachineConfig huge = load_machine_config(dir + "whatif-65536-nodes.toml");
+  EXPECT_EQ(huge.nodes, 65536);
+  EXPECT_EQ(huge.mesh_width, 256);
+  EXPECT_EQ(huge.link_bandwidth, default_machine_config().link_bandwidth);  // inherited from the GC
+}
+
+TEST(MachineConfig, FiberStackSizeComesFromTheRuntimeTable) {
+  EXPECT_EQ(parse_machine_config(kValid, "tiny.toml").fiber_stack_bytes, 64 << 10);  // the default
+  EXPECT_EQ(parse_machine_config(kValid + "[runtime]\nfiber_stack_kib = 256\n", "t.toml").fiber_stack_bytes, 256 << 10);
+  const std::string small = error_of(kValid + "[runtime]\nfiber_stack_kib = 4\n");
+  EXPECT_NE(small.find("bad.toml:22"), std::string::npos) << small;
+  EXPECT_NE(small.find("fiber_stack_kib"), std::string::npos) << small;
+  const std::string unknown = error_of(kValid + "[runtime]\nstack = 4\n");
+  EXPECT_NE(unknown.find("unknown key 'stack' in [runtime]"), std::string::npos) << unknown;
 }
 
 TEST(MachineConfig, ParsesAValidFile) {
