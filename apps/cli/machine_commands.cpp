@@ -17,6 +17,10 @@
 namespace gcsim::cli {
 namespace {
 
+// Without --nodes, bcast and bench ring use every node of the machine file (64 on the GC,
+// 65536 on whatif-65536-nodes.toml).
+constexpr int kWholeMachine = std::numeric_limits<int>::max();
+
 std::string formula(double v) { return std::isnan(v) ? "-" : fmt::format("{:.2f}", v); }
 
 void add_topo(CommandGroups& g) {
@@ -145,7 +149,7 @@ void add_bcast(CommandGroups& g) {
       print_bcast_table(o->machine);
       return;
     }
-    const parix::RunOptions so = run_options(o->machine, 64);
+    const parix::RunOptions so = run_options(o->machine, kWholeMachine);
     const parix::BcastAlgo a = parse_algo(o->algo);
     const std::int64_t bytes = o->size;
     parix::RunResult r = parix::run(so, [&](parix::Processor& p) { all_node_broadcast(p, bytes, a); });
@@ -169,7 +173,7 @@ void add_bench_ring(CommandGroups& g) {
   cmd->add_option("--iterations", o->iterations, "Messages each processor sends")->check(CLI::Range(1, 1 << 30))->capture_default_str();
   cmd->add_option("--size", o->size, "Bytes per message")->transform(CLI::AsSizeValue(false))->capture_default_str();
   cmd->callback([o] {
-    const parix::RunOptions so = run_options(o->machine, 64);
+    const parix::RunOptions so = run_options(o->machine, kWholeMachine);
     const int iterations = o->iterations;
     const std::int64_t bytes = o->size;
     parix::RunResult r = parix::run(so, [&](parix::Processor& p) { ring_exchange(p, iterations, bytes); });
