@@ -49,12 +49,26 @@ MediaScene experiment2_scene() {
   return s;
 }
 
+MediaScene uniform_fog_scene() {
+  MediaScene s;
+  s.name = "fog";
+  s.fog_box = {{-2, -1.5, -2}, {2, 1.5, 2}, {1, 1, 1}};
+  s.outside = {0.5, 0.4, 0.0, Phase::isotropic()};
+  // A Lambertian disk as wide as the box above it (exponent 1: radiance constant over directions).
+  s.area_light = DirectionalAreaLight{{0.0, 1.49, 0.0}, {0.0, -1.0, 0.0}, 2.0, 1.0, 20.0};
+  s.camera = {{0, 0, -1.95}, {0, 0, 0}, {0, 1, 0}, 50.0, 128, 96};
+  s.photons_emitted = 50000;
+  s.k_nearest = 100;
+  return s;
+}
+
 MediaScene scene_by_name(const std::string& name) {
   if (name == "small") return small_scene();
   if (name == "exp1") return experiment1_scene(Exp1Reading::albedo);
   if (name == "exp1-literal") return experiment1_scene(Exp1Reading::literal);
   if (name == "exp2") return experiment2_scene();
-  throw std::invalid_argument("media scene '" + name + "': expected small, exp1, exp1-literal or exp2");
+  if (name == "fog") return uniform_fog_scene();
+  throw std::invalid_argument("media scene '" + name + "': expected small, exp1, exp1-literal, exp2 or fog");
 }
 
 }  // namespace gcsim::media

@@ -32,6 +32,7 @@ double march_segment_in_scatter(const SegmentQuery& q, const MarchSettings& s,
   ++counters.segments;
   const Segment seg{q.length, m.sigma_t};
   const double s_int = segment_integral(m.sigma_t, q.length);
+  counters.integral_s += s_int;
   auto li_at = [&](double t) {
     ++counters.samples;
     return li(q.origin + t * q.direction);
@@ -47,6 +48,7 @@ double march_segment_in_scatter(const SegmentQuery& q, const MarchSettings& s,
     if (h.edges.back() < q.length) h.edges.push_back(q.length), h.values.push_back(0.0);
     h.edges.front() = 0.0, h.edges.back() = q.length;
     hist = std::make_unique<HistogramDistance>(seg, h.edges, h.values, s.defensive_alpha);
+    counters.integral_s_h += std::max(0.0, hist->s_h());
   }
   if (s.estimator == Estimator::grid) return m.sigma_s * hist->s_h();  // eq. (17), S_h as corrected (18)
 
