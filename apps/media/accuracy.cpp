@@ -130,14 +130,17 @@ SceneAccuracy measure_accuracy(MediaScene scene, const AccuracyOptions& o, const
   out.unit_seconds = model.predict(settings_at(Estimator::transmittance, o.unit_b, 0.0)).total;
   const double largest = *std::max_element(o.budgets.begin(), o.budgets.end());
 
-  // The reference: MIS of every technique at reference_factor × the largest budget, as two halves
-  // with their own seeds, whose difference measures the reference's own noise.
+  // The reference: radiance sampling (the lowest variance per time in every scene we tried; any
+  // unbiased estimator converges to the same image) at reference_factor × the largest budget, as two
+  // halves with their own seeds, whose difference measures the reference's own noise.
   if (progress) progress("reference");
   const double half = 0.5 * o.reference_factor * largest * out.unit_seconds;
-  const double ref_beta = model.fit(Estimator::mis, half, histogram_scale).value_or(o.unit_b * o.reference_factor * largest);
-  const Frame ref_a = render_frame(scene, caches, settings_at(Estimator::mis, ref_beta, histogram_scale), o.seed + 1000, m);
-  const Frame ref_b = render_frame(scene, caches, settings_at(Estimator::mis, ref_beta, histogram_scale), o.seed + 2000, m);
-  const apps::Image reference = mean_image({ref_a.image, ref_b.image});
+  const MarchSettings ref_settings =
+      settings_at(Estimator::radiance, model.fit(Estimator::radiance, half, histogram_scale).value_or(1.0), histogram_scale);
+  const Frame ref_a = render_frame(scene, caches, ref_settings, o.seed + 1000, m);
+  const Frame ref_b = render_frame(scene, caches, ref_settings, o.seed + 2000, m);
+  out.reference = mean_image({ref_a.image, ref_b.image});
+  const apps::Image& reference = out.reference;
   out.reference_mean = mean_value(reference);
   out.reference_noise = rmse(ref_a.image, ref_b.image) / 2.0;
   out.reference_seconds = ref_a.simulated_seconds + ref_b.simulated_seconds;
@@ -157,6 +160,7 @@ SceneAccuracy measure_accuracy(MediaScene scene, const AccuracyOptions& o, const
         r.rmse = rmse(f.image, reference);
         r.rmse_net = std::sqrt(std::max(0.0, r.rmse * r.rmse - out.reference_noise * out.reference_noise));
         r.relative_rmse = out.reference_mean > 0.0 ? r.rmse_net / out.reference_mean : 0.0;
+        r.image = f.image;
         if (bi == o.spread_budget) {
           repeats.push_back(f.image);
           for (int k = 1; k < o.spread_repeats; ++k)

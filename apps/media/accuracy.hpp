@@ -17,13 +17,13 @@
 namespace gcsim::media {
 
 struct AccuracyOptions {
-  int width = 128, height = 96;
+  int width = 96, height = 72;
   std::vector<Estimator> estimators{Estimator::uniform, Estimator::transmittance, Estimator::radiance,
                                     Estimator::equiangular, Estimator::mis};
   // Budgets as multiples of the unit: the transmittance estimator's time at M = unit_b · S.
   std::vector<double> budgets{1, 2, 4, 8};
   double unit_b = 1.0;
-  double reference_factor = 8.0;   // the reference's budget over the largest budget (MIS, two seeds)
+  double reference_factor = 4.0;   // the reference's budget over the largest budget (radiance, two seeds)
   int spread_repeats = 4;          // renders per estimator for the noise spread, at budgets[spread_budget]
   std::size_t spread_budget = 1;
   std::vector<double> photon_fractions{0.25, 0.5, 1.0};  // of the scene's photons, at fixed samples
@@ -43,6 +43,7 @@ struct BudgetRow {
   double rmse = 0.0;             // against the reference
   double rmse_net = 0.0;         // with the reference's own noise removed: sqrt(rmse² − σ_ref²)
   double relative_rmse = 0.0;    // rmse_net over the reference's mean
+  apps::Image image;             // the render
 };
 
 struct PhotonRow {
@@ -59,6 +60,7 @@ struct SceneAccuracy {
   double unit_seconds = 0.0;          // the budget unit, simulated seconds
   double grid_build_seconds = 0.0;    // both SH grids, one CPU
   double reference_mean = 0.0, reference_noise = 0.0, reference_seconds = 0.0, reference_wall = 0.0;
+  apps::Image reference;
   std::vector<BudgetRow> rows;
   std::vector<std::pair<Estimator, double>> noise_spread;  // p95 / median of per-pixel relative std
   std::vector<PhotonRow> photon_rows;

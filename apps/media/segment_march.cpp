@@ -15,8 +15,11 @@ std::vector<double> stratified_numbers(int count, apps::Rng& rng) {
 }
 
 // Draws M by stochastic rounding; returns the factor that keeps the estimate unbiased (1/M when M < 1
-// leaves a single sample, 1 otherwise since the mean of the drawn samples is already unbiased).
-int sample_count(double m, apps::Rng& rng, double& scale) {
+// leaves a single sample, 1 otherwise since the mean of the drawn samples is already unbiased). With
+// at_least_one, M < 1 takes one sample of weight 1 instead ([A12]: less noise on thin segments).
+int sample_count(double m, bool at_least_one, apps::Rng& rng, double& scale) {
+  scale = 1.0;
+  if (at_least_one && m < 1.0) return 1;
   const int n = stochastic_round(m, rng.uniform_double());
   scale = (m < 1.0 && n > 0) ? 1.0 / m : 1.0;
   return n;
@@ -56,7 +59,7 @@ double march_segment_in_scatter(const SegmentQuery& q, const MarchSettings& s,
   if (s.estimator == Estimator::radiance && s.b_histogram > 0.0 && hist->s_h() > 0.0)
     m_real = s.b_histogram * hist->s_h();  // eq. (22)
   double scale = 1.0;
-  const int count = sample_count(m_real, rng, scale);
+  const int count = sample_count(m_real, s.at_least_one_sample, rng, scale);
   if (count == 0) return 0.0;
 
   std::optional<EquiangularDistance> eq;

@@ -20,6 +20,7 @@ struct MarchSettings {
   double b = 16.0;                  // samples per unit of S (eq. 21)
   double b_histogram = 0.0;         // > 0: radiance IS takes M = b_h S_h (eq. 22); else M = b S
   double defensive_alpha = 0.1;     // transmittance share of the radiance density [A11]
+  bool at_least_one_sample = false; // M < 1: one sample (notes [A12]) instead of stochastic rounding
 };
 
 struct MarchCounters {

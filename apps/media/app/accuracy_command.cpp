@@ -2,6 +2,7 @@
 // reference on the same photon map, the noise spread, the grid's share, the photon count's effect,
 // and the issue's targets as measured (accuracy.hpp).
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/media/accuracy.hpp"
+#include "apps/media/tone_map.hpp"
 #include "apps/media/app/commands.hpp"
 #include "apps/pipeline/list_parsing.hpp"
 #include "apps/pipeline/machine_options.hpp"
@@ -33,13 +35,40 @@ struct AccuracyFlags {
   std::string budgets = "1,2,4,8", photon_fractions = "0.25,0.5,1";
   AccuracyOptions o;
   bool quick = false;
-  std::string config, csv, json;
+  std::string config, csv, json, images;
 };
+
+// DIR/media-SCENE-ESTIMATOR.png per estimator at the spread budget, DIR/media-SCENE-reference.png and
+// DIR/media-SCENE-equal-time.png (uniform | transmittance | radiance side by side), all with the
+// reference's exposure so they compare.
+void write_images(const std::string& dir, const SceneAccuracy& a, double budget) {
+  std::filesystem::create_directories(dir);
+  const double exposure = auto_exposure(a.reference);
+  auto path = [&](const std::string& what) { return (std::filesystem::path(dir) / ("media-" + a.scene + "-" + what + ".png")).string(); };
+  apps::write_png(path("reference"), tone_mapped(a.reference, exposure), 1.0f);
+  const Estimator side[] = {Estimator::uniform, Estimator::transmittance, Estimator::radiance};
+  apps::Image strip(3 * a.width + 2 * 2, a.height);
+  for (auto& px : strip.pixels()) px = glm::vec3(1.0f);  // white gaps
+  int column = 0;
+  for (const BudgetRow& r : a.rows) {
+    if (r.budget != budget || !r.fits) continue;
+    const apps::Image shown = tone_mapped(r.image, exposure);
+    apps::write_png(path(std::string(estimator_name(r.estimator))), shown, 1.0f);
+    for (int i = 0; i < 3; ++i)
+      if (side[i] == r.estimator) {
+        for (int y = 0; y < a.height; ++y)
+          for (int x = 0; x < a.width; ++x) strip.at(i * (a.width + 2) + x, y) = shown.at(x, y);
+        ++column;
+      }
+  }
+  if (column == 3) apps::write_png(path("equal-time"), strip, 1.0f);
+  fmt::print("images    {}/media-{}-*.png (budget {}, the reference's exposure)\n", dir, a.scene, budget);
+}
 
 void print_scene(const SceneAccuracy& a, const AccuracyOptions& o) {
   fmt::print("\n== {}: {}x{}, {} photons emitted ({} stored), k = {}; unit = {:.4f} s simulated (transmittance, M = {} S)\n",
              a.scene, a.width, a.height, a.photons_emitted, a.photons_stored, a.k, a.unit_seconds, o.unit_b);
-  fmt::print("reference: MIS, {:.3f} s simulated in two seeds (wall {:.1f} s); mean {:.4g}, own noise {:.3g} ({:.2f} %)\n",
+  fmt::print("reference: radiance, {:.3f} s simulated in two seeds (wall {:.1f} s); mean {:.4g}, own noise {:.3g} ({:.2f} %)\n",
              a.reference_seconds, a.reference_wall, a.reference_mean, a.reference_noise,
              a.reference_mean > 0 ? 100 * a.reference_noise / a.reference_mean : 0.0);
   fmt::print("{:<14} {:>6} {:>9} {:>9} {:>8} {:>10} {:>10} {:>9} {:>10}\n", "estimator", "budget", "b", "sim_s", "wall_s",
@@ -162,6 +191,8 @@ void run_accuracy(AccuracyFlags f) {
       fmt::print(stderr, "accuracy media: {}: {}\n", name, what);
     }));
     print_scene(all.back(), f.o);
+    if (!f.images.empty())
+      write_images(f.images, all.back(), f.o.budgets.at(std::min(f.o.spread_budget, f.o.budgets.size() - 1)));
     std::fflush(stdout);
   }
   print_targets(all, f.o);
@@ -181,7 +212,7 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
       "media",
       "What accuracy costs in the media renderer: each scene rendered with each estimator at equal budgets\n"
       "of simulated time (one CPU of the machine, from counted operations: deterministic), RMSE against a\n"
-      "high-sample MIS reference on the same photon map (so only the estimators differ), the noise spread\n"
+      "high-sample reference (radiance sampling, two seeds) on the same photon map (so only the estimators differ), the noise spread\n"
       "over the image, the SH grid's share of the render time, the photon count's effect at fixed samples,\n"
       "and the targets of issue 9 as measured. Wall times are the host's.");
   cmd->add_option("--scenes", f->scenes, "Scenes (exp1, exp2, fog, small, exp1-literal)")->capture_default_str();
@@ -205,6 +236,7 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
   cmd->add_option("--config", f->config, "Machine file whose [ops] costs turn counts into seconds")->check(CLI::ExistingFile);
   cmd->add_option("--csv", f->csv, "Write scene,estimator,budget,b,sim_s,wall_s,samples,rmse,rel_rmse (gcsim plot --accuracy)");
   cmd->add_option("--json", f->json, "Write every table as JSON");
+  cmd->add_option("--images", f->images, "Write each estimator's image at the noise-spread budget, and the reference, as PNGs here");
   cmd->footer(
       "\nExamples:\n"
       "  gcsim accuracy media --quick\n"

@@ -22,6 +22,7 @@ struct MediaFlags {
   double b = 8.0;
   double b_histogram = 0.0;
   double alpha = 0.1;
+  std::string rounding = "at-least-one";
   long photons = 0;  // 0: the scene's
   int k = 0;         // 0: the scene's
   int width = 0, height = 0;
@@ -38,7 +39,7 @@ struct MediaOutcome : pipeline::Outcome {
 class MediaExperiment final : public pipeline::Experiment {
  public:
   explicit MediaExperiment(const MediaFlags& f)
-      : flags_(f), scene_(scene_by_name(f.scene)), settings_{*parse_estimator(f.estimator), f.b, f.b_histogram, f.alpha} {
+      : flags_(f), scene_(scene_by_name(f.scene)), settings_{*parse_estimator(f.estimator), f.b, f.b_histogram, f.alpha, f.rounding == "at-least-one"} {
     if (f.photons > 0) scene_.photons_emitted = static_cast<std::size_t>(f.photons);
     if (f.k > 0) scene_.k_nearest = static_cast<std::size_t>(f.k);
     if (f.width > 0) scene_.camera.width = f.width;
@@ -112,6 +113,10 @@ pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) 
   cmd.add_option("--b", f->b, "samples per unit of the segment integral S (M = b S, eq. 21)")->capture_default_str();
   cmd.add_option("--b-histogram", f->b_histogram, "radiance estimator: M = b_h S_h (eq. 22) when > 0");
   cmd.add_option("--alpha", f->alpha, "transmittance share of the defensive radiance density")->capture_default_str();
+  cmd.add_option("--rounding", f->rounding,
+                 "M < 1: one sample (at-least-one, notes A12) or one with probability M and weight 1/M (stochastic)")
+      ->check(CLI::IsMember({"at-least-one", "stochastic"}))
+      ->capture_default_str();
   cmd.add_option("--photons", f->photons, "photons emitted (default: the scene's)");
   cmd.add_option("--k", f->k, "nearest photons per estimate (default: the scene's)");
   cmd.add_option("--width", f->width, "image width (default: the scene's)");
