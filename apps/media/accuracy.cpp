@@ -19,6 +19,7 @@ const BudgetRow* SceneAccuracy::row(Estimator e, double budget) const {
 
 MarchSettings settings_at(Estimator e, double beta, double histogram_scale) {
   MarchSettings s{e, beta};
+  s.at_least_one_sample = true;  // M < 1: one sample; stochastic rounding leaves 1/M weights of 50 on the object
   if (e == Estimator::radiance) s.b_histogram = beta * histogram_scale;  // eq. (22), as the paper's (c)
   return s;
 }
@@ -49,23 +50,18 @@ struct CostModel {
     return {scale * render_seconds(fixed, scene.k_nearest, m), scale * f.simulated_seconds, f.counters};
   }
   // The β at which estimator e costs `target` seconds; nothing if its fixed cost is too high. The
-  // expected sample count is linear in β (stochastic rounding), so one pilot step is enough, except for
-  // MIS, whose per-technique counts are rounded up: secant steps until the prediction settles.
+  // sample count is not linear in β (at least one sample per segment, MIS's per-technique counts rounded
+  // up): secant steps on the pilot until the prediction settles.
   std::optional<double> fit(Estimator e, double target, double histogram_scale) const {
-    double beta = 1.0;
-    const int steps = e == Estimator::mis ? 5 : 2;
-    for (int step = 0; step < steps; ++step) {
+    double beta = 1.0, predicted = 0.0;
+    for (int step = 0; step < 6; ++step) {
       const Cost c = predict(settings_at(e, beta, histogram_scale));
+      predicted = c.total;
       if (target <= c.fixed * 1.01) return std::nullopt;
-      if (c.total <= c.fixed) {
-        beta *= 4.0;
-        continue;
-      }
-      const double next = beta * (target - c.fixed) / (c.total - c.fixed);
-      const bool close = std::abs(next / beta - 1.0) < 0.01;
-      beta = next;
-      if (close) break;
+      if (std::abs(c.total / target - 1.0) < 0.01) break;
+      beta = c.total > c.fixed ? beta * (target - c.fixed) / (c.total - c.fixed) : beta * 4.0;
     }
+    if (predicted > 1.1 * target) return std::nullopt;  // one sample per segment already costs more
     return beta;
   }
 };

@@ -75,12 +75,15 @@ double march_segment_in_scatter(const SegmentQuery& q, const MarchSettings& s,
       if (eq) return scale * m.sigma_s * estimate_in_scatter(*eq, stratified_numbers(count, rng), li_at);
       return scale * m.sigma_s * estimate_in_scatter(TransmittanceDistance(seg), stratified_numbers(count, rng), li_at);
     case Estimator::mis: {
+      // The M samples are shared out over the techniques (the radiance density first: with its
+      // defensive part it is positive wherever the transmittance is, so a technique left with no
+      // sample never leaves a gap); the balance heuristic weighs each by the counts actually drawn.
       TransmittanceDistance tr(seg);
-      std::vector<const DistanceSampler*> techniques{&tr, hist.get()};
+      std::vector<const DistanceSampler*> techniques{hist.get(), &tr};
       if (eq) techniques.push_back(&*eq);
-      const int each = std::max(1, static_cast<int>(std::ceil(count / double(techniques.size()))));
+      const int n = static_cast<int>(techniques.size());
       std::vector<std::vector<double>> u;
-      for (std::size_t i = 0; i < techniques.size(); ++i) u.push_back(stratified_numbers(each, rng));
+      for (int i = 0; i < n; ++i) u.push_back(stratified_numbers(count / n + (i < count % n ? 1 : 0), rng));
       return scale * m.sigma_s * estimate_in_scatter_mis(techniques, u, li_at);
     }
     case Estimator::grid: break;
