@@ -13,8 +13,8 @@ MediaScene small_scene() {
   s.outside = {1.0, 0.3, 0.0, Phase::isotropic()};          // experiment 1's outside medium
   s.inside = {8.0, 6.4, 0.0, Phase::schlick(0.5)};         // a thinner, bright version of its inside
   s.object = std::make_shared<SphereBoundary>(glm::dvec3(0.0, -0.2, 0.3), 0.8);
-  s.light = {{-1.2, 1.0, -0.6}, 3.0};
-  s.camera = {{0, 0.2, -3.9}, {0, -0.1, 0}, {0, 1, 0}, 50.0, 64, 48};
+  s.light = {{-0.9, 0.8, -0.5}, 1.0};  // out of the frame, lighting the side the camera sees
+  s.camera = {{0, 0.1, -1.4}, {0, -0.1, 0.3}, {0, 1, 0}, 70.0, 64, 48};
   return s;
 }
 
