@@ -171,7 +171,7 @@ nlohmann::json to_json(const SceneAccuracy& s) {
 void run_accuracy(AccuracyFlags f) {
   if (f.quick) {
     f.o.width = 64, f.o.height = 48, f.o.photons = f.o.photons > 0 ? f.o.photons : 20000;
-    f.budgets = "1,4", f.photon_fractions = "0.5,1", f.o.reference_factor = 4, f.o.spread_repeats = 2;
+    f.budgets = "2,8", f.photon_fractions = "0.5,1", f.o.reference_factor = 4, f.o.spread_repeats = 2;
     f.o.spread_budget = 0;
   }
   const machine::MachineConfig m = f.config.empty() ? machine::default_machine_config() : machine::load_machine_config(f.config);
@@ -232,7 +232,7 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
   cmd->add_option("--photon-fractions", f->photon_fractions, "Photon study: fractions of the scene's photons (empty: skip)")
       ->capture_default_str();
   cmd->add_option("--seed", f->o.seed, "Random seed")->capture_default_str();
-  cmd->add_flag("--quick", f->quick, "CI-sized: 64x48, 20000 photons, budgets 1,4, reference x4, 2 repeats");
+  cmd->add_flag("--quick", f->quick, "CI-sized: 64x48, 20000 photons, budgets 2,8, reference x4, 2 repeats");
   cmd->add_option("--config", f->config, "Machine file whose [ops] costs turn counts into seconds")->check(CLI::ExistingFile);
   cmd->add_option("--csv", f->csv, "Write scene,estimator,budget,b,sim_s,wall_s,samples,rmse,rel_rmse (gcsim plot --accuracy)");
   cmd->add_option("--json", f->json, "Write every table as JSON");
