@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -18,6 +19,28 @@ glm::dvec3 camera_direction(const PinholeCamera& c, double px, double py) {
   return glm::normalize(forward + sx * right + sy * up);
 }
 
+// One branch of a camera path: a ray in one region, carrying the product of Fresnel weights and
+// transmittances so far.
+struct PathBranch {
+  glm::dvec3 origin, direction;
+  bool inside;
+  double throughput;
+  int depth;
+};
+
+// The in-scattered radiance of one region's segment along a branch.
+double segment_radiance(const MediaScene& scene, const SceneCaches& caches, const MarchSettings& settings,
+                        const PathBranch& b, double t0, double t1, apps::Rng& rng, RenderCounters& counters) {
+  const HomogeneousMedium& m = b.inside ? scene.inside : scene.outside;
+  const RegionCache& region = b.inside ? caches.inside : caches.outside;
+  if (!region.map || t1 <= t0) return 0.0;
+  const glm::dvec3 d = b.direction;
+  auto li = [&](const glm::dvec3& p) { return region.map->in_scattered(p, -d, m, scene.k_nearest); };
+  SegmentQuery q{b.origin + t0 * d, d, t1 - t0, &m, region.grid.get(), std::nullopt};
+  if (!b.inside && !scene.area_light) q.light = scene.light;  // equiangular needs a point light
+  return march_segment_in_scatter(q, settings, li, rng, counters.march);
+}
+
 }  // namespace
 
 double render_pixel(const MediaScene& scene, const SceneCaches& caches, const MarchSettings& settings,
@@ -25,39 +48,37 @@ double render_pixel(const MediaScene& scene, const SceneCaches& caches, const Ma
   const std::uint64_t pixel = static_cast<std::uint64_t>(y) * scene.camera.width + x;
   apps::Rng rng(seed, 0x706978656cULL + pixel);
   ++counters.pixels;
-  glm::dvec3 o = scene.camera.eye;
-  glm::dvec3 d = camera_direction(scene.camera, x + rng.uniform_double(), y + rng.uniform_double());
-  bool inside = scene.object && scene.object->inside(o);
-  double radiance = 0.0, throughput = 1.0;
+  // The ray through the pixel centre, and at each Fresnel surface both the reflected and the refracted
+  // branch: the camera path is deterministic, so all the pixel's noise is the distance estimator's
+  // (what the paper compares) and a high-sample reference converges to the same value.
+  const glm::dvec3 eye = scene.camera.eye;
+  std::vector<PathBranch> stack{{eye, camera_direction(scene.camera, x + 0.5, y + 0.5),
+                                 scene.object && scene.object->inside(eye), 1.0, 0}};
+  double radiance = 0.0;
   const double inf = std::numeric_limits<double>::infinity();
-  for (int depth = 0; depth <= scene.max_specular_depth; ++depth) {
-    auto hit = scene.object ? scene.object->intersect(o, d, 0.0, inf) : std::nullopt;
+  while (!stack.empty()) {
+    const PathBranch b = stack.back();
+    stack.pop_back();
+    auto hit = scene.object ? scene.object->intersect(b.origin, b.direction, 0.0, inf) : std::nullopt;
     double t0 = 0.0, t1 = hit ? hit->t : inf;
-    if (!inside && !clip_to_box(scene.fog_box, o, d, t0, t1)) break;
-    if (inside) t1 = hit ? hit->t : 0.0;
-    const HomogeneousMedium& m = inside ? scene.inside : scene.outside;
-    const RegionCache& region = inside ? caches.inside : caches.outside;
-    if (region.map && t1 > t0) {
-      const glm::dvec3 start = o + t0 * d;
-      auto li = [&](const glm::dvec3& p) { return region.map->in_scattered(p, -d, m, scene.k_nearest); };
-      SegmentQuery q{start, d, t1 - t0, &m, region.grid.get(), std::nullopt};
-      if (!inside && !scene.area_light) q.light = scene.light;  // equiangular needs a point light
-      radiance += throughput * march_segment_in_scatter(q, settings, li, rng, counters.march);
-    }
-    throughput *= transmittance(m.sigma_t, std::max(0.0, t1 - t0));
-    if (!hit || (!inside && hit->t > t1 + 1e-12)) break;
+    if (!b.inside && !clip_to_box(scene.fog_box, b.origin, b.direction, t0, t1)) continue;
+    if (b.inside) t1 = hit ? hit->t : 0.0;
+    radiance += b.throughput * segment_radiance(scene, caches, settings, b, t0, t1, rng, counters);
+    const HomogeneousMedium& m = b.inside ? scene.inside : scene.outside;
+    const double throughput = b.throughput * transmittance(m.sigma_t, std::max(0.0, t1 - t0));
+    if (!hit || (!b.inside && hit->t > t1 + 1e-12) || b.depth >= scene.max_specular_depth) continue;
     ++counters.surface_events;
-    o = o + hit->t * d;
+    const glm::dvec3 at = b.origin + hit->t * b.direction;
     const double eta_i = hit->entering ? 1.0 : scene.ior, eta_t = hit->entering ? scene.ior : 1.0;
-    const double reflectance = fresnel_dielectric(-glm::dot(d, hit->normal), eta_i, eta_t);
-    auto refracted = refract_direction(d, hit->normal, eta_i, eta_t);
-    if (rng.uniform_double() < reflectance || !refracted) {
-      d = reflect_direction(d, hit->normal);
-    } else {
-      d = *refracted;
-      inside = !inside;
-    }
-    o += 1e-7 * d;
+    auto refracted = refract_direction(b.direction, hit->normal, eta_i, eta_t);
+    const double reflectance = refracted ? fresnel_dielectric(-glm::dot(b.direction, hit->normal), eta_i, eta_t) : 1.0;
+    const glm::dvec3 reflected = reflect_direction(b.direction, hit->normal);
+    // Branches whose weight falls below kMinBranchWeight end there (a small bias every estimator and
+    // the reference share).
+    if (throughput * reflectance >= kMinBranchWeight)
+      stack.push_back({at + 1e-7 * reflected, reflected, b.inside, throughput * reflectance, b.depth + 1});
+    if (refracted && throughput * (1.0 - reflectance) >= kMinBranchWeight)
+      stack.push_back({at + 1e-7 * *refracted, *refracted, !b.inside, throughput * (1.0 - reflectance), b.depth + 1});
   }
   return radiance;
 }

@@ -1,8 +1,10 @@
 #pragma once
 // The ray-marching renderer (paper section 3): camera paths through the outside fog and, via Fresnel
 // reflection/refraction chosen by Russian roulette, through the object; each homogeneous segment is
-// one call of march_segment_in_scatter. Pixel p draws from its own random stream (seed, p), so the
-// image does not depend on how the pixels are split over tiles or nodes.
+// one call of march_segment_in_scatter. The camera ray goes through the pixel centre and splits at
+// every Fresnel surface into its reflected and refracted branches (to max_specular_depth, while a
+// branch weighs at least kMinBranchWeight), so only the distance samples are random. Pixel p draws from
+// its own random stream (seed, p), so the image does not depend on how pixels are split over tiles or nodes.
 #include <cstdint>
 
 #include "apps/common/image.hpp"
@@ -10,6 +12,8 @@
 #include "apps/media/segment_march.hpp"
 
 namespace gcsim::media {
+
+inline constexpr double kMinBranchWeight = 1e-3;
 
 struct RenderCounters {
   MarchCounters march;

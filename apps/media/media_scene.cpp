@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include <glm/geometric.hpp>
+
 namespace gcsim::media {
 
 MediaScene small_scene() {
@@ -11,8 +13,8 @@ MediaScene small_scene() {
   s.outside = {1.0, 0.3, 0.0, Phase::isotropic()};          // experiment 1's outside medium
   s.inside = {8.0, 6.4, 0.0, Phase::schlick(0.5)};         // a thinner, bright version of its inside
   s.object = std::make_shared<SphereBoundary>(glm::dvec3(0.0, -0.2, 0.3), 0.8);
-  s.light = {{-1.2, 1.0, -0.6}, 3.0};
-  s.camera = {{0, 0.2, -3.9}, {0, -0.1, 0}, {0, 1, 0}, 50.0, 64, 48};
+  s.light = {{-0.9, 0.8, -0.5}, 1.0};  // out of the frame, lighting the side the camera sees
+  s.camera = {{0, 0.1, -1.4}, {0, -0.1, 0.3}, {0, 1, 0}, 70.0, 64, 48};
   return s;
 }
 
@@ -27,9 +29,12 @@ MediaScene experiment1_scene(Exp1Reading reading) {
   s.outside = {1.0, 0.3, 0.0, Phase::isotropic()};
   const double sigma_s = reading == Exp1Reading::albedo ? kLuminanceOfExp1Sigma * 50.0 : kLuminanceOfExp1Sigma;
   s.inside = {50.0, sigma_s, 0.0, Phase::schlick(0.5)};
-  s.object = std::make_shared<SphereBoundary>(glm::dvec3(0.0, -0.4, 0.5), 1.1);
-  s.light = {{-1.5, 1.4, -0.5}, 4.0};
-  s.camera = {{0, 0.3, -2.9}, {0, -0.3, 0.5}, {0, 1, 0}, 55.0, 640, 480};
+  s.object = std::make_shared<SphereBoundary>(glm::dvec3(0.0, -0.3, 0.5), 0.9);
+  // Above, left and a little in front of the object (out of the frame), so the camera sees its lit
+  // side: the object is optically thick (σt = 50 per unit, radius 0.9), so its glow is light scattered
+  // just below that side. The camera stands one mean free path of fog away from it.
+  s.light = {{-0.9, 0.9, -0.3}, 1.0};
+  s.camera = {{0, 0.1, -1.3}, {0, -0.2, 0.5}, {0, 1, 0}, 70.0, 640, 480};
   s.photons_emitted = 100000;
   s.k_nearest = 100;
   return s;
@@ -41,10 +46,28 @@ MediaScene experiment2_scene() {
   s.fog_box = {{-3, -2, -3}, {3, 2, 4}, {1, 1, 1}};
   s.outside = {1.0, 1.0, 0.0, Phase::isotropic()};
   s.inside = {200.0, 120.0, 0.0, Phase::schlick(0.6)};
-  s.object = std::make_shared<SphereBoundary>(glm::dvec3(0.0, -0.4, 0.5), 1.1);
-  s.area_light = DirectionalAreaLight{{0.0, 1.9, 0.5}, {0.0, -1.0, 0.0}, 0.5, 50.0, 40.0};
-  s.camera = {{0, 0.3, -2.9}, {0, -0.3, 0.5}, {0, 1, 0}, 55.0, 640, 480};
-  s.photons_emitted = 100000;
+  s.object = std::make_shared<SphereBoundary>(glm::dvec3(0.0, -0.3, 0.5), 0.9);
+  // A disk above, left of and in front of the object aimed at it: emission ∝ cos^50 (half power at
+  // 9.5° off axis), a beam about as wide as the object by the time it gets there.
+  const glm::dvec3 centre(-1.0, 1.1, -0.5), target(0.0, -0.3, 0.5);
+  s.area_light = DirectionalAreaLight{centre, glm::normalize(target - centre), 0.5, 50.0, 40.0};
+  s.camera = {{0, 0.1, -1.3}, {0, -0.2, 0.5}, {0, 1, 0}, 70.0, 640, 480};
+  // The outside albedo is 1, so a photon scatters until it leaves the box (about 5 times here): we
+  // read the paper's 10^5 photons as stored ones, as experiment 1's 10^5 emitted nearly are.
+  s.photons_emitted = 20000;
+  s.k_nearest = 100;
+  return s;
+}
+
+MediaScene uniform_fog_scene() {
+  MediaScene s;
+  s.name = "fog";
+  s.fog_box = {{-2, -1.5, -2}, {2, 1.5, 2}, {1, 1, 1}};
+  s.outside = {0.5, 0.4, 0.0, Phase::isotropic()};
+  // A Lambertian disk as wide as the box above it (exponent 1: radiance constant over directions).
+  s.area_light = DirectionalAreaLight{{0.0, 1.49, 0.0}, {0.0, -1.0, 0.0}, 2.0, 1.0, 20.0};
+  s.camera = {{0, 0, -1.95}, {0, 0, 0}, {0, 1, 0}, 50.0, 128, 96};
+  s.photons_emitted = 50000;
   s.k_nearest = 100;
   return s;
 }
@@ -54,7 +77,8 @@ MediaScene scene_by_name(const std::string& name) {
   if (name == "exp1") return experiment1_scene(Exp1Reading::albedo);
   if (name == "exp1-literal") return experiment1_scene(Exp1Reading::literal);
   if (name == "exp2") return experiment2_scene();
-  throw std::invalid_argument("media scene '" + name + "': expected small, exp1, exp1-literal or exp2");
+  if (name == "fog") return uniform_fog_scene();
+  throw std::invalid_argument("media scene '" + name + "': expected small, exp1, exp1-literal, exp2 or fog");
 }
 
 }  // namespace gcsim::media

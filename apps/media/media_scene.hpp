@@ -52,7 +52,10 @@ MediaScene small_scene();
 // parameters from the paper; light, camera, k and IOR chosen (unstated in the paper).
 MediaScene experiment1_scene(Exp1Reading reading);
 MediaScene experiment2_scene();
-// "small", "exp1" (albedo reading), "exp1-literal", "exp2"; throws naming the choices otherwise.
+// Uniformly lit fog (issue 9 §3): no object, a box of thin fog under a Lambertian disk as wide as the
+// box, so the in-scattered radiance varies little along a ray and transmittance sampling is near ideal.
+MediaScene uniform_fog_scene();
+// "small", "exp1" (albedo reading), "exp1-literal", "exp2", "fog"; throws naming the choices otherwise.
 MediaScene scene_by_name(const std::string& name);
 
 }  // namespace gcsim::media

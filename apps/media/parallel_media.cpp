@@ -1,7 +1,9 @@
 #include "apps/media/parallel_media.hpp"
 
+#include <algorithm>
 #include <cstring>
 
+#include "apps/media/tile_farm.hpp"
 #include "parix/collectives.hpp"
 #include "parix/processor.hpp"
 
@@ -42,6 +44,17 @@ RegionCache build_region_parallel(parix::Processor& p, const std::vector<Photon>
   return region;
 }
 
+// The image in kTileSize² tiles, row-major.
+struct Tiling {
+  int width, height;
+  int across() const { return (width + kTileSize - 1) / kTileSize; }
+  int count() const { return across() * ((height + kTileSize - 1) / kTileSize); }
+  int x0(int t) const { return (t % across()) * kTileSize; }
+  int y0(int t) const { return (t / across()) * kTileSize; }
+  int x1(int t) const { return std::min(width, x0(t) + kTileSize); }
+  int y1(int t) const { return std::min(height, y0(t) + kTileSize); }
+};
+
 void charge_render(parix::Processor& p, const RenderCounters& c, std::size_t k) {
   p.compute({{"media_camera_ray", static_cast<std::int64_t>(c.pixels + c.surface_events)},
              {"media_march_sample", static_cast<std::int64_t>(c.march.samples)},
@@ -50,47 +63,66 @@ void charge_render(parix::Processor& p, const RenderCounters& c, std::size_t k) 
              {"media_sh_eval", static_cast<std::int64_t>(c.march.sh_evals)}});
 }
 
+// Tiles handed out dynamically (tile_farm.hpp); a tile's record is its pixels' luminance as floats.
+TileFarmStats render_tiles(parix::Processor& p, const MediaScene& scene, const SceneCaches& caches,
+                           const MarchSettings& settings, std::uint64_t seed, apps::Image& image,
+                           std::vector<RenderCounters>& per_node) {
+  const Tiling tiling{scene.camera.width, scene.camera.height};
+  TileFarm farm;
+  farm.tiles = tiling.count();
+  farm.render = [&](parix::Processor& q, int t) {
+    RenderCounters counters;
+    std::vector<float> pixels;
+    for (int y = tiling.y0(t); y < tiling.y1(t); ++y)
+      for (int x = tiling.x0(t); x < tiling.x1(t); ++x)
+        pixels.push_back(static_cast<float>(render_pixel(scene, caches, settings, seed, x, y, counters)));
+    charge_render(q, counters, scene.k_nearest);
+    per_node[static_cast<std::size_t>(q.id())].add(counters);
+    const auto bytes = std::as_bytes(std::span<const float>(pixels));
+    return parix::Bytes(bytes.begin(), bytes.end());
+  };
+  farm.assemble = [&](parix::Processor& q, int t, std::span<const std::byte> record) {
+    const std::size_t expected =
+        std::size_t(tiling.x1(t) - tiling.x0(t)) * std::size_t(tiling.y1(t) - tiling.y0(t)) * sizeof(float);
+    if (record.size() != expected) throw parix::ParixError("media: tile record of the wrong size");
+    const std::byte* at = record.data();
+    for (int y = tiling.y0(t); y < tiling.y1(t); ++y)
+      for (int x = tiling.x0(t); x < tiling.x1(t); ++x, at += sizeof(float)) {
+        float v;
+        std::memcpy(&v, at, sizeof v);
+        image.at(x, y) = glm::vec3(v);
+      }
+    q.compute("memcpy_byte", static_cast<std::int64_t>(record.size()));
+  };
+  return run_tile_farm(p, farm);
+}
+
 }  // namespace
 
 void media_program(parix::Processor& p, const MediaScene& scene, const MarchSettings& settings, std::uint64_t seed,
                    ParallelMediaResult& result, std::vector<RenderCounters>& per_node) {
-    const int width = scene.camera.width, height = scene.camera.height;
-    const int id = p.id(), nodes = p.count();
-    PhotonPassResult photons = trace_photons(scene, share_begin(scene.photons_emitted, id, nodes),
-                                             share_begin(scene.photons_emitted, id + 1, nodes));
-    p.compute("media_photon_step", static_cast<std::int64_t>(photons.flights + photons.surface_events));
-    std::uint64_t photon_bytes = 0, grid_bytes = 0;
-    const std::uint64_t my_photon_bytes = (photons.outside.size() + photons.inside.size()) * sizeof(Photon);
-    SceneCaches caches;
-    caches.outside = build_region_parallel(p, photons.outside, scene.outside, scene.k_nearest, photon_bytes, grid_bytes);
-    caches.inside = build_region_parallel(p, photons.inside, scene.inside, scene.k_nearest, photon_bytes, grid_bytes);
-    // Rows interleaved: row y on node y mod N, each pixel on its own random stream.
-    apps::Image local(width, height);
-    RenderCounters counters;
-    std::vector<float> rows;
-    for (int y = id; y < height; y += nodes) {
-      render_rows(scene, caches, settings, seed, y, y + 1, local, counters);
-      for (int x = 0; x < width; ++x) rows.push_back(local.at(x, y).x);
-    }
-    charge_render(p, counters, scene.k_nearest);
-    per_node[static_cast<std::size_t>(id)] = counters;
-    auto gathered = parix::gather(p, 0, std::as_bytes(std::span<const float>(rows)));
-    if (id != 0) return;
-    for (int node = 0; node < nodes; ++node) {
-      const auto& bytes = gathered[static_cast<std::size_t>(node)];
-      std::vector<float> values(bytes.size() / sizeof(float));
-      std::memcpy(values.data(), bytes.data(), bytes.size());
-      std::size_t i = 0;
-      for (int y = node; y < height; y += nodes)
-        for (int x = 0; x < width; ++x) result.image.at(x, y) = glm::vec3(values[i++]);
-    }
-    result.photon_bytes = my_photon_bytes;
-    result.photon_bytes_all = photon_bytes;
-    result.grid_bytes_all = grid_bytes;
-    result.outside_photons = caches.outside.map ? caches.outside.map->photons().size() : 0;
-    result.inside_photons = caches.inside.map ? caches.inside.map->photons().size() : 0;
-    if (caches.outside.grid) result.outside_dims = caches.outside.grid->grid().dims;
-    if (caches.inside.grid) result.inside_dims = caches.inside.grid->grid().dims;
+  const int width = scene.camera.width, height = scene.camera.height;
+  const int id = p.id(), nodes = p.count();
+  PhotonPassResult photons = trace_photons(scene, share_begin(scene.photons_emitted, id, nodes),
+                                           share_begin(scene.photons_emitted, id + 1, nodes));
+  p.compute("media_photon_step", static_cast<std::int64_t>(photons.flights + photons.surface_events));
+  std::uint64_t photon_bytes = 0, grid_bytes = 0;
+  const std::uint64_t my_photon_bytes = (photons.outside.size() + photons.inside.size()) * sizeof(Photon);
+  SceneCaches caches;
+  caches.outside = build_region_parallel(p, photons.outside, scene.outside, scene.k_nearest, photon_bytes, grid_bytes);
+  caches.inside = build_region_parallel(p, photons.inside, scene.inside, scene.k_nearest, photon_bytes, grid_bytes);
+  const TileFarmStats farm = render_tiles(p, scene, caches, settings, seed, result.image, per_node);
+  if (id != 0) return;
+  result.tiles = static_cast<std::size_t>(Tiling{width, height}.count());
+  result.tile_messages = farm.assignments;
+  result.tile_result_bytes = farm.result_bytes;
+  result.photon_bytes = my_photon_bytes;
+  result.photon_bytes_all = photon_bytes;
+  result.grid_bytes_all = grid_bytes;
+  result.outside_photons = caches.outside.map ? caches.outside.map->photons().size() : 0;
+  result.inside_photons = caches.inside.map ? caches.inside.map->photons().size() : 0;
+  if (caches.outside.grid) result.outside_dims = caches.outside.grid->grid().dims;
+  if (caches.inside.grid) result.inside_dims = caches.inside.grid->grid().dims;
 }
 
 ParallelMediaResult render_media_parallel(const MediaScene& scene, const MarchSettings& settings, std::uint64_t seed,

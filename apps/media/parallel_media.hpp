@@ -1,8 +1,8 @@
 #pragma once
 // The media renderer on the simulated GC (parix): photons traced in parallel (photon i on its own
 // random stream, so any split gives the same photons), the photon maps replicated by all-gather, the
-// SH grids built voxel-slice by voxel-slice and all-gathered, image rows interleaved over the nodes
-// and gathered on node 0. Compute is charged from counted operations ([ops] media_* in the machine file).
+// SH grids built voxel-slice by voxel-slice and all-gathered, image tiles handed out dynamically by
+// node 0 (tile_farm.hpp). Compute is charged from counted operations ([ops] media_* in the machine file).
 #include <cstdint>
 #include <vector>
 
@@ -22,7 +22,12 @@ struct ParallelMediaResult {
   std::uint64_t grid_bytes_all = 0;   // the whole SH grids (inside + outside), per node
   std::size_t outside_photons = 0, inside_photons = 0;
   glm::ivec3 outside_dims{0}, inside_dims{0};
+  std::size_t tiles = 0;                // kTileSize² tiles of the image
+  std::uint64_t tile_messages = 0;      // assignments the master sent
+  std::uint64_t tile_result_bytes = 0;  // tile records the master received
 };
+
+inline constexpr int kTileSize = 16;
 
 // The SPMD program: every processor runs it; result.image (sized by the caller) and the byte and
 // photon figures are filled by processor 0, per_node[id] (one slot per processor, never sent) by

@@ -56,7 +56,10 @@ PhotonPassResult trace_photons(const MediaScene& scene, std::size_t first, std::
         ++out.surface_events;
         x += hit->t * w;
         const glm::dvec3 nw = cross_boundary(*hit, w, scene.ior, rng);
-        if (glm::dot(nw, hit->normal) < 0.0) inside = !inside;  // went through
+        if (glm::dot(nw, hit->normal) < 0.0) {  // went through
+          inside = !inside;
+          if (inside) ++out.entered;
+        }
         w = nw;
         x += kSurfaceOffset * w;
         continue;

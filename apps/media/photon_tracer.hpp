@@ -15,6 +15,7 @@ namespace gcsim::media {
 struct PhotonPassResult {
   std::vector<Photon> outside, inside;
   std::uint64_t flights = 0, surface_events = 0, escaped = 0, absorbed = 0, capped = 0;
+  std::uint64_t entered = 0;  // crossings of the boundary from outside to inside
 };
 
 // Traces photons [first, last) of the scene's photons_emitted; photon i uses its own random stream

@@ -18,11 +18,12 @@ UniformGrid grid_for_photons(const std::vector<Photon>& photons, std::size_t k) 
 namespace {
 
 RegionCache build_region(std::vector<Photon> photons, const HomogeneousMedium& medium, std::size_t k,
-                         SceneCaches& totals) {
+                         bool with_grid, SceneCaches& totals) {
   RegionCache region;
   if (photons.empty()) return region;
   const UniformGrid grid = grid_for_photons(photons, k);
   region.map = std::make_unique<PhotonMap>(std::move(photons));
+  if (!with_grid) return region;
   region.grid = std::make_unique<RadianceGrid>(grid, *region.map, medium, k);
   totals.knn_lookups += grid.voxel_count();
   totals.sh_photon_adds += region.grid->photon_adds();
@@ -31,10 +32,10 @@ RegionCache build_region(std::vector<Photon> photons, const HomogeneousMedium& m
 
 }  // namespace
 
-SceneCaches build_caches(const MediaScene& scene, PhotonPassResult photons) {
+SceneCaches build_caches(const MediaScene& scene, PhotonPassResult photons, bool with_grids) {
   SceneCaches caches;
-  caches.outside = build_region(std::move(photons.outside), scene.outside, scene.k_nearest, caches);
-  caches.inside = build_region(std::move(photons.inside), scene.inside, scene.k_nearest, caches);
+  caches.outside = build_region(std::move(photons.outside), scene.outside, scene.k_nearest, with_grids, caches);
+  caches.inside = build_region(std::move(photons.inside), scene.inside, scene.k_nearest, with_grids, caches);
   return caches;
 }
 

@@ -23,6 +23,7 @@ struct SceneCaches {
 // The grid geometry for a photon set: its bounding box (slightly padded) and eq. (12–13) dimensions.
 UniformGrid grid_for_photons(const std::vector<Photon>& photons, std::size_t k);
 
-SceneCaches build_caches(const MediaScene& scene, PhotonPassResult photons);
+// The photon maps and, with_grids, the SH grids (only the radiance, mis and grid estimators need them).
+SceneCaches build_caches(const MediaScene& scene, PhotonPassResult photons, bool with_grids = true);
 
 }  // namespace gcsim::media

@@ -15,8 +15,11 @@ std::vector<double> stratified_numbers(int count, apps::Rng& rng) {
 }
 
 // Draws M by stochastic rounding; returns the factor that keeps the estimate unbiased (1/M when M < 1
-// leaves a single sample, 1 otherwise since the mean of the drawn samples is already unbiased).
-int sample_count(double m, apps::Rng& rng, double& scale) {
+// leaves a single sample, 1 otherwise since the mean of the drawn samples is already unbiased). With
+// at_least_one, M < 1 takes one sample of weight 1 instead ([A12]: less noise on thin segments).
+int sample_count(double m, bool at_least_one, apps::Rng& rng, double& scale) {
+  scale = 1.0;
+  if (at_least_one && m < 1.0) return 1;
   const int n = stochastic_round(m, rng.uniform_double());
   scale = (m < 1.0 && n > 0) ? 1.0 / m : 1.0;
   return n;
@@ -32,6 +35,7 @@ double march_segment_in_scatter(const SegmentQuery& q, const MarchSettings& s,
   ++counters.segments;
   const Segment seg{q.length, m.sigma_t};
   const double s_int = segment_integral(m.sigma_t, q.length);
+  counters.integral_s += s_int;
   auto li_at = [&](double t) {
     ++counters.samples;
     return li(q.origin + t * q.direction);
@@ -47,6 +51,7 @@ double march_segment_in_scatter(const SegmentQuery& q, const MarchSettings& s,
     if (h.edges.back() < q.length) h.edges.push_back(q.length), h.values.push_back(0.0);
     h.edges.front() = 0.0, h.edges.back() = q.length;
     hist = std::make_unique<HistogramDistance>(seg, h.edges, h.values, s.defensive_alpha);
+    counters.integral_s_h += std::max(0.0, hist->s_h());
   }
   if (s.estimator == Estimator::grid) return m.sigma_s * hist->s_h();  // eq. (17), S_h as corrected (18)
 
@@ -54,7 +59,7 @@ double march_segment_in_scatter(const SegmentQuery& q, const MarchSettings& s,
   if (s.estimator == Estimator::radiance && s.b_histogram > 0.0 && hist->s_h() > 0.0)
     m_real = s.b_histogram * hist->s_h();  // eq. (22)
   double scale = 1.0;
-  const int count = sample_count(m_real, rng, scale);
+  const int count = sample_count(m_real, s.at_least_one_sample, rng, scale);
   if (count == 0) return 0.0;
 
   std::optional<EquiangularDistance> eq;
@@ -70,12 +75,15 @@ double march_segment_in_scatter(const SegmentQuery& q, const MarchSettings& s,
       if (eq) return scale * m.sigma_s * estimate_in_scatter(*eq, stratified_numbers(count, rng), li_at);
       return scale * m.sigma_s * estimate_in_scatter(TransmittanceDistance(seg), stratified_numbers(count, rng), li_at);
     case Estimator::mis: {
+      // The M samples are shared out over the techniques (the radiance density first: with its
+      // defensive part it is positive wherever the transmittance is, so a technique left with no
+      // sample never leaves a gap); the balance heuristic weighs each by the counts actually drawn.
       TransmittanceDistance tr(seg);
-      std::vector<const DistanceSampler*> techniques{&tr, hist.get()};
+      std::vector<const DistanceSampler*> techniques{hist.get(), &tr};
       if (eq) techniques.push_back(&*eq);
-      const int each = std::max(1, static_cast<int>(std::ceil(count / double(techniques.size()))));
+      const int n = static_cast<int>(techniques.size());
       std::vector<std::vector<double>> u;
-      for (std::size_t i = 0; i < techniques.size(); ++i) u.push_back(stratified_numbers(each, rng));
+      for (int i = 0; i < n; ++i) u.push_back(stratified_numbers(count / n + (i < count % n ? 1 : 0), rng));
       return scale * m.sigma_s * estimate_in_scatter_mis(techniques, u, li_at);
     }
     case Estimator::grid: break;

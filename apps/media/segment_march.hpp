@@ -20,13 +20,19 @@ struct MarchSettings {
   double b = 16.0;                  // samples per unit of S (eq. 21)
   double b_histogram = 0.0;         // > 0: radiance IS takes M = b_h S_h (eq. 22); else M = b S
   double defensive_alpha = 0.1;     // transmittance share of the radiance density [A11]
+  bool at_least_one_sample = false; // M < 1: one sample (notes [A12]) instead of stochastic rounding
 };
 
 struct MarchCounters {
   std::uint64_t samples = 0;       // Li evaluations (each a k-NN lookup)
   std::uint64_t sh_evals = 0;      // histogram bins reconstructed (16-term dot products)
   std::uint64_t segments = 0;
-  void add(const MarchCounters& o) { samples += o.samples, sh_evals += o.sh_evals, segments += o.segments; }
+  double integral_s = 0.0;    // Σ S over the segments (eq. 7)
+  double integral_s_h = 0.0;  // Σ max(S_h, 0) over the segments that built a histogram (corrected eq. 18)
+  void add(const MarchCounters& o) {
+    samples += o.samples, sh_evals += o.sh_evals, segments += o.segments;
+    integral_s += o.integral_s, integral_s_h += o.integral_s_h;
+  }
 };
 
 struct SegmentQuery {

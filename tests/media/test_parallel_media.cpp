@@ -38,5 +38,19 @@ TEST(ParallelMedia, ImageDoesNotDependOnTheNodeCount) {
   }
 }
 
+// Tiles are handed out by simulated time, which is deterministic: the same run twice gives the same
+// makespan to the picosecond, and every tile is assigned once.
+TEST(ParallelMedia, DynamicTilesGiveADeterministicMakespan) {
+  MediaScene s = small_scene();
+  s.photons_emitted = 2000, s.k_nearest = 20, s.camera.width = 40, s.camera.height = 36;
+  const MarchSettings settings{Estimator::radiance, 4.0};
+  const ParallelMediaResult a = render_media_parallel(s, settings, 7, machine_with(4));
+  const ParallelMediaResult b = render_media_parallel(s, settings, 7, machine_with(4));
+  EXPECT_EQ(a.run.makespan, b.run.makespan);
+  EXPECT_EQ(a.tiles, 9u);  // 3 x 3 tiles of 16 x 16
+  EXPECT_LE(a.tile_messages, a.tiles);  // the rest rendered by the master's own thread
+  for (std::size_t i = 0; i < a.image.pixels().size(); ++i) ASSERT_EQ(a.image.pixels()[i].x, b.image.pixels()[i].x);
+}
+
 }  // namespace
 }  // namespace gcsim::media

@@ -8,7 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/common/image.hpp"
+#include "apps/media/app/commands.hpp"
 #include "apps/media/parallel_media.hpp"
+#include "apps/media/tone_map.hpp"
 #include "apps/pipeline/app_registry.hpp"
 
 namespace gcsim::media::app {
@@ -20,12 +22,13 @@ struct MediaFlags {
   double b = 8.0;
   double b_histogram = 0.0;
   double alpha = 0.1;
+  std::string rounding = "at-least-one";
   long photons = 0;  // 0: the scene's
   int k = 0;         // 0: the scene's
   int width = 0, height = 0;
   unsigned long long seed = 1;
   std::string image;
-  float exposure = 1.0f;
+  double exposure = 0.0;  // 0: auto (tone_map.hpp)
 };
 
 struct MediaOutcome : pipeline::Outcome {
@@ -36,7 +39,7 @@ struct MediaOutcome : pipeline::Outcome {
 class MediaExperiment final : public pipeline::Experiment {
  public:
   explicit MediaExperiment(const MediaFlags& f)
-      : flags_(f), scene_(scene_by_name(f.scene)), settings_{*parse_estimator(f.estimator), f.b, f.b_histogram, f.alpha} {
+      : flags_(f), scene_(scene_by_name(f.scene)), settings_{*parse_estimator(f.estimator), f.b, f.b_histogram, f.alpha, f.rounding == "at-least-one"} {
     if (f.photons > 0) scene_.photons_emitted = static_cast<std::size_t>(f.photons);
     if (f.k > 0) scene_.k_nearest = static_cast<std::size_t>(f.k);
     if (f.width > 0) scene_.camera.width = f.width;
@@ -81,9 +84,13 @@ void MediaExperiment::report(const pipeline::Outcome& out, nlohmann::json& extra
              r.photon_bytes_all, r.photon_bytes, r.grid_bytes_all);
   fmt::print("work      {} march samples, {} SH evaluations, {} segments\n", r.counters.march.samples,
              r.counters.march.sh_evals, r.counters.march.segments);
+  fmt::print("tiles     {} tiles of {}x{} handed out dynamically: {} assignments, {} B of tile records to node 0\n",
+             r.tiles, kTileSize, kTileSize, r.tile_messages, r.tile_result_bytes);
   if (!flags_.image.empty()) {
-    apps::write_png(flags_.image, r.image, flags_.exposure);
-    fmt::print("image     {}\n", flags_.image);
+    const double exposure = flags_.exposure > 0.0 ? flags_.exposure : auto_exposure(r.image);
+    apps::write_png(flags_.image, tone_mapped(r.image, exposure), 1.0f);
+    fmt::print("image     {} (exposure {:.4g}{}, extended Reinhard, white {})\n", flags_.image, exposure,
+               flags_.exposure > 0.0 ? "" : ": the 99th percentile of the lit pixels at white", ToneMap{}.white);
   }
   extra["media"] = {{"scene", scene_.name},
                     {"estimator", flags_.estimator},
@@ -106,6 +113,10 @@ pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) 
   cmd.add_option("--b", f->b, "samples per unit of the segment integral S (M = b S, eq. 21)")->capture_default_str();
   cmd.add_option("--b-histogram", f->b_histogram, "radiance estimator: M = b_h S_h (eq. 22) when > 0");
   cmd.add_option("--alpha", f->alpha, "transmittance share of the defensive radiance density")->capture_default_str();
+  cmd.add_option("--rounding", f->rounding,
+                 "M < 1: one sample (at-least-one, notes A12) or one with probability M and weight 1/M (stochastic)")
+      ->check(CLI::IsMember({"at-least-one", "stochastic"}))
+      ->capture_default_str();
   cmd.add_option("--photons", f->photons, "photons emitted (default: the scene's)");
   cmd.add_option("--k", f->k, "nearest photons per estimate (default: the scene's)");
   cmd.add_option("--width", f->width, "image width (default: the scene's)");
@@ -113,7 +124,8 @@ pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) 
   cmd.add_option("--seed", f->seed, "random seed of photons and pixels")->capture_default_str();
   if (verb == pipeline::Verb::run) {
     cmd.add_option("--image", f->image, "Write the image as PNG");
-    cmd.add_option("--exposure", f->exposure, "PNG exposure")->capture_default_str();
+    cmd.add_option("--exposure", f->exposure, "PNG exposure (default: the 99th percentile of the lit pixels maps to white)")
+        ->check(CLI::PositiveNumber);
   }
   return [f] { return std::make_unique<MediaExperiment>(*f); };
 }
@@ -124,10 +136,11 @@ pipeline::AppSpec media_app() {
   s.summary =
       "Participating media with a photon map and SH radiance-importance sampling (Tokuyoshi and Maruyama)\n"
       "on the simulated GC: photons traced in parallel, photon maps and SH grids all-gathered, image rows\n"
-      "interleaved over the nodes. The image does not depend on the node count.";
+      "handed out dynamically by node 0. The image does not depend on the node count.";
   s.run_footer = "\nExample:\n  gcsim run media --scene small --estimator radiance --nodes 16 --image m.png --json m.json";
   s.default_nodes = 16;
   s.options = declare_options;
+  s.commands = [](pipeline::CommandGroups& g) { add_accuracy_command(g); };
   return s;
 }
 

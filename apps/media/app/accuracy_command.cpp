@@ -1,0 +1,247 @@
+// gcsim accuracy media: RMSE of each estimator at equal simulated-time budgets against a high-sample
+// reference on the same photon map, the noise spread, the grid's share, the photon count's effect,
+// and the issue's targets as measured (accuracy.hpp).
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "apps/media/accuracy.hpp"
+#include "apps/media/tone_map.hpp"
+#include "apps/media/app/commands.hpp"
+#include "apps/pipeline/list_parsing.hpp"
+#include "apps/pipeline/machine_options.hpp"
+
+namespace gcsim::media::app {
+namespace {
+
+std::vector<std::string> split_names(const std::string& list) {
+  std::vector<std::string> out;
+  std::size_t at = 0;
+  while (at <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', at), list.size());
+    if (comma > at) out.push_back(list.substr(at, comma - at));
+    at = comma + 1;
+  }
+  return out;
+}
+
+struct AccuracyFlags {
+  std::string scenes = "exp1,exp2,fog", estimators = "uniform,transmittance,radiance,equiangular,mis";
+  std::string budgets = "1,2,4,8", photon_fractions = "0.25,0.5,1";
+  AccuracyOptions o;
+  bool quick = false;
+  std::string config, csv, json, images;
+};
+
+// DIR/media-SCENE-ESTIMATOR.png per estimator at the spread budget, DIR/media-SCENE-reference.png and
+// DIR/media-SCENE-equal-time.png (uniform | transmittance | radiance side by side), all with the
+// reference's exposure so they compare.
+void write_images(const std::string& dir, const SceneAccuracy& a, double budget) {
+  std::filesystem::create_directories(dir);
+  const double exposure = auto_exposure(a.reference);
+  auto path = [&](const std::string& what) { return (std::filesystem::path(dir) / ("media-" + a.scene + "-" + what + ".png")).string(); };
+  apps::write_png(path("reference"), tone_mapped(a.reference, exposure), 1.0f);
+  const Estimator side[] = {Estimator::uniform, Estimator::transmittance, Estimator::radiance};
+  apps::Image strip(3 * a.width + 2 * 2, a.height);
+  for (auto& px : strip.pixels()) px = glm::vec3(1.0f);  // white gaps
+  int column = 0;
+  for (const BudgetRow& r : a.rows) {
+    if (r.budget != budget || !r.fits) continue;
+    const apps::Image shown = tone_mapped(r.image, exposure);
+    apps::write_png(path(std::string(estimator_name(r.estimator))), shown, 1.0f);
+    for (int i = 0; i < 3; ++i)
+      if (side[i] == r.estimator) {
+        for (int y = 0; y < a.height; ++y)
+          for (int x = 0; x < a.width; ++x) strip.at(i * (a.width + 2) + x, y) = shown.at(x, y);
+        ++column;
+      }
+  }
+  if (column == 3) apps::write_png(path("equal-time"), strip, 1.0f);
+  fmt::print("images    {}/media-{}-*.png (budget {}, the reference's exposure)\n", dir, a.scene, budget);
+}
+
+void print_scene(const SceneAccuracy& a, const AccuracyOptions& o) {
+  fmt::print("\n== {}: {}x{}, {} photons emitted ({} stored), k = {}; unit = {:.4f} s simulated (transmittance, M = {} S)\n",
+             a.scene, a.width, a.height, a.photons_emitted, a.photons_stored, a.k, a.unit_seconds, o.unit_b);
+  fmt::print("reference: radiance, {:.3f} s simulated in two seeds (wall {:.1f} s); mean {:.4g}, own noise {:.3g} ({:.2f} %)\n",
+             a.reference_seconds, a.reference_wall, a.reference_mean, a.reference_noise,
+             a.reference_mean > 0 ? 100 * a.reference_noise / a.reference_mean : 0.0);
+  fmt::print("{:<14} {:>6} {:>9} {:>9} {:>8} {:>10} {:>10} {:>9} {:>10}\n", "estimator", "budget", "b", "sim_s", "wall_s",
+             "samples", "rmse", "rel_rmse", "/transm.");
+  for (const BudgetRow& r : a.rows) {
+    if (!r.fits) {
+      fmt::print("{:<14} {:>6} {:>9}   (its fixed cost exceeds the budget)\n", estimator_name(r.estimator), r.budget, "-");
+      continue;
+    }
+    const BudgetRow* t = a.row(Estimator::transmittance, r.budget);
+    const std::string ratio = t && t->fits && t->rmse_net > 0 ? fmt::format("{:.3f}", r.rmse_net / t->rmse_net) : "-";
+    fmt::print("{:<14} {:>6} {:>9.4g} {:>9.4f} {:>8.2f} {:>10} {:>10.4g} {:>8.2f}% {:>10}\n", estimator_name(r.estimator),
+               r.budget, r.beta, r.simulated_seconds, r.wall_seconds, r.samples, r.rmse_net, 100 * r.relative_rmse, ratio);
+  }
+  fmt::print("rmse: against the reference, its own noise removed (sqrt(rmse^2 - noise^2)); b: M = b S (radiance: M = b c S_h, eq. 22)\n");
+  fmt::print("noise spread (p95 / median of the per-pixel relative std over {} renders at budget {}):", o.spread_repeats,
+             o.budgets.at(std::min(o.spread_budget, o.budgets.size() - 1)));
+  for (const auto& [e, spread] : a.noise_spread) fmt::print(" {} {:.2f};", estimator_name(e), spread);
+  fmt::print("\ngrid build: {:.4f} s simulated on one CPU, of the render at budget", a.grid_build_seconds);
+  for (double b : o.budgets) fmt::print(" {}: {:.1f} %", b, 100 * a.grid_build_seconds / (b * a.unit_seconds));
+  fmt::print(" (render cost grows with the pixels: at 640x480 divide by {:.0f})\n", 640.0 * 480 / (a.width * a.height));
+  if (a.photon_rows.empty()) return;
+  fmt::print("photon count at fixed samples (transmittance, M = {} S) against {} photons emitted:\n", a.photon_study_b,
+             a.photon_reference_emitted);
+  fmt::print("{:>10} {:>10} {:>10} {:>10} {:>8}\n", "emitted", "stored", "rmse", "mean bias", "wall_s");
+  for (const PhotonRow& r : a.photon_rows)
+    fmt::print("{:>10} {:>10} {:>10.4g} {:>9.2f}% {:>8.2f}\n", r.emitted, r.stored, r.rmse, 100 * r.mean_bias, r.wall_seconds);
+}
+
+// RMSE(a)/RMSE(b) per budget, both fitting.
+std::vector<double> ratios(const SceneAccuracy& s, Estimator a, Estimator b, const std::vector<double>& budgets) {
+  std::vector<double> out;
+  for (double budget : budgets) {
+    const BudgetRow *ra = s.row(a, budget), *rb = s.row(b, budget);
+    if (ra && rb && ra->fits && rb->fits && rb->rmse_net > 0) out.push_back(ra->rmse_net / rb->rmse_net);
+  }
+  return out;
+}
+
+void print_target(const std::string& what, const std::vector<double>& values, double limit) {
+  if (values.empty()) return;
+  const auto met = std::count_if(values.begin(), values.end(), [limit](double v) { return v <= limit; });
+  std::string list;
+  for (double v : values) list += fmt::format("{}{:.2f}", list.empty() ? "" : " ", v);
+  fmt::print("  {:<58} {} (target <= {}): met at {} of {} budgets\n", what, list, limit, met, values.size());
+}
+
+void print_targets(const std::vector<SceneAccuracy>& all, const AccuracyOptions& o) {
+  fmt::print("\n== issue 9 section 3 targets, as measured\n");
+  for (const SceneAccuracy& s : all) {
+    const double limit = s.scene == "exp2" ? 0.8 : s.scene == "fog" ? 1.1 : 0.6;
+    print_target(s.scene + ": RMSE(radiance) / RMSE(transmittance)", ratios(s, Estimator::radiance, Estimator::transmittance, o.budgets),
+                 limit);
+    if (s.scene != "fog")
+      print_target(s.scene + ": RMSE(transmittance) / RMSE(uniform)",
+                   ratios(s, Estimator::transmittance, Estimator::uniform, o.budgets), 1.0);
+    double spread_t = 0, spread_r = 0;
+    for (const auto& [e, v] : s.noise_spread) {
+      if (e == Estimator::transmittance) spread_t = v;
+      if (e == Estimator::radiance) spread_r = v;
+    }
+    if (spread_t > 0 && spread_r > 0)
+      fmt::print("  {:<58} {:.2f} (target >= 1.5): {}\n", s.scene + ": noise spread transmittance / radiance", spread_t / spread_r,
+                 spread_t / spread_r >= 1.5 ? "met" : "not met");
+    const double smallest = *std::min_element(o.budgets.begin(), o.budgets.end());
+    const double share = s.grid_build_seconds / (smallest * s.unit_seconds);
+    const double share_paper = share * s.width * s.height / (640.0 * 480.0);
+    fmt::print("  {:<58} {:.1f} % here, {:.2f} % at 640x480 (target <= 5 %)\n",
+               s.scene + ": grid build / render at the smallest budget", 100 * share, 100 * share_paper);
+  }
+}
+
+void write_csv(const std::string& path, const std::vector<SceneAccuracy>& all) {
+  std::ofstream f(path);
+  if (!f) throw std::runtime_error("cannot write CSV file '" + path + "'");
+  f << "scene,estimator,budget,b,sim_s,wall_s,samples,rmse,rel_rmse\n";
+  for (const SceneAccuracy& s : all)
+    for (const BudgetRow& r : s.rows)
+      if (r.fits)
+        f << fmt::format("{},{},{},{:.6g},{:.6f},{:.3f},{},{:.6g},{:.6g}\n", s.scene, estimator_name(r.estimator), r.budget,
+                         r.beta, r.simulated_seconds, r.wall_seconds, r.samples, r.rmse_net, r.relative_rmse);
+}
+
+nlohmann::json to_json(const SceneAccuracy& s) {
+  nlohmann::json j{{"scene", s.scene},           {"width", s.width},
+                   {"height", s.height},         {"photons_emitted", s.photons_emitted},
+                   {"photons_stored", s.photons_stored}, {"unit_seconds", s.unit_seconds},
+                   {"grid_build_seconds", s.grid_build_seconds}, {"reference_noise", s.reference_noise},
+                   {"reference_mean", s.reference_mean}};
+  for (const BudgetRow& r : s.rows)
+    j["rows"].push_back({{"estimator", estimator_name(r.estimator)}, {"budget", r.budget}, {"fits", r.fits}, {"b", r.beta},
+                         {"sim_s", r.simulated_seconds}, {"wall_s", r.wall_seconds}, {"samples", r.samples},
+                         {"rmse", r.rmse_net}, {"rel_rmse", r.relative_rmse}});
+  for (const auto& [e, v] : s.noise_spread) j["noise_spread"][std::string(estimator_name(e))] = v;
+  for (const PhotonRow& r : s.photon_rows)
+    j["photons"].push_back({{"emitted", r.emitted}, {"stored", r.stored}, {"rmse", r.rmse}, {"mean_bias", r.mean_bias}});
+  return j;
+}
+
+void run_accuracy(AccuracyFlags f) {
+  if (f.quick) {
+    f.o.width = 64, f.o.height = 48, f.o.photons = f.o.photons > 0 ? f.o.photons : 20000;
+    f.budgets = "2,8", f.photon_fractions = "0.5,1", f.o.reference_factor = 4, f.o.spread_repeats = 2;
+    f.o.spread_budget = 0;
+  }
+  const machine::MachineConfig m = f.config.empty() ? machine::default_machine_config() : machine::load_machine_config(f.config);
+  f.o.budgets = pipeline::parse_double_list(f.budgets, "--budgets");
+  f.o.photon_fractions = f.photon_fractions.empty() ? std::vector<double>{} : pipeline::parse_double_list(f.photon_fractions, "--photon-fractions");
+  f.o.estimators.clear();
+  for (const auto& name : split_names(f.estimators)) {
+    const auto e = parse_estimator(name);
+    if (!e || *e == Estimator::grid)
+      throw std::invalid_argument("--estimators: '" + name + "': expected uniform, transmittance, radiance, equiangular or mis");
+    f.o.estimators.push_back(*e);
+  }
+  std::vector<SceneAccuracy> all;
+  for (const auto& name : split_names(f.scenes)) {
+    const MediaScene scene = scene_by_name(name);
+    all.push_back(measure_accuracy(scene, f.o, m, [&name](const std::string& what) {
+      fmt::print(stderr, "accuracy media: {}: {}\n", name, what);
+    }));
+    print_scene(all.back(), f.o);
+    if (!f.images.empty())
+      write_images(f.images, all.back(), f.o.budgets.at(std::min(f.o.spread_budget, f.o.budgets.size() - 1)));
+    std::fflush(stdout);
+  }
+  print_targets(all, f.o);
+  if (!f.csv.empty()) write_csv(f.csv, all), fmt::print("csv       {}\n", f.csv);
+  if (!f.json.empty()) {
+    nlohmann::json j;
+    for (const SceneAccuracy& s : all) j["scenes"].push_back(to_json(s));
+    pipeline::write_json_file(f.json, j);
+  }
+}
+
+}  // namespace
+
+void add_accuracy_command(pipeline::CommandGroups& g) {
+  auto f = std::make_shared<AccuracyFlags>();
+  CLI::App* cmd = g.accuracy->add_subcommand(
+      "media",
+      "What accuracy costs in the media renderer: each scene rendered with each estimator at equal budgets\n"
+      "of simulated time (one CPU of the machine, from counted operations: deterministic), RMSE against a\n"
+      "high-sample reference (radiance sampling, two seeds) on the same photon map (so only the estimators differ), the noise spread\n"
+      "over the image, the SH grid's share of the render time, the photon count's effect at fixed samples,\n"
+      "and the targets of issue 9 as measured. Wall times are the host's.");
+  cmd->add_option("--scenes", f->scenes, "Scenes (exp1, exp2, fog, small, exp1-literal)")->capture_default_str();
+  cmd->add_option("--estimators", f->estimators, "Estimators to compare")->capture_default_str();
+  cmd->add_option("--budgets", f->budgets, "Budgets in units (the transmittance estimator's time at M = unit-b S)")
+      ->capture_default_str();
+  cmd->add_option("--unit-b", f->o.unit_b, "b of the budget unit")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--width", f->o.width, "Image width")->check(CLI::Range(4, 4096))->capture_default_str();
+  cmd->add_option("--height", f->o.height, "Image height")->check(CLI::Range(4, 4096))->capture_default_str();
+  cmd->add_option("--photons", f->o.photons, "Photons emitted (default: the scene's)")->check(CLI::PositiveNumber);
+  cmd->add_option("--reference-factor", f->o.reference_factor, "Reference budget over the largest budget")
+      ->check(CLI::Range(1.0, 1e6))
+      ->capture_default_str();
+  cmd->add_option("--repeats", f->o.spread_repeats, "Renders per estimator for the noise spread")
+      ->check(CLI::Range(2, 1000))
+      ->capture_default_str();
+  cmd->add_option("--photon-fractions", f->photon_fractions, "Photon study: fractions of the scene's photons (empty: skip)")
+      ->capture_default_str();
+  cmd->add_option("--seed", f->o.seed, "Random seed")->capture_default_str();
+  cmd->add_flag("--quick", f->quick, "CI-sized: 64x48, 20000 photons, budgets 2,8, reference x4, 2 repeats");
+  cmd->add_option("--config", f->config, "Machine file whose [ops] costs turn counts into seconds")->check(CLI::ExistingFile);
+  cmd->add_option("--csv", f->csv, "Write scene,estimator,budget,b,sim_s,wall_s,samples,rmse,rel_rmse (gcsim plot --accuracy)");
+  cmd->add_option("--json", f->json, "Write every table as JSON");
+  cmd->add_option("--images", f->images, "Write each estimator's image at the noise-spread budget, and the reference, as PNGs here");
+  cmd->footer(
+      "\nExamples:\n"
+      "  gcsim accuracy media --quick\n"
+      "  gcsim accuracy media --csv media.csv && gcsim plot --accuracy media.csv --out plots/");
+  cmd->callback([f] { run_accuracy(*f); });
+}
+
+}  // namespace gcsim::media::app

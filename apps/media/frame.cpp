@@ -1,0 +1,46 @@
+#include "apps/media/frame.hpp"
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+namespace gcsim::media {
+namespace {
+
+double cycles(const machine::MachineConfig& m, const std::string& op) {
+  auto it = m.cycles_per_op.find(op);
+  if (it == m.cycles_per_op.end())
+    throw std::invalid_argument("machine file '" + m.source + "': no [ops] cost for '" + op + "'");
+  return it->second;
+}
+
+}  // namespace
+
+double render_seconds(const RenderCounters& c, std::size_t k, const machine::MachineConfig& m) {
+  const double per_sample = cycles(m, "media_march_sample") + cycles(m, "media_knn_lookup") +
+                            double(k) * cycles(m, "media_knn_photon");
+  const double total = double(c.pixels + c.surface_events) * cycles(m, "media_camera_ray") +
+                       double(c.march.samples) * per_sample + double(c.march.sh_evals) * cycles(m, "media_sh_eval");
+  return total / m.clock_hz;
+}
+
+double grid_build_seconds(std::uint64_t voxels, std::uint64_t photon_adds, const machine::MachineConfig& m) {
+  const double total = double(voxels) * cycles(m, "media_knn_lookup") +
+                       double(photon_adds) * (cycles(m, "media_knn_photon") + cycles(m, "media_sh_add"));
+  return total / m.clock_hz;
+}
+
+Frame render_frame(const MediaScene& scene, const SceneCaches& caches, const MarchSettings& settings,
+                   std::uint64_t seed, const machine::MachineConfig& m, int stride) {
+  const auto start = std::chrono::steady_clock::now();
+  Frame f;
+  f.image = apps::Image(scene.camera.width, scene.camera.height);
+  for (int y = 0; y < scene.camera.height; y += stride)
+    for (int x = 0; x < scene.camera.width; x += stride)
+      f.image.at(x, y) = glm::vec3(static_cast<float>(render_pixel(scene, caches, settings, seed, x, y, f.counters)));
+  f.simulated_seconds = render_seconds(f.counters, scene.k_nearest, m);
+  f.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return f;
+}
+
+}  // namespace gcsim::media

@@ -1,0 +1,29 @@
+#pragma once
+// One sequential render of a scene's image on the host, with what it would cost on one CPU of the
+// simulated machine (its counted operations at the machine file's [ops] costs) and on the host.
+#include <cstdint>
+
+#include "apps/common/image.hpp"
+#include "apps/media/media_render.hpp"
+#include "machine/machine_config.hpp"
+
+namespace gcsim::media {
+
+struct Frame {
+  apps::Image image;
+  RenderCounters counters;
+  double simulated_seconds = 0.0;  // one CPU of the machine: the counted render operations
+  double wall_seconds = 0.0;       // host
+};
+
+// Seconds of one CPU for the camera rays, march samples (each a k-NN estimate) and SH evaluations.
+double render_seconds(const RenderCounters& c, std::size_t k, const machine::MachineConfig& m);
+// Seconds of one CPU to build both SH grids (one k-NN query per voxel, Funk–Hecke per photon).
+double grid_build_seconds(std::uint64_t voxels, std::uint64_t photon_adds, const machine::MachineConfig& m);
+
+// Renders every stride-th pixel in x and y (stride 1: the whole image; others: a pilot whose cost,
+// scaled by stride², predicts the whole image's). Pixels not rendered stay zero.
+Frame render_frame(const MediaScene& scene, const SceneCaches& caches, const MarchSettings& settings,
+                   std::uint64_t seed, const machine::MachineConfig& m, int stride = 1);
+
+}  // namespace gcsim::media

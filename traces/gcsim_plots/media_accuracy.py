@@ -1,0 +1,35 @@
+"""RMSE against simulated time per estimator, one panel per scene (gcsim accuracy media --csv)."""
+
+from gcsim_plots.calibration import number, read_rows
+from gcsim_plots.style import DPI
+
+MEDIA_ACCURACY_COLUMNS = ("scene", "estimator", "budget", "sim_s", "wall_s", "rmse", "rel_rmse")
+
+
+def is_media_accuracy(path):
+    with open(path, newline="") as f:
+        header = f.readline().strip().split(",")
+    return "estimator" in header and "rmse" in header
+
+
+def plot_media_accuracy(plt, path, out, title):
+    rows = read_rows(path, MEDIA_ACCURACY_COLUMNS)
+    scenes = list(dict.fromkeys(r["scene"] for r in rows))
+    fig, axes = plt.subplots(1, len(scenes), figsize=(4.2 * len(scenes), 3.8), squeeze=False)
+    for ax, scene in zip(axes[0], scenes):
+        mine = [(i, r) for i, r in enumerate(rows) if r["scene"] == scene]
+        for est in dict.fromkeys(r["estimator"] for _, r in mine):
+            pts = sorted((number(r, "sim_s", path, i + 2), 100 * number(r, "rel_rmse", path, i + 2))
+                         for i, r in mine if r["estimator"] == est)
+            ax.plot([x for x, _ in pts], [y for _, y in pts], marker="o", label=est)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("simulated render time on one CPU (s)")
+        ax.set_ylabel("RMSE / mean of the reference (%)")
+        ax.set_title(scene)
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=7)
+    fig.suptitle(title or "Media: error against time per distance estimator")
+    fig.tight_layout()
+    fig.savefig(out, dpi=DPI)
+    plt.close(fig)
