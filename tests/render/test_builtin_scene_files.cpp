@@ -8,7 +8,9 @@
 #include "apps/common/scene/description_to_world.hpp"
 #include "apps/common/scene/scene_file.hpp"
 #include "apps/radiosity/builtin_scenes.hpp"
+#include "apps/radiosity/parallel_radiosity.hpp"
 #include "apps/radiosity/scene.hpp"
+#include "parix/simulated_runtime.hpp"
 
 namespace gcsim::scene {
 namespace {
@@ -62,3 +64,30 @@ TEST(BuiltinSceneFiles, CornellFileIsTheBuiltInCornell) {
 
 }  // namespace
 }  // namespace gcsim::scene
+
+namespace gcsim::radiosity {
+namespace {
+
+// The radiosity pass on cornell.toml is the radiosity application on its built-in CORNELL: the same
+// radiosities bit for bit and the same simulated time, on 2 nodes with a small hemicube.
+TEST(BuiltinSceneFiles, CornellFileGivesTheBuiltInRadiositiesExactly) {
+  const Scene from_file = flatten(scene::to_world(scene::load_scene_file(
+      std::filesystem::path(GCSIM_SOURCE_DIR) / "scenes" / "cornell.toml")));
+  const Scene built_in = flatten(cornell_world());
+  ParallelOptions options;
+  options.solver.hemicube.resolution = 32;
+  options.solver.energy = 0.9;
+  parix::SimulationOptions sim;
+  sim.config = machine::with_nodes(machine::default_machine_config(), 2);
+  sim.nodes = 2;
+  ParallelOutcome a, b;
+  const auto run_a = parix::run_simulated(sim, [&](parix::Processor& p) { radiosity_program(p, from_file, options, &a); });
+  const auto run_b = parix::run_simulated(sim, [&](parix::Processor& p) { radiosity_program(p, built_in, options, &b); });
+  EXPECT_EQ(run_a.makespan, run_b.makespan);
+  ASSERT_EQ(a.element_radiosity.size(), b.element_radiosity.size());
+  for (std::size_t i = 0; i < a.element_radiosity.size(); ++i) EXPECT_EQ(a.element_radiosity[i], b.element_radiosity[i]) << i;
+  EXPECT_EQ(a.steps.size(), b.steps.size());
+}
+
+}  // namespace
+}  // namespace gcsim::radiosity

@@ -27,6 +27,7 @@ class RenderExperiment : public pipeline::Experiment {
   explicit RenderExperiment(const std::string& scene_file)
       : description_(scene::load_scene_file(scene_file)), plan_(make_plan(description_)) {
     if (plan_.pass(PassId::radiosity).on) mesh_ = radiosity::flatten(scene::to_world(description_));
+    options_.solver.hemicube.resolution = 256;  // `gcsim run radiosity`'s default
   }
   std::unique_ptr<pipeline::Outcome> new_outcome(int) const override { return std::make_unique<RenderOutcome>(); }
   parix::Program program(pipeline::Outcome& out) const override {
