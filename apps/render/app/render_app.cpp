@@ -9,6 +9,8 @@
 #include "apps/common/scene/description_to_world.hpp"
 #include "apps/common/scene/scene_file.hpp"
 #include "apps/pipeline/app_registry.hpp"
+#include "apps/common/image.hpp"
+#include "apps/radiosity/gouraud_renderer.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "apps/radiosity/scene.hpp"
 #include "apps/render/app/render_commands.hpp"
@@ -24,8 +26,8 @@ struct RenderOutcome : pipeline::Outcome {
 
 class RenderExperiment : public pipeline::Experiment {
  public:
-  explicit RenderExperiment(const std::string& scene_file)
-      : description_(scene::load_scene_file(scene_file)), plan_(make_plan(description_)) {
+  RenderExperiment(const std::string& scene_file, std::string image)
+      : description_(scene::load_scene_file(scene_file)), plan_(make_plan(description_)), image_(std::move(image)) {
     if (plan_.pass(PassId::radiosity).on) mesh_ = radiosity::flatten(scene::to_world(description_));
     options_.solver.hemicube.resolution = 256;  // `gcsim run radiosity`'s default
   }
@@ -48,11 +50,13 @@ class RenderExperiment : public pipeline::Experiment {
     if (!plan_.pass(PassId::radiosity).on) {
       fmt::print("radiosity skipped: {}\n", plan_.pass(PassId::radiosity).reason);
       extra["radiosity"] = {{"ran", false}};
+      if (!image_.empty()) fmt::print("image     not written: only the radiosity pass renders so far, and it is off\n");
       return;
     }
     fmt::print("radiosity {} steps, {}converged\n", r.steps.size(), r.converged ? "" : "not ");
     extra["radiosity"] = {{"ran", true}, {"steps", r.steps.size()}, {"converged", r.converged},
                           {"elements", r.element_radiosity.size()}};
+    if (!image_.empty()) write_image(r);
   }
 
  private:
@@ -60,6 +64,18 @@ class RenderExperiment : public pipeline::Experiment {
   Plan plan_;
   radiosity::Scene mesh_;
   radiosity::ParallelOptions options_;
+  std::string image_;
+
+  // The radiosity solution seen from the scene's camera, Gouraud-shaded on the host (not yet a
+  // pass on the simulated nodes).
+  void write_image(const radiosity::ParallelOutcome& r) const {
+    radiosity::RenderOptions ro;
+    ro.width = description_.image.width;
+    ro.height = description_.image.height;
+    const radiosity::Camera camera = mesh_.camera ? *mesh_.camera : radiosity::default_camera(mesh_);
+    apps::write_png(image_, radiosity::render_gouraud(mesh_, r.element_radiosity, camera, ro));
+    fmt::print("image     {} (radiosity, Gouraud-shaded on the host)\n", image_);
+  }
 };
 
 pipeline::AppSpec spec() {
@@ -69,8 +85,10 @@ pipeline::AppSpec spec() {
   s.run_footer = "Example:\n  gcsim plan scenes/cornell.toml --nodes 8\n  gcsim run render --scene scenes/cornell.toml --nodes 8";
   s.options = [](CLI::App& cmd, pipeline::Verb) -> pipeline::ExperimentFactory {
     auto scene = std::make_shared<std::string>();
+    auto image = std::make_shared<std::string>();
     cmd.add_option("--scene", *scene, "a TOML scene file (scenes/*.toml)")->required();
-    return [scene] { return std::make_unique<RenderExperiment>(*scene); };
+    cmd.add_option("--image", *image, "write the radiosity solution seen from the scene's camera as PNG");
+    return [scene, image] { return std::make_unique<RenderExperiment>(*scene, *image); };
   };
   s.commands = [](pipeline::CommandGroups& g) { add_plan_command(g); };
   return s;
