@@ -12,7 +12,10 @@
 namespace gcsim::scene {
 
 SceneFileError::SceneFileError(std::string f, int l, const std::string& m)
-    : std::runtime_error(fmt::format("{}:{}: {}", f, l, m)), file(std::move(f)), line(l), message(m) {}
+    : std::runtime_error(l > 0 ? fmt::format("{}:{}: {}", f, l, m) : fmt::format("{}: {}", f, m)),
+      file(std::move(f)),
+      line(l),
+      message(m) {}
 
 namespace file {
 namespace {

@@ -15,7 +15,8 @@
 
 namespace gcsim::scene {
 
-// what() reads "FILE:LINE: MESSAGE" (LINE 0 when the mistake has no place, e.g. an unreadable file).
+// what() reads "FILE:LINE: MESSAGE", or "FILE: MESSAGE" (line 0) when the mistake has no line, e.g.
+// a missing scene file.
 class SceneFileError : public std::runtime_error {
  public:
   SceneFileError(std::string file, int line, const std::string& message);
