@@ -18,12 +18,12 @@ namespace gcsim::scene {
 using Rgb = glm::dvec3;
 
 // A participating medium inside a closed bounding surface (the shape that carries the material).
-enum class PhaseKind { isotropic, henyey_greenstein };
+enum class PhaseKind { isotropic, henyey_greenstein, schlick };
 struct Medium {
   Rgb sigma_s{0.0};  // scattering coefficient, per unit length
   Rgb sigma_a{0.0};  // absorption coefficient, per unit length
   PhaseKind phase = PhaseKind::isotropic;
-  double phase_g = 0.0;  // Henyey-Greenstein asymmetry in (-1, 1)
+  double phase_g = 0.0;  // Henyey-Greenstein asymmetry g, or Schlick's k, in (-1, 1)
   double boundary_ior = 1.0;  // index of the bounding surface (1: no refraction at the boundary)
 };
 
@@ -35,16 +35,30 @@ struct Material {
   double mirror = 0.0;  // mirror weight
   double transmittance = 0.0;  // > 0: glass refracting with index ior
   double ior = 1.5;
+  bool fresnel = true;  // glass splits reflection and refraction by the Fresnel equations
   std::optional<Rgb> checker_other;  // second checkerboard colour
   double checker_size = 1.0;
   std::optional<Medium> medium;  // the shape bounds a participating medium
 };
 
-// A planar convex polygon of 3 or 4 vertices (radiosity's patches, subdivided into elements).
+// An element given explicitly (a WORLD file's ELEMENT record, placed): 3 or 4 vertices.
+struct ExplicitElement {
+  std::array<glm::dvec3, 4> vertex{};
+  int count = 4;
+};
+
+// A planar convex polygon of 3 or 4 vertices, its front the side from which the vertices run
+// counter-clockwise. For radiosity a quad is a grid of patch_columns x patch_rows patches (columns
+// along vertex 0 -> 1, rows along 0 -> 3), each a grid of element_columns x element_rows elements.
 struct Polygon {
   std::array<glm::dvec3, 4> vertex{};
   int count = 4;
   int element_rows = 1, element_columns = 1;  // elements per patch, for radiosity
+  int patch_rows = 1, patch_columns = 1;
+  // Given: the patches and elements keep the grid's vertex order where their front looks along this
+  // direction and are reversed otherwise (as the thesis's entity builder orients its records).
+  std::optional<glm::dvec3> facing;
+  std::vector<ExplicitElement> elements;  // non-empty: these elements instead of the grid
 };
 struct Sphere {
   glm::dvec3 center{0.0};
@@ -61,6 +75,11 @@ struct Mesh {
 struct Shape {
   std::variant<Polygon, Sphere, Box, Mesh> geometry;
   int material = 0;  // index into SceneDescription::materials
+  // A polygon's back side as a second patch on the same vertices (-1: none), e.g. a lamp's housing.
+  int back_material = -1;
+  // The object (the thesis's ENTITY) the shape belongs to; shapes of one object share its vertices'
+  // numbering and one surface per material. Empty: an object of its own.
+  std::string object{};
 };
 
 struct PointLight {
@@ -81,6 +100,7 @@ struct Camera {
 
 struct ImageSettings {
   int width = 512, height = 512;
+  int samples_per_pixel = 1;
   Rgb background{0.05, 0.06, 0.09};
   Rgb ambient{0.12};
 };

@@ -1,0 +1,185 @@
+#include "apps/common/scene/description_to_world.hpp"
+
+#include <algorithm>
+#include <map>
+#include <numbers>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace gcsim::scene {
+
+namespace {
+
+// One entity under construction: its surfaces are created per material on first use.
+class EntityLowering {
+ public:
+  EntityLowering(std::string name, const SceneDescription& d) : d_(d) { e_.name = std::move(name); }
+
+  int surface_of(int material) {
+    if (material < 0 || material >= int(d_.materials.size()))
+      throw std::invalid_argument(fmt::format("entity '{}' uses material {}, but there are {}", e_.name, material,
+                                              d_.materials.size()));
+    auto [it, added] = surface_index_.emplace(material, int(e_.surfaces.size()));
+    if (added) e_.surfaces.push_back({d_.materials[material].diffuse, d_.materials[material].emission});
+    return it->second;
+  }
+  int vertex(const Vec3& v) {
+    e_.vertices.push_back(v);
+    return int(e_.vertices.size()) - 1;
+  }
+  // A patch record and its elements, oriented as EntityBuilder::oriented does.
+  PolygonRecord record(std::array<int, 4> v, int count, const std::optional<Vec3>& facing, bool back, int owner) const {
+    if (facing) {
+      geometry::Polygon p;
+      p.count = count;
+      for (int k = 0; k < count; ++k) p.v[k] = e_.vertices[v[k]];
+      if (glm::dot(geometry::newell_normal(p), *facing) < 0) std::reverse(v.begin(), v.begin() + count);
+    }
+    if (back) std::reverse(v.begin(), v.begin() + count);
+    return {owner, v, count};
+  }
+  int add_patch(const PolygonRecord& r) {
+    e_.patches.push_back(r);
+    return int(e_.patches.size()) - 1;
+  }
+  void add_element(const PolygonRecord& r) { e_.elements.push_back(r); }
+
+  void polygon(const Polygon& p, int material, int back_material);
+  void box(const Box& b, int material);
+  void sphere(const Sphere& s, int material);
+  void mesh(const Mesh& m, int material);
+  Entity take() { return std::move(e_); }
+
+ private:
+  void grid_side(const Polygon& p, int base, int surface, bool back);
+  const SceneDescription& d_;
+  Entity e_;
+  std::map<int, int> surface_index_;
+};
+
+void EntityLowering::grid_side(const Polygon& p, int base, int surface, bool back) {
+  const int eu = p.element_columns, ev = p.element_rows, nu = p.patch_columns * eu;
+  auto at = [&](int i, int j) { return base + j * (nu + 1) + i; };
+  for (int pj = 0; pj < p.patch_rows; ++pj)
+    for (int pi = 0; pi < p.patch_columns; ++pi) {
+      const int i0 = pi * eu, j0 = pj * ev;
+      const int patch =
+          add_patch(record({at(i0, j0), at(i0 + eu, j0), at(i0 + eu, j0 + ev), at(i0, j0 + ev)}, 4, p.facing, back, surface));
+      for (int ej = 0; ej < ev; ++ej)
+        for (int ei = 0; ei < eu; ++ei) {
+          const int i = i0 + ei, j = j0 + ej;
+          add_element(record({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}, 4, p.facing, back, patch));
+        }
+    }
+}
+
+void EntityLowering::polygon(const Polygon& p, int material, int back_material) {
+  const int front = surface_of(material);
+  const int back = back_material >= 0 ? surface_of(back_material) : -1;
+  if (!p.elements.empty() || p.count == 3) {
+    // One patch on its own vertices; its elements explicit or the patch itself.
+    std::array<int, 4> v{};
+    for (int k = 0; k < p.count; ++k) v[k] = vertex(p.vertex[k]);
+    for (int side = 0; side < (back >= 0 ? 2 : 1); ++side) {
+      const int patch = add_patch(record(v, p.count, p.facing, side == 1, side == 1 ? back : front));
+      if (p.elements.empty()) add_element(record(v, p.count, p.facing, side == 1, patch));
+      for (const ExplicitElement& x : p.elements) {
+        std::array<int, 4> ev{};
+        for (int k = 0; k < x.count; ++k) ev[k] = vertex(x.vertex[k]);
+        add_element(record(ev, x.count, p.facing, side == 1, patch));
+      }
+    }
+    return;
+  }
+  // The grid of EntityBuilder::quad: u runs vertex 0 -> 1, v runs vertex 0 -> 3.
+  const Vec3 c00 = p.vertex[0], c10 = p.vertex[1], c11 = p.vertex[2], c01 = p.vertex[3];
+  const int nu = p.patch_columns * p.element_columns, nv = p.patch_rows * p.element_rows;
+  const int base = int(e_.vertices.size());
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i) {
+      double s = double(i) / nu, t = double(j) / nv;
+      vertex((1 - s) * (1 - t) * c00 + s * (1 - t) * c10 + s * t * c11 + (1 - s) * t * c01);
+    }
+  grid_side(p, base, front, false);
+  if (back >= 0) grid_side(p, base, back, true);
+}
+
+void EntityLowering::box(const Box& b, int material) {
+  const int s = surface_of(material);
+  int corner[8];
+  for (int k = 0; k < 8; ++k) corner[k] = vertex({k & 1 ? b.hi.x : b.lo.x, k & 2 ? b.hi.y : b.lo.y, k & 4 ? b.hi.z : b.lo.z});
+  // Each face counter-clockwise seen from outside.
+  static constexpr int kFaces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& f : kFaces) {
+    const std::array<int, 4> v{corner[f[0]], corner[f[1]], corner[f[2]], corner[f[3]]};
+    add_element(record(v, 4, std::nullopt, false, add_patch(record(v, 4, std::nullopt, false, s))));
+  }
+}
+
+void EntityLowering::sphere(const Sphere& sp, int material) {
+  const int s = surface_of(material);
+  const double pi = std::numbers::pi;
+  auto point = [&](int slice, int stack) {
+    const double theta = pi * stack / kSphereStacks, phi = 2 * pi * slice / kSphereSlices;
+    return sp.center + sp.radius * Vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+  };
+  for (int j = 0; j < kSphereStacks; ++j)
+    for (int i = 0; i < kSphereSlices; ++i) {
+      // In this order the front looks outwards; at the poles two corners coincide and one is dropped.
+      const std::array<Vec3, 4> q{point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)};
+      std::array<int, 4> v{};
+      int count = 0;
+      for (int k = 0; k < 4; ++k)
+        if (!(j == 0 && k == 1) && !(j == kSphereStacks - 1 && k == 2)) v[count++] = vertex(q[k]);
+      add_element(record(v, count, std::nullopt, false, add_patch(record(v, count, std::nullopt, false, s))));
+    }
+}
+
+void EntityLowering::mesh(const Mesh& m, int material) {
+  const int s = surface_of(material);
+  const int base = int(e_.vertices.size());
+  for (const Vec3& p : m.mesh.positions) vertex(p);
+  for (const auto& t : m.mesh.triangles) {
+    const std::array<int, 4> v{base + t[0], base + t[1], base + t[2], 0};
+    add_element(record(v, 3, std::nullopt, false, add_patch(record(v, 3, std::nullopt, false, s))));
+  }
+}
+
+std::string default_object_name(const Shape& s, std::size_t index) {
+  static constexpr const char* kKinds[] = {"polygon", "sphere", "box", "mesh"};
+  return fmt::format("{} {}", kKinds[s.geometry.index()], index);
+}
+
+}  // namespace
+
+World to_world(const SceneDescription& d) {
+  World w;
+  w.name = d.name;
+  std::vector<EntityLowering> entities;
+  std::map<std::string, std::size_t> by_object;
+  for (std::size_t i = 0; i < d.shapes.size(); ++i) {
+    const Shape& s = d.shapes[i];
+    std::size_t e;
+    if (s.object.empty() || !by_object.count(s.object)) {
+      e = entities.size();
+      entities.emplace_back(s.object.empty() ? default_object_name(s, i) : s.object, d);
+      if (!s.object.empty()) by_object[s.object] = e;
+    } else {
+      e = by_object[s.object];
+    }
+    EntityLowering& x = entities[e];
+    if (const auto* p = std::get_if<Polygon>(&s.geometry)) x.polygon(*p, s.material, s.back_material);
+    else if (const auto* b = std::get_if<Box>(&s.geometry)) x.box(*b, s.material);
+    else if (const auto* sp = std::get_if<Sphere>(&s.geometry)) x.sphere(*sp, s.material);
+    else x.mesh(std::get<Mesh>(s.geometry), s.material);
+  }
+  for (auto& x : entities) {
+    w.instances.push_back({int(w.entities.size()), Placement{}});
+    w.entities.push_back(x.take());
+  }
+  if (d.camera) w.camera = WorldCamera{d.camera->eye, d.camera->look_at, d.camera->up, d.camera->fov_y_degrees};
+  return w;
+}
+
+}  // namespace gcsim::scene

@@ -1,0 +1,42 @@
+// gcsim plan SCENE.toml [--nodes N] [--config F] [--json F]: the passes a scene needs, each on or
+// off with the reason, and an estimate of its simulated time and memory per node.
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "apps/common/scene/scene_file.hpp"
+#include "apps/pipeline/machine_options.hpp"
+#include "apps/render/app/render_commands.hpp"
+#include "apps/render/plan_report.hpp"
+
+namespace gcsim::render::app {
+
+namespace {
+struct PlanFlags {
+  std::string scene;
+  pipeline::MachineOptions machine;
+};
+}  // namespace
+
+void add_plan_command(pipeline::CommandGroups& g) {
+  auto f = std::make_shared<PlanFlags>();
+  CLI::App* cmd = g.app->add_subcommand(
+      "plan",
+      "Decide from a scene file alone which passes a render needs (view, radiosity, specular ray tracing,\n"
+      "media, shadows), say why each is on or off, and estimate each pass's simulated time and memory per\n"
+      "node on the chosen machine before anything runs.");
+  cmd->add_option("scene", f->scene, "a TOML scene file (see scenes/ and apps/common/scene/README.md)")->required();
+  cmd->add_option("--nodes", f->machine.nodes, "nodes the estimate is for (default 1)")->check(CLI::PositiveNumber);
+  cmd->add_option("--config", f->machine.config, "machine file (default: the built-in GC-PowerPlus)");
+  cmd->add_option("--json", f->machine.json, "also write the plan as JSON to this file");
+  cmd->callback([f] {
+    const scene::SceneDescription d = scene::load_scene_file(f->scene);
+    const machine::MachineConfig machine = pipeline::simulation_options(f->machine, 1).config;
+    const int nodes = f->machine.nodes > 0 ? f->machine.nodes : 1;
+    const Plan plan = make_plan(d);
+    fmt::print("{}", format_plan(plan, machine, nodes));
+    if (!f->machine.json.empty()) pipeline::write_json_file(f->machine.json, plan_json(plan, machine, nodes));
+  });
+}
+
+}  // namespace gcsim::render::app

@@ -1,0 +1,99 @@
+// The render app: `gcsim plan SCENE.toml` (plan_command.cpp) and `gcsim run render --scene
+// SCENE.toml`, which runs the plan's passes that the unified renderer has so far: the radiosity
+// pass (the thesis's parallel progressive refinement on the scene's polygons). The view, specular,
+// media and shadow passes are planned but not yet run here.
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "apps/common/scene/description_to_world.hpp"
+#include "apps/common/scene/scene_file.hpp"
+#include "apps/pipeline/app_registry.hpp"
+#include "apps/common/image.hpp"
+#include "apps/radiosity/gouraud_renderer.hpp"
+#include "apps/radiosity/parallel_radiosity.hpp"
+#include "apps/radiosity/scene.hpp"
+#include "apps/render/app/render_commands.hpp"
+#include "apps/render/plan.hpp"
+
+namespace gcsim::render::app {
+
+namespace {
+
+struct RenderOutcome : pipeline::Outcome {
+  radiosity::ParallelOutcome radiosity;  // node 0's replica after the run
+};
+
+class RenderExperiment : public pipeline::Experiment {
+ public:
+  RenderExperiment(const std::string& scene_file, std::string image)
+      : description_(scene::load_scene_file(scene_file)), plan_(make_plan(description_)), image_(std::move(image)) {
+    if (plan_.pass(PassId::radiosity).on) mesh_ = radiosity::flatten(scene::to_world(description_));
+    options_.solver.hemicube.resolution = 256;  // `gcsim run radiosity`'s default
+  }
+  std::unique_ptr<pipeline::Outcome> new_outcome(int) const override { return std::make_unique<RenderOutcome>(); }
+  parix::Program program(pipeline::Outcome& out) const override {
+    if (!plan_.pass(PassId::radiosity).on) return [](parix::Processor&) {};
+    radiosity::ParallelOutcome* result = &pipeline::outcome_as<RenderOutcome>(out).radiosity;
+    return [this, result](parix::Processor& p) { radiosity::radiosity_program(p, mesh_, options_, result); };
+  }
+  void print_setup(int nodes) const override {
+    fmt::print("scene     {}: {} patches, {} elements\n", plan_.scene_name, plan_.facts.patches, plan_.facts.elements);
+    for (const PassPlan& p : plan_.passes) {
+      const bool runs = p.on && p.id == PassId::radiosity;
+      fmt::print("pass      {:<10} {}\n", pass_name(p.id),
+                 !p.on ? "off (gcsim plan says why)" : runs ? fmt::format("runs on {} nodes", nodes) : "planned, not yet run");
+    }
+  }
+  void report(const pipeline::Outcome& out, nlohmann::json& extra) const override {
+    const auto& r = pipeline::outcome_as<RenderOutcome>(out).radiosity;
+    if (!plan_.pass(PassId::radiosity).on) {
+      fmt::print("radiosity skipped: {}\n", plan_.pass(PassId::radiosity).reason);
+      extra["radiosity"] = {{"ran", false}};
+      if (!image_.empty()) fmt::print("image     not written: only the radiosity pass renders so far, and it is off\n");
+      return;
+    }
+    fmt::print("radiosity {} steps, {}converged\n", r.steps.size(), r.converged ? "" : "not ");
+    extra["radiosity"] = {{"ran", true}, {"steps", r.steps.size()}, {"converged", r.converged},
+                          {"elements", r.element_radiosity.size()}};
+    if (!image_.empty()) write_image(r);
+  }
+
+ private:
+  scene::SceneDescription description_;
+  Plan plan_;
+  radiosity::Scene mesh_;
+  radiosity::ParallelOptions options_;
+  std::string image_;
+
+  // The radiosity solution seen from the scene's camera, Gouraud-shaded on the host (not yet a
+  // pass on the simulated nodes).
+  void write_image(const radiosity::ParallelOutcome& r) const {
+    radiosity::RenderOptions ro;
+    ro.width = description_.image.width;
+    ro.height = description_.image.height;
+    const radiosity::Camera camera = mesh_.camera ? *mesh_.camera : radiosity::default_camera(mesh_);
+    apps::write_png(image_, radiosity::render_gouraud(mesh_, r.element_radiosity, camera, ro));
+    fmt::print("image     {} (radiosity, Gouraud-shaded on the host)\n", image_);
+  }
+};
+
+pipeline::AppSpec spec() {
+  pipeline::AppSpec s;
+  s.name = "render";
+  s.summary = "Render a TOML scene file with the passes its plan needs (so far: the radiosity pass).";
+  s.run_footer = "Example:\n  gcsim plan scenes/cornell.toml --nodes 8\n  gcsim run render --scene scenes/cornell.toml --nodes 8";
+  s.options = [](CLI::App& cmd, pipeline::Verb) -> pipeline::ExperimentFactory {
+    auto scene = std::make_shared<std::string>();
+    auto image = std::make_shared<std::string>();
+    cmd.add_option("--scene", *scene, "a TOML scene file (scenes/*.toml)")->required();
+    cmd.add_option("--image", *image, "write the radiosity solution seen from the scene's camera as PNG");
+    return [scene, image] { return std::make_unique<RenderExperiment>(*scene, *image); };
+  };
+  s.commands = [](pipeline::CommandGroups& g) { add_plan_command(g); };
+  return s;
+}
+const pipeline::AppRegistrar registrar{spec()};
+
+}  // namespace
+}  // namespace gcsim::render::app

@@ -1,0 +1,9 @@
+#pragma once
+// The render app's commands beyond `run render` (registered in render_app.cpp).
+#include "apps/pipeline/command_groups.hpp"
+
+namespace gcsim::render::app {
+
+void add_plan_command(pipeline::CommandGroups& g);  // gcsim plan SCENE.toml
+
+}  // namespace gcsim::render::app

@@ -1,0 +1,246 @@
+#include "apps/render/plan.hpp"
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "apps/common/scene/description_to_world.hpp"
+#include "apps/render/light_paths.hpp"
+
+namespace gcsim::render {
+
+const char* pass_name(PassId id) {
+  static constexpr const char* kNames[] = {"view", "radiosity", "specular", "media", "shadows"};
+  return kNames[static_cast<int>(id)];
+}
+
+const char* to_string(MediaSampling s) {
+  switch (s) {
+    case MediaSampling::none: return "none";
+    case MediaSampling::isotropic: return "isotropic";
+    case MediaSampling::radiance_estimate: return "radiance estimate";
+  }
+  return "?";
+}
+
+namespace {
+
+using scene::Material;
+using scene::SceneDescription;
+
+double largest(const scene::Rgb& c) { return std::max({c.r, c.g, c.b}); }
+
+std::string quoted_list(const std::set<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "'" : ", '") + n + "'";
+  return out;
+}
+
+// Everything the decisions read, gathered once.
+struct Analysis {
+  const SceneDescription& d;
+  std::vector<SurfaceSide> sides;
+  std::vector<glm::dvec3> light_positions;  // point and spot lights that emit
+  bool emits = false;
+  std::vector<bool> lit;                      // per side: emitted light reaches it directly
+  std::set<int> used_materials;
+
+  const Material& material(const SurfaceSide& s) const { return d.materials[s.material]; }
+  bool diffuse(const SurfaceSide& s) const { return largest(material(s).diffuse) > 0.0; }
+  bool emitter(const SurfaceSide& s) const { return largest(material(s).emission) > 0.0; }
+};
+
+Analysis analyse(const SceneDescription& d) {
+  Analysis a{d, visible_sides(d), {}, false, {}, {}};
+  for (const auto& light : d.lights)
+    std::visit([&](const auto& l) { if (largest(l.intensity) > 0.0) a.light_positions.push_back(l.position); }, light);
+  for (const auto& s : d.shapes) {
+    a.used_materials.insert(s.material);
+    if (s.back_material >= 0) a.used_materials.insert(s.back_material);
+  }
+  a.emits = !a.light_positions.empty() || std::any_of(a.sides.begin(), a.sides.end(), [&](auto& s) { return a.emitter(s); });
+  for (const SurfaceSide& b : a.sides) {
+    bool reached = std::any_of(a.light_positions.begin(), a.light_positions.end(),
+                               [&](const glm::dvec3& p) { return faces_point(d, b, p); });
+    for (const SurfaceSide& e : a.sides)
+      if (!reached && a.emitter(e) && !(e.shape == b.shape && e.back == b.back) && exchange(d, e, b)) reached = true;
+    a.lit.push_back(reached);
+  }
+  return a;
+}
+
+PassPlan plan_radiosity(const Analysis& a) {
+  PassPlan p{PassId::radiosity};
+  int diffuse = 0, lit_diffuse = 0;
+  bool interreflection = false;
+  for (std::size_t i = 0; i < a.sides.size(); ++i) {
+    if (!a.diffuse(a.sides[i])) continue;
+    ++diffuse;
+    if (!a.lit[i]) continue;
+    ++lit_diffuse;
+    for (const SurfaceSide& c : a.sides)
+      if (a.diffuse(c) && exchange(a.d, a.sides[i], c)) interreflection = true;
+  }
+  if (diffuse == 0) {
+    p.reason = "no surface has a reflectance above 0: radiosity skipped";
+  } else if (!a.emits) {
+    p.reason = "nothing emits light (no emissive surface, point or spot light): radiosity skipped";
+  } else if (lit_diffuse == 0) {
+    p.reason = "no emitted light reaches a surface with a reflectance above 0: radiosity skipped";
+  } else if (!interreflection) {
+    p.reason = fmt::format("light reaches {} diffuse surface(s) directly, but no two diffuse surfaces face each "
+                           "other: the view's direct lighting is exact, radiosity skipped",
+                           lit_diffuse);
+  } else {
+    p.on = true;
+    p.reason = fmt::format("{} surface side(s) reflect diffusely, {} receive emitted light and pass it on to "
+                           "others: diffuse interreflection by progressive radiosity",
+                           diffuse, lit_diffuse);
+  }
+  return p;
+}
+
+PassPlan plan_specular(const Analysis& a) {
+  PassPlan p{PassId::specular};
+  std::set<std::string> mirrors, glass, boundaries;
+  for (int m : a.used_materials) {
+    const Material& mat = a.d.materials[m];
+    if (mat.mirror > 0) mirrors.insert(mat.name);
+    if (mat.transmittance > 0) glass.insert(mat.name);
+    if (mat.medium && mat.medium->boundary_ior != 1.0) boundaries.insert(mat.name);
+  }
+  std::vector<std::string> parts;
+  if (!mirrors.empty()) parts.push_back("mirror " + quoted_list(mirrors));
+  if (!glass.empty()) parts.push_back("glass " + quoted_list(glass));
+  if (!boundaries.empty()) parts.push_back("refracting medium boundary " + quoted_list(boundaries));
+  if (parts.empty()) {
+    p.reason = "no mirror, glass or refracting medium boundary: specular ray tracing skipped";
+  } else {
+    p.on = true;
+    p.reason = fmt::format("{}: reflected and refracted paths need ray tracing", fmt::join(parts, "; "));
+  }
+  return p;
+}
+
+PassPlan plan_media(const Analysis& a, SceneFacts& facts) {
+  PassPlan p{PassId::media};
+  std::set<std::string> scattering, absorbing, empty, anisotropic;
+  for (int m : a.used_materials) {
+    const Material& mat = a.d.materials[m];
+    if (!mat.medium) continue;
+    const scene::Medium& md = *mat.medium;
+    if (largest(md.sigma_s) > 0) {
+      scattering.insert(mat.name);
+      const scene::Rgb sigma_t = md.sigma_s + md.sigma_a;
+      for (int c = 0; c < 3; ++c)
+        if (sigma_t[c] > 0) facts.largest_albedo = std::max(facts.largest_albedo, md.sigma_s[c] / sigma_t[c]);
+      if (md.phase != scene::PhaseKind::isotropic && md.phase_g != 0.0) anisotropic.insert(mat.name);
+    } else if (largest(md.sigma_a) > 0) {
+      absorbing.insert(mat.name);
+    } else {
+      empty.insert(mat.name);
+    }
+  }
+  facts.media_sampling = scattering.empty() ? MediaSampling::none
+                         : anisotropic.empty() ? MediaSampling::isotropic
+                                               : MediaSampling::radiance_estimate;
+  p.detail = "importance sampling: " + std::string(to_string(facts.media_sampling));
+  if (scattering.empty() && absorbing.empty() && empty.empty()) {
+    p.reason = "no participating medium: media pass skipped";
+  } else if (scattering.empty() && absorbing.empty()) {
+    p.reason = fmt::format("medium {} has sigma_s = sigma_a = 0 and changes nothing: media pass skipped", quoted_list(empty));
+  } else if (scattering.empty()) {
+    p.reason = fmt::format("medium {} only absorbs (sigma_s = 0): no photons needed, the view applies its "
+                           "transmittance; media pass skipped",
+                           quoted_list(absorbing));
+    p.detail += " (transmittance only)";
+  } else if (!a.emits) {
+    p.reason = fmt::format("medium {} scatters but nothing emits light: media pass skipped", quoted_list(scattering));
+  } else {
+    p.on = true;
+    p.reason = fmt::format("medium {} scatters (sigma_s > 0): photon pass, then ray marching along camera rays",
+                           quoted_list(scattering));
+    p.detail += anisotropic.empty() ? " (phase g = 0)" : fmt::format(" (anisotropic phase in {})", quoted_list(anisotropic));
+  }
+  return p;
+}
+
+PassPlan plan_shadows(const Analysis& a, bool radiosity_on) {
+  PassPlan p{PassId::shadows};
+  const int area = int(std::count_if(a.sides.begin(), a.sides.end(), [&](auto& s) { return a.emitter(s); }));
+  std::set<int> shapes;
+  bool mesh = false;
+  for (const SurfaceSide& s : a.sides) {
+    shapes.insert(s.shape);
+    mesh = mesh || std::holds_alternative<scene::Mesh>(a.d.shapes[s.shape].geometry);
+  }
+  const bool occluders = shapes.size() >= 2 || mesh;
+  if (!a.emits) {
+    p.reason = "nothing emits light: no shadows to trace";
+  } else if (!occluders) {
+    p.reason = "a single planar or convex surface cannot shadow anything: shadow rays skipped";
+  } else if (!a.light_positions.empty()) {
+    p.on = true;
+    p.reason = fmt::format("{} point or spot light(s) and {} surfaces that may occlude them: shadow rays",
+                           a.light_positions.size(), shapes.size());
+  } else if (radiosity_on) {
+    p.reason = fmt::format("the {} area light(s)' shadows are part of the radiosity solution (hemicube visibility): "
+                           "shadow rays skipped",
+                           area);
+  } else {
+    p.on = true;
+    p.reason = fmt::format("{} area light(s) without radiosity and surfaces that may occlude them: shadow rays", area);
+  }
+  return p;
+}
+
+void count_meshes(const SceneDescription& d, SceneFacts& f) {
+  const scene::World w = scene::to_world(d);
+  f.objects = int(w.entities.size());
+  for (const scene::Entity& e : w.entities) f.patches += int(e.patches.size()), f.elements += int(e.elements.size());
+  for (const scene::Shape& s : d.shapes) {
+    if (const auto* p = std::get_if<scene::Polygon>(&s.geometry)) f.primitives += p->count - 2;
+    else if (std::holds_alternative<scene::Sphere>(s.geometry)) f.primitives += 1;
+    else if (std::holds_alternative<scene::Box>(s.geometry)) f.primitives += 12;
+    else f.primitives += int(std::get<scene::Mesh>(s.geometry).mesh.triangles.size());
+  }
+}
+
+}  // namespace
+
+Plan make_plan(const SceneDescription& d) {
+  for (const scene::Shape& s : d.shapes)
+    if (s.material < 0 || s.material >= int(d.materials.size()) || s.back_material >= int(d.materials.size()))
+      throw std::invalid_argument("scene '" + d.name + "': a shape names a material that does not exist");
+  Plan plan;
+  plan.scene_name = d.name;
+  SceneFacts& f = plan.facts;
+  f.shapes = int(d.shapes.size());
+  f.pixels = static_cast<long long>(d.image.width) * d.image.height;
+  f.samples_per_pixel = d.image.samples_per_pixel;
+  count_meshes(d, f);
+  const Analysis a = analyse(d);
+  f.point_lights = int(a.light_positions.size());
+  for (const SurfaceSide& s : a.sides) f.emitters += a.emitter(s), f.diffuse_surfaces += a.diffuse(s);
+
+  PassPlan view{PassId::view, true};
+  view.reason = fmt::format("the camera sees the scene: {} x {} pixels x {} sample(s) of primary rays with direct "
+                            "lighting{}",
+                            d.image.width, d.image.height, d.image.samples_per_pixel,
+                            d.camera ? "" : " (no camera given: the view frames the scene itself)");
+  PassPlan radiosity = plan_radiosity(a);
+  PassPlan specular = plan_specular(a);
+  PassPlan media = plan_media(a, f);
+  PassPlan shadows = plan_shadows(a, radiosity.on);
+  if (radiosity.on) view.depends_on.push_back(PassId::radiosity);  // diffuse illumination at hits
+  for (PassPlan* p : {&specular, &media, &shadows})
+    if (p->on) p->depends_on.push_back(PassId::view);
+  if (specular.on && radiosity.on) specular.depends_on.push_back(PassId::radiosity);
+  plan.passes = {view, radiosity, specular, media, shadows};
+  return plan;
+}
+
+}  // namespace gcsim::render

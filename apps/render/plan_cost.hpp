@@ -1,0 +1,34 @@
+#pragma once
+// A deliberately simple estimate of each pass's simulated time and memory per node, from the plan's
+// counts and the machine file's [ops] table (cycles per operation) and clock. It is an estimate: work
+// is taken to split evenly over the nodes, communication is not counted, and the unknowns (shots per
+// patch, specular depth, march samples, photons) are the constants below.
+#include <cstdint>
+
+#include "apps/render/plan.hpp"
+#include "machine/machine_config.hpp"
+
+namespace gcsim::render {
+
+struct CostModel {
+  int hemicube_resolution = 256;  // radiosity's default (--hemicube)
+  // Shots until 99.9 % of the energy is shot: CORNELL takes 254 loops of 2 shooters for 112 patches.
+  double shots_per_patch = 4.5;
+  int specular_depth = 4;         // upper bound: every camera ray meets mirrors or glass this deep
+  int march_samples = 32;         // distance samples per camera ray in a medium
+  int photons = 20000;            // the media application's default photon count
+  int k_nearest = 50;             // photons per radiance estimate
+  int max_photon_events = 64;
+};
+
+struct PassCost {
+  double seconds_per_node = 0.0;     // simulated compute time on the slowest node
+  std::int64_t bytes_per_node = 0;   // the pass's data on one node
+};
+
+// Cost of one pass (zero for a pass that is off). Throws std::invalid_argument naming an operation
+// the machine file's [ops] table lacks.
+PassCost estimate_pass(const PassPlan& pass, const SceneFacts& facts, const machine::MachineConfig& machine,
+                       int nodes, const CostModel& model = {});
+
+}  // namespace gcsim::render

@@ -1,0 +1,67 @@
+#include "apps/render/plan_report.hpp"
+
+#include <fmt/format.h>
+
+namespace gcsim::render {
+
+namespace {
+
+std::string mib(std::int64_t bytes) { return fmt::format("{:.2f} MiB", double(bytes) / (1 << 20)); }
+
+std::string needs(const PassPlan& p) {
+  std::string out;
+  for (PassId d : p.depends_on) out += (out.empty() ? "" : ", ") + std::string(pass_name(d));
+  return out.empty() ? "-" : out;
+}
+
+}  // namespace
+
+std::string format_plan(const Plan& plan, const machine::MachineConfig& machine, int nodes, const CostModel& model) {
+  const SceneFacts& f = plan.facts;
+  std::string out = fmt::format("plan      {} on {} ({} nodes)\n", plan.scene_name, machine.name, nodes);
+  out += fmt::format("scene     {} shapes in {} objects; radiosity mesh {} patches, {} elements; {} ray-tracing "
+                     "primitives; {} emissive surfaces, {} point/spot lights; {} pixels x {} spp\n\n",
+                     f.shapes, f.objects, f.patches, f.elements, f.primitives, f.emitters, f.point_lights, f.pixels,
+                     f.samples_per_pixel);
+  out += fmt::format("{:<10} {:<4} {:>14} {:>12}  {}\n", "pass", "", "time/node", "memory/node", "needs");
+  double total = 0;
+  std::int64_t peak = 0;
+  for (const PassPlan& p : plan.passes) {
+    const PassCost c = estimate_pass(p, f, machine, nodes, model);
+    total += c.seconds_per_node;
+    peak = std::max(peak, c.bytes_per_node);
+    out += fmt::format("{:<10} {:<4} {:>14} {:>12}  {}\n", pass_name(p.id), p.on ? "ON" : "off",
+                       p.on ? fmt::format("~{:.3g} s", c.seconds_per_node) : "-", p.on ? mib(c.bytes_per_node) : "-",
+                       needs(p));
+    out += "           " + p.reason + "\n";
+    if (!p.detail.empty() && (p.on || p.id == PassId::media)) out += "           " + p.detail + "\n";
+  }
+  out += fmt::format("\ntotal     ~{:.3g} s per node (largest pass ~{} per node)\n", total, mib(peak));
+  out += "estimate: work split evenly over the nodes from the counts above and the machine's [ops] cycles;\n"
+         "communication not counted; radiosity assumes " +
+         fmt::format("{:g} shots per patch and a {} hemicube.\n", model.shots_per_patch, model.hemicube_resolution);
+  return out;
+}
+
+nlohmann::json plan_json(const Plan& plan, const machine::MachineConfig& machine, int nodes, const CostModel& model) {
+  const SceneFacts& f = plan.facts;
+  nlohmann::json j;
+  j["scene"] = plan.scene_name;
+  j["machine"] = machine.name;
+  j["nodes"] = nodes;
+  j["counts"] = {{"shapes", f.shapes},         {"objects", f.objects},           {"patches", f.patches},
+                 {"elements", f.elements},     {"primitives", f.primitives},     {"emitters", f.emitters},
+                 {"point_lights", f.point_lights}, {"pixels", f.pixels},         {"spp", f.samples_per_pixel}};
+  j["passes"] = nlohmann::json::array();
+  for (const PassPlan& p : plan.passes) {
+    const PassCost c = estimate_pass(p, f, machine, nodes, model);
+    nlohmann::json needs_list = nlohmann::json::array();
+    for (PassId d : p.depends_on) needs_list.push_back(pass_name(d));
+    j["passes"].push_back({{"name", pass_name(p.id)}, {"on", p.on}, {"reason", p.reason}, {"detail", p.detail},
+                           {"needs", needs_list}, {"estimated_seconds_per_node", c.seconds_per_node},
+                           {"estimated_bytes_per_node", c.bytes_per_node}});
+  }
+  return j;
+}
+
+}  // namespace gcsim::render
