@@ -4,20 +4,48 @@
 
 #include <fmt/format.h>
 
+#include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/list_parsing.hpp"
+#include "apps/pipeline/option_checks.hpp"
 #include "apps/radiosity/builtin_scenes.hpp"
+#include "apps/radiosity/convergence.hpp"
 #include "apps/radiosity/radiosity_output.hpp"
 
 namespace gcsim::radiosity::app {
 
+namespace {
+
+// A scene name that looks like a path must name an existing file (before "unknown scene").
+const std::string& checked_scene_name(const std::string& name) {
+  pipeline::check_scene_file(name, builtin_scene_names());
+  return name;
+}
+
+}  // namespace
+
 RadiosityExperiment::RadiosityExperiment(const SolveFlags& solve, const RunOutputs& outputs)
-    : solve_(solve), outputs_(outputs), scene_(flatten(load_scene_world(solve.scene))), options_(parallel_options(solve)) {
+    : solve_(solve),
+      outputs_(outputs),
+      scene_(flatten(load_scene_world(checked_scene_name(solve.scene)))),
+      options_(parallel_options(solve)) {
   // Checked before the run, so that a typo does not cost a whole simulation.
   if (!outputs_.camera.empty()) camera_ = parse_camera(outputs_.camera);
   if (!outputs_.snapshots.empty()) {
     if (outputs_.image.empty()) throw std::invalid_argument("--snapshots needs --image (the snapshots are named after it)");
     options_.snapshot_loops = pipeline::parse_int_list(outputs_.snapshots, "--snapshots");
   }
+}
+
+void RadiosityExperiment::check_outputs() const {
+  pipeline::check_writable(outputs_.image, "--image");  // the snapshots go beside it
+  pipeline::check_writable(outputs_.steps_csv, "--steps-csv");
+  pipeline::check_writable(outputs_.radiosities, "--radiosities");
+}
+
+std::optional<std::string> RadiosityExperiment::goal_missed(const pipeline::Outcome& out) const {
+  const ParallelOutcome& r = pipeline::outcome_as<RadiosityOutcome>(out).result;
+  return convergence_failure(r.converged, r.steps.empty() ? 1.0 : r.steps.back().shot_fraction, options_.solver.energy,
+                             int(r.steps.size()), options_.solver.max_steps);
 }
 
 std::unique_ptr<pipeline::Outcome> RadiosityExperiment::new_outcome(int) const {

@@ -33,6 +33,9 @@ class RadiosityExperiment : public pipeline::Experiment {
   parix::Program program(pipeline::Outcome& out) const override;
   void print_setup(int nodes) const override;
   void report(const pipeline::Outcome& out, nlohmann::json& extra) const override;
+  void check_outputs() const override;
+  // The energy threshold not reached (convergence.hpp says why).
+  std::optional<std::string> goal_missed(const pipeline::Outcome& out) const override;
   void print_sweep_setup() const override;
   std::unique_ptr<pipeline::SweepTable> sweep_table() const override;
 
