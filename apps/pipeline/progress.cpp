@@ -15,8 +15,8 @@ bool progress_wanted() {
 }
 
 ProgressLine::ProgressLine(std::string what, int total)
-    : what_(std::move(what)), total_(total), enabled_(progress_wanted() && total > 1),
-      start_(std::chrono::steady_clock::now()) {}
+    : what_(std::move(what)), total_(total), enabled_(progress_wanted() && total != 1),
+      start_(std::chrono::steady_clock::now()), last_(start_ - std::chrono::seconds(1)) {}
 
 ProgressLine::~ProgressLine() { clear(); }
 
@@ -27,14 +27,23 @@ void ProgressLine::clear() {
 }
 
 void ProgressLine::update(int done, std::string_view detail) {
-  if (!enabled_) return;
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  // Time left if the remaining steps take as long as the finished ones did on average: a crude
-  // guess (later sweep points have more nodes), but it moves the right way.
+  if (enabled_ && total_ > 0) show(double(done) / total_, fmt::format("{}/{} done", done, total_), detail);
+}
+
+void ProgressLine::update_fraction(double fraction, std::string_view detail) {
+  if (enabled_) show(fraction, fmt::format("{:.0f}%", 100 * fraction), detail);
+}
+
+void ProgressLine::show(double fraction, const std::string& done, std::string_view detail) {
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_ < std::chrono::milliseconds(100)) return;  // a terminal need not redraw faster
+  last_ = now;
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
+  // Time left if the rest goes at the pace so far: crude (later sweep points have more nodes),
+  // but it moves the right way.
   const std::string left =
-      done > 0 && done < total_ ? fmt::format(", ~{:.0f} s left", elapsed / done * (total_ - done)) : std::string();
-  std::fputs(fmt::format("\r\033[K{}: {}/{} done ({}){}, {:.0f} s so far", what_, done, total_, detail, left, elapsed).c_str(),
-             stderr);
+      fraction > 0 && fraction < 1 ? fmt::format(", ~{:.0f} s left", elapsed * (1 - fraction) / fraction) : std::string();
+  std::fputs(fmt::format("\r\033[K{}: {} ({}){}, {:.0f} s so far", what_, done, detail, left, elapsed).c_str(), stderr);
   std::fflush(stderr);
 }
 

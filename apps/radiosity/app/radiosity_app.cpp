@@ -37,7 +37,10 @@ pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) 
   };
   auto f = std::make_shared<Flags>();
   add_solve_options(&cmd, f->solve);
-  if (verb == pipeline::Verb::run) add_run_outputs(cmd, f->outputs);
+  if (verb == pipeline::Verb::run) {
+    add_run_outputs(cmd, f->outputs);
+    f->outputs.progress = true;
+  }
   return [f] { return std::make_unique<RadiosityExperiment>(f->solve, f->outputs); };
 }
 

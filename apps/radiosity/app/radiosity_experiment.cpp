@@ -1,5 +1,7 @@
 #include "apps/radiosity/app/radiosity_experiment.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -53,8 +55,23 @@ std::unique_ptr<pipeline::Outcome> RadiosityExperiment::new_outcome(int) const {
 }
 
 parix::Program RadiosityExperiment::program(pipeline::Outcome& out) const {
-  ParallelOutcome* result = &pipeline::outcome_as<RadiosityOutcome>(out).result;
-  return [this, result](parix::Processor& p) { radiosity_program(p, scene_, options_, result); };
+  RadiosityOutcome& o = pipeline::outcome_as<RadiosityOutcome>(out);
+  ParallelOutcome* result = &o.result;
+  if (!outputs_.progress || !pipeline::progress_wanted())
+    return [this, result](parix::Processor& p) { radiosity_program(p, scene_, options_, result); };
+  o.progress = std::make_unique<pipeline::ProgressLine>("radiosity", 0);
+  ParallelOptions shown = options_;
+  // Unshot energy falls about geometrically per loop, so the loops done are log(unshot) over
+  // log(unshot at the threshold): a fraction that grows about linearly with the loops.
+  shown.on_loop = [line = o.progress.get(), goal = std::log(1 - options_.solver.energy)](int loop, double shot) {
+    const double fraction = goal < 0 ? std::clamp(std::log(std::max(1 - shot, 1e-300)) / goal, 0.0, 1.0) : 1.0;
+    line->update_fraction(fraction, fmt::format("loop {}, {:.4f}% of the energy shot", loop, 100 * shot));
+  };
+  return [this, result, shown](parix::Processor& p) { radiosity_program(p, scene_, shown, result); };
+}
+
+void RadiosityExperiment::after_run(pipeline::Outcome& out) const {
+  pipeline::outcome_as<RadiosityOutcome>(out).progress.reset();  // erases the line before the report
 }
 
 void RadiosityExperiment::print_setup(int nodes) const {
