@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "parix/deadlock_report.hpp"
+#include "parix/interruption.hpp"
 #include "parix/simulation.hpp"
 
 namespace gcsim::parix {
@@ -55,9 +56,14 @@ RunResult Simulation::run(const std::function<void(Processor&)>& program) {
   }
 
   bool deadlock = false;
+  bool interrupted = false;
   for (;;) {
     while (runnable > 0) FiberPool::yield();  // let every woken fiber run until it blocks
     if (failure || live == 0) break;
+    if (interruption_requested()) {  // SIGINT/SIGTERM (parix/interruption.hpp): one relaxed load per event
+      interrupted = true;
+      break;
+    }
     if (!kernel.step()) {
       deadlock = true;
       break;
@@ -65,7 +71,7 @@ RunResult Simulation::run(const std::function<void(Processor&)>& program) {
   }
   std::string report;
   if (deadlock) report = deadlock_report();
-  if (deadlock || failure) {
+  if (deadlock || failure || interrupted) {
     // Unwind every blocked fiber so that their stacks are released cleanly.
     cancelling = true;
     for (auto& p : processes) p->wake();
@@ -77,13 +83,18 @@ RunResult Simulation::run(const std::function<void(Processor&)>& program) {
   trace.close();
   if (failure) std::rethrow_exception(failure);
   if (deadlock) throw DeadlockError(report);
+  if (interrupted) throw Interrupted(result(wall_start, true));
+  return result(wall_start, false);
+}
 
+RunResult Simulation::result(std::chrono::steady_clock::time_point wall_start, bool interrupted) const {
   RunResult r;
   r.model = std::string(network->name());
   r.config_name = config.name;
   r.nodes = config.nodes;
   r.events = kernel.events_processed();
   r.processors = stats;
+  if (interrupted) r.makespan = kernel.now();  // the simulated time reached
   for (const auto& s : stats) r.makespan = std::max(r.makespan, s.finish);
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return r;

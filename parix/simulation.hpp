@@ -2,6 +2,7 @@
 // The simulated runtime's state, shared by its units: processes (SimProcess, one per processor and
 // thread, each a fiber), the links between them and the Simulation that owns the kernel, the
 // network and the machine. Internal to parix/: applications use parix/simulated_runtime.hpp.
+#include <chrono>
 #include <deque>
 #include <exception>
 #include <functional>
@@ -123,6 +124,8 @@ class Simulation {
   }
 
   RunResult run(const std::function<void(Processor&)>& program);
+  // The run's figures; an interrupted run's makespan is the kernel's clock when it stopped.
+  RunResult result(std::chrono::steady_clock::time_point wall_start, bool interrupted) const;
 
   // Starts p's fiber; throws, with nothing started, if no fiber stack can be mapped.
   void launch(SimProcess* p, std::function<void(Processor&)> body) {

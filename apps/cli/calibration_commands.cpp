@@ -10,6 +10,7 @@
 
 #include "apps/calibration/calibration.hpp"
 #include "apps/cli/commands.hpp"
+#include "apps/pipeline/failure.hpp"
 #include "machine/network_registry.hpp"
 
 namespace gcsim::cli {
@@ -80,6 +81,8 @@ void add_calibrate(CommandGroups& g) {
       "  gcsim calibrate --fit 4.6 --free network.connect_base_us,network.connect_per_hop_us,"
       "network.link_bandwidth_mbps \\\n      --config configs/gc-powerplus.toml --out configs/gc-powerplus-calibrated.toml");
   cmd->callback([f] {
+    for (const auto& [path, option] : {std::pair{f->out, "--out"}, {f->json, "--json"}, {f->csv, "--csv"}})
+      pipeline::check_writable(path, option);  // before the fit's many runs
     const cal::MachineFile file(f->config);
     const std::vector<cal::MeasuredTable> tables = cal::tables_from_specs(f->fit);
     const std::vector<std::string> free = cal::split_list(f->free);
@@ -106,7 +109,9 @@ void add_calibrate(CommandGroups& g) {
       j["converged"] = r.fit.converged;
       write_json_file(f->json, j);
     }
-    if (!r.fit.converged) throw ExitStatus{4};
+    if (!r.fit.converged)
+      throw pipeline::RunFailure(fmt::format("the fit did not converge after {} iterations; {} holds its last parameters",
+                                             r.fit.iterations, f->out));
   });
 }
 
@@ -150,6 +155,8 @@ void add_validate(CommandGroups& g) {
   cmd->add_option("--csv", f->csv, "Write every cell as CSV (gcsim plot --calibration draws it)");
   add_predict_options(cmd, f->predict);
   cmd->callback([f] {
+    pipeline::check_writable(f->json, "--json");
+    pipeline::check_writable(f->csv, "--csv");
     const cal::MachineFile file(f->config);
     const auto tables = validation_tables(f->tables, file.config());
     if (tables.empty()) throw std::invalid_argument("nothing to validate: every table was fitted (name some with --tables)");
@@ -189,6 +196,8 @@ void add_network_accuracy(CommandGroups& g) {
   cmd->add_option("--csv", f->csv, "Write model,table,median,max,within_15,cells,wall_s as CSV (gcsim plot draws error against time)");
   add_predict_options(cmd, f->predict);
   cmd->callback([f] {
+    pipeline::check_writable(f->json, "--json");
+    pipeline::check_writable(f->csv, "--csv");
     const cal::MachineFile file(f->config);
     std::vector<cal::MeasuredTable> tables = cal::tables_from_specs(f->tables);
     for (auto& t : tables) {

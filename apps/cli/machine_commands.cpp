@@ -9,6 +9,7 @@
 
 #include "apps/cli/broadcast_experiment.hpp"
 #include "apps/cli/commands.hpp"
+#include "apps/pipeline/option_checks.hpp"
 #include "apps/cli/ring_program.hpp"
 #include "parix/backend.hpp"
 #include "machine/mesh.hpp"
@@ -152,7 +153,7 @@ void add_bcast(CommandGroups& g) {
     const parix::RunOptions so = run_options(o->machine, kWholeMachine);
     const parix::BcastAlgo a = parse_algo(o->algo);
     const std::int64_t bytes = o->size;
-    parix::RunResult r = parix::run(so, [&](parix::Processor& p) { all_node_broadcast(p, bytes, a); });
+    parix::RunResult r = pipeline::run_program(so, [&](parix::Processor& p) { all_node_broadcast(p, bytes, a); }, o->machine);
     fmt::print("all-node broadcast, {} algorithm, {} bytes per message, {} nodes\n", o->algo, bytes, r.nodes);
     report_run(r, o->machine, {{"experiment", "bcast"}, {"algo", o->algo}, {"size_bytes", bytes}});
   });
@@ -171,12 +172,12 @@ void add_bench_ring(CommandGroups& g) {
       "left, --iterations times, over persistent links. Prints simulated messages per wall-clock second.");
   add_machine_options(cmd, o->machine);
   cmd->add_option("--iterations", o->iterations, "Messages each processor sends")->check(CLI::Range(1, 1 << 30))->capture_default_str();
-  cmd->add_option("--size", o->size, "Bytes per message")->transform(CLI::AsSizeValue(false))->capture_default_str();
+  cmd->add_option("--size", o->size, "Bytes per message")->transform(CLI::AsSizeValue(false))->transform(pipeline::no_negative_size())->capture_default_str();
   cmd->callback([o] {
     const parix::RunOptions so = run_options(o->machine, kWholeMachine);
     const int iterations = o->iterations;
     const std::int64_t bytes = o->size;
-    parix::RunResult r = parix::run(so, [&](parix::Processor& p) { ring_exchange(p, iterations, bytes); });
+    parix::RunResult r = pipeline::run_program(so, [&](parix::Processor& p) { ring_exchange(p, iterations, bytes); }, o->machine);
     const double messages = static_cast<double>(r.total_messages());
     fmt::print("ring of {} processors, {} iterations of {} bytes: {} messages\n", r.nodes, iterations, bytes, r.total_messages());
     report_run(r, o->machine, {{"benchmark", "ring"}, {"messages_per_wall_s", messages / r.wall_seconds}});
@@ -192,7 +193,7 @@ void add_demo(CommandGroups& g) {
   CLI::App* cmd = demo->add_subcommand("deadlock", "Two processors that both receive first: the deadlock report");
   cmd->footer(
       "Two processors open a link and both receive first, so neither ever sends. The run stops at once\n"
-      "with a report naming each blocked processor, its call and its peer, and exits with status 3.");
+      "with a report naming each blocked processor, its call and its peer, and exits with status 5.");
   add_machine_options(cmd, *machine);
   cmd->callback([machine] {
     const parix::RunOptions so = run_options(*machine, 2);

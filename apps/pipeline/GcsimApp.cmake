@@ -23,7 +23,7 @@ endfunction()
 
 # gcsim_add_gcsim_executable(target app-name ...): the gcsim command line with these applications.
 function(gcsim_add_gcsim_executable target)
-  add_executable(${target})
+  add_executable(${target} ${PROJECT_SOURCE_DIR}/apps/cli/main.cpp)
   target_link_libraries(${target} PRIVATE gcsim_cli)
   foreach(app ${ARGN})
     target_link_libraries(${target} PRIVATE gcsim_app_${app})

@@ -9,6 +9,7 @@
 // processor reads another's slot. A distributed backend gathers the slots after the run, outside
 // the measured time, as the simulated one leaves them where they were written.
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -38,6 +39,11 @@ class Experiment {
   // JSON fields merged into --json's document).
   virtual void print_setup(int nodes) const {}
   virtual void report(const Outcome& out, nlohmann::json& extra) const {}
+  // Checks, before any run, that the files the report will write can be written (throws FileError).
+  virtual void check_outputs() const {}
+  // Why a finished run did not do what was asked (e.g. a threshold not reached), or nothing: the
+  // command then exits with kExitRunFailed after writing every output.
+  virtual std::optional<std::string> goal_missed(const Outcome& out) const { return std::nullopt; }
 
   // gcsim sweep APP: lines printed before the table, and the table's columns (default: nodes,
   // simulated seconds, speedup, communication, wall seconds; see sweep.hpp).

@@ -10,6 +10,8 @@
 #include "machine/network_model.hpp"
 #include "machine/network_registry.hpp"
 #include "machine/trace.hpp"
+#include "apps/pipeline/failure.hpp"
+#include "parix/interruption.hpp"
 
 namespace gcsim::pipeline {
 
@@ -18,6 +20,15 @@ namespace {
 // Help lists these under their own heading, after the command's own options.
 void group_as_machine_options(CLI::App* cmd, std::initializer_list<const char*> names) {
   for (const char* name : names) cmd->get_option(name)->group("Machine and run");
+}
+
+// "1..64 on gc-powerplus": the built-in machine's range, read once from its file.
+const std::string& builtin_node_range() {
+  static const std::string range = [] {
+    const machine::MachineConfig c = machine::default_machine_config();
+    return fmt::format("1..{} on the built-in GC-PowerPlus", c.nodes);
+  }();
+  return range;
 }
 
 }  // namespace
@@ -35,7 +46,9 @@ void add_machine_choice_options(CLI::App* cmd, MachineOptions& o) {
 
 void add_machine_options(CLI::App* cmd, MachineOptions& o) {
   add_machine_choice_options(cmd, o);
-  cmd->add_option("--nodes", o.nodes, "Use the first N nodes of the machine, in the GC's mesh shape (2=2x1, 4=2x2, 8=4x2, ...)")
+  cmd->add_option("--nodes", o.nodes,
+                  "Use the first N nodes of the machine (" + builtin_node_range() +
+                      "; a --config file sets its own), in the GC's mesh shape (2=2x1, 4=2x2, 8=4x2, ...)")
       ->check(CLI::Range(1, 1 << 20));
   cmd->add_option("--shape", o.shape,
                   "Sub-mesh WxH the N nodes occupy (e.g. 8x1: a row); default: the machine file's [topology.shapes] "
@@ -54,6 +67,9 @@ void add_machine_options(CLI::App* cmd, MachineOptions& o) {
 parix::SimulationOptions simulation_options(const MachineOptions& o, int default_nodes) {
   parix::SimulationOptions s;
   s.config = o.config.empty() ? machine::default_machine_config() : machine::load_machine_config(o.config);
+  if (o.nodes > s.config.nodes)  // a usage error, before with_nodes reports it against the machine file
+    throw std::invalid_argument(fmt::format("--nodes {}: machine '{}' has {} nodes (expected 1..{})", o.nodes,
+                                            s.config.name, s.config.nodes, s.config.nodes));
   const int n = o.nodes > 0 ? o.nodes : std::min(default_nodes, s.config.nodes);
   std::optional<machine::MeshShape> shape;
   if (!o.shape.empty()) shape = machine::parse_mesh_shape(o.shape);
@@ -72,9 +88,40 @@ parix::RunOptions run_options(const MachineOptions& o, int default_nodes) {
   return r;
 }
 
+void check_machine_outputs(const MachineOptions& o) {
+  check_writable(o.json, "--json");
+  check_writable(o.trace, "--trace");  // its .csv and .paje go beside it, in the same directory
+}
+
+void report_interrupted_run(const parix::RunResult& partial, const MachineOptions& o) {
+  fmt::print("interrupted at simulated time {:.6f} s ({} events, wall {:.3f} s)\n", partial.simulated_seconds(),
+             partial.events, partial.wall_seconds);
+  if (!o.trace.empty()) fmt::print("trace     {} (closed at the interruption; .csv, .paje beside it)\n", o.trace);
+  if (o.json.empty()) return;
+  nlohmann::json j = partial.to_json();
+  j["interrupted"] = true;
+  j["finished"] = false;  // the program's results were not complete, so none are reported
+  if (!o.trace.empty()) {
+    j["trace"] = o.trace;
+    j["trace_level"] = o.trace_level;
+  }
+  write_json_file(o.json, j);
+  fmt::print("json      {}\n", o.json);
+}
+
+parix::RunResult run_program(const parix::RunOptions& options, const parix::Program& program, const MachineOptions& o) {
+  check_machine_outputs(o);
+  try {
+    return parix::run(options, program);
+  } catch (const parix::Interrupted& x) {
+    report_interrupted_run(x.partial(), o);
+    throw;
+  }
+}
+
 void write_json_file(const std::string& path, const nlohmann::json& j) {
   std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write JSON file '" + path + "'");
+  if (!out) throw FileError("cannot write JSON file '" + path + "'");
   out << j.dump(2) << "\n";
 }
 

@@ -31,6 +31,14 @@ parix::SimulationOptions simulation_options(const MachineOptions& o, int default
 parix::RunOptions run_options(const MachineOptions& o, int default_nodes);
 // Prints "simulated X s   wall Y s ..." and, with --json, writes result.to_json() merged with extra.
 void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohmann::json& extra = {});
+// Checks that --json and --trace can be written, before the run (throws FileError).
+void check_machine_outputs(const MachineOptions& o);
+// An interrupted run: the simulated time reached on stdout, and --json with "interrupted": true,
+// the figures so far and no application results.
+void report_interrupted_run(const parix::RunResult& partial, const MachineOptions& o);
+// parix::run with o's output paths checked first and an interruption reported as above (then
+// parix::Interrupted is rethrown, for the interrupted exit code).
+parix::RunResult run_program(const parix::RunOptions& options, const parix::Program& program, const MachineOptions& o);
 // Writes JSON to a file, failing with a clear message.
 void write_json_file(const std::string& path, const nlohmann::json& j);
 

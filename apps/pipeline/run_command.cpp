@@ -2,7 +2,9 @@
 
 #include <memory>
 
+#include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/machine_options.hpp"
+#include "parix/interruption.hpp"
 
 namespace gcsim::pipeline {
 
@@ -14,14 +16,26 @@ void add_run_command(CLI::App& run, const AppSpec& app) {
   if (!app.run_footer.empty()) cmd->footer(app.run_footer);
   const int default_nodes = app.default_nodes;
   cmd->callback([machine, prepare, default_nodes] {
-    // The scene is loaded and every option checked before the run, so a typo costs no simulation.
+    // The scene is loaded and every option and output path checked before the run, so a typo
+    // costs no simulation.
     const std::unique_ptr<Experiment> e = prepare();
+    check_machine_outputs(*machine);
+    e->check_outputs();
     const parix::RunOptions options = run_options(*machine, default_nodes);
     e->print_setup(options.simulation.nodes);
-    const std::unique_ptr<Outcome> out = run_experiment(*e, options);
+    std::unique_ptr<Outcome> out;
+    try {
+      out = run_experiment(*e, options);
+    } catch (const parix::Interrupted& x) {
+      report_interrupted_run(x.partial(), *machine);
+      throw;
+    }
     nlohmann::json extra;
     e->report(*out, extra);
+    const std::optional<std::string> missed = e->goal_missed(*out);
+    if (missed) extra["goal_missed"] = *missed;
     report_run(out->run, *machine, extra);
+    if (missed) throw RunFailure(*missed);
   });
 }
 

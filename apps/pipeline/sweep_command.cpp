@@ -5,13 +5,17 @@
 #include <memory>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 #include <fmt/format.h>
 
+#include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/list_parsing.hpp"
 #include "apps/pipeline/machine_options.hpp"
 #include "apps/pipeline/ordered_parallel.hpp"
+#include "apps/pipeline/progress.hpp"
 #include "apps/pipeline/sweep_table.hpp"
+#include "parix/interruption.hpp"
 
 namespace gcsim::pipeline {
 
@@ -37,15 +41,22 @@ void add_sweep_options(CLI::App* cmd, SweepFlags& f) {
   for (const char* name : {"--nodes", "--csv", "--json", "--jobs"}) cmd->get_option(name)->group("Sweep");
 }
 
-// Receives the points in node-count order: speedup, printed row, CSV line, JSON.
+// Receives the points in node-count order: speedup, printed row, CSV line (flushed, so an
+// interrupted or killed sweep keeps every finished row), JSON.
 struct RowWriter {
+  RowWriter(SweepTable& t, std::ofstream& c, const Experiment& e) : table(t), csv(c), experiment(e) {}
   SweepTable& table;
   std::ofstream& csv;
+  const Experiment& experiment;
   nlohmann::json rows = nlohmann::json::array();
+  std::vector<int> finished;
+  std::vector<std::string> missed;  // points that did not reach their goal
   double first_seconds = 0;
   int first_nodes = 0;
 
   void operator()(int nodes, const Outcome& out) {
+    finished.push_back(nodes);
+    if (const auto why = experiment.goal_missed(out)) missed.push_back(fmt::format("{} nodes: {}", nodes, *why));
     const double t = out.run.simulated_seconds();
     const bool first = first_nodes == 0;
     if (first) first_seconds = t, first_nodes = nodes;
@@ -54,36 +65,76 @@ struct RowWriter {
     const SweepRow row{nodes, out, t > 0 ? base / t : 0.0, first};  // 0: nothing to compare (no time)
     table.print_row(row);
     std::fflush(stdout);
-    if (csv.is_open()) csv << table.csv_row(row) << '\n';
+    if (csv.is_open()) csv << table.csv_row(row) << std::endl;
     rows.push_back(table.json_row(row));
   }
 };
 
+// A sweep stopped by SIGINT/SIGTERM: the CSV already holds the finished rows; --json gets them
+// with where the sweep stopped.
+void report_interrupted_sweep(const SweepFlags& f, const std::vector<int>& counts, const SweepTable& table,
+                              RowWriter& writer, const parix::RunResult& partial) {
+  const std::size_t done = writer.finished.size();
+  const int at = done < counts.size() ? counts[done] : 0;
+  fmt::print("interrupted during the {}-node point at simulated time {:.6f} s; {} of {} points finished\n", at,
+             partial.simulated_seconds(), done, counts.size());
+  if (!f.csv.empty()) fmt::print("csv  {} (the finished rows)\n", f.csv);
+  if (f.json.empty()) return;
+  nlohmann::json doc = table.json_document(std::move(writer.rows));
+  if (!doc.is_object()) doc = nlohmann::json{{"rows", std::move(doc)}};
+  doc["interrupted"] = true;
+  doc["finished_nodes"] = writer.finished;
+  doc["interrupted_nodes"] = at;
+  doc["interrupted_simulated_s"] = partial.simulated_seconds();
+  write_json_file(f.json, doc);
+  fmt::print("json {}\n", f.json);
+}
+
 void run_sweep(const SweepFlags& f, const Experiment& e) {
   const std::vector<int> counts = parse_int_list(f.nodes, "--nodes");
+  check_writable(f.csv, "--csv");
+  check_writable(f.json, "--json");
   e.print_sweep_setup();
   const std::unique_ptr<SweepTable> table = e.sweep_table();
   table->print_header();
   std::ofstream csv;
   if (!f.csv.empty()) {
     csv.open(f.csv);
-    if (!csv) throw std::runtime_error("cannot write CSV file '" + f.csv + "'");
+    if (!csv) throw FileError("cannot write CSV file '" + f.csv + "'");
     csv << table->csv_header() << '\n';
   }
-  RowWriter writer{*table, csv};
-  run_ordered<std::unique_ptr<Outcome>>(
-      int(counts.size()), f.jobs,
-      [&](int i) {
-        MachineOptions point = f.machine;
-        point.nodes = counts[i];
-        return run_experiment(e, run_options(point, counts[i]));
-      },
-      [&](int i, std::unique_ptr<Outcome>& out) { writer(counts[i], *out); });
+  RowWriter writer{*table, csv, e};
+  ProgressLine progress("sweep", int(counts.size()));
+  progress.update(0, fmt::format("running {} nodes", counts[0]));
+  try {
+    run_ordered<std::unique_ptr<Outcome>>(
+        int(counts.size()), f.jobs,
+        [&](int i) {
+          MachineOptions point = f.machine;
+          point.nodes = counts[i];
+          return run_experiment(e, run_options(point, counts[i]));
+        },
+        [&](int i, std::unique_ptr<Outcome>& out) {
+          progress.clear();
+          writer(counts[i], *out);
+          if (i + 1 < int(counts.size())) progress.update(i + 1, fmt::format("running {} nodes", counts[i + 1]));
+        });
+  } catch (const parix::Interrupted& x) {
+    progress.clear();
+    report_interrupted_sweep(f, counts, *table, writer, x.partial());
+    throw;
+  }
+  progress.clear();
   table->print_footer();
   if (!f.csv.empty() && table->announce_files()) fmt::print("csv  {}\n", f.csv);
   if (!f.json.empty()) {
     write_json_file(f.json, table->json_document(std::move(writer.rows)));
     if (table->announce_files()) fmt::print("json {}\n", f.json);
+  }
+  if (!writer.missed.empty()) {
+    std::string why;
+    for (const std::string& m : writer.missed) why += "\n  " + m;
+    throw RunFailure(fmt::format("{} of {} points did not reach their goal:{}", writer.missed.size(), counts.size(), why));
   }
 }
 

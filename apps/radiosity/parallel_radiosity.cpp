@@ -207,6 +207,7 @@ void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOp
     StepRecord rec{state.steps(), state.shot_fraction(), shooters};
     if (id == 0) {
       steps.push_back(std::move(rec));
+      if (o.on_loop) o.on_loop(state.steps(), state.shot_fraction());
       if (outcome && std::find(o.snapshot_loops.begin(), o.snapshot_loops.end(), state.steps()) != o.snapshot_loops.end())
         outcome->snapshots.emplace_back(state.steps(), state.element_radiosity());
     }

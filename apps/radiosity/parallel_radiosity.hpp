@@ -17,6 +17,7 @@
 // factors travel together. keep_links reuses one link per peer instead of a connection per message.
 // Form factors are summed cell by cell in the fixed cell order, so every node count gives radiosities
 // bit-identical to the sequential solver with the same K.
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,6 +40,7 @@ struct ParallelOptions {
   bool keep_links = false;      // reuse links between exchanges instead of connecting per message
   int hierarchical_levels = 3;  // for hemicube-hierarchical
   std::vector<int> snapshot_loops;  // processor 0 keeps the radiosities after these loops
+  std::function<void(int loop, double shot_fraction)> on_loop;  // processor 0 calls it after every loop (progress)
 };
 
 // What processor 0 reports at the end of a run.

@@ -1,17 +1,35 @@
 #include "apps/radiosity/app/radiosity_experiment.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/list_parsing.hpp"
+#include "apps/pipeline/option_checks.hpp"
 #include "apps/radiosity/builtin_scenes.hpp"
+#include "apps/radiosity/convergence.hpp"
 #include "apps/radiosity/radiosity_output.hpp"
 
 namespace gcsim::radiosity::app {
 
+namespace {
+
+// A scene name that looks like a path must name an existing file (before "unknown scene").
+const std::string& checked_scene_name(const std::string& name) {
+  pipeline::check_scene_file(name, builtin_scene_names());
+  return name;
+}
+
+}  // namespace
+
 RadiosityExperiment::RadiosityExperiment(const SolveFlags& solve, const RunOutputs& outputs)
-    : solve_(solve), outputs_(outputs), scene_(flatten(load_scene_world(solve.scene))), options_(parallel_options(solve)) {
+    : solve_(solve),
+      outputs_(outputs),
+      scene_(flatten(load_scene_world(checked_scene_name(solve.scene)))),
+      options_(parallel_options(solve)) {
   // Checked before the run, so that a typo does not cost a whole simulation.
   if (!outputs_.camera.empty()) camera_ = parse_camera(outputs_.camera);
   if (!outputs_.snapshots.empty()) {
@@ -20,13 +38,40 @@ RadiosityExperiment::RadiosityExperiment(const SolveFlags& solve, const RunOutpu
   }
 }
 
+void RadiosityExperiment::check_outputs() const {
+  pipeline::check_writable(outputs_.image, "--image");  // the snapshots go beside it
+  pipeline::check_writable(outputs_.steps_csv, "--steps-csv");
+  pipeline::check_writable(outputs_.radiosities, "--radiosities");
+}
+
+std::optional<std::string> RadiosityExperiment::goal_missed(const pipeline::Outcome& out) const {
+  const ParallelOutcome& r = pipeline::outcome_as<RadiosityOutcome>(out).result;
+  return convergence_failure(r.converged, r.steps.empty() ? 1.0 : r.steps.back().shot_fraction, options_.solver.energy,
+                             int(r.steps.size()), options_.solver.max_steps);
+}
+
 std::unique_ptr<pipeline::Outcome> RadiosityExperiment::new_outcome(int) const {
   return std::make_unique<RadiosityOutcome>();
 }
 
 parix::Program RadiosityExperiment::program(pipeline::Outcome& out) const {
-  ParallelOutcome* result = &pipeline::outcome_as<RadiosityOutcome>(out).result;
-  return [this, result](parix::Processor& p) { radiosity_program(p, scene_, options_, result); };
+  RadiosityOutcome& o = pipeline::outcome_as<RadiosityOutcome>(out);
+  ParallelOutcome* result = &o.result;
+  if (!outputs_.progress || !pipeline::progress_wanted())
+    return [this, result](parix::Processor& p) { radiosity_program(p, scene_, options_, result); };
+  o.progress = std::make_unique<pipeline::ProgressLine>("radiosity", 0);
+  ParallelOptions shown = options_;
+  // Unshot energy falls about geometrically per loop, so the loops done are log(unshot) over
+  // log(unshot at the threshold): a fraction that grows about linearly with the loops.
+  shown.on_loop = [line = o.progress.get(), goal = std::log(1 - options_.solver.energy)](int loop, double shot) {
+    const double fraction = goal < 0 ? std::clamp(std::log(std::max(1 - shot, 1e-300)) / goal, 0.0, 1.0) : 1.0;
+    line->update_fraction(fraction, fmt::format("loop {}, {:.4f}% of the energy shot", loop, 100 * shot));
+  };
+  return [this, result, shown](parix::Processor& p) { radiosity_program(p, scene_, shown, result); };
+}
+
+void RadiosityExperiment::after_run(pipeline::Outcome& out) const {
+  pipeline::outcome_as<RadiosityOutcome>(out).progress.reset();  // erases the line before the report
 }
 
 void RadiosityExperiment::print_setup(int nodes) const {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "apps/pipeline/experiment.hpp"
+#include "apps/pipeline/progress.hpp"
 #include "apps/radiosity/app/solve_options.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "apps/radiosity/scene.hpp"
@@ -18,10 +19,12 @@ struct RunOutputs {
   int width = 0, height = 0;
   double exposure = 0;
   bool gauss_seidel = false;
+  bool progress = false;  // a progress line per loop on a terminal (gcsim run; a sweep has its own)
 };
 
 struct RadiosityOutcome : pipeline::Outcome {
   ParallelOutcome result;  // node 0's replica after the run
+  std::unique_ptr<pipeline::ProgressLine> progress;  // while the run goes (RunOutputs::progress)
 };
 
 class RadiosityExperiment : public pipeline::Experiment {
@@ -31,8 +34,12 @@ class RadiosityExperiment : public pipeline::Experiment {
 
   std::unique_ptr<pipeline::Outcome> new_outcome(int nodes) const override;
   parix::Program program(pipeline::Outcome& out) const override;
+  void after_run(pipeline::Outcome& out) const override;
   void print_setup(int nodes) const override;
   void report(const pipeline::Outcome& out, nlohmann::json& extra) const override;
+  void check_outputs() const override;
+  // The energy threshold not reached (convergence.hpp says why).
+  std::optional<std::string> goal_missed(const pipeline::Outcome& out) const override;
   void print_sweep_setup() const override;
   std::unique_ptr<pipeline::SweepTable> sweep_table() const override;
 

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "apps/common/image.hpp"
+#include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/sweep_table.hpp"
 #include "apps/raytrace/algorithm.hpp"
 #include "apps/raytrace/render.hpp"
@@ -39,6 +40,8 @@ void RaytraceExperiment::print_setup(int nodes) const {
              paper_name_of(s.algorithm), description_of(s.algorithm), s.tile, s.tile,
              s.shading == Shading::whitted ? "Whitted" : "local", name_of(distribution_), nodes);
 }
+
+void RaytraceExperiment::check_outputs() const { pipeline::check_writable(flags_.image, "--image"); }
 
 void RaytraceExperiment::report(const pipeline::Outcome& out, nlohmann::json& extra) const {
   const ParallelRender& r = pipeline::outcome_as<RaytraceOutcome>(out).render;

@@ -7,6 +7,7 @@
 
 #include "apps/raytrace/algorithm.hpp"
 #include "apps/raytrace/builtin_scenes.hpp"
+#include "apps/pipeline/option_checks.hpp"
 #include "apps/raytrace/obj_loader.hpp"
 
 namespace gcsim::raytrace::app {
@@ -55,10 +56,10 @@ RenderSettings settings_of(const RenderOptions& o, const Scene& scene) {
 }
 
 Scene load_scene_or_fail(const std::string& name) {
+  const auto names = builtin_scene_names();
+  pipeline::check_scene_file(name, std::vector<std::string>(names.begin(), names.end()));
   try {
-    return load_scene(name);
-  } catch (const ObjError& e) {
-    throw CLI::ValidationError("--scene", e.what());
+    return load_scene(name);  // an ObjError names the file and line and ends with the file exit code
   } catch (const std::invalid_argument& e) {
     throw CLI::ValidationError("--scene", e.what());
   }

@@ -1,0 +1,23 @@
+#include "apps/cli/interrupt_signals.hpp"
+
+#include <csignal>
+
+#include "parix/interruption.hpp"
+
+namespace gcsim::cli {
+
+namespace {
+
+extern "C" void on_interrupt(int) { parix::request_interruption(); }
+
+}  // namespace
+
+void install_interrupt_handlers() {
+  struct sigaction action {};
+  action.sa_handler = on_interrupt;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESETHAND | SA_RESTART;  // once only: the next signal has its default effect
+  for (int sig : {SIGINT, SIGTERM}) sigaction(sig, &action, nullptr);
+}
+
+}  // namespace gcsim::cli

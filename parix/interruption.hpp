@@ -1,0 +1,31 @@
+#pragma once
+// Stopping a run from outside (SIGINT, SIGTERM): a signal handler may only set a lock-free atomic,
+// so the request is a flag that the simulation loop polls (parix/simulation.cpp). The run then
+// unwinds every processor, closes its trace and throws Interrupted with what it had reached.
+#include <stdexcept>
+#include <string>
+
+#include "parix/run_result.hpp"
+
+namespace gcsim::parix {
+
+// Async-signal-safe: sets the flag only.
+void request_interruption() noexcept;
+bool interruption_requested() noexcept;
+// For tests and for a process that runs again after reporting an interruption.
+void clear_interruption() noexcept;
+
+// Thrown by a run that stopped because interruption_requested(); `partial` holds the simulated
+// time reached (makespan = the kernel's clock), the events and the per-processor counters so far.
+class Interrupted : public std::runtime_error {
+ public:
+  explicit Interrupted(RunResult partial)
+      : std::runtime_error("interrupted at simulated time " + std::to_string(partial.simulated_seconds()) + " s"),
+        partial_(std::move(partial)) {}
+  const RunResult& partial() const { return partial_; }
+
+ private:
+  RunResult partial_;
+};
+
+}  // namespace gcsim::parix
