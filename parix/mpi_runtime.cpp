@@ -149,7 +149,7 @@ MpiRunResult run_mpi(const SimulationOptions& options, const std::function<void(
   mpi::RankState state;
   state.rank = mpi_rank();
   state.size = size;
-  state.memory_limit = config.memory_bytes;
+  state.memory = machine::NodeMemory(config.memory_bytes, options.memory_limit);
   state.tracing = !options.trace.path.empty() && options.trace.level != machine::TraceLevel::summary;
   MPI_Barrier(MPI_COMM_WORLD);
   const auto wall_start = std::chrono::steady_clock::now();
