@@ -62,12 +62,11 @@ int clip(const Vec3* in, int n, Vec3* out, F f) {
 HemicubeRenderer::HemicubeRenderer(const Scene& scene, const HemicubeOptions& o)
     : scene_(scene), options_(o), near_(1e-9 * scene.extent()) {
   if (o.max_shooter_samples < 1) throw std::invalid_argument("shooter samples per side must be at least 1");
-  if (!(o.near_field_tolerance > 0)) throw std::invalid_argument("the near-field tolerance must be positive");
+  if (!(o.near_field_ratio > 0)) throw std::invalid_argument("the near-field ratio must be positive");
   grids_.push_back({o.resolution, DeltaFormFactors(o.resolution), make_cells(o, o.resolution)});
   for (int n = 2; n <= o.max_shooter_samples && usable_sample_resolution(o, o.resolution / n); n *= 2)
     grids_.push_back({o.resolution / n, DeltaFormFactors(o.resolution / n), make_cells(o, o.resolution / n)});
-  per_side_ = shooter_samples_per_side(scene, o.near_field_tolerance, 1 << (grids_.size() - 1),
-                                       std::int64_t(3) * o.resolution * o.resolution / 4);
+  per_side_ = shooter_samples_per_side(scene, o.near_field_ratio, 1 << (grids_.size() - 1));
   acc_.assign(scene.elements.size(), 0.0);
 }
 
