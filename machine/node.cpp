@@ -21,11 +21,4 @@ void Node::start(Job job) {
   });
 }
 
-bool Node::use_memory(std::int64_t bytes) {
-  if (memory_used_ + bytes > memory_bytes_) return false;
-  memory_used_ += bytes;
-  if (memory_used_ < 0) memory_used_ = 0;
-  return true;
-}
-
 }  // namespace gcsim::machine

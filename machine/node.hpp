@@ -1,25 +1,25 @@
 #pragma once
 // A node's CPUs and memory. Compute requests take a free CPU or queue for one in arrival order,
-// so threads sharing a node share its CPUs deterministically.
+// so threads sharing a node share its CPUs deterministically. Its memory: machine/node_memory.hpp.
 #include <cstdint>
 #include <deque>
 #include <functional>
 
 #include "machine/kernel.hpp"
+#include "machine/node_memory.hpp"
 
 namespace gcsim::machine {
 
 class Node {
  public:
-  Node(Kernel& kernel, int cpus, std::int64_t memory_bytes) : kernel_(&kernel), free_cpus_(cpus), memory_bytes_(memory_bytes) {}
+  Node(Kernel& kernel, int cpus, std::int64_t memory_bytes, MemoryLimit limit = MemoryLimit::enforce)
+      : kernel_(&kernel), free_cpus_(cpus), memory_(memory_bytes, limit) {}
 
   // Runs `duration` of work on one of the node's CPUs; on_done runs when it is finished.
   void compute(SimTime duration, Kernel::Action on_done);
 
-  // Adds bytes (negative: releases) to the memory in use; false if it would exceed the node's memory.
-  bool use_memory(std::int64_t bytes);
-  std::int64_t memory_used() const { return memory_used_; }
-  std::int64_t memory_bytes() const { return memory_bytes_; }
+  NodeMemory& memory() { return memory_; }
+  const NodeMemory& memory() const { return memory_; }
 
  private:
   struct Job {
@@ -30,8 +30,7 @@ class Node {
   Kernel* kernel_;
   int free_cpus_;
   std::deque<Job> waiting_;
-  std::int64_t memory_bytes_;
-  std::int64_t memory_used_ = 0;
+  NodeMemory memory_;
 };
 
 }  // namespace gcsim::machine

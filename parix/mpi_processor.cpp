@@ -62,12 +62,10 @@ void MpiProcessor::compute(std::span<const OpCount> ops) {
   }
 }
 
-void MpiProcessor::use_memory(std::int64_t bytes) {
+void MpiProcessor::use_memory(std::int64_t bytes, std::string_view kind) {
+  // The same limit as the simulated node's; MPI's own message buffers are not the model's to count.
   std::lock_guard<std::mutex> g(rank_.lock);
-  if (rank_.memory_used + bytes > rank_.memory_limit)
-    throw ParixError(fmt::format("processor {}: out of memory: {} bytes in use + {} requested > {} bytes on the node", id(),
-                                 rank_.memory_used, bytes, rank_.memory_limit));
-  rank_.memory_used += bytes;
+  if (!rank_.memory.use(bytes, kind)) throw OutOfMemoryError(rank_.memory.report(id(), bytes, kind));
 }
 
 void MpiProcessor::count_comm(SimTime start, SimTime end, int peer, std::int64_t bytes, const char* call,

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "machine/node_memory.hpp"
 #include "machine/trace.hpp"
 #include "parix/processor.hpp"
 #include "parix/run_result.hpp"
@@ -21,8 +22,7 @@ struct RankState {
   int size = 1;
   int processor = 0;         // the virtual processor this rank runs (SimulationOptions::placement)
   std::vector<int> rank_of;  // processor -> the rank that runs it; identity when empty
-  std::int64_t memory_limit = 0;
-  std::int64_t memory_used = 0;
+  machine::NodeMemory memory{0, machine::MemoryLimit::enforce};  // the node's, set by run_mpi
   std::chrono::steady_clock::time_point epoch;
   bool tracing = false;
   std::mutex lock;  // guards everything below and the counters of every processor on the rank
@@ -47,7 +47,7 @@ class MpiProcessor final : public Processor {
   int count() const override { return rank_.size; }
   SimTime now() const override { return rank_.now(); }
   void compute(std::span<const OpCount> ops) override;
-  void use_memory(std::int64_t bytes) override;
+  void use_memory(std::int64_t bytes, std::string_view kind) override;
   Link connect(int peer, int tag) override;
   void send(Link& link, std::span<const std::byte> data) override;
   Bytes recv(Link& link) override;

@@ -153,7 +153,7 @@ MpiRunResult run_mpi(const SimulationOptions& options, const std::function<void(
   // Processor i runs on rank placement[i], as it would run on node placement[i] when simulated.
   state.rank_of = detail::checked_placement(options.placement, size);
   state.processor = static_cast<int>(std::find(state.rank_of.begin(), state.rank_of.end(), state.rank) - state.rank_of.begin());
-  state.memory_limit = config.memory_bytes;
+  state.memory = machine::NodeMemory(config.memory_bytes, options.memory_limit);
   state.tracing = !options.trace.path.empty() && options.trace.level != machine::TraceLevel::summary;
   MPI_Barrier(MPI_COMM_WORLD);
   const auto wall_start = std::chrono::steady_clock::now();

@@ -113,6 +113,15 @@ class ParixError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A node's memory would be exceeded: what() names the processor, what its node holds by kind and
+// the node's memory.
+class OutOfMemoryError : public ParixError {
+ public:
+  using ParixError::ParixError;
+};
+
+class MemoryReservation;
+
 class Processor {
  public:
   virtual ~Processor() = default;
@@ -126,9 +135,13 @@ class Processor {
   void compute(std::initializer_list<OpCount> ops) { compute(std::span(ops.begin(), ops.size())); }
   void compute(std::string_view op, std::int64_t count) { compute({OpCount{op, count}}); }
 
-  // Declares memory the application holds on this node (bytes may be negative to release).
-  // Throws ParixError when the node's memory would be exceeded.
-  virtual void use_memory(std::int64_t bytes) = 0;
+  // Declares memory of a kind ("scene", "hemicube", ...) the application holds on this node,
+  // before the host allocates it (bytes may be negative to release). Throws OutOfMemoryError when
+  // the node's memory would be exceeded (unless the run only warns, see SimulationOptions).
+  virtual void use_memory(std::int64_t bytes, std::string_view kind) = 0;
+  // The same, held until the returned reservation is destroyed:
+  //   auto held = p.reserve_memory(bytes, "hemicube");  std::vector<float> buffer(...);
+  [[nodiscard]] MemoryReservation reserve_memory(std::int64_t bytes, std::string_view kind);
 
   virtual Link connect(int peer, int tag = 0) = 0;
   virtual void send(Link& link, std::span<const std::byte> data) = 0;
@@ -187,6 +200,45 @@ class Processor {
  private:
   std::map<std::pair<int, int>, Link> persistent_;
 };
+
+// Memory declared on this processor's node, released when destroyed. Move-only.
+class MemoryReservation {
+ public:
+  MemoryReservation() = default;
+  MemoryReservation(Processor& p, std::int64_t bytes, std::string_view kind) : kind_(kind) {
+    p.use_memory(bytes, kind);  // throws before anything is held
+    owner_ = &p;
+    bytes_ = bytes;
+  }
+  MemoryReservation(MemoryReservation&& o) noexcept { *this = std::move(o); }
+  MemoryReservation& operator=(MemoryReservation&& o) noexcept {
+    if (this != &o) {
+      release();
+      owner_ = std::exchange(o.owner_, nullptr);
+      bytes_ = std::exchange(o.bytes_, 0);
+      kind_ = std::move(o.kind_);
+    }
+    return *this;
+  }
+  MemoryReservation(const MemoryReservation&) = delete;
+  MemoryReservation& operator=(const MemoryReservation&) = delete;
+  ~MemoryReservation() { release(); }
+
+  std::int64_t bytes() const { return bytes_; }
+  // Gives the memory back now.
+  void release() noexcept {
+    if (owner_) std::exchange(owner_, nullptr)->use_memory(-bytes_, kind_);  // releasing never throws
+  }
+
+ private:
+  Processor* owner_ = nullptr;
+  std::int64_t bytes_ = 0;
+  std::string kind_;
+};
+
+inline MemoryReservation Processor::reserve_memory(std::int64_t bytes, std::string_view kind) {
+  return MemoryReservation(*this, bytes, kind);
+}
 
 inline Link& Link::operator=(Link&& o) noexcept {
   if (this != &o) {

@@ -65,6 +65,10 @@ nlohmann::json RunResult::to_json() const {
                      {"connections", p.connections}});
   }
   j["processors"] = procs;
+  if (!memory_warning.empty()) {
+    j["memory"] = {{"peak_bytes", memory_peak}, {"peak_processor", memory_peak_processor},
+                   {"node_bytes", memory_capacity}, {"warning", memory_warning}};
+  }
   return j;
 }
 

@@ -30,6 +30,12 @@ struct RunResult {
   double wall_seconds = 0;        // host time the simulation took
   std::uint64_t events = 0;       // discrete events processed by the kernel
   std::vector<ProcessorStats> processors;
+  // Node memory (simulated backend): the highest any node held, on which processor's node, and
+  // the node's memory. memory_warning: set when a node went over it (only a run that warns).
+  std::int64_t memory_peak = 0;
+  int memory_peak_processor = -1;
+  std::int64_t memory_capacity = 0;
+  std::string memory_warning;
 
   double simulated_seconds() const { return machine::to_seconds(makespan); }
   double mean_compute_seconds() const;

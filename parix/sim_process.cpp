@@ -10,6 +10,10 @@ namespace gcsim::parix::detail {
 
 using machine::TraceKind;
 
+// Kinds of node memory the runtime itself holds (NodeMemory::breakdown names them).
+constexpr std::string_view kMessagesInFlight = "messages in flight";
+constexpr std::string_view kMessagesReceived = "messages received";
+
 // ---- SimProcess ------------------------------------------------------------------------------
 
 int SimProcess::id() const { return id_; }
@@ -77,12 +81,15 @@ void SimProcess::compute(std::span<const OpCount> ops) {
   }
 }
 
-void SimProcess::use_memory(std::int64_t bytes) {
-  machine::Node& node = sim_.nodes[sim_.node_of[id_]];
-  if (!node.use_memory(bytes)) {
-    throw ParixError(fmt::format("processor {}: out of memory: {} bytes in use + {} requested > {} bytes on the node",
-                                 id_, node.memory_used(), bytes, node.memory_bytes()));
-  }
+void SimProcess::use_memory(std::int64_t bytes, std::string_view kind) {
+  if (std::string refused = sim_.use_memory(id_, bytes, kind); !refused.empty()) throw OutOfMemoryError(refused);
+}
+
+std::string Simulation::use_memory(int processor, std::int64_t bytes, std::string_view kind) {
+  machine::NodeMemory& memory = nodes[node_of[processor]].memory();
+  if (!memory.use(bytes, kind)) return memory.report(processor, bytes, kind);
+  if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, kind);
+  return {};
 }
 
 Link SimProcess::connect(int peer, int tag) {
@@ -143,6 +150,10 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   auto req = new_request(sim_.request_blocks);
   req->link = link.handle();
   req->peer = e.peer;
+  // The runtime's copy of the message is held by the sender's node until it is delivered, then
+  // by the receiver's until received; declared before the host allocates it.
+  const std::int64_t bytes = static_cast<std::int64_t>(data.size());
+  if (bytes > 0) use_memory(bytes, kMessagesInFlight);
   Message m;
   m.data.assign(data.begin(), data.end());
   m.send = req;
@@ -164,6 +175,7 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
 }
 
 void Simulation::deliver(Message&& m) {
+  if (!m.data.empty()) use_memory(m.src, -static_cast<std::int64_t>(m.data.size()), kMessagesInFlight);
   LinkEnd& e = links[m.dst_end];
   const std::int64_t seq = m.link_seq;
   e.order.arrive(seq, std::move(m), [this, &e](Message&& next) { accept(e, std::move(next)); });
@@ -182,6 +194,12 @@ void Simulation::accept(LinkEnd& e, Message&& m) {
     if (m.synchronous) complete(m.send);
     complete(r);
   } else {
+    // Held by the receiver's node until a receive takes it. A node out of memory here fails the
+    // run as soon as this event is over (the kernel's loop stops on a failure).
+    if (!m.data.empty()) {
+      std::string refused = use_memory(e.owner, static_cast<std::int64_t>(m.data.size()), kMessagesReceived);
+      if (!refused.empty() && !failure) failure = std::make_exception_ptr(OutOfMemoryError(refused));
+    }
     e.arrived.push_back(std::move(m));
   }
 }
@@ -202,6 +220,7 @@ Request SimProcess::irecv(Link& link) {
   if (!e.arrived.empty()) {
     Message m = std::move(e.arrived.front());
     e.arrived.pop_front();
+    if (!m.data.empty()) sim_.use_memory(id_, -static_cast<std::int64_t>(m.data.size()), kMessagesReceived);
     req->data = std::move(m.data);
     req->done = true;
     if (m.synchronous) sim_.complete(m.send);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "machine/machine_config.hpp"
+#include "machine/node_memory.hpp"
 #include "machine/trace.hpp"
 #include "parix/processor.hpp"
 #include "parix/run_result.hpp"
@@ -21,6 +22,8 @@ struct SimulationOptions {
   // Processor i runs on node placement[i]; empty: processor i on node i. A permutation of the
   // nodes, e.g. machine::map_onto_mesh(...).node_of for a virtual topology (parix/virtual_topology.hpp).
   std::vector<int> placement;
+  // A node's memory exceeded: the run fails at once (enforce) or goes on and reports its peak (warn).
+  machine::MemoryLimit memory_limit = machine::MemoryLimit::enforce;
 };
 
 // Every processor blocked and no event pending. what() is the report naming each blocked

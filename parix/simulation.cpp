@@ -95,6 +95,12 @@ RunResult Simulation::result(std::chrono::steady_clock::time_point wall_start, b
   r.events = kernel.events_processed();
   r.processors = stats;
   if (interrupted) r.makespan = kernel.now();  // the simulated time reached
+  for (int i = 0; i < config.nodes; ++i) {
+    const machine::NodeMemory& m = nodes[node_of[i]].memory();
+    if (m.peak() > r.memory_peak) r.memory_peak = m.peak(), r.memory_peak_processor = i;
+  }
+  r.memory_capacity = config.memory_bytes;
+  r.memory_warning = memory_warning;
   for (const auto& s : stats) r.makespan = std::max(r.makespan, s.finish);
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return r;

@@ -68,7 +68,7 @@ class SimProcess final : public Processor {
   int count() const override;
   SimTime now() const override;
   void compute(std::span<const OpCount> ops) override;
-  void use_memory(std::int64_t bytes) override;
+  void use_memory(std::int64_t bytes, std::string_view kind) override;
   Link connect(int peer, int tag) override;
   void send(Link& link, std::span<const std::byte> data) override;
   Bytes recv(Link& link) override;
@@ -118,7 +118,7 @@ class Simulation {
                                             {kernel, mesh, config, trace.enabled() ? &trace : nullptr})),
         connections(config, mesh),
         fibers(static_cast<std::size_t>(config.fiber_stack_bytes)) {
-    for (int n = 0; n < config.nodes; ++n) nodes.emplace_back(kernel, config.cpus_per_node, config.memory_bytes);
+    for (int n = 0; n < config.nodes; ++n) nodes.emplace_back(kernel, config.cpus_per_node, config.memory_bytes, o.memory_limit);
     stats.resize(config.nodes);
     node_of = checked_placement(o.placement, config.nodes);
   }
@@ -176,6 +176,10 @@ class Simulation {
     return m;
   }
   void accept(LinkEnd& e, Message&& m);
+  // Declares memory on the node of `processor` (negative: releases). Returns "" when granted,
+  // else the out-of-memory report to raise; the first overrun of a run that only warns is kept
+  // in memory_warning.
+  std::string use_memory(int processor, std::int64_t bytes, std::string_view kind);
   void complete(const std::shared_ptr<RequestState>& r) {
     r->done = true;
     if (r->waiter) static_cast<SimProcess*>(r->waiter)->wake();
@@ -212,6 +216,7 @@ class Simulation {
   int live = 0;
   bool cancelling = false;
   std::exception_ptr failure;
+  std::string memory_warning;
 };
 
 }  // namespace gcsim::parix::detail

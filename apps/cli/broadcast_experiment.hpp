@@ -5,6 +5,9 @@
 // the way, matching the measured tables); bytes = 0 opens the connections and sends nothing, the
 // tables' "connect only" column.
 #include <cstdint>
+#include <string>
+
+#include "machine/node_memory.hpp"
 
 #include "parix/collectives.hpp"
 #include "parix/processor.hpp"
@@ -12,6 +15,14 @@
 namespace gcsim::cli {
 
 void all_node_broadcast(parix::Processor& p, std::int64_t bytes, parix::BcastAlgo algo);
+
+// --size: a whole number of bytes with an optional binary unit (16KB = 16384); a clear error for a
+// negative, malformed or too large size.
+std::int64_t parse_message_size(const std::string& text);
+
+// Before the run: one node's data and message copy against its memory (enforce: fails naming
+// processor 0's holdings and the node's memory), then every node's against the host's memory.
+void check_broadcast_resources(std::int64_t bytes, int nodes, std::int64_t node_bytes, machine::MemoryLimit limit);
 
 // Thesis tables 4.6 (sequential) and 4.7 (tree): milliseconds for N = 2..64 and the four sizes.
 struct ThesisBroadcastRow {

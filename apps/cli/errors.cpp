@@ -7,9 +7,11 @@
 #include <fmt/format.h>
 
 #include "apps/common/scene/obj_mesh.hpp"
+#include "apps/common/scene/scene_file.hpp"
 #include "apps/common/scene/world_loader.hpp"
 #include "apps/pipeline/command_groups.hpp"
 #include "apps/pipeline/failure.hpp"
+#include "apps/pipeline/resource_check.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/interruption.hpp"
 #include "parix/simulated_runtime.hpp"
@@ -41,6 +43,10 @@ int report_failure(std::exception_ptr e) {
     return kExitInterrupted;
   } catch (const parix::DeadlockError& x) {
     return fail(x, kExitDeadlock);
+  } catch (const parix::OutOfMemoryError& x) {  // a node's memory (--memory-limit warn continues)
+    return fail(x, kExitResource);
+  } catch (const HostMemoryError& x) {
+    return fail(x, kExitResource);
   } catch (const std::bad_alloc&) {
     print_error("out of host memory");
     return kExitResource;
@@ -49,6 +55,8 @@ int report_failure(std::exception_ptr e) {
   } catch (const machine::ConfigError& x) {
     return fail(x, kExitFile);
   } catch (const scene::ParseError& x) {
+    return fail(x, kExitFile);
+  } catch (const scene::SceneFileError& x) {
     return fail(x, kExitFile);
   } catch (const scene::ObjError& x) {
     return fail(x, kExitFile);

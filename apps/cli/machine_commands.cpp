@@ -126,7 +126,7 @@ void print_bcast_table(const MachineOptions& mo) {
 void add_bcast(CommandGroups& g) {
   struct Options {
     MachineOptions machine;
-    std::int64_t size = 16384;
+    std::string size = "16KB";
     std::string algo = "tree";
     bool table = false;
   };
@@ -140,9 +140,7 @@ void add_bcast(CommandGroups& g) {
       "Message size: every message carries exactly --size bytes; data is not merged on the way, as in the\n"
       "thesis's measurements. --size 0 opens the connections and sends nothing (the 'connect only' column).");
   add_machine_options(cmd, o->machine);
-  cmd->add_option("--size", o->size, "Bytes per message (suffixes: 1KB = 1024 bytes)")
-      ->transform(CLI::AsSizeValue(false))
-      ->capture_default_str();
+  cmd->add_option("--size", o->size, "Bytes per message (suffixes: 1KB = 1024 bytes)")->capture_default_str();
   cmd->add_option("--algo", o->algo, "sequential or tree")->check(CLI::IsMember({"sequential", "tree"}))->capture_default_str();
   cmd->add_flag("--table", o->table, "Run the thesis's whole grid (N = 2..64; 0, 1, 4, 16 KB; both algorithms) and print it next to tables 4.6 and 4.7");
   cmd->callback([o] {
@@ -150,9 +148,11 @@ void add_bcast(CommandGroups& g) {
       print_bcast_table(o->machine);
       return;
     }
+    const std::int64_t bytes = parse_message_size(o->size);
     const parix::RunOptions so = run_options(o->machine, kWholeMachine);
+    check_broadcast_resources(bytes, so.simulation.config.nodes, so.simulation.config.memory_bytes,
+                              so.simulation.memory_limit);
     const parix::BcastAlgo a = parse_algo(o->algo);
-    const std::int64_t bytes = o->size;
     parix::RunResult r = pipeline::run_program(so, [&](parix::Processor& p) { all_node_broadcast(p, bytes, a); }, o->machine);
     fmt::print("all-node broadcast, {} algorithm, {} bytes per message, {} nodes\n", o->algo, bytes, r.nodes);
     report_run(r, o->machine, {{"experiment", "bcast"}, {"algo", o->algo}, {"size_bytes", bytes}});

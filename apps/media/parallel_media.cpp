@@ -24,8 +24,12 @@ std::vector<T> concatenate(const std::vector<std::vector<T>>& parts) {
 // One region's photon map (replicated) and SH grid (each node builds a slice, then all-gather).
 RegionCache build_region_parallel(parix::Processor& p, const std::vector<Photon>& mine,
                                   const HomogeneousMedium& medium, std::size_t k, std::uint64_t& photon_bytes,
-                                  std::uint64_t& grid_bytes) {
-  std::vector<Photon> all = concatenate(parix::allgather_vectors<Photon>(p, std::span<const Photon>(mine)));
+                                  std::uint64_t& grid_bytes, std::vector<parix::MemoryReservation>& held) {
+  const auto parts = parix::allgather_vectors<Photon>(p, std::span<const Photon>(mine));
+  std::size_t photons = 0;
+  for (const auto& part : parts) photons += part.size();
+  held.push_back(p.reserve_memory(std::int64_t(photons * sizeof(Photon)), "photon map"));
+  std::vector<Photon> all = concatenate(parts);
   photon_bytes += all.size() * sizeof(Photon);
   RegionCache region;
   if (all.empty()) return region;
@@ -33,6 +37,8 @@ RegionCache build_region_parallel(parix::Processor& p, const std::vector<Photon>
   region.map = std::make_unique<PhotonMap>(std::move(all));
   const std::size_t voxels = grid.voxel_count();
   const std::size_t first = share_begin(voxels, p.id(), p.count()), last = share_begin(voxels, p.id() + 1, p.count());
+  held.push_back(p.reserve_memory(std::int64_t(voxels * sizeof(ShCoefficients)), "radiance grid"));
+  const parix::MemoryReservation slice_held = p.reserve_memory(std::int64_t(voxels * sizeof(ShCoefficients)), "radiance grid slice");
   RadianceGrid slice(grid, *region.map, medium, k, first, last);
   p.compute({{"media_knn_lookup", static_cast<std::int64_t>(last - first)},
              {"media_knn_photon", static_cast<std::int64_t>(slice.photon_adds())},
@@ -109,8 +115,12 @@ void media_program(parix::Processor& p, const MediaScene& scene, const MarchSett
   std::uint64_t photon_bytes = 0, grid_bytes = 0;
   const std::uint64_t my_photon_bytes = (photons.outside.size() + photons.inside.size()) * sizeof(Photon);
   SceneCaches caches;
-  caches.outside = build_region_parallel(p, photons.outside, scene.outside, scene.k_nearest, photon_bytes, grid_bytes);
-  caches.inside = build_region_parallel(p, photons.inside, scene.inside, scene.k_nearest, photon_bytes, grid_bytes);
+  std::vector<parix::MemoryReservation> held;  // node memory of the photon maps and grids
+  caches.outside = build_region_parallel(p, photons.outside, scene.outside, scene.k_nearest, photon_bytes, grid_bytes, held);
+  caches.inside = build_region_parallel(p, photons.inside, scene.inside, scene.k_nearest, photon_bytes, grid_bytes, held);
+  // Node 0 assembles the whole image; the others hold a tile at a time.
+  const std::int64_t image_bytes = id == 0 ? std::int64_t(width) * height * std::int64_t(sizeof(glm::vec3)) : 0;
+  const parix::MemoryReservation image_held = p.reserve_memory(image_bytes, "image");
   const TileFarmStats farm = render_tiles(p, scene, caches, settings, seed, result.image, per_node);
   if (id != 0) return;
   result.tiles = static_cast<std::size_t>(Tiling{width, height}.count());

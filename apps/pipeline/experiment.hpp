@@ -8,12 +8,15 @@
 // per-node slot of check data that the program does not send (counters, primary-hit ids); no
 // processor reads another's slot. A distributed backend gathers the slots after the run, outside
 // the measured time, as the simulated one leaves them where they were written.
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "apps/pipeline/resource_check.hpp"
 #include "apps/pipeline/sweep_table.hpp"
 #include "parix/backend.hpp"
 
@@ -34,6 +37,11 @@ class Experiment {
   virtual parix::Program program(Outcome& out) const = 0;
   // Host-side work after the run: merges per-node slots, sums counters.
   virtual void after_run(Outcome& out) const {}
+
+  // Resources checked before new_outcome allocates anything (resource_check.hpp): what the
+  // fullest node holds by kind (and which processor that is), and the host bytes of a run.
+  virtual std::vector<MemoryNeed> node_memory(int nodes, int* processor) const { return {}; }
+  virtual std::int64_t host_memory(int nodes) const { return 0; }
 
   // gcsim run APP: lines printed before the run, and the report after it (text on stdout,
   // JSON fields merged into --json's document).

@@ -8,6 +8,7 @@
 
 #include "machine/machine_config.hpp"
 #include "machine/network_model.hpp"
+#include "machine/node_memory.hpp"
 #include "machine/network_registry.hpp"
 #include "machine/trace.hpp"
 #include "apps/pipeline/failure.hpp"
@@ -41,7 +42,12 @@ void add_machine_choice_options(CLI::App* cmd, MachineOptions& o) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--model", o.model, "Network model: analytic (no contention), flow (links shared max-min fairly) or packet (packets queue for each link); default: the config's")
       ->check(CLI::IsMember(machine::network_model_names()));
-  group_as_machine_options(cmd, {"--backend", "--config", "--model"});
+  cmd->add_option("--memory-limit", o.memory_limit,
+                  "A node's memory (the machine file's memory_mb) exceeded: enforce (the run fails at once, naming the "
+                  "processor and what it holds) or warn (the run goes on and reports the peak)")
+      ->check(CLI::IsMember({"enforce", "warn"}))
+      ->capture_default_str();
+  group_as_machine_options(cmd, {"--backend", "--config", "--model", "--memory-limit"});
 }
 
 void add_machine_options(CLI::App* cmd, MachineOptions& o) {
@@ -76,6 +82,7 @@ parix::SimulationOptions simulation_options(const MachineOptions& o, int default
   s.config = machine::with_nodes(s.config, n, shape);
   s.nodes = n;
   s.network_model = o.model;
+  s.memory_limit = machine::parse_memory_limit(o.memory_limit);
   s.trace.path = o.trace;
   s.trace.level = machine::parse_trace_level(o.trace_level);
   return s;
@@ -132,6 +139,11 @@ void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohma
   fmt::print("{} {:12.6f} s   (compute {:.6f} s, communication {:.6f} s mean per processor)\n", real ? "measured " : "simulated",
              r.simulated_seconds(), r.mean_compute_seconds(), r.mean_comm_seconds());
   fmt::print("wall      {:12.6f} s   ({} events, {} messages)\n", r.wall_seconds, r.events, r.total_messages());
+  if (!r.memory_warning.empty()) {
+    fmt::print("memory    over the node's memory (--memory-limit warn): peak {} on processor {}'s node of {}; first: {}\n",
+               machine::format_bytes(r.memory_peak), r.memory_peak_processor, machine::format_bytes(r.memory_capacity),
+               r.memory_warning);
+  }
   if (!o.trace.empty()) fmt::print("trace     {} (and .csv, .paje beside it)\n", o.trace);
   if (!o.json.empty()) {
     nlohmann::json j = r.to_json();

@@ -19,11 +19,12 @@ struct MachineOptions {
   std::string trace;                  // trace file (.json, with .csv beside it)
   std::string trace_level = "full";
   std::string json;                   // where to write the run's JSON summary
+  std::string memory_limit = "enforce";  // a node's memory exceeded: enforce (fail) or warn
 };
 
 // Adds --config, --model, --nodes, --trace, --trace-level and --json to cmd.
 void add_machine_options(CLI::App* cmd, MachineOptions& o);
-// Adds only --backend, --config and --model: for commands that run several node counts (sweeps).
+// Adds only --backend, --config, --model and --memory-limit: for commands that run several node counts (sweeps).
 void add_machine_choice_options(CLI::App* cmd, MachineOptions& o);
 // Loads the config (or the built-in one) restricted to o.nodes (or default_nodes) nodes.
 parix::SimulationOptions simulation_options(const MachineOptions& o, int default_nodes);

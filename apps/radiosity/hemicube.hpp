@@ -14,6 +14,7 @@
 // a coarse pixel whose corners and centre do not all see the same element (an element border) is
 // split into four, recursively, down to resolution R.
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "apps/radiosity/delta_form_factors.hpp"
@@ -42,6 +43,18 @@ struct HemicubeOptions {
   int max_shooter_samples = 2;
   double near_field_ratio = 1.0;
 };
+
+// Bytes of a hemicube's buffers at options.resolution: a Z value and an item for each of the
+// 3 r^2 pixels of the top face and four half faces (12 bytes a pixel).
+inline std::int64_t hemicube_buffer_bytes(const HemicubeOptions& o) {
+  return std::int64_t(o.resolution) * o.resolution * 3 * 12;
+}
+
+// Host bytes of a renderer's tables: delta form factors and their summed-area tables (3 r^2
+// doubles each) for every sample grid (the smaller grids add at most a third).
+inline std::int64_t hemicube_host_bytes(const HemicubeOptions& o) {
+  return std::int64_t(o.resolution) * o.resolution * 3 * 8 * 2 * 4 / 3;
+}
 
 class HemicubeRenderer {
  public:

@@ -80,21 +80,29 @@ CellFormFactors get_cell(Reader& r) {
 
 }  // namespace
 
+std::int64_t replica_bytes(const Scene& scene) {
+  return std::int64_t(scene.elements.size()) * 176 + std::int64_t(scene.patches.size()) * 120 +
+         std::int64_t(scene.vertices.size()) * 24;
+}
+
+HemicubeOptions hemicube_of(const ParallelOptions& o) {
+  HemicubeOptions hc = o.solver.hemicube;
+  if (o.algorithm == ParallelAlgorithm::hemicube_hierarchical) hc.hierarchical_levels = o.hierarchical_levels;
+  return hc;
+}
+
 void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOptions& o, ParallelOutcome* outcome) {
   // Refused before any work (every replica decides alike): a closed scene that never absorbs.
   check_energy_can_be_absorbed(scene, o.solver.hemicube);
   const int id = p.id(), n = p.count();
   const int np = int(scene.patches.size()), ne = int(scene.elements.size());
-  // The replica of the environment and of the solver state on this node.
-  const std::int64_t replica_bytes = std::int64_t(ne) * 176 + std::int64_t(np) * 120 +
-                                     std::int64_t(scene.vertices.size()) * 24;
-  p.use_memory(replica_bytes);
+  // Declared before the host builds them, so that a node too small fails at once.
+  const parix::MemoryReservation replica = p.reserve_memory(replica_bytes(scene), "scene replica");
 
-  HemicubeOptions hc = o.solver.hemicube;
-  if (o.algorithm == ParallelAlgorithm::hemicube_hierarchical) hc.hierarchical_levels = o.hierarchical_levels;
+  const HemicubeOptions hc = hemicube_of(o);
+  const parix::MemoryReservation buffers = p.reserve_memory(hemicube_buffer_bytes(hc), "hemicube");
   HemicubeRenderer renderer(scene, hc);
   const int cells = renderer.cell_count();
-  p.use_memory(std::int64_t(hc.resolution) * hc.resolution * 3 * 12);  // Z-buffer and item buffer
 
   parix::CollectiveOptions coll;
   coll.algo = o.bcast;
@@ -213,7 +221,6 @@ void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOp
     }
   }
   ops.charge(p);
-  p.use_memory(-replica_bytes - std::int64_t(hc.resolution) * hc.resolution * 3 * 12);
   if (id == 0 && outcome) {
     outcome->element_radiosity = state.element_radiosity();
     outcome->steps = std::move(steps);

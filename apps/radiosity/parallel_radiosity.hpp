@@ -53,6 +53,11 @@ struct ParallelOutcome {
   std::vector<std::pair<int, std::vector<Rgb>>> snapshots;  // (loop, element radiosities)
 };
 
+// Node memory of the replica of the environment and of the solver state every node holds.
+std::int64_t replica_bytes(const Scene& scene);
+// The hemicube options a run of `options` renders with (the hierarchical algorithm's levels set).
+HemicubeOptions hemicube_of(const ParallelOptions& options);
+
 // The SPMD program: run it on every processor; processor 0 fills *outcome.
 void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOptions& options,
                        ParallelOutcome* outcome);

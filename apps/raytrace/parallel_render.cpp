@@ -40,6 +40,11 @@ void append(parix::Bytes& out, const void* data, std::size_t n) {
   std::memcpy(out.data() + at, data, n);
 }
 
+// A tile's colours and hit ids while it is rendered, and its packed record.
+std::int64_t tile_buffer_bytes(std::int64_t pixels) {
+  return pixels * std::int64_t(sizeof(glm::vec3) + sizeof(std::int32_t) + 3) + std::int64_t(sizeof(std::int32_t));
+}
+
 // What one processor does with the tiles it is given: renders, charges the operations, and packs
 // the pixels as [int32 tile][8-bit sRGB ...] records.
 struct NodeWork {
@@ -52,6 +57,7 @@ struct NodeWork {
 
   parix::Bytes render(parix::Processor& p, int tile) {
     const auto rect = tiling.rect(tile);
+    const parix::MemoryReservation buffers = p.reserve_memory(tile_buffer_bytes(rect.pixels()), "image tile");
     std::vector<glm::vec3> colors(rect.pixels());
     std::vector<std::int32_t> prims(rect.pixels());
     TraceCounters c;
@@ -106,16 +112,21 @@ std::vector<parix::Link> connect_root_to_all(parix::Processor& p) {
 
 void run_static(parix::Processor& p, NodeWork& work, Distribution d) {
   const int n = p.count(), me = p.id(), tiles = work.tiling.count();
-  parix::Bytes mine;
-  auto do_tile = [&](int t) {
-    parix::Bytes b = work.render(p, t);
-    mine.insert(mine.end(), b.begin(), b.end());
-  };
+  std::vector<int> my_tiles;
   if (d == Distribution::static_blocks) {
     const int begin = int(std::int64_t(tiles) * me / n), end = int(std::int64_t(tiles) * (me + 1) / n);
-    for (int t = begin; t < end; ++t) do_tile(t);
+    for (int t = begin; t < end; ++t) my_tiles.push_back(t);
   } else {
-    for (int t = me; t < tiles; t += n) do_tile(t);
+    for (int t = me; t < tiles; t += n) my_tiles.push_back(t);
+  }
+  // The packed pixels of every tile this node renders, held until they are sent.
+  std::int64_t record_bytes = 0;
+  for (int t : my_tiles) record_bytes += std::int64_t(sizeof(std::int32_t)) + 3 * std::int64_t(work.tiling.rect(t).pixels());
+  const parix::MemoryReservation records = p.reserve_memory(record_bytes, "rendered tiles");
+  parix::Bytes mine;
+  for (int t : my_tiles) {
+    parix::Bytes b = work.render(p, t);
+    mine.insert(mine.end(), b.begin(), b.end());
   }
   // Every node sends its pixels straight to node 0, which takes them in as they arrive.
   if (me != 0) {
@@ -260,18 +271,23 @@ ParallelRender ParallelRenderJob::new_result(int nodes) const {
 }
 
 void ParallelRenderJob::program(parix::Processor& p, ParallelRender& out) const {
-  // What each node holds: the scene and the tree.
-  const std::int64_t scene_bytes = std::int64_t(scene_.spheres.size()) * sizeof(Sphere) +
-                                   std::int64_t(scene_.triangles.size()) * sizeof(Triangle) +
-                                   std::int64_t(bvh_.nodes.size()) * sizeof(BvhNode) +
-                                   std::int64_t(bvh_.prim_bounds.size()) * sizeof(Bounds3);
-  p.use_memory(scene_bytes);
-  if (p.id() == 0) p.use_memory(std::int64_t(settings_.width) * settings_.height * 3);
+  // What each node holds: the scene and the tree; node 0 the image.
+  const parix::MemoryReservation scene = p.reserve_memory(scene_bytes(), "scene");
+  const parix::MemoryReservation image = p.reserve_memory(p.id() == 0 ? image_bytes() : 0, "image");
   // Built here, by the processor that uses it (on the heap: fiber stacks are small).
   const auto renderer = std::make_unique<TileRenderer>(scene_, bvh_, settings_);
   NodeWork work{scene_, bvh_, settings_, Tiling{settings_.width, settings_.height, settings_.tile}, out, *renderer};
   if (distribution_ == Distribution::dynamic) run_dynamic(p, work);
   else run_static(p, work, distribution_);
+}
+
+std::int64_t ParallelRenderJob::scene_bytes() const {
+  return std::int64_t(scene_.spheres.size()) * sizeof(Sphere) + std::int64_t(scene_.triangles.size()) * sizeof(Triangle) +
+         std::int64_t(bvh_.nodes.size()) * sizeof(BvhNode) + std::int64_t(bvh_.prim_bounds.size()) * sizeof(Bounds3);
+}
+
+std::int64_t ParallelRenderJob::tile_bytes() const {
+  return tile_buffer_bytes(std::int64_t(settings_.tile) * settings_.tile);
 }
 
 void ParallelRenderJob::finish(ParallelRender& out) const {

@@ -59,6 +59,12 @@ class ParallelRenderJob {
   void program(parix::Processor& p, ParallelRender& out) const;
   void finish(ParallelRender& out) const;      // sums the counters, merges the hit ids
 
+  // Node memory, declared before the host allocates it: every node's scene and tree, the 8-bit
+  // image node 0 assembles, the buffers of one tile being rendered.
+  std::int64_t scene_bytes() const;
+  std::int64_t image_bytes() const { return std::int64_t(settings_.width) * settings_.height * 3; }
+  std::int64_t tile_bytes() const;
+
  private:
   const Scene& scene_;
   const Bvh& bvh_;

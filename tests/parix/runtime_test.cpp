@@ -182,10 +182,10 @@ TEST(Runtime, TypedHelpersRoundTrip) {
 
 TEST(Runtime, MemoryPerNodeIsEnforced) {
   run_simulated(on_nodes(1), [](Processor& p) {
-    p.use_memory(30 << 20);
-    EXPECT_THROW(p.use_memory(3 << 20), ParixError);
-    p.use_memory(-(10 << 20));
-    EXPECT_NO_THROW(p.use_memory(3 << 20));
+    p.use_memory(30 << 20, "data");
+    EXPECT_THROW(p.use_memory(3 << 20, "data"), OutOfMemoryError);
+    p.use_memory(-(10 << 20), "data");
+    EXPECT_NO_THROW(p.use_memory(3 << 20, "data"));
   });
 }
 

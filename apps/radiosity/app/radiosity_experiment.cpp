@@ -74,6 +74,15 @@ void RadiosityExperiment::after_run(pipeline::Outcome& out) const {
   pipeline::outcome_as<RadiosityOutcome>(out).progress.reset();  // erases the line before the report
 }
 
+std::vector<pipeline::MemoryNeed> RadiosityExperiment::node_memory(int, int* processor) const {
+  *processor = 0;  // every node holds the same
+  return {{"scene replica", replica_bytes(scene_)}, {"hemicube", hemicube_buffer_bytes(hemicube_of(options_))}};
+}
+
+std::int64_t RadiosityExperiment::host_memory(int nodes) const {
+  return pipeline::saturating_product(nodes, hemicube_host_bytes(hemicube_of(options_)) + 2 * replica_bytes(scene_));
+}
+
 void RadiosityExperiment::print_setup(int nodes) const {
   const auto c = scene_.counts();
   const ParallelOptions& o = options_;

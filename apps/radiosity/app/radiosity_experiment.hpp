@@ -36,6 +36,8 @@ class RadiosityExperiment : public pipeline::Experiment {
   parix::Program program(pipeline::Outcome& out) const override;
   void after_run(pipeline::Outcome& out) const override;
   void print_setup(int nodes) const override;
+  std::vector<pipeline::MemoryNeed> node_memory(int nodes, int* processor) const override;
+  std::int64_t host_memory(int nodes) const override;
   void report(const pipeline::Outcome& out, nlohmann::json& extra) const override;
   void check_outputs() const override;
   // The energy threshold not reached (convergence.hpp says why).

@@ -33,6 +33,17 @@ parix::Program RaytraceExperiment::program(pipeline::Outcome& out) const {
 
 void RaytraceExperiment::after_run(pipeline::Outcome& out) const { job_.finish(pipeline::outcome_as<RaytraceOutcome>(out).render); }
 
+std::vector<pipeline::MemoryNeed> RaytraceExperiment::node_memory(int, int* processor) const {
+  *processor = 0;  // node 0 also assembles the image
+  return {{"scene", job_.scene_bytes()}, {"image", job_.image_bytes()}, {"image tile", job_.tile_bytes()}};
+}
+
+std::int64_t RaytraceExperiment::host_memory(int) const {
+  // The float image, the hit ids (per node and merged), the 8-bit records and their messages.
+  const std::int64_t pixels = std::int64_t(settings_.width) * settings_.height;
+  return pixels * std::int64_t(sizeof(glm::vec3) + 2 * sizeof(std::int32_t) + 2 * 3);
+}
+
 void RaytraceExperiment::print_setup(int nodes) const {
   const RenderSettings& s = settings_;
   print_scene(scene_, bvh_);

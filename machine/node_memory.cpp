@@ -1,0 +1,61 @@
+#include "machine/node_memory.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+namespace gcsim::machine {
+
+MemoryLimit parse_memory_limit(std::string_view name) {
+  if (name == "enforce") return MemoryLimit::enforce;
+  if (name == "warn") return MemoryLimit::warn;
+  throw std::invalid_argument(fmt::format("memory limit '{}': expected enforce or warn", name));
+}
+
+bool NodeMemory::use(std::int64_t bytes, std::string_view kind) {
+  if (bytes > 0 && limit_ == MemoryLimit::enforce && bytes > capacity_ - used_) return false;
+  auto it = held_.find(kind);
+  if (it == held_.end()) it = held_.emplace(std::string(kind), 0).first;
+  // A release never takes a kind below zero: a double release is the caller's slip, not memory
+  // the node gains.
+  const std::int64_t change = std::max(bytes, -it->second);
+  it->second += change;
+  used_ += change;
+  peak_ = std::max(peak_, used_);
+  return true;
+}
+
+std::string NodeMemory::breakdown() const {
+  std::vector<std::pair<std::int64_t, std::string_view>> kinds;
+  for (const auto& [kind, bytes] : held_)
+    if (bytes > 0) kinds.emplace_back(bytes, kind);
+  std::stable_sort(kinds.begin(), kinds.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::string out;
+  for (const auto& [bytes, kind] : kinds) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", kind, format_bytes(bytes));
+  return out.empty() ? "nothing" : out;
+}
+
+std::string NodeMemory::report(int processor, std::int64_t asked, std::string_view kind) const {
+  if (asked <= 0) {
+    return fmt::format("processor {}: node memory over its limit: holds {} ({}); the node has {}", processor,
+                       format_bytes(used_), breakdown(), format_bytes(capacity_));
+  }
+  const std::string holding =
+      used_ > 0 ? fmt::format("while holding {} ({})", format_bytes(used_), breakdown()) : std::string("alone");
+  return fmt::format("processor {}: out of node memory: {} {} asked {}; the node has {}", processor, kind,
+                     format_bytes(asked), holding, format_bytes(capacity_));
+}
+
+std::string format_bytes(std::int64_t bytes) {
+  if (bytes < 0) return "-" + format_bytes(-bytes);
+  const double b = static_cast<double>(bytes);
+  if (bytes < 1024) return fmt::format("{} bytes", bytes);
+  if (b < 1024.0 * 1024) return fmt::format("{:.1f} KB", b / 1024);
+  if (b < 1024.0 * 1024 * 1024) return fmt::format("{:.1f} MB", b / (1024.0 * 1024));
+  return fmt::format("{:.1f} GB", b / (1024.0 * 1024 * 1024));
+}
+
+}  // namespace gcsim::machine

@@ -1,0 +1,48 @@
+#pragma once
+// A node's local memory (32 MB on the GC-PowerPlus). Applications and the runtime declare what
+// they hold, by kind (scene, hemicube, message buffer, ...), before the host allocates it, so that
+// a run over the node's memory stops at once and can say what the node holds. Both backends keep
+// one per node (the simulated one in machine::Node, the MPI one per rank).
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+
+namespace gcsim::machine {
+
+// What happens when a node's memory would be exceeded: the request fails (enforce), or it is
+// granted and the run goes on, the peak telling how far over it went (warn).
+enum class MemoryLimit { enforce, warn };
+MemoryLimit parse_memory_limit(std::string_view name);  // "enforce" or "warn"
+
+class NodeMemory {
+ public:
+  NodeMemory(std::int64_t capacity_bytes, MemoryLimit limit) : capacity_(capacity_bytes), limit_(limit) {}
+
+  // Adds bytes of `kind` (negative: releases) to the memory in use. False, changing nothing, if
+  // the node's memory would be exceeded under MemoryLimit::enforce; releasing always succeeds.
+  bool use(std::int64_t bytes, std::string_view kind);
+  std::int64_t used() const { return used_; }
+  std::int64_t peak() const { return peak_; }
+  std::int64_t capacity() const { return capacity_; }
+  MemoryLimit limit() const { return limit_; }
+  bool over() const { return used_ > capacity_; }
+  // What the node holds, largest first: "hemicube 576.0 MB, scene 1.2 MB" ("nothing" if empty).
+  std::string breakdown() const;
+  // "processor 3: out of node memory: hemicube 576.0 MB asked while holding scene 1.2 MB; the
+  // node has 32.0 MB" ("... asked alone; ..." when it holds nothing); `asked` = 0 describes the
+  // node as it is (a warning after the fact).
+  std::string report(int processor, std::int64_t asked, std::string_view kind) const;
+
+ private:
+  std::int64_t capacity_;
+  MemoryLimit limit_;
+  std::int64_t used_ = 0;
+  std::int64_t peak_ = 0;
+  std::map<std::string, std::int64_t, std::less<>> held_;  // bytes in use by kind
+};
+
+// "12 bytes", "1.5 KB", "32.0 MB", "10.0 GB" (binary units, as the machine file's memory_mb).
+std::string format_bytes(std::int64_t bytes);
+
+}  // namespace gcsim::machine

@@ -1,0 +1,60 @@
+// A node's memory (machine/node_memory.hpp): declared by kind, refused past the node's memory
+// under enforce, granted and remembered as a peak under warn; releases never make memory.
+#include "machine/node_memory.hpp"
+
+#include <gtest/gtest.h>
+
+namespace gcsim::machine {
+namespace {
+
+TEST(NodeMemory, EnforceRefusesWhatWouldExceedTheNodeAndChangesNothing) {
+  NodeMemory m(32 << 20, MemoryLimit::enforce);
+  EXPECT_TRUE(m.use(20 << 20, "scene"));
+  EXPECT_TRUE(m.use(12 << 20, "hemicube"));  // exactly full is allowed
+  EXPECT_FALSE(m.use(1, "message"));
+  EXPECT_EQ(m.used(), 32 << 20);
+  EXPECT_TRUE(m.use(-(12 << 20), "hemicube"));
+  EXPECT_TRUE(m.use(1, "message"));
+  EXPECT_EQ(m.peak(), 32 << 20);
+}
+
+TEST(NodeMemory, WarnGrantsAndKeepsThePeak) {
+  NodeMemory m(32 << 20, MemoryLimit::warn);
+  EXPECT_TRUE(m.use(100 << 20, "broadcast data"));
+  EXPECT_TRUE(m.over());
+  EXPECT_TRUE(m.use(-(100 << 20), "broadcast data"));
+  EXPECT_FALSE(m.over());
+  EXPECT_EQ(m.used(), 0);
+  EXPECT_EQ(m.peak(), 100 << 20);
+}
+
+TEST(NodeMemory, AReleaseNeverTakesAKindBelowZero) {
+  NodeMemory m(1000, MemoryLimit::enforce);
+  ASSERT_TRUE(m.use(600, "scene"));
+  ASSERT_TRUE(m.use(300, "image"));
+  EXPECT_TRUE(m.use(-500, "image"));  // more than it holds: only its 300 come back
+  EXPECT_EQ(m.used(), 600);
+  EXPECT_FALSE(m.use(401, "image"));
+}
+
+TEST(NodeMemory, TheReportNamesProcessorKindsLargestFirstAndTheLimit) {
+  NodeMemory m(32 << 20, MemoryLimit::enforce);
+  ASSERT_TRUE(m.use(1 << 20, "scene"));
+  ASSERT_TRUE(m.use(3 << 20, "image"));
+  EXPECT_EQ(m.breakdown(), "image 3.0 MB, scene 1.0 MB");
+  EXPECT_EQ(m.report(5, 576 << 20, "hemicube"),
+            "processor 5: out of node memory: hemicube 576.0 MB asked while holding 4.0 MB (image 3.0 MB, scene "
+            "1.0 MB); the node has 32.0 MB");
+  EXPECT_EQ(NodeMemory(1024, MemoryLimit::enforce).breakdown(), "nothing");
+}
+
+TEST(NodeMemory, BytesAreFormattedInBinaryUnits) {
+  EXPECT_EQ(format_bytes(12), "12 bytes");
+  EXPECT_EQ(format_bytes(1536), "1.5 KB");
+  EXPECT_EQ(format_bytes(std::int64_t(10) << 30), "10.0 GB");
+  EXPECT_THROW(parse_memory_limit("sometimes"), std::invalid_argument);
+  EXPECT_EQ(parse_memory_limit("warn"), MemoryLimit::warn);
+}
+
+}  // namespace
+}  // namespace gcsim::machine
