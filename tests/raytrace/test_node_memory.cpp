@@ -15,7 +15,7 @@
 namespace gcsim::raytrace {
 namespace {
 
-TEST(NodeMemory, APictureTooBigForOneNodeFitsOnEight) {
+TEST(ParallelNodeMemory, APictureTooBigForOneNodeFitsOnEight) {
   const Scene s = make_builtin_scene("teapots");
   const Bvh bvh = build_bvh_by_clustering(s);
   RenderSettings rs;
