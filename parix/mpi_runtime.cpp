@@ -152,7 +152,9 @@ MpiRunResult run_mpi(const SimulationOptions& options, const std::function<void(
   state.size = size;
   // Processor i runs on rank placement[i], as it would run on node placement[i] when simulated.
   state.rank_of = detail::checked_placement(options.placement, size);
-  state.processor = static_cast<int>(std::find(state.rank_of.begin(), state.rank_of.end(), state.rank) - state.rank_of.begin());
+  std::vector<int> processor_of_rank(static_cast<std::size_t>(size));
+  for (int i = 0; i < size; ++i) processor_of_rank[static_cast<std::size_t>(state.rank_of[i])] = i;
+  state.processor = processor_of_rank[static_cast<std::size_t>(state.rank)];
   state.memory = machine::NodeMemory(config.memory_bytes, options.memory_limit);
   state.tracing = !options.trace.path.empty() && options.trace.level != machine::TraceLevel::summary;
   MPI_Barrier(MPI_COMM_WORLD);
@@ -190,10 +192,8 @@ MpiRunResult run_mpi(const SimulationOptions& options, const std::function<void(
   std::vector<machine::TraceRecord> records;
   std::deque<std::string> labels;
   out.result.processors.resize(static_cast<std::size_t>(size));
-  for (int r = 0; r < size; ++r) {
-    const auto processor = std::find(state.rank_of.begin(), state.rank_of.end(), r) - state.rank_of.begin();
-    unpack(parts[r].data(), out.result.processors[static_cast<std::size_t>(processor)], records, labels);
-  }
+  for (int r = 0; r < size; ++r)
+    unpack(parts[r].data(), out.result.processors[static_cast<std::size_t>(processor_of_rank[r])], records, labels);
   for (const auto& p : out.result.processors) out.result.makespan = std::max(out.result.makespan, p.finish);
   if (!options.trace.path.empty()) write_trace(options, config, records);
   out.result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
