@@ -15,14 +15,19 @@ MemoryLimit parse_memory_limit(std::string_view name) {
   throw std::invalid_argument(fmt::format("memory limit '{}': expected enforce or warn", name));
 }
 
+NodeMemory::Held& NodeMemory::held(std::string_view kind) {
+  for (Held& h : held_)
+    if (h.kind == kind) return h;
+  return held_.emplace_back(Held{std::string(kind), 0});
+}
+
 bool NodeMemory::use(std::int64_t bytes, std::string_view kind) {
   if (bytes > 0 && limit_ == MemoryLimit::enforce && bytes > capacity_ - used_) return false;
-  auto it = held_.find(kind);
-  if (it == held_.end()) it = held_.emplace(std::string(kind), 0).first;
+  Held& h = held(kind);
   // A release never takes a kind below zero: a double release is the caller's slip, not memory
   // the node gains.
-  const std::int64_t change = std::max(bytes, -it->second);
-  it->second += change;
+  const std::int64_t change = std::max(bytes, -h.bytes);
+  h.bytes += change;
   used_ += change;
   peak_ = std::max(peak_, used_);
   return true;
@@ -30,9 +35,11 @@ bool NodeMemory::use(std::int64_t bytes, std::string_view kind) {
 
 std::string NodeMemory::breakdown() const {
   std::vector<std::pair<std::int64_t, std::string_view>> kinds;
-  for (const auto& [kind, bytes] : held_)
-    if (bytes > 0) kinds.emplace_back(bytes, kind);
-  std::stable_sort(kinds.begin(), kinds.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (const Held& h : held_)
+    if (h.bytes > 0) kinds.emplace_back(h.bytes, h.kind);
+  // Largest first; equal sizes by name.
+  std::sort(kinds.begin(), kinds.end(),
+            [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
   std::string out;
   for (const auto& [bytes, kind] : kinds) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", kind, format_bytes(bytes));
   return out.empty() ? "nothing" : out;

@@ -4,9 +4,9 @@
 // a run over the node's memory stops at once and can say what the node holds. Both backends keep
 // one per node (the simulated one in machine::Node, the MPI one per rank).
 #include <cstdint>
-#include <map>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace gcsim::machine {
 
@@ -39,7 +39,12 @@ class NodeMemory {
   MemoryLimit limit_;
   std::int64_t used_ = 0;
   std::int64_t peak_ = 0;
-  std::map<std::string, std::int64_t, std::less<>> held_;  // bytes in use by kind
+  struct Held {
+    std::string kind;
+    std::int64_t bytes;
+  };
+  Held& held(std::string_view kind);
+  std::vector<Held> held_;  // bytes in use by kind: a handful per node, searched on every message
 };
 
 // "12 bytes", "1.5 KB", "32.0 MB", "10.0 GB" (binary units, as the machine file's memory_mb).
