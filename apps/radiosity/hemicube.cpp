@@ -59,13 +59,26 @@ int clip(const Vec3* in, int n, Vec3* out, F f) {
 
 }  // namespace
 
+void check_hemicube_options(const HemicubeOptions& o) {
+  if (o.resolution < 2 || o.resolution % 2 != 0)
+    throw std::invalid_argument(fmt::format("hemicube resolution must be even and at least 2, got {}", o.resolution));
+  if (o.max_shooter_samples < 1 || !std::has_single_bit(unsigned(o.max_shooter_samples)))
+    throw std::invalid_argument(
+        fmt::format("near-field samples per side must be a power of two (1, 2, 4, ...), got {}", o.max_shooter_samples));
+  if (!(o.near_field_ratio > 0) || !std::isfinite(o.near_field_ratio))
+    throw std::invalid_argument("the near-field ratio must be a positive finite number");
+  make_cells(o, o.resolution);  // the partition's own checks; cells are small, unlike the pixel tables
+}
+
 HemicubeRenderer::HemicubeRenderer(const Scene& scene, const HemicubeOptions& o)
     : scene_(scene), options_(o), near_(1e-9 * scene.extent()) {
-  if (o.max_shooter_samples < 1) throw std::invalid_argument("shooter samples per side must be at least 1");
-  if (!(o.near_field_ratio > 0)) throw std::invalid_argument("the near-field ratio must be positive");
+  check_hemicube_options(o);
   grids_.push_back({o.resolution, DeltaFormFactors(o.resolution), make_cells(o, o.resolution)});
-  for (int n = 2; n <= o.max_shooter_samples && usable_sample_resolution(o, o.resolution / n); n *= 2)
-    grids_.push_back({o.resolution / n, DeltaFormFactors(o.resolution / n), make_cells(o, o.resolution / n)});
+  for (int n = 2; n <= o.max_shooter_samples; n *= 2) {
+    const int r = o.resolution / n;  // the pixel work of one hemicube, whatever n
+    if (!usable_sample_resolution(o, r)) break;
+    grids_.push_back({r, DeltaFormFactors(r), make_cells(o, r)});
+  }
   per_side_ = shooter_samples_per_side(scene, o.near_field_ratio, 1 << (grids_.size() - 1));
   acc_.assign(scene.elements.size(), 0.0);
 }

@@ -56,6 +56,11 @@ inline std::int64_t hemicube_host_bytes(const HemicubeOptions& o) {
   return std::int64_t(o.resolution) * o.resolution * 3 * 8 * 2 * 4 / 3;
 }
 
+// Throws std::invalid_argument with the reason when `o` cannot make a hemicube (resolution,
+// partition, hierarchical levels, near-field settings), without allocating its pixel tables: a
+// command checks its options before the run, even at resolution 4096 (1 GB of tables).
+void check_hemicube_options(const HemicubeOptions& o);
+
 class HemicubeRenderer {
  public:
   HemicubeRenderer(const Scene& scene, const HemicubeOptions& options);

@@ -4,22 +4,6 @@
 
 namespace gcsim::radiosity::testing {
 
-Scene closed_box(double s, int n, int m, double rho, double e) {
-  EntityBuilder b("closed box");
-  int surf = b.surface(Rgb(rho), Rgb(e));
-  b.quad({{0, 0, 0}, {s, 0, 0}, {s, 0, s}, {0, 0, s}}, {0, 1, 0}, n, n, m, m, surf);
-  b.quad({{0, s, 0}, {s, s, 0}, {s, s, s}, {0, s, s}}, {0, -1, 0}, n, n, m, m, surf);
-  b.quad({{0, 0, 0}, {0, s, 0}, {0, s, s}, {0, 0, s}}, {1, 0, 0}, n, n, m, m, surf);
-  b.quad({{s, 0, 0}, {s, s, 0}, {s, s, s}, {s, 0, s}}, {-1, 0, 0}, n, n, m, m, surf);
-  b.quad({{0, 0, 0}, {s, 0, 0}, {s, s, 0}, {0, s, 0}}, {0, 0, 1}, n, n, m, m, surf);
-  b.quad({{0, 0, s}, {s, 0, s}, {s, s, s}, {0, s, s}}, {0, 0, -1}, n, n, m, m, surf);
-  World w;
-  w.name = "closed box";
-  w.entities.push_back(b.take());
-  w.instances.push_back({0, {}});
-  return flatten(w);
-}
-
 Scene lit_room(double s, double gap, double rho) {
   EntityBuilder b("lit room");
   int wall = b.surface(Rgb(rho, rho * 0.9, rho * 0.8));

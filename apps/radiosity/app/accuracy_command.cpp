@@ -1,4 +1,4 @@
-// gcsim accuracy radiosity: what accuracy costs, as three tables (form factors against closed forms,
+// gcsim accuracy radiosity: what accuracy costs, as four tables (form factors against closed forms,
 // radiosities against Gauss-Seidel per energy threshold, hierarchical against fixed hemicubes).
 #include <memory>
 #include <stdexcept>
@@ -11,6 +11,7 @@
 #include "apps/radiosity/accuracy.hpp"
 #include "apps/radiosity/app/commands.hpp"
 #include "apps/radiosity/builtin_scenes.hpp"
+#include "apps/radiosity/near_field_accuracy.hpp"
 #include "machine/machine_config.hpp"
 
 namespace gcsim::radiosity::app {
@@ -25,6 +26,9 @@ struct AccuracyFlags {
   std::string scene = "cornell", config;
   int hemicube = 64;
   int shooters = 2;
+  std::string near_field = "1,0.5,0.25";
+  int near_field_hemicube = 256;
+  int near_field_samples = 8;
   std::string json;
 };
 
@@ -79,6 +83,35 @@ void print_hierarchical_table(const Scene& scene, SolverOptions ho, int resoluti
   }
 }
 
+void print_near_field_table(const Scene& scene, SolverOptions no, const AccuracyFlags& f, const machine::MachineConfig& m,
+                            nlohmann::json& j) {
+  const std::vector<double> ratios = pipeline::parse_double_list(f.near_field, "--near-field");
+  for (double r : ratios)
+    if (!(r > 0)) throw std::invalid_argument(fmt::format("--near-field: ratio {} must be positive", r));
+  no.hemicube.resolution = f.near_field_hemicube;
+  no.hemicube.max_shooter_samples = f.near_field_samples;
+  check_hemicube_options(no.hemicube);
+  fmt::print("\n4. near field: a shooter splits until each part is at most ratio x its distance to the nearest\n"
+             "   receiver, up to {} x {} parts (hemicube {}). facing: receiver of two facing unit squares 1 apart,\n"
+             "   rho 0.5 (closed form {:.5f}); furnace: closed box rho 0.5, E 1, 4x4 patches of 2x2 elements,\n"
+             "   extreme elements against B = 2; cost: {} on one node at energy {}, K {}\n",
+             f.near_field_samples, f.near_field_samples, f.near_field_hemicube, 0.5 * parallel_rectangles_form_factor(1, 1, 1),
+             scene.name, no.energy, no.shooters);
+  fmt::print("{:>9} {:>10} {:>10} {:>11} {:>11} {:>6} {:>10} {:>8}\n", "ratio", "facing_B", "facing_err", "furnace_min",
+             "furnace_max", "loops", "sim_s", "wall_s");
+  for (const auto& a : near_field_accuracy(scene, no, ratios, m)) {
+    fmt::print("{:>9} {:>10.5f} {:>+9.2f}% {:>+10.2f}% {:>+10.2f}% {:>6} {:>10.3f} {:>8.3f}\n",
+               a.ratio == 0 ? std::string("1 point") : fmt::format("{}", a.ratio), a.facing_b, 100 * a.facing_error(),
+               100 * a.furnace_min_error(), 100 * a.furnace_max_error(), a.scene_steps, a.scene_simulated_seconds,
+               a.wall_seconds);
+    j["near_field"].push_back({{"ratio", a.ratio}, {"max_samples_per_side", a.max_samples_per_side},
+                               {"facing_b", a.facing_b}, {"facing_exact", a.facing_exact},
+                               {"facing_error", a.facing_error()}, {"furnace_min", a.furnace_min},
+                               {"furnace_max", a.furnace_max}, {"scene_loops", a.scene_steps},
+                               {"simulated_s", a.scene_simulated_seconds}, {"wall_s", a.wall_seconds}});
+  }
+}
+
 void run_accuracy(const AccuracyFlags& f) {
   const machine::MachineConfig m = f.config.empty() ? machine::default_machine_config() : machine::load_machine_config(f.config);
   const std::vector<int> res = pipeline::parse_int_list(f.resolutions, "--resolutions");
@@ -97,6 +130,8 @@ void run_accuracy(const AccuracyFlags& f) {
   print_energy_table(scene, so, th, m, j);
   if (!f.levels.empty())
     print_hierarchical_table(scene, so, f.hierarchical_hemicube, pipeline::parse_int_list(f.levels, "--levels"), m, j);
+  if (!f.near_field.empty())
+    print_near_field_table(scene, so, f, m, j);
   if (!f.json.empty()) pipeline::write_json_file(f.json, j);
 }
 
@@ -106,7 +141,7 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
   auto f = std::make_shared<AccuracyFlags>();
   CLI::App* cmd = g.accuracy->add_subcommand(
       "radiosity",
-      "What accuracy costs in radiosity, as three tables.\n"
+      "What accuracy costs in radiosity, as four tables.\n"
       "1. Hemicube form factors against closed forms, per resolution: from the centre of a unit square\n"
       "   to the parallel unit square at distance 1 and to the perpendicular unit square sharing an edge,\n"
       "   and from a small patch to a disc (r = 1 at h = 1: F = r^2/(h^2 + r^2)). 'point' is one hemicube\n"
@@ -117,6 +152,9 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
       "   Gauss-Seidel solution with the same form factors.\n"
       "3. The hierarchical hemicube (4.5) against the fixed one of the same resolution, per number of\n"
       "   levels: what adaptive sampling saves, and the radiosity error it costs.\n"
+      "4. The near field: a shooter near its receivers shoots from several points of its area (run's\n"
+      "   --near-field-ratio and --near-field-samples). Per ratio: the error on two facing unit squares\n"
+      "   and on every element of a closed furnace box (closed forms), and the scene's time on one node.\n"
       "Times are simulated seconds on one node of the machine (counted operations) and host wall seconds.");
   cmd->add_option("--resolutions", f->resolutions, "Hemicube resolutions for table 1")->capture_default_str();
   cmd->add_option("--thresholds", f->thresholds, "Energy thresholds for table 2, ascending")->capture_default_str();
@@ -127,8 +165,17 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
       ->capture_default_str();
   cmd->add_option("--hemicube", f->hemicube, "Hemicube resolution for table 2")->check(CLI::Range(8, 4096))->capture_default_str();
   cmd->add_option("--shooters", f->shooters, "Shooters per loop for table 2")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+  cmd->add_option("--near-field", f->near_field,
+                  "Near-field ratios for table 4 (run's --near-field-ratio; empty: skip the table)")
+      ->capture_default_str();
+  cmd->add_option("--near-field-samples", f->near_field_samples, "Cap on the parts per side in table 4")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16, 32}))
+      ->capture_default_str();
+  cmd->add_option("--near-field-hemicube", f->near_field_hemicube, "Hemicube resolution for table 4")
+      ->check(CLI::Range(16, 4096))
+      ->capture_default_str();
   cmd->add_option("--config", f->config, "Machine file whose [ops] costs turn counts into seconds")->check(CLI::ExistingFile);
-  cmd->add_option("--json", f->json, "Write both tables as JSON");
+  cmd->add_option("--json", f->json, "Write every table as JSON");
   cmd->callback([f] { run_accuracy(*f); });
 }
 

@@ -92,6 +92,9 @@ void RadiosityExperiment::print_setup(int nodes) const {
              to_string(o.algorithm), nodes, solve_.bcast, o.aggregate ? ", aggregated" : "", o.keep_links ? ", links kept" : "",
              o.solver.order == ShootingOrder::energy ? "" : fmt::format(", order {}", to_string(o.solver.order)),
              o.solver.hemicube.resolution, o.solver.shooters, o.solver.energy);
+  const HemicubeOptions& hc = o.solver.hemicube;
+  fmt::print("near      a patch wider than {} x its distance to the nearest receiver shoots from up to {} x {} points\n",
+             hc.near_field_ratio, hc.max_shooter_samples, hc.max_shooter_samples);
 }
 
 namespace {
@@ -107,6 +110,8 @@ nlohmann::json run_json(const Scene& scene, const ParallelOptions& o, const std:
           {"keep_links", o.keep_links},
           {"order", to_string(o.solver.order)},
           {"hemicube", o.solver.hemicube.resolution},
+          {"near_field", {{"max_samples_per_side", o.solver.hemicube.max_shooter_samples},
+                          {"ratio", o.solver.hemicube.near_field_ratio}}},
           {"shooters", o.solver.shooters},
           {"energy_threshold", o.solver.energy},
           {"loops", r.steps.size()},

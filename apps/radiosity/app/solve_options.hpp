@@ -20,6 +20,8 @@ struct SolveFlags {
   bool keep_links = false;
   int levels = 3;
   int cells = 8;
+  int near_field_samples = 2;   // HemicubeOptions::max_shooter_samples
+  double near_field_ratio = 1.0;
   int max_steps = 1000000;
   std::string order = "energy";
   double sort_until = 0.9;

@@ -1,0 +1,57 @@
+#include "apps/radiosity/near_field_accuracy.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "apps/radiosity/accuracy.hpp"
+#include "apps/radiosity/analytic_form_factors.hpp"
+#include "apps/radiosity/hard_case_scenes.hpp"
+
+namespace gcsim::radiosity {
+
+namespace {
+
+constexpr double kRho = 0.5;
+
+double now_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Converged to within 1e-6 of the limit: what is left is the form factors' error.
+SolverOptions converged(SolverOptions o) {
+  o.energy = 1 - 1e-6;
+  o.shooters = 1;
+  return o;
+}
+
+}  // namespace
+
+std::vector<NearFieldAccuracy> near_field_accuracy(const Scene& scene, const SolverOptions& options,
+                                                   const std::vector<double>& ratios,
+                                                   const machine::MachineConfig& machine) {
+  const Scene facing = facing_unit_squares(1.0, kRho);
+  const Scene furnace = closed_box(1.0, 4, 2, kRho, 1.0);
+  std::vector<NearFieldAccuracy> out;
+  for (std::size_t k = 0; k <= ratios.size(); ++k) {
+    const double t0 = now_seconds();
+    SolverOptions o = options;
+    if (k == 0) o.hemicube.max_shooter_samples = 1;
+    else o.hemicube.near_field_ratio = ratios[k - 1];
+    NearFieldAccuracy row{};
+    row.ratio = k == 0 ? 0.0 : ratios[k - 1];
+    row.max_samples_per_side = o.hemicube.max_shooter_samples;
+    row.facing_exact = kRho * parallel_rectangles_form_factor(1, 1, 1);
+    row.facing_b = solve_progressive(facing, converged(o)).state.element_radiosity()[1].r;
+    const auto box = solve_progressive(furnace, converged(o)).state.element_radiosity();
+    const auto [lo, hi] = std::minmax_element(box.begin(), box.end(), [](const Rgb& a, const Rgb& b) { return a.r < b.r; });
+    row.furnace_min = lo->r, row.furnace_max = hi->r;
+    OpCounts ops;
+    row.scene_steps = int(solve_progressive(scene, o, &ops).steps.size());
+    row.scene_simulated_seconds = simulated_seconds(ops, machine);
+    row.wall_seconds = now_seconds() - t0;
+    out.push_back(row);
+  }
+  return out;
+}
+
+}  // namespace gcsim::radiosity
