@@ -174,12 +174,25 @@ void read_connect_model(const Reader& r, const toml::table& net, MachineConfig& 
   }
 }
 
+// [comm_cpu]: send_us, recv_us, connect_us, copy_ns_per_byte, each optional (0).
+void read_comm_cpu(const Reader& r, const toml::table& root, MachineConfig& c) {
+  const toml::table& t = r.table(root, "comm_cpu", false);
+  r.only_keys(t, "[comm_cpu]", {"send_us", "recv_us", "connect_us", "copy_ns_per_byte"});
+  auto us = [&](std::string_view key) {
+    return from_seconds(r.number(t, key, "[comm_cpu]", 0.0, kMaxMicroseconds, 0.0) * 1e-6);
+  };
+  c.comm_cpu.send = us("send_us");
+  c.comm_cpu.recv = us("recv_us");
+  c.comm_cpu.connect = us("connect_us");
+  c.comm_cpu.seconds_per_byte = r.number(t, "copy_ns_per_byte", "[comm_cpu]", 0.0, 1e9, 0.0) * 1e-9;
+}
+
 }  // namespace
 
 MachineConfig parse_machine_config(std::string_view text, const std::string& source) {
   const toml::table root = parse_with_bases(text, source);
   Reader r(root, source);
-  r.only_keys(root, "the file", {"name", "topology", "node", "network", "ops", "calibration", "runtime"});
+  r.only_keys(root, "the file", {"name", "topology", "node", "network", "comm_cpu", "ops", "calibration", "runtime"});
 
   MachineConfig c;
   c.source = source;
@@ -238,6 +251,7 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
   read_connect_model(r, net, c);
   c.packet_bytes = static_cast<std::int64_t>(r.number(net, "packet_bytes", "[network]", 1, 1 << 30, 1024.0));
 
+  read_comm_cpu(r, root, c);
   read_calibration(r, root, c);
 
   const toml::table& runtime = r.table(root, "runtime", false);

@@ -57,6 +57,16 @@ struct MachineConfig {
   // The packet model cuts messages into packets of at most this many bytes.
   std::int64_t packet_bytes = 1024;
 
+  // CPU time a node's PowerPC spends on communication ([comm_cpu]): it occupies one of the node's
+  // CPUs, so it competes with compute. Zero in the published machine (the thesis gives none).
+  struct CommCpu {
+    SimTime send = 0;            // handing one message to the communication processors
+    SimTime recv = 0;            // taking one received message
+    SimTime connect = 0;         // opening one virtual link (each end)
+    double seconds_per_byte = 0; // copying a message's bytes (both ends)
+    bool any() const { return send > 0 || recv > 0 || connect > 0 || seconds_per_byte > 0; }
+  } comm_cpu;
+
   // Runtime (the host, not the simulated machine): bytes of stack per simulated process's fiber.
   std::int64_t fiber_stack_bytes = 64 << 10;
 

@@ -73,6 +73,7 @@ struct RequestState {
   std::int64_t link = -1;      // link handle
   int peer = -1;
   void* waiter = nullptr;      // backend-private: who to wake when done
+  bool cpu_charged = false;    // backend-private: the receive's CPU cost was paid
 };
 
 // Handle to an asynchronous send or receive.

@@ -70,15 +70,27 @@ void SimProcess::compute(std::span<const OpCount> ops) {
     else it->second += op.count;
   }
   if (duration == 0) return;
-  const machine::SimTime start = sim_.kernel.now();
-  Activity computation;
-  sim_.nodes[sim_.node_of[id_]].compute(duration, [&computation] { computation.complete(); });
-  if (!wait_for_activity(computation, "compute", -1)) return;
+  if (!occupy_cpu(duration, ops.size() == 1 ? ops[0].op : std::string_view("compute"))) return;
   s.compute += duration;
-  if (sim_.trace.enabled()) {
-    sim_.trace.record({TraceKind::compute, id_, -1, start, sim_.kernel.now(), 0, -1,
-                       ops.size() == 1 ? ops[0].op : std::string_view("compute"), thread_});
-  }
+}
+
+bool SimProcess::occupy_cpu(machine::SimTime duration, std::string_view label) {
+  const machine::SimTime start = sim_.kernel.now();
+  Activity work;
+  sim_.nodes[sim_.node_of[id_]].compute(duration, [&work] { work.complete(); });
+  if (!wait_for_activity(work, "compute", -1)) return false;
+  if (sim_.trace.enabled()) sim_.trace.record({TraceKind::compute, id_, -1, start, sim_.kernel.now(), 0, -1, label, thread_});
+  return true;
+}
+
+bool SimProcess::charge_comm_cpu(machine::SimTime fixed, std::int64_t bytes, std::string_view label) {
+  const machine::MachineConfig::CommCpu& cc = sim_.config.comm_cpu;
+  const machine::SimTime d = fixed + machine::from_seconds(cc.seconds_per_byte * static_cast<double>(bytes));
+  if (d == 0) return true;  // the published machine: no event at all, so timings stay as they were
+  const machine::SimTime start = sim_.kernel.now();
+  if (!occupy_cpu(d, label)) return false;
+  sim_.stats[id_].comm += sim_.kernel.now() - start;
+  return true;
 }
 
 void SimProcess::use_memory(std::int64_t bytes, std::string_view kind) {
@@ -128,6 +140,7 @@ Link SimProcess::connect(int peer, int tag) {
   } else if (!wait_for_activity(set_up, "connect", peer)) {
     return {};
   }
+  if (!charge_comm_cpu(sim_.config.comm_cpu.connect, 0, "connect_cpu")) return {};
   const machine::SimTime took = sim_.kernel.now() - start;
   sim_.stats[id_].comm += took;
   sim_.stats[id_].connect += took;
@@ -146,7 +159,14 @@ LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
 }
 
 Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool synchronous) {
-  LinkEnd& e = end_of(link, "send");
+  end_of(link, "send");  // checked before the CPU is spent on it
+  // The CPU hands the message to the communication processors before it travels (copying it).
+  if (!charge_comm_cpu(sim_.config.comm_cpu.send, static_cast<std::int64_t>(data.size()), "send_cpu")) {
+    auto abandoned = new_request(sim_.request_blocks);
+    abandoned->done = true;
+    return Request(std::move(abandoned));
+  }
+  LinkEnd& e = end_of(link, "send");  // again: links may have grown while the CPU was busy
   auto req = new_request(sim_.request_blocks);
   req->link = link.handle();
   req->peer = e.peer;
@@ -249,6 +269,13 @@ void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {
   if (sim_.trace.enabled() && end > start) {
     sim_.trace.record({kind, id_, r.peer, start, end, static_cast<std::int64_t>(r.data.size()), -1, call, thread_});
   }
+  charge_receive_cpu(r);
+}
+
+void SimProcess::charge_receive_cpu(RequestState& r) {
+  if (!r.is_receive || r.cpu_charged) return;
+  r.cpu_charged = true;
+  charge_comm_cpu(sim_.config.comm_cpu.recv, static_cast<std::int64_t>(r.data.size()), "recv_cpu");
 }
 
 void SimProcess::wait(Request& r) {
@@ -278,6 +305,7 @@ std::size_t SimProcess::wait_any(std::span<Request* const> rs) {
   if (sim_.trace.enabled() && end > start) {
     sim_.trace.record({TraceKind::wait, id_, rs[i]->state()->peer, start, end, 0, -1, "wait_any", thread_});
   }
+  charge_receive_cpu(*rs[i]->state());
   return i;
 }
 

@@ -15,6 +15,7 @@ const std::vector<std::string> kNodeKeys = {"clock_mhz", "memory_mb"};
 const std::vector<std::string> kNetworkKeys = {"link_bandwidth_mbps", "message_setup_us", "network_latency_us",
                                                "hop_latency_us",      "connect_base_us",  "connect_per_hop_us",
                                                "packet_bytes"};
+const std::vector<std::string> kCommCpuKeys = {"send_us", "recv_us", "connect_us", "copy_ns_per_byte"};
 
 std::pair<std::string, std::string> split_key(const std::string& key) {
   const auto dot = key.find('.');
@@ -44,6 +45,7 @@ std::vector<std::string> MachineFile::free_keys() const {
   std::vector<std::string> keys;
   for (const auto& k : kNodeKeys) keys.push_back("node." + k);
   for (const auto& k : kNetworkKeys) keys.push_back("network." + k);
+  for (const auto& k : kCommCpuKeys) keys.push_back("comm_cpu." + k);
   for (const auto& [op, cycles] : base_.cycles_per_op) keys.push_back("ops." + op);
   return keys;
 }
@@ -61,6 +63,12 @@ double MachineFile::value(const std::string& key) const {
   const auto [table, name] = split_key(key);
   const machine::MachineConfig& c = base_;
   if (table == "ops") return c.cycles_per_op.at(name);
+  if (table == "comm_cpu") {
+    if (name == "copy_ns_per_byte") return c.comm_cpu.seconds_per_byte * 1e9;
+    return machine::to_microseconds(name == "send_us" ? c.comm_cpu.send
+                                    : name == "recv_us" ? c.comm_cpu.recv
+                                                        : c.comm_cpu.connect);
+  }
   if (name == "clock_mhz") return c.clock_hz / 1e6;
   if (name == "memory_mb") return static_cast<double>(c.memory_bytes) / (1024.0 * 1024.0);
   if (name == "link_bandwidth_mbps") return c.link_bandwidth / 1e6;
