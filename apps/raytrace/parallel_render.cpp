@@ -68,6 +68,7 @@ struct NodeWork {
     p.compute(ops);
     out.per_node[p.id()] += c;
     ++out.tiles_per_node[p.id()];
+    if (out.on_tile) out.on_tile(++out.tiles_rendered, tiling.count());
     out.node_prims[p.id()].push_back({tile, std::move(prims)});  // check-only: not sent, merged after the run
     parix::Bytes b;
     const std::int32_t t = tile;
