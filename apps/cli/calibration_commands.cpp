@@ -284,12 +284,25 @@ void add_network_accuracy(CommandGroups& g) {
       csv << "model,table,median_error,max_error,within_15,cells,wall_s\n";
     }
     fmt::print("{:<9} {:<6} {:>6} {:>9} {:>9} {:>11} {:>9}\n", "model", "table", "cells", "median", "max", "within 15%", "wall_s");
+    pipeline::ProgressLine progress("accuracy network", 0);
     for (const auto& model : cal::split_list(f->models)) {
       PredictFlags pf = f->predict;
       pf.model = model;
       cal::Predictor predictor(settings(pf));
+      predictor.on_run([&](int done, int total) {
+        progress.update_fraction(total > 0 ? double(done) / total : 0.0, fmt::format("{}: {}/{} simulated runs", model, done, total));
+      });
       const auto wall_start = std::chrono::steady_clock::now();
-      const auto cells = cal::compare(tables, predictor.predict(tables, file.config()));
+      std::exception_ptr interruption;
+      const auto cells = cal::compare(tables, predictor.predict(tables, file.config(), &interruption));
+      progress.clear();
+      if (interruption) {  // the finished models' rows are kept; a model's partial tables would not compare
+        fmt::print("interrupted during the {} model\n", model);
+        j["interrupted"] = true;
+        j["interrupted_model"] = model;
+        if (!f->json.empty()) write_json_file(f->json, j);
+        std::rethrow_exception(interruption);
+      }
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
       for (const auto& s : cal::summarize(cells)) {
         fmt::print("{:<9} {:<6} {:>6} {:>8.1f}% {:>8.1f}% {:>7}/{:<3} {:>9.2f}\n", model, s.table, s.cells, 100 * s.median_error,
@@ -298,6 +311,8 @@ void add_network_accuracy(CommandGroups& g) {
                              {"max_error", s.max_error}, {"within_15", s.within_15}, {"wall_s", wall}});
         if (csv) csv << fmt::format("{},{},{:.6f},{:.6f},{},{},{:.4f}\n", model, s.table, s.median_error, s.max_error, s.within_15, s.cells, wall);
       }
+      if (csv) csv.flush();  // an interruption keeps the finished models' rows
+      std::fflush(stdout);
     }
     fmt::print("wall_s: host seconds to predict all the tables under that model (--jobs {})\n", f->predict.jobs);
     if (!f->json.empty()) write_json_file(f->json, j);
