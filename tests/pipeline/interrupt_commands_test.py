@@ -172,8 +172,9 @@ def render(gcsim, work):
     if not isinstance(events, list) or not events or os.path.getsize(base + ".paje") == 0:
         fail("the trace JSON is empty or the Paje file is")
     doc = load_json(result)
-    if not doc["simulated"]["total_s"] > 0:
-        fail(f"--json simulated {doc['simulated']}")
+    reached = doc.get("reached", {})
+    if not doc["simulated"]["total_s"] > 0 or not 0 <= reached.get("radiosity_shot_fraction", -1) < 1:
+        fail(f"--json simulated {doc['simulated']}, reached {reached}")
     print(f"render: stopped at simulated {doc['simulated']['total_s']:.6f} s; {len(events)} trace events, Paje written")
 
 

@@ -44,6 +44,12 @@ void RaytraceExperiment::after_run(pipeline::Outcome& out) const {
   job_.finish(o.render);
 }
 
+void RaytraceExperiment::report_interrupted(const pipeline::Outcome& out, nlohmann::json& reached) const {
+  const ParallelRender& r = pipeline::outcome_as<RaytraceOutcome>(out).render;
+  reached["tiles_rendered"] = r.tiles_rendered;  // rendered on a node; node 0 may not have received them all
+  reached["tiles"] = r.tiles_total;
+}
+
 std::vector<pipeline::MemoryNeed> RaytraceExperiment::node_memory(int, int* processor) const {
   *processor = 0;  // node 0 also assembles the image
   return {{"scene", job_.scene_bytes()}, {"image", job_.image_bytes()}, {"image tile", job_.tile_bytes()}};

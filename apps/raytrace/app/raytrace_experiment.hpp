@@ -29,6 +29,7 @@ class RaytraceExperiment : public pipeline::Experiment {
   std::unique_ptr<pipeline::Outcome> new_outcome(int nodes) const override;
   parix::Program program(pipeline::Outcome& out) const override;
   void after_run(pipeline::Outcome& out) const override;
+  void report_interrupted(const pipeline::Outcome& out, nlohmann::json& reached) const override;
   std::vector<pipeline::MemoryNeed> node_memory(int nodes, int* processor) const override;
   std::int64_t host_memory(int nodes) const override;
   void print_setup(int nodes) const override;

@@ -26,6 +26,8 @@ namespace {
 struct RenderOutcome : pipeline::Outcome {
   radiosity::ParallelOutcome radiosity;  // node 0's replica after the run
   std::unique_ptr<pipeline::ProgressLine> progress;
+  int loops_done = 0;          // the radiosity pass as processor 0 reported it: what an
+  double shot_fraction = 0.0;  // interrupted run reached
 };
 
 class RenderExperiment : public pipeline::Experiment {
@@ -41,19 +43,24 @@ class RenderExperiment : public pipeline::Experiment {
     if (!plan_.pass(PassId::radiosity).on) return [](parix::Processor&) {};
     RenderOutcome& o = pipeline::outcome_as<RenderOutcome>(out);
     radiosity::ParallelOutcome* result = &o.radiosity;
-    if (!progress_ || !pipeline::progress_wanted())
-      return [this, result](parix::Processor& p) { radiosity::radiosity_program(p, mesh_, options_, result); };
-    o.progress = std::make_unique<pipeline::ProgressLine>("render", 0);
+    if (progress_ && pipeline::progress_wanted()) o.progress = std::make_unique<pipeline::ProgressLine>("render", 0);
     radiosity::ParallelOptions shown = options_;
     // As `gcsim run radiosity`'s line: unshot energy falls about geometrically per loop.
-    shown.on_loop = [line = o.progress.get(), goal = std::log(1 - options_.solver.energy)](int loop, double shot) {
+    shown.on_loop = [&o, goal = std::log(1 - options_.solver.energy)](int loop, double shot) {
+      o.loops_done = loop, o.shot_fraction = shot;
+      if (!o.progress) return;
       const double fraction = goal < 0 ? std::clamp(std::log(std::max(1 - shot, 1e-300)) / goal, 0.0, 1.0) : 1.0;
-      line->update_fraction(fraction, fmt::format("radiosity pass: loop {}, {:.4f}% of the energy shot", loop, 100 * shot));
+      o.progress->update_fraction(fraction, fmt::format("radiosity pass: loop {}, {:.4f}% of the energy shot", loop, 100 * shot));
     };
     return [this, result, shown](parix::Processor& p) { radiosity::radiosity_program(p, mesh_, shown, result); };
   }
   void after_run(pipeline::Outcome& out) const override {
     pipeline::outcome_as<RenderOutcome>(out).progress.reset();  // erases the line before the report
+  }
+  void report_interrupted(const pipeline::Outcome& out, nlohmann::json& reached) const override {
+    const auto& o = pipeline::outcome_as<RenderOutcome>(out);
+    reached["radiosity_loops"] = o.loops_done;
+    reached["radiosity_shot_fraction"] = o.shot_fraction;
   }
   void print_setup(int nodes) const override {
     fmt::print("scene     {}: {} patches, {} elements\n", plan_.scene_name, plan_.facts.patches, plan_.facts.elements);
