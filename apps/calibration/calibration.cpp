@@ -68,7 +68,8 @@ std::vector<MeasuredTable> tables_from_specs(const std::string& specs) {
 }
 
 CalibrationResult calibrate(const MachineFile& file, const std::vector<MeasuredTable>& tables,
-                            const std::vector<std::string>& free, Predictor& predictor) {
+                            const std::vector<std::string>& free, Predictor& predictor,
+                            const std::function<void(const CalibrationTrial&)>& on_trial) {
   if (free.empty()) throw std::invalid_argument("--free: no parameters to fit");
   std::vector<double> initial;
   for (const auto& key : free) {
@@ -92,10 +93,14 @@ CalibrationResult calibrate(const MachineFile& file, const std::vector<MeasuredT
   for (const auto& t : tables)
     for (const auto& row : t.values)
       for (double v : row) cells += !std::isnan(v);
+  int trials = 0;
   auto residuals = [&](const std::vector<double>& x) {
-    const auto predicted = predictor.predict(tables, file.with(values_at(x)));
+    const auto values = values_at(x);
+    const auto predicted = predictor.predict(tables, file.with(values));
     std::vector<double> r;
-    for (const auto& c : compare(tables, predicted)) r.push_back(c.error());
+    double cost = 0;
+    for (const auto& c : compare(tables, predicted)) r.push_back(c.error()), cost += c.error() * c.error();
+    if (on_trial) on_trial({++trials, values, cost});
     return r;
   };
   CalibrationResult out;
@@ -115,13 +120,48 @@ CalibrationResult calibrate(const MachineFile& file, const std::vector<MeasuredT
   return out;
 }
 
+namespace {
+
+// `base = ...` of a file written at out_path: the built-in machine, or file's path relative to it.
+std::string base_of(const MachineFile& file, const std::string& out_path) {
+  if (file.source().front() == '<') return "builtin:gc-powerplus";
+  const auto dir = std::filesystem::absolute(out_path).parent_path();
+  return std::filesystem::relative(std::filesystem::absolute(file.source()), dir).generic_string();
+}
+
+// The keys grouped by table: [network] connect_base_us = ... (values in key order, tables once).
+std::string key_lines(const std::vector<std::pair<std::string, std::string>>& keys) {
+  std::string text, table;
+  for (const auto& [key, line] : keys) {
+    const auto dot = key.find('.');
+    const std::string t = key.substr(0, dot);
+    if (t != table) text += fmt::format("\n[{}]\n", table = t);
+    text += key.substr(dot + 1) + " = " + line + "\n";
+  }
+  return text;
+}
+
+}  // namespace
+
+std::string interrupted_file_text(const MachineFile& file, const std::string& out_path, const std::string& specs,
+                                  const CalibrationTrial* best, int trials, const std::string& command) {
+  std::string text = fmt::format("# {}: calibration INTERRUPTED after {} trials, not a converged fit.\n# Written by:\n#   {}\n",
+                                 file.config().name, trials, command);
+  text += best ? fmt::format("# The best trial so far (number {}, sum of squared relative errors {:.6g}) on table(s) {}.\n",
+                             best->number, best->cost, specs)
+               : "# No trial finished: this is the base machine unchanged.\n";
+  text += fmt::format("base = \"{}\"\nname = \"{} (calibration on {} interrupted)\"\n", base_of(file, out_path),
+                      file.config().name, specs);
+  if (!best) return text;
+  std::vector<std::pair<std::string, std::string>> keys;
+  for (const auto& [key, value] : best->values)
+    keys.emplace_back(key, fmt::format("{:.6g}    # best so far; was {:.6g}", value, file.value(key)));
+  return text + key_lines(keys);
+}
+
 std::string fitted_file_text(const MachineFile& file, const std::string& out_path, const std::string& specs,
                              const CalibrationResult& r, const std::string& command) {
-  std::string base = "builtin:gc-powerplus";
-  if (file.source().front() != '<') {
-    const auto dir = std::filesystem::absolute(out_path).parent_path();
-    base = std::filesystem::relative(std::filesystem::absolute(file.source()), dir).generic_string();
-  }
+  const std::string base = base_of(file, out_path);
   const auto s = summarize(r.cells);
   std::string text = fmt::format("# {}, calibrated.\n# Written by:\n#   {}\n", file.config().name, command);
   text += fmt::format("# Fitted by least squares (GSL Levenberg-Marquardt, {} iterations, {}) to {} measured figures:\n",

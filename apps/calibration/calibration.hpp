@@ -3,6 +3,8 @@
 // and write the fitted machine as a file that inherits the base and overrides only what was
 // fitted, saying in its header what was fitted to what. gcsim validate then predicts the tables
 // that played no part in the fit.
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -39,15 +41,29 @@ struct CalibrationResult {
   std::vector<std::string> warnings;  // keys that ended at the bound of their range
 };
 
+// One evaluation of the fit: the keys' values tried and the sum of squared relative errors there.
+struct CalibrationTrial {
+  int number = 0;  // 1, 2, ...
+  std::map<std::string, double> values;
+  double cost = 0;
+};
+
 // Fits `free` keys of the machine file to every measured cell of `tables`. Each key is fitted
 // as a positive factor of its value in the file (log scale), so that keys of different units
 // are equally scaled, bounded to 1/1000..1000 of that value; its value in the file must be positive.
 CalibrationResult calibrate(const MachineFile& file, const std::vector<MeasuredTable>& tables,
-                            const std::vector<std::string>& free, Predictor& predictor);
+                            const std::vector<std::string>& free, Predictor& predictor,
+                            const std::function<void(const CalibrationTrial&)>& on_trial = {});
 
 // The fitted machine file: `base = ...` and the fitted keys, with a header naming the command,
 // the tables and the fit's quality.
 std::string fitted_file_text(const MachineFile& file, const std::string& out_path, const std::string& specs,
                              const CalibrationResult& r, const std::string& command);
+
+// What an interrupted calibration leaves at --out: a machine file with the best trial's values so
+// far (best may be null: no trial finished), marked interrupted in its header and name, and
+// without a [calibration] section, since nothing was fitted.
+std::string interrupted_file_text(const MachineFile& file, const std::string& out_path, const std::string& specs,
+                                  const CalibrationTrial* best, int trials, const std::string& command);
 
 }  // namespace gcsim::calibration

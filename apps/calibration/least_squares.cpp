@@ -1,12 +1,15 @@
 #include "apps/calibration/least_squares.hpp"
 
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 #include <string>
 
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multifit_nlinear.h>
+
+#include "parix/interruption.hpp"
 
 namespace gcsim::calibration {
 namespace {
@@ -16,6 +19,7 @@ struct Problem {
   std::size_t m;
   int evaluations = 0;
   std::string failure;  // what the last failed evaluation said
+  std::exception_ptr interrupted;  // SIGINT/SIGTERM: not a failed point, the end of the fit
 };
 
 int gsl_residuals(const gsl_vector* x, void* data, gsl_vector* out) {
@@ -23,8 +27,12 @@ int gsl_residuals(const gsl_vector* x, void* data, gsl_vector* out) {
   std::vector<double> xs(x->size);
   for (std::size_t i = 0; i < xs.size(); ++i) xs[i] = gsl_vector_get(x, i);
   std::vector<double> r;
+  if (p->interrupted) return GSL_EDOM;  // GSL may try another point: refuse at once
   try {
     r = (*p->f)(xs);
+  } catch (const parix::Interrupted&) {
+    p->interrupted = std::current_exception();  // rethrown once GSL has returned (C frames in between)
+    return GSL_EDOM;
   } catch (const std::exception& e) {
     p->failure = e.what();  // e.g. a simulated clock overflow at an extreme trial point
     return GSL_EDOM;
@@ -44,7 +52,7 @@ LeastSquaresResult least_squares(const Residuals& f, std::vector<double> x0, std
                                  int max_iterations) {
   const std::size_t n = x0.size();
   if (n == 0 || m < n) throw std::invalid_argument("least squares: need at least as many measured figures as free parameters");
-  Problem problem{&f, m, 0, {}};
+  Problem problem{&f, m, 0, {}, {}};
   gsl_multifit_nlinear_fdf fdf{};
   fdf.f = gsl_residuals;
   fdf.df = nullptr;  // forward differences
@@ -60,6 +68,10 @@ LeastSquaresResult least_squares(const Residuals& f, std::vector<double> x0, std
   gsl_multifit_nlinear_init(&start.vector, &fdf, w);
   int info = 0;
   const int status = gsl_multifit_nlinear_driver(max_iterations, 1e-6, 1e-8, 1e-8, nullptr, nullptr, &info, w);
+  if (problem.interrupted) {
+    gsl_multifit_nlinear_free(w);
+    std::rethrow_exception(problem.interrupted);
+  }
 
   LeastSquaresResult out;
   out.iterations = static_cast<int>(gsl_multifit_nlinear_niter(w));

@@ -11,6 +11,7 @@
 #include "apps/cli/broadcast_experiment.hpp"
 #include "apps/radiosity/builtin_scenes.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
+#include "parix/interruption.hpp"
 #include "parix/simulated_runtime.hpp"
 
 namespace gcsim::calibration {
@@ -49,11 +50,24 @@ void parallel_for(int n, int jobs, F f) {
   for (auto& w : workers) w.get();  // rethrows the first failure
 }
 
+int measured_cells(const MeasuredTable& t) {
+  int n = 0;
+  for (const auto& row : t.values)
+    for (double v : row) n += !std::isnan(v);
+  return n;
+}
+
 }  // namespace
 
-Grid Predictor::predict_broadcast(const MeasuredTable& t, const machine::MachineConfig& c) {
+void Predictor::run_done() {
+  ++predict_done_;
+  if (on_run_) on_run_(predict_done_, predict_total_);
+}
+
+// Fills g (kNotMeasured to start) cell by cell: an interruption leaves the finished cells in it.
+void Predictor::predict_broadcast(const MeasuredTable& t, const machine::MachineConfig& c, Grid& g) {
   const parix::BcastAlgo algo = t.id == "4.7" ? parix::BcastAlgo::tree : parix::BcastAlgo::sequential;
-  Grid g(t.nodes.size(), std::vector<double>(t.columns.size(), kNotMeasured));
+  std::mutex lock;
   std::vector<std::pair<int, int>> cells;
   for (std::size_t r = 0; r < t.nodes.size(); ++r)
     for (std::size_t k = 0; k < t.columns.size(); ++k)
@@ -66,10 +80,11 @@ Grid Predictor::predict_broadcast(const MeasuredTable& t, const machine::Machine
     const parix::RunResult run = parix::run_simulated(simulation(c, t.nodes[r], settings_.model), [&](parix::Processor& p) {
       cli::all_node_broadcast(p, bytes, algo);
     });
+    std::lock_guard<std::mutex> guard(lock);
     g[r][k] = machine::to_milliseconds(run.makespan);
+    ++runs_;
+    run_done();
   });
-  runs_ += int(cells.size());
-  return g;
 }
 
 Predictor::RadiosityRun Predictor::one_node_from_counts(const std::string& scene, const machine::MachineConfig& c) {
@@ -87,6 +102,7 @@ void Predictor::run_radiosity(const std::vector<RunKey>& keys, const machine::Ma
     if (std::get<1>(k) == 1 && one_node_ops_.count(std::get<0>(k))) out[k] = one_node_from_counts(std::get<0>(k), c);
     else todo.push_back(k);
   }
+  predict_total_ += int(todo.size());
   // Each scene is loaded once per prediction, not once per run; runs only read it.
   std::map<std::string, radiosity::Scene> scenes;
   for (const RunKey& k : todo)
@@ -107,15 +123,21 @@ void Predictor::run_radiosity(const std::vector<RunKey>& keys, const machine::Ma
     std::lock_guard<std::mutex> g(lock);
     out[todo[i]] = {run.simulated_seconds(), run.mean_comm_seconds()};
     if (nodes == 1) one_node_ops_[scene_name] = run.total_ops();
+    ++runs_;
+    run_done();
   });
-  runs_ += int(todo.size());
 }
 
-std::vector<Grid> Predictor::predict(const std::vector<MeasuredTable>& tables, const machine::MachineConfig& c) {
+std::vector<Grid> Predictor::predict(const std::vector<MeasuredTable>& tables, const machine::MachineConfig& c,
+                                     std::exception_ptr* interruption) {
   // Gather every radiosity run the tables need, then simulate each once.
   std::vector<RunKey> keys;
+  predict_done_ = predict_total_ = 0;
   for (const MeasuredTable& t : tables) {
-    if (is_broadcast(t)) continue;
+    if (is_broadcast(t)) {
+      predict_total_ += measured_cells(t);
+      continue;
+    }
     const bool tree = t.id == "4.8";
     for (std::size_t r = 0; r < t.nodes.size(); ++r)
       for (std::size_t k = 0; k < t.columns.size(); ++k) {
@@ -126,26 +148,41 @@ std::vector<Grid> Predictor::predict(const std::vector<MeasuredTable>& tables, c
   }
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  // An interruption stops the runs; what finished is kept (the maps and grids are filled run by run).
+  std::exception_ptr stopped;
+  auto guarded = [&](auto&& step) {
+    if (stopped) return;
+    try {
+      step();
+    } catch (const parix::Interrupted&) {
+      if (!interruption) throw;
+      stopped = std::current_exception();
+    }
+  };
   std::map<RunKey, RadiosityRun> runs;
-  run_radiosity(keys, c, runs);
+  guarded([&] { run_radiosity(keys, c, runs); });
 
   std::vector<Grid> out;
   for (const MeasuredTable& t : tables) {
+    Grid g(t.nodes.size(), std::vector<double>(t.columns.size(), kNotMeasured));
     if (is_broadcast(t)) {
-      out.push_back(predict_broadcast(t, c));
+      guarded([&] { predict_broadcast(t, c, g); });
+      out.push_back(std::move(g));
       continue;
     }
-    Grid g(t.nodes.size(), std::vector<double>(t.columns.size(), kNotMeasured));
     for (std::size_t r = 0; r < t.nodes.size(); ++r)
       for (std::size_t k = 0; k < t.columns.size(); ++k) {
         if (std::isnan(t.values[r][k])) continue;
-        const RadiosityRun& run = runs.at({scene_of(t.columns[k]), t.nodes[r], t.id == "4.8"});
-        if (t.id == "4.3" || t.id == "4.8") g[r][k] = run.seconds;
-        else if (t.id == "4.5") g[r][k] = run.comm_seconds;
-        else g[r][k] = 100.0 * runs.at({scene_of(t.columns[k]), 1, false}).seconds / run.seconds;  // 4.4
+        const auto run = runs.find({scene_of(t.columns[k]), t.nodes[r], t.id == "4.8"});
+        const auto one = runs.find({scene_of(t.columns[k]), 1, false});
+        if (run == runs.end() || (t.id == "4.4" && one == runs.end())) continue;  // interrupted before it
+        if (t.id == "4.3" || t.id == "4.8") g[r][k] = run->second.seconds;
+        else if (t.id == "4.5") g[r][k] = run->second.comm_seconds;
+        else g[r][k] = 100.0 * one->second.seconds / run->second.seconds;  // 4.4
       }
     out.push_back(std::move(g));
   }
+  if (interruption) *interruption = stopped;
   return out;
 }
 

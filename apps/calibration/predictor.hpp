@@ -2,6 +2,8 @@
 // What the simulated machine predicts for the cells of a measured table: each table names its
 // experiment (4.6/4.7: the thesis's all-node broadcast; 4.3/4.4/4.5/4.8: radiosity of ROOM,
 // PICROOM and CORNELL to 99.9% of the energy), and each cell is one simulated run of it.
+#include <exception>
+#include <functional>
 #include <map>
 #include <string>
 #include <tuple>
@@ -29,7 +31,15 @@ class Predictor {
 
   // Predicts every measured cell of every table on machine c. Runs shared by several tables
   // (4.3, 4.4 and 4.5 use the same runs) are simulated once.
-  std::vector<Grid> predict(const std::vector<MeasuredTable>& tables, const machine::MachineConfig& c);
+  // With `interruption` given, a SIGINT/SIGTERM (parix::Interrupted) does not propagate: the grids
+  // hold the cells whose runs finished (kNotMeasured for the rest) and *interruption the exception,
+  // for the caller to rethrow once it has written them.
+  std::vector<Grid> predict(const std::vector<MeasuredTable>& tables, const machine::MachineConfig& c,
+                            std::exception_ptr* interruption = nullptr);
+
+  // Called after each simulated run of a predict() with the runs done and the runs it needs
+  // (from the host thread that ran it, one call at a time): a progress line.
+  void on_run(std::function<void(int done, int total)> f) { on_run_ = std::move(f); }
 
   // Simulated runs so far (each cell of a broadcast table, each distinct radiosity run).
   int runs() const { return runs_; }
@@ -43,13 +53,16 @@ class Predictor {
   void run_radiosity(const std::vector<RunKey>& keys, const machine::MachineConfig& c,
                      std::map<RunKey, RadiosityRun>& out);
   RadiosityRun one_node_from_counts(const std::string& scene, const machine::MachineConfig& c);
-  Grid predict_broadcast(const MeasuredTable& t, const machine::MachineConfig& c);
+  void predict_broadcast(const MeasuredTable& t, const machine::MachineConfig& c, Grid& g);
+  void run_done();
 
   PredictionSettings settings_;
   // One-node radiosity runs charge only counted operations, and the counts do not depend on the
   // machine: they are kept, and a new machine's time is recomputed from them.
   std::map<std::string, std::map<std::string, std::int64_t, std::less<>>> one_node_ops_;
   int runs_ = 0;
+  std::function<void(int, int)> on_run_;
+  int predict_done_ = 0, predict_total_ = 0;  // the current predict()'s runs, for on_run_
 };
 
 }  // namespace gcsim::calibration

@@ -1,8 +1,12 @@
 // gcsim calibrate and gcsim validate: fit a machine file to measured tables, then predict the
 // tables that played no part in the fit.
 #include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -11,7 +15,9 @@
 #include "apps/calibration/calibration.hpp"
 #include "apps/cli/commands.hpp"
 #include "apps/pipeline/failure.hpp"
+#include "apps/pipeline/progress.hpp"
 #include "machine/network_registry.hpp"
+#include "parix/interruption.hpp"
 
 namespace gcsim::cli {
 namespace {
@@ -46,6 +52,42 @@ cal::PredictionSettings settings(const PredictFlags& f) {
   s.energy = f.energy;
   s.jobs = f.jobs;
   return s;
+}
+
+// The fit's trials as they finish: the best so far (what an interruption leaves) and a progress
+// line on a terminal (the runs of the current trial, the best sum of squared errors).
+struct FitProgress {
+  pipeline::ProgressLine line{"calibrate", 0};
+  std::optional<cal::CalibrationTrial> best;
+  int trials = 0;
+  void trial(const cal::CalibrationTrial& t) {
+    trials = t.number;
+    if (!best || t.cost < best->cost) best = t;
+  }
+  void run(int done, int total) {
+    line.update_fraction(total > 0 ? double(done) / total : 0.0,
+                         best ? fmt::format("trial {}: run {}/{}; best so far {:.4g}", trials + 1, done, total, best->cost)
+                              : fmt::format("trial {}: run {}/{}", trials + 1, done, total));
+  }
+};
+
+// SIGINT/SIGTERM during the fit: --out gets the best trial's values, marked interrupted (not a
+// fit), --json the trials done and the best so far.
+void report_interrupted_fit(const cal::MachineFile& file, const std::string& specs, const std::string& out,
+                            const std::string& json, const FitProgress& p, const std::string& command) {
+  const cal::CalibrationTrial* best = p.best ? &*p.best : nullptr;
+  fmt::print("\ninterrupted after {} trials{}\n", p.trials,
+             best ? fmt::format("; the best so far (trial {}) has sum of squared errors {:.6g}", best->number, best->cost) : "");
+  std::ofstream(out) << cal::interrupted_file_text(file, out, specs, best, p.trials, command);
+  fmt::print("wrote {} (the best trial so far, not a fit)\n", out);
+  if (json.empty()) return;
+  nlohmann::json j{{"interrupted", true}, {"trials", p.trials}, {"converged", false}};
+  if (best) {
+    j["best"] = {{"trial", best->number}, {"cost", best->cost}};
+    for (const auto& [key, value] : best->values)
+      j["parameters"].push_back({{"key", key}, {"value", value}, {"initial", file.value(key)}});
+  }
+  write_json_file(json, j);
 }
 
 void add_calibrate(CommandGroups& g) {
@@ -89,8 +131,21 @@ void add_calibrate(CommandGroups& g) {
     for (const auto& k : free) file.check_free_key(k);
     write_json_file(f->out, nlohmann::json::object());  // fail now, not after the fit, if it cannot be written
     cal::Predictor predictor(settings(f->predict));
+    const std::string command = "gcsim calibrate --fit " + f->fit + " --free " + f->free +
+                                (f->config.empty() ? "" : " --config " + f->config) + " --out " + f->out;
     fmt::print("fitting {} to table(s) {} on {} ...\n", f->free, f->fit, file.source());
-    const cal::CalibrationResult r = cal::calibrate(file, tables, free, predictor);
+    std::fflush(stdout);
+    FitProgress progress;
+    predictor.on_run([&](int done, int total) { progress.run(done, total); });
+    cal::CalibrationResult r;
+    try {
+      r = cal::calibrate(file, tables, free, predictor, [&](const cal::CalibrationTrial& t) { progress.trial(t); });
+    } catch (const parix::Interrupted&) {
+      progress.line.clear();
+      report_interrupted_fit(file, f->fit, f->out, f->json, progress, command);
+      throw;
+    }
+    progress.line.clear();
     cal::print_cells(r.cells, tables);
     cal::print_summaries(cal::summarize(r.cells));
     fmt::print("\n{} after {} iterations ({} simulated runs){}\n", r.fit.converged ? "converged" : "NOT converged",
@@ -98,8 +153,6 @@ void add_calibrate(CommandGroups& g) {
     for (const auto& w : r.warnings) fmt::print(stderr, "gcsim: warning: {}\n", w);
     for (const auto& p : r.parameters)
       fmt::print("  {:<32} {:>12.6g} +- {:<10.2g} (was {:.6g})\n", p.key, p.value, p.sigma, p.initial);
-    std::string command = "gcsim calibrate --fit " + f->fit + " --free " + f->free +
-                          (f->config.empty() ? "" : " --config " + f->config) + " --out " + f->out;
     std::ofstream(f->out) << cal::fitted_file_text(file, f->out, f->fit, r, command);
     fmt::print("wrote {}\n", f->out);
     if (!f->csv.empty()) cal::write_csv(f->csv, r.cells);
@@ -164,13 +217,28 @@ void add_validate(CommandGroups& g) {
     std::string ids;
     for (const auto& t : tables) ids += (ids.empty() ? "" : ", ") + t.id;
     fmt::print("predicting table(s) {} with {} ...\n", ids, file.config().name);
-    auto cells = cal::compare(tables, predictor.predict(tables, file.config()));
+    std::fflush(stdout);
+    pipeline::ProgressLine progress("validate", 0);
+    predictor.on_run([&](int done, int total) {
+      progress.update_fraction(total > 0 ? double(done) / total : 0.0, fmt::format("{}/{} simulated runs", done, total));
+    });
+    std::exception_ptr interruption;
+    auto cells = cal::compare(tables, predictor.predict(tables, file.config(), &interruption));
+    progress.clear();
+    // An interruption leaves the cells whose runs finished; the others are not predicted.
+    std::erase_if(cells, [](const cal::CellComparison& c) { return std::isnan(c.predicted); });
     mark_fitted(cells, file.config());
     cal::print_cells(cells, tables);
     const auto summaries = cal::summarize(cells);
     cal::print_summaries(summaries);
+    if (interruption) fmt::print("\ninterrupted: {} cells predicted before it\n", cells.size());
     if (!f->csv.empty()) cal::write_csv(f->csv, cells);
-    if (!f->json.empty()) write_json_file(f->json, cal::to_json(cells, summaries));
+    if (!f->json.empty()) {
+      nlohmann::json j = cal::to_json(cells, summaries);
+      if (interruption) j["interrupted"] = true;
+      write_json_file(f->json, j);
+    }
+    if (interruption) std::rethrow_exception(interruption);
   });
 }
 
@@ -216,12 +284,25 @@ void add_network_accuracy(CommandGroups& g) {
       csv << "model,table,median_error,max_error,within_15,cells,wall_s\n";
     }
     fmt::print("{:<9} {:<6} {:>6} {:>9} {:>9} {:>11} {:>9}\n", "model", "table", "cells", "median", "max", "within 15%", "wall_s");
+    pipeline::ProgressLine progress("accuracy network", 0);
     for (const auto& model : cal::split_list(f->models)) {
       PredictFlags pf = f->predict;
       pf.model = model;
       cal::Predictor predictor(settings(pf));
+      predictor.on_run([&](int done, int total) {
+        progress.update_fraction(total > 0 ? double(done) / total : 0.0, fmt::format("{}: {}/{} simulated runs", model, done, total));
+      });
       const auto wall_start = std::chrono::steady_clock::now();
-      const auto cells = cal::compare(tables, predictor.predict(tables, file.config()));
+      std::exception_ptr interruption;
+      const auto cells = cal::compare(tables, predictor.predict(tables, file.config(), &interruption));
+      progress.clear();
+      if (interruption) {  // the finished models' rows are kept; a model's partial tables would not compare
+        fmt::print("interrupted during the {} model\n", model);
+        j["interrupted"] = true;
+        j["interrupted_model"] = model;
+        if (!f->json.empty()) write_json_file(f->json, j);
+        std::rethrow_exception(interruption);
+      }
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
       for (const auto& s : cal::summarize(cells)) {
         fmt::print("{:<9} {:<6} {:>6} {:>8.1f}% {:>8.1f}% {:>7}/{:<3} {:>9.2f}\n", model, s.table, s.cells, 100 * s.median_error,
@@ -230,6 +311,8 @@ void add_network_accuracy(CommandGroups& g) {
                              {"max_error", s.max_error}, {"within_15", s.within_15}, {"wall_s", wall}});
         if (csv) csv << fmt::format("{},{},{:.6f},{:.6f},{},{},{:.4f}\n", model, s.table, s.median_error, s.max_error, s.within_15, s.cells, wall);
       }
+      if (csv) csv.flush();  // an interruption keeps the finished models' rows
+      std::fflush(stdout);
     }
     fmt::print("wall_s: host seconds to predict all the tables under that model (--jobs {})\n", f->predict.jobs);
     if (!f->json.empty()) write_json_file(f->json, j);

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "parix/interruption.hpp"
+
 namespace gcsim::media {
 namespace {
 
@@ -35,9 +37,12 @@ Frame render_frame(const MediaScene& scene, const SceneCaches& caches, const Mar
   const auto start = std::chrono::steady_clock::now();
   Frame f;
   f.image = apps::Image(scene.camera.width, scene.camera.height);
-  for (int y = 0; y < scene.camera.height; y += stride)
+  for (int y = 0; y < scene.camera.height; y += stride) {
+    // Renders on the host, outside the simulated machine: SIGINT/SIGTERM is polled here, a row apart.
+    if (parix::interruption_requested()) throw parix::Interrupted(parix::RunResult{});
     for (int x = 0; x < scene.camera.width; x += stride)
       f.image.at(x, y) = glm::vec3(static_cast<float>(render_pixel(scene, caches, settings, seed, x, y, f.counters)));
+  }
   f.simulated_seconds = render_seconds(f.counters, scene.k_nearest, m);
   f.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return f;

@@ -2,16 +2,23 @@
 
 #include <fmt/format.h>
 
+#include "parix/interruption.hpp"
+
 namespace gcsim::pipeline {
 
-std::unique_ptr<Outcome> run_experiment(const Experiment& e, const parix::RunOptions& options) {
+std::unique_ptr<Outcome> run_experiment(const Experiment& e, const parix::RunOptions& options, nlohmann::json* reached) {
   const int nodes = options.simulation.nodes > 0 ? options.simulation.nodes : options.simulation.config.nodes;
   int fullest = 0;
   const std::vector<MemoryNeed> needs = e.node_memory(nodes, &fullest);
   check_node_memory(needs, fullest, options.simulation.config.memory_bytes, options.simulation.memory_limit);
   check_host_memory(e.host_memory(nodes), fmt::format("a run on {} nodes", nodes));
   std::unique_ptr<Outcome> out = e.new_outcome(nodes);
-  out->run = parix::run(options, e.program(*out));
+  try {
+    out->run = parix::run(options, e.program(*out));
+  } catch (const parix::Interrupted&) {
+    if (reached) e.report_interrupted(*out, *reached);
+    throw;
+  }
   e.after_run(*out);
   return out;
 }

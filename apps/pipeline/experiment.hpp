@@ -52,6 +52,9 @@ class Experiment {
   // Why a finished run did not do what was asked (e.g. a threshold not reached), or nothing: the
   // command then exits with kExitRunFailed after writing every output.
   virtual std::optional<std::string> goal_missed(const Outcome& out) const { return std::nullopt; }
+  // What an interrupted run had finished (e.g. tiles rendered, loops done), as JSON fields; the
+  // outcome holds only what the host saw so far.
+  virtual void report_interrupted(const Outcome& out, nlohmann::json& reached) const {}
 
   // gcsim sweep APP: lines printed before the table, and the table's columns (default: nodes,
   // simulated seconds, speedup, communication, wall seconds; see sweep.hpp).
@@ -60,7 +63,9 @@ class Experiment {
 };
 
 // Runs e once with the backend and simulation options of `options`.
-std::unique_ptr<Outcome> run_experiment(const Experiment& e, const parix::RunOptions& options);
+// With `reached` given, an interruption first fills it by e.report_interrupted, then propagates.
+std::unique_ptr<Outcome> run_experiment(const Experiment& e, const parix::RunOptions& options,
+                                        nlohmann::json* reached = nullptr);
 
 // The application's outcome type behind an Outcome the experiment made.
 template <class T>

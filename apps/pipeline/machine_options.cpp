@@ -100,14 +100,16 @@ void check_machine_outputs(const MachineOptions& o) {
   check_writable(o.trace, "--trace");  // its .csv and .paje go beside it, in the same directory
 }
 
-void report_interrupted_run(const parix::RunResult& partial, const MachineOptions& o) {
+void report_interrupted_run(const parix::RunResult& partial, const MachineOptions& o, const nlohmann::json& reached) {
   fmt::print("interrupted at simulated time {:.6f} s ({} events, wall {:.3f} s)\n", partial.simulated_seconds(),
              partial.events, partial.wall_seconds);
+  for (const auto& [key, value] : reached.items()) fmt::print("reached   {} {}\n", key, value.dump());
   if (!o.trace.empty()) fmt::print("trace     {} (closed at the interruption; .csv, .paje beside it)\n", o.trace);
   if (o.json.empty()) return;
   nlohmann::json j = partial.to_json();
   j["interrupted"] = true;
   j["finished"] = false;  // the program's results were not complete, so none are reported
+  if (!reached.empty()) j["reached"] = reached;
   if (!o.trace.empty()) {
     j["trace"] = o.trace;
     j["trace_level"] = o.trace_level;

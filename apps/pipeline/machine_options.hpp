@@ -36,7 +36,10 @@ void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohma
 void check_machine_outputs(const MachineOptions& o);
 // An interrupted run: the simulated time reached on stdout, and --json with "interrupted": true,
 // the figures so far and no application results.
-void report_interrupted_run(const parix::RunResult& partial, const MachineOptions& o);
+// `reached`: what the program had finished (Experiment::report_interrupted), printed and put in
+// --json as "reached".
+void report_interrupted_run(const parix::RunResult& partial, const MachineOptions& o,
+                            const nlohmann::json& reached = nlohmann::json::object());
 // parix::run with o's output paths checked first and an interruption reported as above (then
 // parix::Interrupted is rethrown, for the interrupted exit code).
 parix::RunResult run_program(const parix::RunOptions& options, const parix::Program& program, const MachineOptions& o);

@@ -24,10 +24,11 @@ void add_run_command(CLI::App& run, const AppSpec& app) {
     const parix::RunOptions options = run_options(*machine, default_nodes);
     e->print_setup(options.simulation.nodes);
     std::unique_ptr<Outcome> out;
+    nlohmann::json reached = nlohmann::json::object();
     try {
-      out = run_experiment(*e, options);
+      out = run_experiment(*e, options, &reached);
     } catch (const parix::Interrupted& x) {
-      report_interrupted_run(x.partial(), *machine);
+      report_interrupted_run(x.partial(), *machine, reached);
       throw;
     }
     nlohmann::json extra;

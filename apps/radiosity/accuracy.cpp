@@ -5,10 +5,12 @@
 
 #include "apps/radiosity/gauss_seidel.hpp"
 #include "apps/radiosity/hemicube.hpp"
+#include "parix/interruption.hpp"
 
 namespace gcsim::radiosity {
 
-double simulated_seconds(const OpCounts& ops, const machine::MachineConfig& m) {
+namespace {
+machine::SimTime simulated_time(const OpCounts& ops, const machine::MachineConfig& m) {
   const std::pair<const char*, std::int64_t> counts[] = {
       {"polygon_project", ops.polygon_project}, {"hemicube_pixel", ops.hemicube_pixel},
       {"hemicube_sample", ops.hemicube_sample}, {"hemicube_cull", ops.hemicube_cull},
@@ -17,10 +19,28 @@ double simulated_seconds(const OpCounts& ops, const machine::MachineConfig& m) {
   machine::SimTime t = 0;
   for (const auto& [op, n] : counts)
     if (n > 0) t += machine::op_time(m, op, n);
-  return machine::to_seconds(t);
+  return t;
+}
+}  // namespace
+
+double simulated_seconds(const OpCounts& ops, const machine::MachineConfig& m) {
+  return machine::to_seconds(simulated_time(ops, m));
+}
+
+void stop_if_interrupted(const OpCounts& ops, const machine::MachineConfig& m) {
+  if (!parix::interruption_requested()) return;
+  parix::RunResult reached;
+  reached.nodes = 1;
+  reached.makespan = simulated_time(ops, m);
+  throw parix::Interrupted(std::move(reached));
 }
 
 namespace {
+template <class Row>
+void hand_over(std::vector<Row>& rows, const Row& row, const std::function<void(const Row&)>& on_row) {
+  rows.push_back(row);
+  if (on_row) on_row(row);
+}
 double now_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
@@ -33,7 +53,8 @@ double row_sum(const std::vector<double>& row, const Scene& s, int patch) {
 }  // namespace
 
 std::vector<FormFactorAccuracy> form_factor_accuracy(const std::vector<int>& resolutions,
-                                                     const machine::MachineConfig& m) {
+                                                     const machine::MachineConfig& m,
+                                                     const std::function<void(const FormFactorAccuracy&)>& on_row) {
   std::vector<FormFactorAccuracy> out;
   for (FormFactorCase c : {FormFactorCase::parallel_squares, FormFactorCase::perpendicular_squares,
                            FormFactorCase::patch_to_disc})
@@ -59,19 +80,24 @@ std::vector<FormFactorAccuracy> form_factor_accuracy(const std::vector<int>& res
         FormFactorSetup grid = form_factor_setup(c, 1.0, n);
         HemicubeRenderer r(grid.scene, ho);
         double sum = 0;
-        for (int p = 0; p < n * n; ++p) sum += row_sum(r.form_factor_row(p, ops), grid.scene, grid.receiver_patch);
+        for (int p = 0; p < n * n; ++p) {
+          stop_if_interrupted(ops, m);
+          sum += row_sum(r.form_factor_row(p, ops), grid.scene, grid.receiver_patch);
+        }
         a.hemicube_area = sum / (n * n);
         a.exact_area = grid.exact_area;
       }
       a.wall_seconds = now_seconds() - t0;
       a.simulated_seconds = simulated_seconds(ops, m);
-      out.push_back(a);
+      hand_over(out, a, on_row);
+      stop_if_interrupted(ops, m);
     }
   return out;
 }
 
 std::vector<EnergyAccuracy> energy_accuracy(const Scene& scene, const SolverOptions& options,
-                                            const std::vector<double>& thresholds, const machine::MachineConfig& m) {
+                                            const std::vector<double>& thresholds, const machine::MachineConfig& m,
+                                            const std::function<void(const EnergyAccuracy&)>& on_row) {
   GaussSeidelResult ref = solve_gauss_seidel(scene, options.hemicube);
   double mean_ref = 0, total_area = 0;
   for (std::size_t e = 0; e < scene.elements.size(); ++e) {
@@ -92,20 +118,22 @@ std::vector<EnergyAccuracy> energy_accuracy(const Scene& scene, const SolverOpti
       sq += err * err * scene.elements[e].area;
       worst = std::max(worst, err);
     }
-    out.push_back({threshold, st.steps(), std::sqrt(sq / total_area), worst, simulated_seconds(ops, m),
-                   now_seconds() - t0});
+    hand_over(out, {threshold, st.steps(), std::sqrt(sq / total_area), worst, simulated_seconds(ops, m), now_seconds() - t0},
+              on_row);
   };
   SolverOptions o = options;
   o.energy = thresholds.empty() ? 0.999 : thresholds.back();
   solve_progressive(scene, o, &ops, [&](const StepRecord& rec, const ProgressiveState& st) {
     while (next < thresholds.size() && rec.shot_fraction >= thresholds[next]) measure(st, thresholds[next++]);
+    stop_if_interrupted(ops, m);
   });
   return out;
 }
 
 std::vector<HierarchicalAccuracy> hierarchical_accuracy(const Scene& scene, const SolverOptions& options,
                                                         const std::vector<int>& levels,
-                                                        const machine::MachineConfig& m) {
+                                                        const machine::MachineConfig& m,
+                                                        const std::function<void(const HierarchicalAccuracy&)>& on_row) {
   std::vector<HierarchicalAccuracy> out;
   std::vector<Rgb> reference;
   double mean_ref = 0, total_area = 0;
@@ -116,7 +144,7 @@ std::vector<HierarchicalAccuracy> hierarchical_accuracy(const Scene& scene, cons
     o.hemicube.hierarchical_levels = l;
     OpCounts ops;
     double t0 = now_seconds();
-    SolveResult r = solve_progressive(scene, o, &ops);
+    SolveResult r = solve_progressive(scene, o, &ops, [&](const StepRecord&, const ProgressiveState&) { stop_if_interrupted(ops, m); });
     double wall = now_seconds() - t0;
     const auto& b = r.state.element_radiosity();
     if (l == 0) {
@@ -134,7 +162,7 @@ std::vector<HierarchicalAccuracy> hierarchical_accuracy(const Scene& scene, cons
       sq += err * err * scene.elements[e].area;
       worst = std::max(worst, err);
     }
-    out.push_back({l, r.state.steps(), std::sqrt(sq / total_area), worst, simulated_seconds(ops, m), wall});
+    hand_over(out, {l, r.state.steps(), std::sqrt(sq / total_area), worst, simulated_seconds(ops, m), wall}, on_row);
   }
   return out;
 }

@@ -3,6 +3,11 @@
 // threshold of progressive refinement against a converged (Gauss-Seidel) reference. Each row carries
 // the simulated seconds the work would take on one node of the machine (from counted operations)
 // and the host's wall seconds.
+//
+// These loops run outside the simulated machine, so they poll parix::interruption_requested()
+// themselves (between hemicubes and solver steps) and throw parix::Interrupted; each finished row is
+// handed to `on_row` first, so a command can keep the rows done before an interruption.
+#include <functional>
 #include <vector>
 
 #include "apps/radiosity/analytic_form_factors.hpp"
@@ -22,7 +27,8 @@ struct FormFactorAccuracy {
 };
 
 std::vector<FormFactorAccuracy> form_factor_accuracy(const std::vector<int>& resolutions,
-                                                     const machine::MachineConfig& machine);
+                                                     const machine::MachineConfig& machine,
+                                                     const std::function<void(const FormFactorAccuracy&)>& on_row = {});
 
 struct EnergyAccuracy {
   double threshold;
@@ -35,7 +41,8 @@ struct EnergyAccuracy {
 // One progressive run, measured as it passes each threshold (ascending), against Gauss-Seidel.
 std::vector<EnergyAccuracy> energy_accuracy(const Scene& scene, const SolverOptions& options,
                                             const std::vector<double>& thresholds,
-                                            const machine::MachineConfig& machine);
+                                            const machine::MachineConfig& machine,
+                                            const std::function<void(const EnergyAccuracy&)>& on_row = {});
 
 struct HierarchicalAccuracy {
   int levels;                 // 0: the fixed hemicube (the reference)
@@ -49,9 +56,15 @@ struct HierarchicalAccuracy {
 // adaptive sampling saves and what it costs in accuracy, per number of levels.
 std::vector<HierarchicalAccuracy> hierarchical_accuracy(const Scene& scene, const SolverOptions& options,
                                                         const std::vector<int>& levels,
-                                                        const machine::MachineConfig& machine);
+                                                        const machine::MachineConfig& machine,
+                                                        const std::function<void(const HierarchicalAccuracy&)>& on_row = {});
 
 // Simulated seconds of counted work on one CPU of the machine.
 double simulated_seconds(const OpCounts& ops, const machine::MachineConfig& machine);
+
+// Throws parix::Interrupted once SIGINT/SIGTERM asked (parix/interruption.hpp), with the counted
+// work so far as the simulated time reached: the accuracy loops run outside the simulation, so
+// they poll this after every solver step.
+void stop_if_interrupted(const OpCounts& ops, const machine::MachineConfig& machine);
 
 }  // namespace gcsim::radiosity

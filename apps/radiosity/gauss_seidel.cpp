@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "parix/interruption.hpp"
+
 namespace gcsim::radiosity {
 
 GaussSeidelResult solve_gauss_seidel(const Scene& scene, const HemicubeOptions& hc, double tolerance,
@@ -17,7 +19,11 @@ GaussSeidelResult solve_gauss_seidel(const Scene& scene, const HemicubeOptions& 
   HemicubeRenderer renderer(scene, hc);
   OpCounts ops;
   std::vector<std::vector<double>> f(np);  // f[q][e] = F(q -> e)
-  for (std::size_t q = 0; q < np; ++q) f[q] = renderer.form_factor_row(int(q), ops);
+  for (std::size_t q = 0; q < np; ++q) {
+    // A plain loop outside the simulated machine: it polls SIGINT/SIGTERM itself (one hemicube apart).
+    if (parix::interruption_requested()) throw parix::Interrupted(parix::RunResult{});
+    f[q] = renderer.form_factor_row(int(q), ops);
+  }
   // K[p][q] = rho_p F_qp A_q / A_p (rho applied per channel below).
   std::vector<double> k(np * np, 0.0);
   for (std::size_t q = 0; q < np; ++q)

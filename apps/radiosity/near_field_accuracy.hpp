@@ -3,6 +3,7 @@
 // ratio (a shooter splits until each part is at most ratio x its distance to the nearest receiver,
 // up to max_shooter_samples per side), the error on the two closed-form hard cases and the time of
 // solving a real scene with it. The first row is the thesis's one point per shooter.
+#include <functional>
 #include <vector>
 
 #include "apps/radiosity/progressive_solver.hpp"
@@ -28,6 +29,7 @@ struct NearFieldAccuracy {
 // then one per ratio.
 std::vector<NearFieldAccuracy> near_field_accuracy(const Scene& scene, const SolverOptions& options,
                                                    const std::vector<double>& ratios,
-                                                   const machine::MachineConfig& machine);
+                                                   const machine::MachineConfig& machine,
+                                                   const std::function<void(const NearFieldAccuracy&)>& on_row = {});
 
 }  // namespace gcsim::radiosity

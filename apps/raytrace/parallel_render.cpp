@@ -68,6 +68,8 @@ struct NodeWork {
     p.compute(ops);
     out.per_node[p.id()] += c;
     ++out.tiles_per_node[p.id()];
+    ++out.tiles_rendered;
+    if (out.on_tile) out.on_tile(out.tiles_rendered, out.tiles_total);
     out.node_prims[p.id()].push_back({tile, std::move(prims)});  // check-only: not sent, merged after the run
     parix::Bytes b;
     const std::int32_t t = tile;
@@ -267,6 +269,7 @@ ParallelRender ParallelRenderJob::new_result(int nodes) const {
   out.per_node.assign(nodes, TraceCounters{});
   out.tiles_per_node.assign(nodes, 0);
   out.node_prims.assign(nodes, {});
+  out.tiles_total = Tiling{settings_.width, settings_.height, settings_.tile}.count();
   return out;
 }
 

@@ -10,6 +10,7 @@
 //                two requests outstanding so it does not idle during the round trip, and a
 //                worker thread on node 0's second CPU takes runs from the same pool
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -49,6 +50,11 @@ struct ParallelRender {
   std::vector<TraceCounters> per_node;
   std::vector<int> tiles_per_node;
   std::vector<std::vector<TilePrims>> node_prims;  // per node; emptied by finish()
+  // Host-side progress (a line on a terminal, what an interrupted run reached): the tiles any node
+  // of this host rendered so far, of the image's; on_tile is called after each. Nothing of it is
+  // simulated or sent.
+  std::function<void(int done, int total)> on_tile;
+  int tiles_rendered = 0, tiles_total = 0;
 };
 
 // The per-processor program of a parallel render, run by whichever backend the caller chooses.

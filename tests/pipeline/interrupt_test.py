@@ -123,6 +123,9 @@ def run(gcsim, work):
         doc = json.load(f)
     if doc.get("interrupted") is not True or not doc["simulated"]["total_s"] > 0:
         fail(f"--json: interrupted={doc.get('interrupted')}, simulated={doc.get('simulated')}")
+    reached = doc.get("reached", {})  # what the program finished: processor 0's loops
+    if not (reached.get("loops", -1) >= 0 and 0 <= reached.get("shot_fraction", -1) < 1):
+        fail(f"--json reached {reached}")
     print(f"run: stopped at simulated {doc['simulated']['total_s']:.6f} s; {len(events)} trace events, "
           f"{len(lines) - 1} CSV records, Paje written")
 

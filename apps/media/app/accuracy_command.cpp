@@ -15,6 +15,8 @@
 #include "apps/media/app/commands.hpp"
 #include "apps/pipeline/list_parsing.hpp"
 #include "apps/pipeline/machine_options.hpp"
+#include "apps/pipeline/progress.hpp"
+#include "parix/interruption.hpp"
 
 namespace gcsim::media::app {
 namespace {
@@ -168,6 +170,16 @@ nlohmann::json to_json(const SceneAccuracy& s) {
   return j;
 }
 
+// --csv and --json with the finished scenes; `extra` adds keys to the JSON (an interruption's).
+void write_results(const AccuracyFlags& f, const std::vector<SceneAccuracy>& all, nlohmann::json j) {
+  if (!f.csv.empty()) write_csv(f.csv, all), fmt::print("csv       {}\n", f.csv);
+  if (!f.json.empty()) {
+    j["scenes"] = nlohmann::json::array();
+    for (const SceneAccuracy& s : all) j["scenes"].push_back(to_json(s));
+    pipeline::write_json_file(f.json, j);
+  }
+}
+
 void run_accuracy(AccuracyFlags f) {
   if (f.quick) {
     f.o.width = 64, f.o.height = 48, f.o.photons = f.o.photons > 0 ? f.o.photons : 20000;
@@ -185,23 +197,33 @@ void run_accuracy(AccuracyFlags f) {
     f.o.estimators.push_back(*e);
   }
   std::vector<SceneAccuracy> all;
-  for (const auto& name : split_names(f.scenes)) {
-    const MediaScene scene = scene_by_name(name);
-    all.push_back(measure_accuracy(scene, f.o, m, [&name](const std::string& what) {
-      fmt::print(stderr, "accuracy media: {}: {}\n", name, what);
-    }));
-    print_scene(all.back(), f.o);
-    if (!f.images.empty())
-      write_images(f.images, all.back(), f.o.budgets.at(std::min(f.o.spread_budget, f.o.budgets.size() - 1)));
-    std::fflush(stdout);
+  const std::vector<std::string> names = split_names(f.scenes);
+  pipeline::ProgressLine progress("accuracy media", 0);  // a fraction: shown for one scene too
+  std::string at;  // what is being measured: an interrupted run says so
+  try {
+    for (const auto& name : names) {
+      const MediaScene scene = scene_by_name(name);
+      // measure_accuracy renders without the simulated machine: its progress calls are where an
+      // interruption (SIGINT/SIGTERM) is noticed, one render apart.
+      all.push_back(measure_accuracy(scene, f.o, m, [&](const std::string& what) {
+        at = name + ": " + what;
+        if (parix::interruption_requested()) throw parix::Interrupted(parix::RunResult{});
+        progress.update_fraction(double(all.size()) / double(names.size()), at);
+      }));
+      progress.clear();
+      print_scene(all.back(), f.o);
+      if (!f.images.empty())
+        write_images(f.images, all.back(), f.o.budgets.at(std::min(f.o.spread_budget, f.o.budgets.size() - 1)));
+      std::fflush(stdout);
+    }
+  } catch (const parix::Interrupted&) {
+    progress.clear();
+    fmt::print("\ninterrupted at {}; {} of {} scenes finished\n", at, all.size(), names.size());
+    write_results(f, all, nlohmann::json{{"interrupted", true}, {"interrupted_at", at}});
+    throw;
   }
   print_targets(all, f.o);
-  if (!f.csv.empty()) write_csv(f.csv, all), fmt::print("csv       {}\n", f.csv);
-  if (!f.json.empty()) {
-    nlohmann::json j;
-    for (const SceneAccuracy& s : all) j["scenes"].push_back(to_json(s));
-    pipeline::write_json_file(f.json, j);
-  }
+  write_results(f, all, nlohmann::json::object());
 }
 
 }  // namespace

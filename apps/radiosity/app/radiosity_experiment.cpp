@@ -57,17 +57,23 @@ std::unique_ptr<pipeline::Outcome> RadiosityExperiment::new_outcome(int) const {
 parix::Program RadiosityExperiment::program(pipeline::Outcome& out) const {
   RadiosityOutcome& o = pipeline::outcome_as<RadiosityOutcome>(out);
   ParallelOutcome* result = &o.result;
-  if (!outputs_.progress || !pipeline::progress_wanted())
-    return [this, result](parix::Processor& p) { radiosity_program(p, scene_, options_, result); };
-  o.progress = std::make_unique<pipeline::ProgressLine>("radiosity", 0);
+  if (outputs_.progress && pipeline::progress_wanted()) o.progress = std::make_unique<pipeline::ProgressLine>("radiosity", 0);
   ParallelOptions shown = options_;
   // Unshot energy falls about geometrically per loop, so the loops done are log(unshot) over
   // log(unshot at the threshold): a fraction that grows about linearly with the loops.
-  shown.on_loop = [line = o.progress.get(), goal = std::log(1 - options_.solver.energy)](int loop, double shot) {
+  shown.on_loop = [&o, goal = std::log(1 - options_.solver.energy)](int loop, double shot) {
+    o.loops_done = loop, o.shot_fraction = shot;
+    if (!o.progress) return;
     const double fraction = goal < 0 ? std::clamp(std::log(std::max(1 - shot, 1e-300)) / goal, 0.0, 1.0) : 1.0;
-    line->update_fraction(fraction, fmt::format("loop {}, {:.4f}% of the energy shot", loop, 100 * shot));
+    o.progress->update_fraction(fraction, fmt::format("loop {}, {:.4f}% of the energy shot", loop, 100 * shot));
   };
   return [this, result, shown](parix::Processor& p) { radiosity_program(p, scene_, shown, result); };
+}
+
+void RadiosityExperiment::report_interrupted(const pipeline::Outcome& out, nlohmann::json& reached) const {
+  const RadiosityOutcome& o = pipeline::outcome_as<RadiosityOutcome>(out);
+  reached["loops"] = o.loops_done;
+  reached["shot_fraction"] = o.shot_fraction;
 }
 
 void RadiosityExperiment::after_run(pipeline::Outcome& out) const {

@@ -25,6 +25,8 @@ struct RunOutputs {
 struct RadiosityOutcome : pipeline::Outcome {
   ParallelOutcome result;  // node 0's replica after the run
   std::unique_ptr<pipeline::ProgressLine> progress;  // while the run goes (RunOutputs::progress)
+  int loops_done = 0;          // as processor 0 reported them (ParallelOptions::on_loop): what an
+  double shot_fraction = 0.0;  // interrupted run reached
 };
 
 class RadiosityExperiment : public pipeline::Experiment {
@@ -34,6 +36,7 @@ class RadiosityExperiment : public pipeline::Experiment {
 
   std::unique_ptr<pipeline::Outcome> new_outcome(int nodes) const override;
   parix::Program program(pipeline::Outcome& out) const override;
+  void report_interrupted(const pipeline::Outcome& out, nlohmann::json& reached) const override;
   void after_run(pipeline::Outcome& out) const override;
   void print_setup(int nodes) const override;
   std::vector<pipeline::MemoryNeed> node_memory(int nodes, int* processor) const override;

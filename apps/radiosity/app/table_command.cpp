@@ -10,6 +10,7 @@
 #include "apps/radiosity/builtin_scenes.hpp"
 #include "apps/radiosity/progressive_solver.hpp"
 #include "apps/radiosity/thesis_tables.hpp"
+#include "parix/interruption.hpp"
 
 namespace gcsim::radiosity::app {
 
@@ -43,7 +44,10 @@ std::vector<int> loops_per_energy(const Scene& scene, const TableFlags& f) {
   o.hemicube.resolution = f.hemicube;
   o.shooters = f.shooters;
   o.energy = thesis::kEnergyPercent.back() / 100;
-  const auto r = solve_progressive(scene, o);
+  // A host-side solve: it polls SIGINT/SIGTERM itself, a loop apart (exit 130, table 4.1 printed).
+  const auto r = solve_progressive(scene, o, nullptr, [](const StepRecord&, const ProgressiveState&) {
+    if (parix::interruption_requested()) throw parix::Interrupted(parix::RunResult{});
+  });
   std::vector<int> loops;
   for (double pct : thesis::kEnergyPercent) {
     int l = -1;

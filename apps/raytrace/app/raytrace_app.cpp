@@ -19,6 +19,7 @@ pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) 
         ->check(CLI::IsMember({"static", "interleaved", "dynamic"}))
         ->capture_default_str();
     cmd.add_option("--image", f->image, "Write the image as PNG");
+    f->progress = true;
   } else {
     cmd.add_option("--distribute", f->distribute, "static, interleaved or dynamic (see run raytrace --help)")
         ->check(CLI::IsMember({"static", "interleaved", "dynamic"}))

@@ -27,11 +27,28 @@ std::unique_ptr<pipeline::Outcome> RaytraceExperiment::new_outcome(int nodes) co
 }
 
 parix::Program RaytraceExperiment::program(pipeline::Outcome& out) const {
-  ParallelRender* render = &pipeline::outcome_as<RaytraceOutcome>(out).render;
+  RaytraceOutcome& o = pipeline::outcome_as<RaytraceOutcome>(out);
+  ParallelRender* render = &o.render;
+  if (flags_.progress && pipeline::progress_wanted()) {
+    o.progress = std::make_unique<pipeline::ProgressLine>("raytrace", 0);
+    render->on_tile = [line = o.progress.get()](int done, int total) {
+      line->update_fraction(double(done) / total, fmt::format("{} of {} tiles rendered", done, total));
+    };
+  }
   return [this, render](parix::Processor& p) { job_.program(p, *render); };
 }
 
-void RaytraceExperiment::after_run(pipeline::Outcome& out) const { job_.finish(pipeline::outcome_as<RaytraceOutcome>(out).render); }
+void RaytraceExperiment::after_run(pipeline::Outcome& out) const {
+  RaytraceOutcome& o = pipeline::outcome_as<RaytraceOutcome>(out);
+  o.progress.reset();  // erases the line before the report
+  job_.finish(o.render);
+}
+
+void RaytraceExperiment::report_interrupted(const pipeline::Outcome& out, nlohmann::json& reached) const {
+  const ParallelRender& r = pipeline::outcome_as<RaytraceOutcome>(out).render;
+  reached["tiles_rendered"] = r.tiles_rendered;  // rendered on a node; node 0 may not have received them all
+  reached["tiles"] = r.tiles_total;
+}
 
 std::vector<pipeline::MemoryNeed> RaytraceExperiment::node_memory(int, int* processor) const {
   *processor = 0;  // node 0 also assembles the image

@@ -1,7 +1,10 @@
 #pragma once
 // One ray-tracing experiment: a scene, its tree and the render settings, run by the pipeline on any
 // number of nodes (the per-processor program is ParallelRenderJob's).
+#include <memory>
+
 #include "apps/pipeline/experiment.hpp"
+#include "apps/pipeline/progress.hpp"
 #include "apps/raytrace/app/render_options.hpp"
 #include "apps/raytrace/parallel_render.hpp"
 
@@ -11,10 +14,12 @@ struct RaytraceFlags {
   RenderOptions render;
   std::string distribute = "dynamic";
   std::string image;  // run only
+  bool progress = false;  // run only: tiles rendered as a line on a terminal (a sweep has its own)
 };
 
 struct RaytraceOutcome : pipeline::Outcome {
   ParallelRender render;  // its `run` is unused: the pipeline's is in Outcome::run
+  std::unique_ptr<pipeline::ProgressLine> progress;
 };
 
 class RaytraceExperiment : public pipeline::Experiment {
@@ -24,6 +29,7 @@ class RaytraceExperiment : public pipeline::Experiment {
   std::unique_ptr<pipeline::Outcome> new_outcome(int nodes) const override;
   parix::Program program(pipeline::Outcome& out) const override;
   void after_run(pipeline::Outcome& out) const override;
+  void report_interrupted(const pipeline::Outcome& out, nlohmann::json& reached) const override;
   std::vector<pipeline::MemoryNeed> node_memory(int nodes, int* processor) const override;
   std::int64_t host_memory(int nodes) const override;
   void print_setup(int nodes) const override;

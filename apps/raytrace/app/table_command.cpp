@@ -15,6 +15,7 @@
 #include "apps/raytrace/paper_figures.hpp"
 #include "apps/raytrace/render.hpp"
 #include "machine/machine_config.hpp"
+#include "parix/interruption.hpp"
 
 namespace gcsim::raytrace::app {
 
@@ -27,6 +28,8 @@ struct Measured {
 };
 
 Measured measure(const Scene& scene, const Bvh& bvh, Algorithm a, int tile, int size, const machine::MachineConfig& config) {
+  // Host-side renders: SIGINT/SIGTERM is polled here, one image apart (the CSV keeps the rows done).
+  if (parix::interruption_requested()) throw parix::Interrupted(parix::RunResult{});
   RenderSettings rs;
   rs.algorithm = a;
   rs.tile = tile;
