@@ -117,6 +117,7 @@ void Predictor::run_radiosity(const std::vector<RunKey>& keys, const machine::Ma
     o.solver.energy = settings_.energy;
     o.bcast = tree ? parix::BcastAlgo::tree : parix::BcastAlgo::sequential;
     radiosity::ParallelOutcome outcome;
+    o = radiosity::with_shared_projections(o);
     const parix::RunResult run = parix::run_simulated(simulation(c, nodes, settings_.model), [&](parix::Processor& p) {
       radiosity::radiosity_program(p, scene, o, &outcome);
     });

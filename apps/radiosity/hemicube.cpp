@@ -87,9 +87,28 @@ void HemicubeRenderer::project(int shooter, OpCounts& ops) {
   shooter_ = shooter;
   const int n = per_side_[shooter];
   grid_ = &grids_[std::countr_zero(unsigned(n))];
-  samples_ = shooter_samples(scene_.patches[shooter], n);
-  faces_.resize(samples_.size());
-  for (std::size_t k = 0; k < samples_.size(); ++k) project_from(samples_[k].point, faces_[k], ops);
+  // Reuse our buffers unless a cache still hands them to other replicas.
+  if (!own_ || own_.use_count() > 1) own_ = std::make_shared<HemicubeProjection>();
+  HemicubeProjection& pr = *own_;
+  current_.reset();
+  pr.shooter = shooter;
+  pr.samples_per_side = n;
+  pr.samples = shooter_samples(scene_.patches[shooter], n);
+  pr.faces.resize(pr.samples.size());
+  pr.cost = OpCounts{};
+  for (std::size_t k = 0; k < pr.samples.size(); ++k) project_from(pr.samples[k].point, pr.faces[k], pr.cost);
+  ops += pr.cost;
+  current_ = own_;
+}
+
+void HemicubeRenderer::use_projection(std::shared_ptr<const HemicubeProjection> projection, OpCounts& ops) {
+  if (!projection || projection->shooter < 0 || projection->shooter >= int(per_side_.size()) ||
+      projection->samples_per_side != per_side_[projection->shooter])
+    throw std::logic_error("HemicubeRenderer: a projection from a renderer of another scene or options");
+  shooter_ = projection->shooter;
+  grid_ = &grids_[std::countr_zero(unsigned(projection->samples_per_side))];
+  ops += projection->cost;
+  current_ = std::move(projection);
 }
 
 void HemicubeRenderer::project_from(const Vec3& origin, Faces& faces, OpCounts& ops) {
@@ -195,11 +214,12 @@ CellFormFactors HemicubeRenderer::cell_form_factors(int cell, OpCounts& ops) {
   out.cell = cell;
   touched_.clear();
   const HemicubeCell& c = grid_->cells.at(cell);
-  for (std::size_t k = 0; k < samples_.size(); ++k) {
+  const HemicubeProjection& pr = *current_;
+  for (std::size_t k = 0; k < pr.samples.size(); ++k) {
     if (options_.hierarchical_levels > 0)
-      hierarchical_cell(faces_[k], c, samples_[k].weight, ops);
+      hierarchical_cell(pr.faces[k], c, pr.samples[k].weight, ops);
     else
-      fixed_cell(faces_[k], c, samples_[k].weight, ops);
+      fixed_cell(pr.faces[k], c, pr.samples[k].weight, ops);
   }
   std::sort(touched_.begin(), touched_.end());
   for (int e : touched_) {

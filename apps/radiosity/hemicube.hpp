@@ -15,6 +15,7 @@
 // split into four, recursively, down to resolution R.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "apps/radiosity/delta_form_factors.hpp"
@@ -56,6 +57,31 @@ inline std::int64_t hemicube_host_bytes(const HemicubeOptions& o) {
   return std::int64_t(o.resolution) * o.resolution * 3 * 8 * 2 * 4 / 3;
 }
 
+// One element clipped and projected onto one hemicube face.
+struct ProjectedElement {
+  int element;
+  bool front;                 // the element faces the shooter (only then does it receive)
+  int count;
+  std::array<double, 2> p[12];// pixel coordinates
+  double edge_sign;
+  Vec3 plane_n;               // element plane in face coordinates: plane_n . q = plane_k
+  double plane_k;
+  int bx0, by0, bx1, by1;     // pixels whose centres may be inside, inclusive-exclusive
+  double fx0, fy0, fx1, fy1;  // bounding box in pixel units
+};
+using HemicubeFaces = std::array<std::vector<ProjectedElement>, kHemicubeFaces>;
+
+// Every element projected for one shooter: what project() computes and cell_form_factors()
+// reads. It depends on the shooter alone, so the replicas of one simulation may share it
+// (projection_cache.hpp) instead of each computing the same on the host.
+struct HemicubeProjection {
+  int shooter = -1;
+  int samples_per_side = 1;
+  std::vector<ShooterSample> samples;
+  std::vector<HemicubeFaces> faces;  // per sample
+  OpCounts cost;                     // what projecting counted (charged again by every user)
+};
+
 // Throws std::invalid_argument with the reason when `o` cannot make a hemicube (resolution,
 // partition, hierarchical levels, near-field settings), without allocating its pixel tables: a
 // command checks its options before the run, even at resolution 4096 (1 GB of tables).
@@ -72,6 +98,11 @@ class HemicubeRenderer {
 
   // Transforms, clips and projects every element for the hemicube on patch `shooter`.
   void project(int shooter, OpCounts& ops);
+  // Takes a projection another renderer of the same scene and options made, and counts its cost
+  // in `ops` as if this renderer had projected (the simulated time is the same).
+  void use_projection(std::shared_ptr<const HemicubeProjection> projection, OpCounts& ops);
+  // The current projection (after project or use_projection).
+  const std::shared_ptr<const HemicubeProjection>& projection() const { return current_; }
   // Z-buffers one cell of the current projection.
   CellFormFactors cell_form_factors(int cell, OpCounts& ops);
 
@@ -79,24 +110,14 @@ class HemicubeRenderer {
   std::vector<double> form_factor_row(int shooter, OpCounts& ops);
 
  private:
-  struct Projected {
-    int element;
-    bool front;                 // the element faces the shooter (only then does it receive)
-    int count;
-    std::array<double, 2> p[12];// pixel coordinates
-    double edge_sign;
-    Vec3 plane_n;               // element plane in face coordinates: plane_n . q = plane_k
-    double plane_k;
-    int bx0, by0, bx1, by1;     // pixels whose centres may be inside, inclusive-exclusive
-    double fx0, fy0, fx1, fy1;  // bounding box in pixel units
-  };
   // The pixels of one hemicube resolution: every samples-per-side n has its own (resolution / n).
   struct Grid {
     int resolution;
     DeltaFormFactors dff;
     std::vector<HemicubeCell> cells;  // in fine pixels
   };
-  using Faces = std::array<std::vector<Projected>, kHemicubeFaces>;
+  using Faces = HemicubeFaces;
+  using Projected = ProjectedElement;
   void project_from(const Vec3& origin, Faces& faces, OpCounts& ops);
   bool inside(const Projected& poly, double px, double py) const;
   double depth(int face, const Projected& poly, double px, double py) const;
@@ -114,8 +135,8 @@ class HemicubeRenderer {
   const Grid* grid_ = nullptr;  // the current shooter's
   int shooter_ = -1;
   double near_;
-  std::vector<ShooterSample> samples_;  // the current shooter's
-  std::vector<Faces> faces_;            // per sample
+  std::shared_ptr<HemicubeProjection> own_;              // reused unless someone still shares it
+  std::shared_ptr<const HemicubeProjection> current_;    // own_ or another renderer's
   // Scratch
   std::vector<double> acc_;
   std::vector<int> touched_;

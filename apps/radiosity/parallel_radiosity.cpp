@@ -85,6 +85,11 @@ std::int64_t replica_bytes(const Scene& scene) {
          std::int64_t(scene.vertices.size()) * 24;
 }
 
+ParallelOptions with_shared_projections(ParallelOptions o) {
+  o.shared_projections = o.share_projections ? std::make_shared<ProjectionCache>() : nullptr;
+  return o;
+}
+
 HemicubeOptions hemicube_of(const ParallelOptions& o) {
   HemicubeOptions hc = o.solver.hemicube;
   if (o.algorithm == ParallelAlgorithm::hemicube_hierarchical) hc.hierarchical_levels = o.hierarchical_levels;
@@ -162,7 +167,8 @@ void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOp
       int s = shooters[k];
       const bool patch_mode = o.algorithm == ParallelAlgorithm::patch;
       if (patch_mode && s % n != id) return;
-      renderer.project(s, ops);
+      if (o.shared_projections) o.shared_projections->project(renderer, state.steps(), s, ops);
+      else renderer.project(s, ops);
       for (int c = patch_mode ? 0 : id; c < cells; c += patch_mode ? 1 : n) {
         w.put<std::int32_t>(std::int32_t(k));
         put_cell(w, renderer.cell_form_factors(c, ops));

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "apps/radiosity/progressive_solver.hpp"
+#include "apps/radiosity/projection_cache.hpp"
 #include "parix/collectives.hpp"
 #include "parix/processor.hpp"
 
@@ -41,6 +42,11 @@ struct ParallelOptions {
   int hierarchical_levels = 3;  // for hemicube-hierarchical
   std::vector<int> snapshot_loops;  // processor 0 keeps the radiosities after these loops
   std::function<void(int loop, double shot_fraction)> on_loop;  // processor 0 calls it after every loop (progress)
+  // Computation sampling (projection_cache.hpp): the replicas of one simulated run share each
+  // shooter's projection on the host. Null: every replica projects for itself. Identical results
+  // and simulated times either way; give each run its own cache (with_shared_projections).
+  bool share_projections = true;  // what the user asked; a run's program makes the cache
+  std::shared_ptr<ProjectionCache> shared_projections;
 };
 
 // What processor 0 reports at the end of a run.
@@ -57,6 +63,9 @@ struct ParallelOutcome {
 std::int64_t replica_bytes(const Scene& scene);
 // The hemicube options a run of `options` renders with (the hierarchical algorithm's levels set).
 HemicubeOptions hemicube_of(const ParallelOptions& options);
+
+// `options` for one simulated run: a fresh projection cache if options.share_projections.
+ParallelOptions with_shared_projections(ParallelOptions options);
 
 // The SPMD program: run it on every processor; processor 0 fills *outcome.
 void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOptions& options,

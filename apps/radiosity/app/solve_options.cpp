@@ -72,6 +72,10 @@ void add_solve_options(CLI::App* cmd, SolveFlags& f) {
                   "the patch centre; fewer where resolution / n would fall below 16 pixels)")
       ->check(CLI::IsMember({1, 2, 4, 8, 16, 32}))
       ->capture_default_str();
+  cmd->add_flag("--each-node-projects", f.each_node_projects,
+                "Every simulated node projects the shooters on the host itself. By default the first node to "
+                "need a shooter's projection computes it and the others reuse it and charge its cost as their "
+                "own (computation sampling, as SMPI's): identical results and simulated times, less wall time");
   cmd->add_option("--order", f.order,
                   "How shooters are chosen: energy (the K largest unshot energies, 3.5.2), index (patch order "
                   "without sorting, 4.4.1: saves the proposal exchange but converges more slowly), "
@@ -92,6 +96,7 @@ ParallelOptions parallel_options(const SolveFlags& f) {
   o.solver.hemicube.cells_per_side = f.cells;
   o.solver.hemicube.max_shooter_samples = f.near_field_samples;
   o.solver.hemicube.near_field_ratio = f.near_field_ratio;
+  o.share_projections = !f.each_node_projects;
   o.solver.shooters = f.shooters;
   o.solver.energy = f.energy;
   o.solver.max_steps = f.max_steps;

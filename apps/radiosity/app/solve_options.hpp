@@ -22,6 +22,7 @@ struct SolveFlags {
   int cells = 8;
   int near_field_samples = 2;   // HemicubeOptions::max_shooter_samples
   double near_field_ratio = 1.0;
+  bool each_node_projects = false;  // ParallelOptions::share_projections off
   int max_steps = 1000000;
   std::string order = "energy";
   double sort_until = 0.9;

@@ -44,7 +44,7 @@ class RenderExperiment : public pipeline::Experiment {
     RenderOutcome& o = pipeline::outcome_as<RenderOutcome>(out);
     radiosity::ParallelOutcome* result = &o.radiosity;
     if (progress_ && pipeline::progress_wanted()) o.progress = std::make_unique<pipeline::ProgressLine>("render", 0);
-    radiosity::ParallelOptions shown = options_;
+    radiosity::ParallelOptions shown = radiosity::with_shared_projections(options_);
     // As `gcsim run radiosity`'s line: unshot energy falls about geometrically per loop.
     shown.on_loop = [&o, goal = std::log(1 - options_.solver.energy)](int loop, double shot) {
       o.loops_done = loop, o.shot_fraction = shot;

@@ -1,0 +1,93 @@
+// Computation sampling (projection_cache.hpp): replicas that share each shooter's projection on the
+// host give the same radiosities, the same simulated times and the same per-processor counters as
+// replicas that each project for themselves, for every parallel variant; and the host projects
+// each shooter once per loop instead of once per node.
+#include <gtest/gtest.h>
+
+#include "apps/radiosity/parallel_radiosity.hpp"
+#include "machine/machine_config.hpp"
+#include "parix/backend.hpp"
+#include "test_scenes.hpp"
+
+namespace gcsim::radiosity {
+namespace {
+
+struct Outcome {
+  ParallelOutcome outcome;
+  parix::RunResult result;
+};
+
+Outcome run(const Scene& scene, const ParallelOptions& o, int nodes) {
+  parix::SimulationOptions sim;
+  sim.config = machine::with_nodes(machine::default_machine_config(), nodes);
+  sim.nodes = nodes;
+  Outcome r;
+  r.result = parix::run({"simulated", sim}, [&](parix::Processor& p) { radiosity_program(p, scene, o, &r.outcome); });
+  return r;
+}
+
+void expect_same(const Outcome& a, const Outcome& b) {
+  ASSERT_EQ(a.outcome.element_radiosity.size(), b.outcome.element_radiosity.size());
+  for (std::size_t e = 0; e < a.outcome.element_radiosity.size(); ++e)
+    EXPECT_EQ(a.outcome.element_radiosity[e], b.outcome.element_radiosity[e]) << "element " << e;
+  EXPECT_EQ(a.outcome.steps.size(), b.outcome.steps.size());
+  EXPECT_EQ(a.result.makespan, b.result.makespan);
+  EXPECT_EQ(a.result.events, b.result.events);
+  ASSERT_EQ(a.result.processors.size(), b.result.processors.size());
+  for (std::size_t i = 0; i < a.result.processors.size(); ++i) {
+    const parix::ProcessorStats &x = a.result.processors[i], &y = b.result.processors[i];
+    EXPECT_EQ(x.finish, y.finish) << "processor " << i;
+    EXPECT_EQ(x.compute, y.compute) << "processor " << i;
+    EXPECT_EQ(x.comm, y.comm) << "processor " << i;
+    EXPECT_EQ(x.ops, y.ops) << "processor " << i;
+  }
+}
+
+TEST(ProjectionCache, SharedProjectionsChangeNothingButHostWork) {
+  const Scene scene = testing::lit_room();
+  struct Variant { ParallelAlgorithm algorithm; bool aggregate; int near_samples; };
+  for (const Variant v : {Variant{ParallelAlgorithm::hemicube_fixed, false, 2}, Variant{ParallelAlgorithm::hemicube_fixed, true, 1},
+                          Variant{ParallelAlgorithm::hemicube_hierarchical, false, 2}, Variant{ParallelAlgorithm::patch, false, 2}}) {
+    ParallelOptions o;
+    o.solver.hemicube.resolution = 64;
+    o.solver.hemicube.cells_per_side = 4;
+    o.solver.hemicube.max_shooter_samples = v.near_samples;
+    o.solver.energy = 0.95;
+    o.algorithm = v.algorithm;
+    o.aggregate = v.aggregate;
+    o.hierarchical_levels = 2;
+    for (int nodes : {1, 3, 8}) {
+      SCOPED_TRACE(::testing::Message() << to_string(v.algorithm) << (v.aggregate ? " aggregated" : "") << ", " << nodes
+                                      << " nodes");
+      o.share_projections = false;
+      const Outcome alone = run(scene, with_shared_projections(o), nodes);
+      o.share_projections = true;
+      const ParallelOptions shared = with_shared_projections(o);
+      ASSERT_NE(shared.shared_projections, nullptr);
+      const Outcome together = run(scene, shared, nodes);
+      expect_same(alone, together);
+      const ProjectionCache& cache = *shared.shared_projections;
+      // Once per shooter and loop; the other replicas (all but the owner in the patch partition) reuse it.
+      std::int64_t shots = 0;
+      for (const StepRecord& step : together.outcome.steps) shots += std::int64_t(step.shooters.size());
+      EXPECT_EQ(cache.computed(), shots);
+      if (v.algorithm != ParallelAlgorithm::patch) EXPECT_EQ(cache.shared(), shots * (nodes - 1));
+      else EXPECT_EQ(cache.shared(), 0);
+      EXPECT_LE(cache.entries(), std::size_t(o.solver.shooters));  // earlier loops were dropped
+    }
+  }
+}
+
+TEST(ProjectionCache, RefusesAProjectionOfAnotherScene) {
+  const Scene a = testing::lit_room(), b = testing::closed_box(1.0, 1, 1, 0.5, 1.0);
+  HemicubeOptions o;
+  o.resolution = 32;
+  o.cells_per_side = 4;
+  HemicubeRenderer ra(a, o), rb(b, o);
+  OpCounts ops;
+  ra.project(int(a.patches.size()) - 1, ops);
+  EXPECT_THROW(rb.use_projection(ra.projection(), ops), std::logic_error);
+}
+
+}  // namespace
+}  // namespace gcsim::radiosity
