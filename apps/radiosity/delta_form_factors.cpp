@@ -1,5 +1,7 @@
 #include "apps/radiosity/delta_form_factors.hpp"
 
+#include <map>
+#include <mutex>
 #include <numbers>
 #include <stdexcept>
 
@@ -63,6 +65,17 @@ std::vector<HemicubeCell> hemicube_cells(int r, int t) {
         cells.push_back({f, ci * r / t, cj * h / rows, (ci + 1) * r / t, (cj + 1) * h / rows});
   }
   return cells;
+}
+
+std::shared_ptr<const DeltaFormFactors> shared_delta_form_factors(int resolution) {
+  static std::mutex lock;
+  static std::map<int, std::weak_ptr<const DeltaFormFactors>> tables;
+  std::lock_guard<std::mutex> held(lock);
+  std::weak_ptr<const DeltaFormFactors>& slot = tables[resolution];
+  if (auto alive = slot.lock()) return alive;
+  auto made = std::make_shared<const DeltaFormFactors>(resolution);
+  slot = made;
+  return made;
 }
 
 }  // namespace gcsim::radiosity

@@ -4,6 +4,7 @@
 //
 // A hemicube of resolution R has a top face of R x R pixels and four side faces of R x R/2 pixels
 // (their upper halves). Face coordinates run over [-1, 1] across and, on the sides, [0, 1] upwards.
+#include <memory>
 #include <vector>
 
 namespace gcsim::radiosity {
@@ -32,6 +33,11 @@ class DeltaFormFactors {
   std::vector<double> dff_[kHemicubeFaces];
   std::vector<double> sat_[kHemicubeFaces];  // (w+1) x (h+1)
 };
+
+// The tables of one resolution, built once per host process and shared read-only by every
+// renderer that asks while another still holds them (all the replicas of a simulated run, the runs
+// of a sweep on several threads): they are constants of the method, not state of a node.
+std::shared_ptr<const DeltaFormFactors> shared_delta_form_factors(int resolution);
 
 // The hemicube split into cells: the top face into T x T, each side face into T x T/2 rectangles of
 // pixels (boundaries rounded down), numbered top face first, then the sides, row by row.

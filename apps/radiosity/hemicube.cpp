@@ -73,11 +73,11 @@ void check_hemicube_options(const HemicubeOptions& o) {
 HemicubeRenderer::HemicubeRenderer(const Scene& scene, const HemicubeOptions& o)
     : scene_(scene), options_(o), near_(1e-9 * scene.extent()) {
   check_hemicube_options(o);
-  grids_.push_back({o.resolution, DeltaFormFactors(o.resolution), make_cells(o, o.resolution)});
+  grids_.push_back({o.resolution, shared_delta_form_factors(o.resolution), make_cells(o, o.resolution)});
   for (int n = 2; n <= o.max_shooter_samples; n *= 2) {
     const int r = o.resolution / n;  // the pixel work of one hemicube, whatever n
     if (!usable_sample_resolution(o, r)) break;
-    grids_.push_back({r, DeltaFormFactors(r), make_cells(o, r)});
+    grids_.push_back({r, shared_delta_form_factors(r), make_cells(o, r)});
   }
   per_side_ = shooter_samples_per_side(scene, o.near_field_ratio, 1 << (grids_.size() - 1));
   acc_.assign(scene.elements.size(), 0.0);
@@ -175,7 +175,7 @@ void HemicubeRenderer::project_from(const Vec3& origin, Faces& faces, OpCounts& 
       x0 /= kSubpixel, x1 /= kSubpixel, y0 /= kSubpixel, y1 /= kSubpixel;
       p.fx0 = x0, p.fx1 = x1, p.fy0 = y0, p.fy1 = y1;
       // Pixels whose centres can be inside: centre i + 0.5 in [x0, x1].
-      int h = grid_->dff.height(face);
+      int h = grid_->dff->height(face);
       p.bx0 = std::max(0, int(std::ceil(x0 - 0.5)));
       p.bx1 = std::min(grid_->resolution, int(std::floor(x1 - 0.5)) + 1);
       p.by0 = std::max(0, int(std::ceil(y0 - 0.5)));
@@ -261,7 +261,7 @@ void HemicubeRenderer::fixed_cell(const Faces& faces, const HemicubeCell& c, dou
     for (int i = 0; i < w; ++i) {
       int e = item_[std::size_t(j) * w + i];
       if (e < 0) continue;
-      const double f = grid_->dff.at(c.face, c.i0 + i, c.j0 + j);
+      const double f = grid_->dff->at(c.face, c.i0 + i, c.j0 + j);
       add(e, weight == 1.0 ? f : weight * f);
     }
 }
@@ -307,7 +307,7 @@ void HemicubeRenderer::subdivide(const Faces& faces, int face, const std::vector
   }
   if (uniform) {
     if (centre >= 0) {
-      const double f = grid_->dff.rect_sum(face, i0, j0, i0 + size, j0 + size);
+      const double f = grid_->dff->rect_sum(face, i0, j0, i0 + size, j0 + size);
       add(centre, weight == 1.0 ? f : weight * f);
     }
     return;

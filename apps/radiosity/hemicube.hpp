@@ -113,7 +113,7 @@ class HemicubeRenderer {
   // The pixels of one hemicube resolution: every samples-per-side n has its own (resolution / n).
   struct Grid {
     int resolution;
-    DeltaFormFactors dff;
+    std::shared_ptr<const DeltaFormFactors> dff;  // shared_delta_form_factors
     std::vector<HemicubeCell> cells;  // in fine pixels
   };
   using Faces = HemicubeFaces;
