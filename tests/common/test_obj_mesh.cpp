@@ -68,5 +68,13 @@ TEST(ObjMesh, RejectsNonFiniteAndHugeCoordinatesWithTheirLine) {
   EXPECT_EQ(parse_obj_mesh(at_cap, "cap.obj").positions[0].x, double(1e15f));
 }
 
+TEST(ObjMesh, FaceTokensTinyobjloaderReadsDifferentlyAreRefused) {
+  // Found by fuzz_obj: the line checker stops a token at '#', tinyobjloader reads on to a huge index.
+  EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3#9 77775555554\n"),
+            "bad.obj: a face refers to vertex 466144226, but 3 vertices are defined");
+  EXPECT_EQ(error_of(std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\0 9\n", 35)),
+            "bad.obj:4: unexpected NUL byte at column 8");
+}
+
 }  // namespace
 }  // namespace gcsim::scene

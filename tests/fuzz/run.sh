@@ -16,7 +16,9 @@ for exe in build/fuzz/tests/fuzz/fuzz_*; do
   name=${exe##*/fuzz_}
   corpus=build/fuzz/corpus/$name findings=build/fuzz/findings/$name
   mkdir -p "$corpus" "$findings"
-  read -r -a seeds < "$exe.seeds"
+  read -r -a listed < "$exe.seeds"
+  seeds=()
+  for d in "${listed[@]}"; do [[ -d $d ]] && seeds+=("$d"); done  # libFuzzer stops on a missing one
   echo "== $name: ${seconds}s"
   if ! "$exe" "$corpus" "${seeds[@]}" -max_total_time="$seconds" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
        -artifact_prefix="$findings/" -print_final_stats=1 >"build/fuzz/$name.log" 2>&1; then

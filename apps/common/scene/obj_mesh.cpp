@@ -73,6 +73,10 @@ struct LineChecker {
 
   void check(const std::string& line) {
     ++number;
+    // tinyobjloader reads past a '#' or a NUL inside a line where this checker would stop: refuse
+    // the bytes rather than let the two readings differ.
+    if (const auto at = line.find('\0'); at != std::string::npos)
+      fail("unexpected NUL byte at column " + std::to_string(at + 1));
     const auto words = split(std::string_view(line).substr(0, line.find('#')));
     if (words.empty()) return;
     const std::string_view key = words[0];
@@ -84,8 +88,10 @@ struct LineChecker {
   }
 };
 
-// tinyobjloader's shapes as one mesh: every polygon split into a fan from its first vertex.
-TriangleMesh mesh_from(const tinyobj::ObjReader& reader) {
+// tinyobjloader's shapes as one mesh: every polygon split into a fan from its first vertex. Every
+// index is checked again here, whatever the line checker let through (fuzzing found a face token
+// that the two read differently, `1#2`).
+TriangleMesh mesh_from(const tinyobj::ObjReader& reader, const std::string& source) {
   TriangleMesh mesh;
   const auto& v = reader.GetAttrib().vertices;
   mesh.positions.reserve(v.size() / 3);
@@ -94,6 +100,11 @@ TriangleMesh mesh_from(const tinyobj::ObjReader& reader) {
     std::size_t at = 0;
     for (const unsigned char n : shape.mesh.num_face_vertices) {
       const auto& idx = shape.mesh.indices;
+      if (at + n > idx.size()) throw ObjError(source, 0, "a face lists more vertices than the file holds");
+      for (std::size_t k = 0; k < n; ++k)
+        if (idx[at + k].vertex_index < 0 || std::size_t(idx[at + k].vertex_index) >= mesh.positions.size())
+          throw ObjError(source, 0, "a face refers to vertex " + std::to_string(idx[at + k].vertex_index + 1) + ", but " +
+                                        std::to_string(mesh.positions.size()) + " vertices are defined");
       for (std::size_t k = 1; k + 1 < n; ++k)
         mesh.triangles.push_back({idx[at].vertex_index, idx[at + k].vertex_index, idx[at + k + 1].vertex_index});
       at += n;
@@ -118,7 +129,7 @@ TriangleMesh parse_obj_mesh(std::istream& in, const std::string& source) {
   tinyobj::ObjReader reader;
   if (!reader.ParseFromString(text.str(), "", config))
     throw ObjError(source, 0, "tinyobjloader rejected the file: " + reader.Error());
-  TriangleMesh mesh = mesh_from(reader);
+  TriangleMesh mesh = mesh_from(reader, source);
   if (mesh.triangles.empty()) throw ObjError(source, checker.number, "no faces found (expected at least one 'f' line)");
   return mesh;
 }
