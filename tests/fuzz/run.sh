@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Runs every fuzz target for SECONDS each (default 60), one after the other, with ASan and UBSan.
+# Runs every fuzz target (or the named ones) for SECONDS each (default 60), one after the other,
+# with ASan and UBSan.
 #   tests/fuzz/run.sh 600
+#   tests/fuzz/run.sh 600 obj world      # two lanes on two cores: run two of these side by side
 # Builds the `fuzz` preset first. Each target's growing corpus lives in build/fuzz/corpus/NAME
 # (seeded from the shipped files and tests/fuzz/seeds/NAME); a crash leaves crash-* in
 # build/fuzz/findings/NAME: copy it into tests/fuzz/regressions/NAME once fixed, and CTest
@@ -8,12 +10,15 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-60}
+shift || true
+only=" $* "
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz
 status=0
 for exe in build/fuzz/tests/fuzz/fuzz_*; do
   [[ -x $exe && ! $exe == *.seeds ]] || continue
   name=${exe##*/fuzz_}
+  [[ $only == "  " || $only == *" $name "* ]] || continue
   corpus=build/fuzz/corpus/$name findings=build/fuzz/findings/$name
   mkdir -p "$corpus" "$findings"
   read -r -a listed < "$exe.seeds"
