@@ -1,5 +1,6 @@
 // gcsim table radiosity: the thesis's tables 4.1 (scene counts) and 4.2 (loops per energy fraction)
 // next to the published figures.
+#include <exception>
 #include <fstream>
 #include <memory>
 #include <stdexcept>
@@ -61,13 +62,20 @@ std::vector<int> loops_per_energy(const Scene& scene, const TableFlags& f) {
   return loops;
 }
 
-void print_table_4_2(const std::vector<Scene>& scenes, const TableFlags& f) {
+void print_table_4_2(const std::vector<Scene>& all_scenes, const TableFlags& f) {
   fmt::print("\ntable 4.2: loops ({} shooters each) to shoot a fraction of the energy (this / thesis)\n", f.shooters);
+  // Interrupted (SIGINT/SIGTERM), the scenes already solved are still printed and written.
+  std::vector<std::vector<int>> loops;
+  std::exception_ptr interrupted;
+  try {
+    for (const Scene& s : all_scenes) loops.push_back(loops_per_energy(s, f));
+  } catch (const parix::Interrupted&) {
+    interrupted = std::current_exception();
+  }
+  const std::vector<Scene> scenes(all_scenes.begin(), all_scenes.begin() + std::ptrdiff_t(loops.size()));
   fmt::print("{:>8}", "energy%");
   for (const auto& s : scenes) fmt::print(" {:>13}", s.name);
   fmt::print("\n");
-  std::vector<std::vector<int>> loops;
-  for (const Scene& s : scenes) loops.push_back(loops_per_energy(s, f));
   std::ofstream csv;
   if (!f.csv.empty()) {
     csv.open(f.csv);
@@ -90,6 +98,10 @@ void print_table_4_2(const std::vector<Scene>& scenes, const TableFlags& f) {
     if (csv) csv << '\n';
   }
   if (!f.csv.empty()) fmt::print("csv {}\n", f.csv);
+  if (interrupted) {
+    fmt::print("interrupted: {} of {} scenes solved\n", scenes.size(), all_scenes.size());
+    std::rethrow_exception(interrupted);
+  }
 }
 
 }  // namespace
