@@ -55,11 +55,21 @@ TraceCsv read_trace_csv(const std::string& path) {
   std::string line;
   if (!std::getline(in, line)) throw bad_line(path, 1, "empty file; expected a gcsim trace CSV");
   char level[32] = {0};
-  if (std::sscanf(line.c_str(), "# gcsim trace; level %31[a-z]; %d processors; mesh %dx%d", level, &t.processors,
-                  &t.mesh_width, &t.mesh_height) != 4) {
+  long long processors = 0, width = 0, height = 0;  // read wide, then bounded: %d overflow is undefined
+  if (std::sscanf(line.c_str(), "# gcsim trace; level %31[a-z]; %lld processors; mesh %lldx%lld", level, &processors,
+                  &width, &height) != 4) {
     throw bad_line(path, 1,
                    "not a gcsim trace CSV: expected the header '# gcsim trace; level L; N processors; mesh WxH; ...'");
   }
+  // The largest machine gcsim simulates has 2^20 processors on a mesh of at most 2^24 nodes; a
+  // header beyond that is damage, and would have the Paje writer declare billions of containers.
+  constexpr long long kMaxProcessors = 1 << 20, kMaxMeshNodes = 1 << 24;
+  if (processors < 1 || processors > kMaxProcessors)
+    throw bad_line(path, 1, fmt::format("{} processors in the header; expected 1..{}", processors, kMaxProcessors));
+  if (width < 1 || height < 1 || width > kMaxMeshNodes || height > kMaxMeshNodes || width * height > kMaxMeshNodes)
+    throw bad_line(path, 1, fmt::format("mesh {}x{} in the header; expected W x H of at most {} nodes", width, height,
+                                        kMaxMeshNodes));
+  t.processors = int(processors), t.mesh_width = int(width), t.mesh_height = int(height);
   t.level = level;
   if (!std::getline(in, line) || (line != kColumns && line != kColumnsWithoutThread)) {
     throw bad_line(path, 2, fmt::format("expected the column line '{}'", kColumns));

@@ -442,6 +442,12 @@ TEST(TraceCsv, BadFilesAreNamedWithWhatWasExpected) {
   EXPECT_NE(message_for("hello\n").find("bad.csv:1: not a gcsim trace CSV"), std::string::npos);
   const std::string header = "# gcsim trace; level full; 2 processors; mesh 2x1; times in picoseconds\n";
   EXPECT_NE(message_for(header + "a,b\n").find("bad.csv:2: expected the column line"), std::string::npos);
+  // Found by fuzz_trace_csv: a header of 1e17 processors had the Paje writer loop for ever.
+  EXPECT_NE(message_for("# gcsim trace; level full; 100000000000000006 processors; mesh 4x4; t\n")
+                .find("bad.csv:1: 100000000000000006 processors in the header; expected 1..1048576"),
+            std::string::npos);
+  EXPECT_NE(message_for("# gcsim trace; level full; 4 processors; mesh 99999999x2; t\n").find("bad.csv:1: mesh 99999999x2"),
+            std::string::npos);
   const std::string columns = "kind,proc,peer,start_ps,end_ps,bytes,id,label,thread\n";
   EXPECT_NE(message_for(header + columns + "teleport,0,1,0,1,0,-1,x,0\n").find("bad.csv:3: unknown record kind"),
             std::string::npos);
