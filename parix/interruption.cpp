@@ -13,4 +13,8 @@ void request_interruption() noexcept { requested.store(true, std::memory_order_r
 bool interruption_requested() noexcept { return requested.load(std::memory_order_relaxed); }
 void clear_interruption() noexcept { requested.store(false, std::memory_order_relaxed); }
 
+void throw_if_interrupted() {
+  if (interruption_requested()) throw Interrupted(RunResult{});
+}
+
 }  // namespace gcsim::parix

@@ -17,6 +17,11 @@ void clear_interruption() noexcept;
 
 // Thrown by a run that stopped because interruption_requested(); `partial` holds the simulated
 // time reached (makespan = the kernel's clock), the events and the per-processor counters so far.
+class Interrupted;
+// For loops that run outside a simulation (accuracy tables, host-side solves): throws Interrupted
+// with nothing simulated reached once an interruption was requested.
+void throw_if_interrupted();
+
 class Interrupted : public std::runtime_error {
  public:
   explicit Interrupted(RunResult partial)

@@ -85,8 +85,9 @@ bool SimProcess::occupy_cpu(machine::SimTime duration, std::string_view label) {
 
 bool SimProcess::charge_comm_cpu(machine::SimTime fixed, std::int64_t bytes, std::string_view label) {
   const machine::MachineConfig::CommCpu& cc = sim_.config.comm_cpu;
+  if (!cc.any()) return true;  // the published machine: no arithmetic, no event
   const machine::SimTime d = fixed + machine::from_seconds(cc.seconds_per_byte * static_cast<double>(bytes));
-  if (d == 0) return true;  // the published machine: no event at all, so timings stay as they were
+  if (d == 0) return true;  // no event at all, so timings stay as they were
   const machine::SimTime start = sim_.kernel.now();
   if (!occupy_cpu(d, label)) return false;
   sim_.stats[id_].comm += sim_.kernel.now() - start;
@@ -159,14 +160,16 @@ LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
 }
 
 Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool synchronous) {
-  end_of(link, "send");  // checked before the CPU is spent on it
-  // The CPU hands the message to the communication processors before it travels (copying it).
-  if (!charge_comm_cpu(sim_.config.comm_cpu.send, static_cast<std::int64_t>(data.size()), "send_cpu")) {
-    auto abandoned = new_request(sim_.request_blocks);
-    abandoned->done = true;
-    return Request(std::move(abandoned));
+  if (sim_.config.comm_cpu.any()) {
+    end_of(link, "send");  // checked before the CPU is spent on it
+    // The CPU hands the message to the communication processors before it travels (copying it).
+    if (!charge_comm_cpu(sim_.config.comm_cpu.send, static_cast<std::int64_t>(data.size()), "send_cpu")) {
+      auto abandoned = new_request(sim_.request_blocks);
+      abandoned->done = true;
+      return Request(std::move(abandoned));
+    }
   }
-  LinkEnd& e = end_of(link, "send");  // again: links may have grown while the CPU was busy
+  LinkEnd& e = end_of(link, "send");  // after the CPU time: links may have grown meanwhile
   auto req = new_request(sim_.request_blocks);
   req->link = link.handle();
   req->peer = e.peer;

@@ -39,7 +39,7 @@ Frame render_frame(const MediaScene& scene, const SceneCaches& caches, const Mar
   f.image = apps::Image(scene.camera.width, scene.camera.height);
   for (int y = 0; y < scene.camera.height; y += stride) {
     // Renders on the host, outside the simulated machine: SIGINT/SIGTERM is polled here, a row apart.
-    if (parix::interruption_requested()) throw parix::Interrupted(parix::RunResult{});
+    parix::throw_if_interrupted();
     for (int x = 0; x < scene.camera.width; x += stride)
       f.image.at(x, y) = glm::vec3(static_cast<float>(render_pixel(scene, caches, settings, seed, x, y, f.counters)));
   }

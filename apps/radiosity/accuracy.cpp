@@ -27,6 +27,10 @@ double simulated_seconds(const OpCounts& ops, const machine::MachineConfig& m) {
   return machine::to_seconds(simulated_time(ops, m));
 }
 
+double now_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
 void stop_if_interrupted(const OpCounts& ops, const machine::MachineConfig& m) {
   if (!parix::interruption_requested()) return;
   parix::RunResult reached;
@@ -40,9 +44,6 @@ template <class Row>
 void hand_over(std::vector<Row>& rows, const Row& row, const std::function<void(const Row&)>& on_row) {
   rows.push_back(row);
   if (on_row) on_row(row);
-}
-double now_seconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 double row_sum(const std::vector<double>& row, const Scene& s, int patch) {
   double f = 0;

@@ -62,6 +62,9 @@ std::vector<HierarchicalAccuracy> hierarchical_accuracy(const Scene& scene, cons
 // Simulated seconds of counted work on one CPU of the machine.
 double simulated_seconds(const OpCounts& ops, const machine::MachineConfig& machine);
 
+// The host's steady clock in seconds, for the tables' wall-time columns.
+double now_seconds();
+
 // Throws parix::Interrupted once SIGINT/SIGTERM asked (parix/interruption.hpp), with the counted
 // work so far as the simulated time reached: the accuracy loops run outside the simulation, so
 // they poll this after every solver step.

@@ -1,7 +1,6 @@
 #include "apps/radiosity/near_field_accuracy.hpp"
 
 #include <algorithm>
-#include <chrono>
 
 #include "apps/radiosity/accuracy.hpp"
 #include "apps/radiosity/analytic_form_factors.hpp"
@@ -12,10 +11,6 @@ namespace gcsim::radiosity {
 namespace {
 
 constexpr double kRho = 0.5;
-
-double now_seconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 // Converged to within 1e-6 of the limit: what is left is the form factors' error.
 SolverOptions converged(SolverOptions o) {

@@ -207,7 +207,7 @@ void run_accuracy(AccuracyFlags f) {
       // interruption (SIGINT/SIGTERM) is noticed, one render apart.
       all.push_back(measure_accuracy(scene, f.o, m, [&](const std::string& what) {
         at = name + ": " + what;
-        if (parix::interruption_requested()) throw parix::Interrupted(parix::RunResult{});
+        parix::throw_if_interrupted();
         progress.update_fraction(double(all.size()) / double(names.size()), at);
       }));
       progress.clear();

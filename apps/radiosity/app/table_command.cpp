@@ -47,7 +47,7 @@ std::vector<int> loops_per_energy(const Scene& scene, const TableFlags& f) {
   o.energy = thesis::kEnergyPercent.back() / 100;
   // A host-side solve: it polls SIGINT/SIGTERM itself, a loop apart (exit 130, table 4.1 printed).
   const auto r = solve_progressive(scene, o, nullptr, [](const StepRecord&, const ProgressiveState&) {
-    if (parix::interruption_requested()) throw parix::Interrupted(parix::RunResult{});
+    parix::throw_if_interrupted();
   });
   std::vector<int> loops;
   for (double pct : thesis::kEnergyPercent) {

@@ -29,7 +29,7 @@ struct Measured {
 
 Measured measure(const Scene& scene, const Bvh& bvh, Algorithm a, int tile, int size, const machine::MachineConfig& config) {
   // Host-side renders: SIGINT/SIGTERM is polled here, one image apart (the CSV keeps the rows done).
-  if (parix::interruption_requested()) throw parix::Interrupted(parix::RunResult{});
+  parix::throw_if_interrupted();
   RenderSettings rs;
   rs.algorithm = a;
   rs.tile = tile;
