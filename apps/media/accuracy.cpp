@@ -114,7 +114,7 @@ SceneAccuracy measure_accuracy(MediaScene scene, const AccuracyOptions& o, const
   if (progress) progress("photon pass and SH grids");
   const SceneCaches caches = caches_for(scene, true);
   out.photons_stored = stored(caches);
-  out.grid_build_seconds = grid_build_seconds(caches.knn_lookups, caches.sh_photon_adds, m);
+  out.grid_build_seconds = grid_build_seconds(caches.grid_build, m);
 
   const int stride = o.pilot_stride > 0 ? o.pilot_stride
                                          : std::max(1, int(std::sqrt(double(o.width) * o.height / 2000.0)));

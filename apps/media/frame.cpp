@@ -26,9 +26,18 @@ double render_seconds(const RenderCounters& c, std::size_t k, const machine::Mac
   return total / m.clock_hz;
 }
 
-double grid_build_seconds(std::uint64_t voxels, std::uint64_t photon_adds, const machine::MachineConfig& m) {
-  const double total = double(voxels) * cycles(m, "media_knn_lookup") +
-                       double(photon_adds) * (cycles(m, "media_knn_photon") + cycles(m, "media_sh_add"));
+std::vector<parix::OpCount> grid_build_ops(const GridBuildCounts& c) {
+  auto n = [](std::uint64_t v) { return static_cast<std::int64_t>(v); };
+  return {{"media_knn_lookup", n(c.knn_queries + c.range_queries)},  // a tree descent either way
+          {"media_knn_photon", n(c.knn_photons)},
+          {"media_range_candidate", n(c.range_candidates)},
+          {"media_sh_project", n(c.projections)},
+          {"media_sh_accumulate", n(c.photon_adds)}};
+}
+
+double grid_build_seconds(const GridBuildCounts& c, const machine::MachineConfig& m) {
+  double total = 0.0;
+  for (const parix::OpCount& op : grid_build_ops(c)) total += double(op.count) * cycles(m, std::string(op.op));
   return total / m.clock_hz;
 }
 

@@ -2,10 +2,12 @@
 // One sequential render of a scene's image on the host, with what it would cost on one CPU of the
 // simulated machine (its counted operations at the machine file's [ops] costs) and on the host.
 #include <cstdint>
+#include <vector>
 
 #include "apps/common/image.hpp"
 #include "apps/media/media_render.hpp"
 #include "machine/machine_config.hpp"
+#include "parix/processor.hpp"
 
 namespace gcsim::media {
 
@@ -18,8 +20,10 @@ struct Frame {
 
 // Seconds of one CPU for the camera rays, march samples (each a k-NN estimate) and SH evaluations.
 double render_seconds(const RenderCounters& c, std::size_t k, const machine::MachineConfig& m);
-// Seconds of one CPU to build both SH grids (one k-NN query per voxel, Funk–Hecke per photon).
-double grid_build_seconds(std::uint64_t voxels, std::uint64_t photon_adds, const machine::MachineConfig& m);
+// Seconds of one CPU to build SH grids (the k nearest photons per voxel, Funk–Hecke per photon).
+double grid_build_seconds(const GridBuildCounts& c, const machine::MachineConfig& m);
+// The same work as the [ops] counts parix::Processor::compute charges.
+std::vector<parix::OpCount> grid_build_ops(const GridBuildCounts& c);
 
 // Renders every stride-th pixel in x and y (stride 1: the whole image; others: a pilot whose cost,
 // scaled by stride², predicts the whole image's). Pixels not rendered stay zero.

@@ -18,7 +18,14 @@ inline constexpr double kMinBranchWeight = 1e-3;
 struct RenderCounters {
   MarchCounters march;
   std::uint64_t surface_events = 0, pixels = 0;
-  void add(const RenderCounters& o) { march.add(o.march), surface_events += o.surface_events, pixels += o.pixels; }
+  // What the parallel program charged (a host render builds no grid and charges nothing): its share of
+  // the SH grids, and the simulated compute seconds of the grids and of the tiles.
+  GridBuildCounts grid_build;
+  double grid_seconds = 0.0, tile_seconds = 0.0;
+  void add(const RenderCounters& o) {
+    march.add(o.march), surface_events += o.surface_events, pixels += o.pixels, grid_build.add(o.grid_build);
+    grid_seconds += o.grid_seconds, tile_seconds += o.tile_seconds;
+  }
 };
 
 // Radiance (luminance) of pixel (x, y), row 0 at the top.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "apps/media/frame.hpp"
 #include "apps/media/tile_farm.hpp"
 #include "parix/collectives.hpp"
 #include "parix/processor.hpp"
@@ -24,7 +25,8 @@ std::vector<T> concatenate(const std::vector<std::vector<T>>& parts) {
 // One region's photon map (replicated) and SH grid (each node builds a slice, then all-gather).
 RegionCache build_region_parallel(parix::Processor& p, const std::vector<Photon>& mine,
                                   const HomogeneousMedium& medium, std::size_t k, std::uint64_t& photon_bytes,
-                                  std::uint64_t& grid_bytes, std::vector<parix::MemoryReservation>& held) {
+                                  std::uint64_t& grid_bytes, std::vector<parix::MemoryReservation>& held,
+                                  RenderCounters& counts) {
   const auto parts = parix::allgather_vectors<Photon>(p, std::span<const Photon>(mine));
   std::size_t photons = 0;
   for (const auto& part : parts) photons += part.size();
@@ -37,13 +39,21 @@ RegionCache build_region_parallel(parix::Processor& p, const std::vector<Photon>
   region.map = std::make_unique<PhotonMap>(std::move(all));
   const std::size_t voxels = grid.voxel_count();
   const std::size_t first = share_begin(voxels, p.id(), p.count()), last = share_begin(voxels, p.id() + 1, p.count());
+  const parix::MemoryReservation slice_held =
+      p.reserve_memory(std::int64_t((last - first) * sizeof(ShCoefficients)), "radiance grid slice");
+  std::vector<ShCoefficients> my_voxels;
+  {
+    const parix::MemoryReservation projections_held =
+        p.reserve_memory(std::int64_t(region.map->photons().size() * sizeof(ShCoefficients)), "photon SH projections");
+    GridBuildCounts mine_built;
+    my_voxels = build_voxel_range(grid, *region.map, medium, k, first, last, mine_built);
+    const auto ops = grid_build_ops(mine_built);
+    const double start = p.now_seconds();
+    p.compute(std::span<const parix::OpCount>(ops));
+    counts.grid_seconds += p.now_seconds() - start;
+    counts.grid_build.add(mine_built);
+  }
   held.push_back(p.reserve_memory(std::int64_t(voxels * sizeof(ShCoefficients)), "radiance grid"));
-  const parix::MemoryReservation slice_held = p.reserve_memory(std::int64_t(voxels * sizeof(ShCoefficients)), "radiance grid slice");
-  RadianceGrid slice(grid, *region.map, medium, k, first, last);
-  p.compute({{"media_knn_lookup", static_cast<std::int64_t>(last - first)},
-             {"media_knn_photon", static_cast<std::int64_t>(slice.photon_adds())},
-             {"media_sh_add", static_cast<std::int64_t>(slice.photon_adds())}});
-  std::vector<ShCoefficients> my_voxels(slice.voxels().begin() + first, slice.voxels().begin() + last);
   region.grid = std::make_unique<RadianceGrid>(grid);
   region.grid->voxels() = concatenate(parix::allgather_vectors<ShCoefficients>(p, std::span<const ShCoefficients>(my_voxels)));
   grid_bytes += voxels * sizeof(ShCoefficients);
@@ -61,12 +71,15 @@ struct Tiling {
   int y1(int t) const { return std::min(height, y0(t) + kTileSize); }
 };
 
-void charge_render(parix::Processor& p, const RenderCounters& c, std::size_t k) {
+// Charges a tile's counted work; returns the simulated seconds it took.
+double charge_render(parix::Processor& p, const RenderCounters& c, std::size_t k) {
+  const double start = p.now_seconds();
   p.compute({{"media_camera_ray", static_cast<std::int64_t>(c.pixels + c.surface_events)},
              {"media_march_sample", static_cast<std::int64_t>(c.march.samples)},
              {"media_knn_lookup", static_cast<std::int64_t>(c.march.samples)},
              {"media_knn_photon", static_cast<std::int64_t>(c.march.samples * k)},
              {"media_sh_eval", static_cast<std::int64_t>(c.march.sh_evals)}});
+  return p.now_seconds() - start;
 }
 
 // Tiles handed out dynamically (tile_farm.hpp); a tile's record is its pixels' luminance as floats.
@@ -82,7 +95,7 @@ TileFarmStats render_tiles(parix::Processor& p, const MediaScene& scene, const S
     for (int y = tiling.y0(t); y < tiling.y1(t); ++y)
       for (int x = tiling.x0(t); x < tiling.x1(t); ++x)
         pixels.push_back(static_cast<float>(render_pixel(scene, caches, settings, seed, x, y, counters)));
-    charge_render(q, counters, scene.k_nearest);
+    counters.tile_seconds = charge_render(q, counters, scene.k_nearest);
     per_node[static_cast<std::size_t>(q.id())].add(counters);
     const auto bytes = std::as_bytes(std::span<const float>(pixels));
     return parix::Bytes(bytes.begin(), bytes.end());
@@ -116,8 +129,9 @@ void media_program(parix::Processor& p, const MediaScene& scene, const MarchSett
   const std::uint64_t my_photon_bytes = (photons.outside.size() + photons.inside.size()) * sizeof(Photon);
   SceneCaches caches;
   std::vector<parix::MemoryReservation> held;  // node memory of the photon maps and grids
-  caches.outside = build_region_parallel(p, photons.outside, scene.outside, scene.k_nearest, photon_bytes, grid_bytes, held);
-  caches.inside = build_region_parallel(p, photons.inside, scene.inside, scene.k_nearest, photon_bytes, grid_bytes, held);
+  RenderCounters& built = per_node[static_cast<std::size_t>(p.id())];
+  caches.outside = build_region_parallel(p, photons.outside, scene.outside, scene.k_nearest, photon_bytes, grid_bytes, held, built);
+  caches.inside = build_region_parallel(p, photons.inside, scene.inside, scene.k_nearest, photon_bytes, grid_bytes, held, built);
   // Node 0 assembles the whole image; the others hold a tile at a time.
   const std::int64_t image_bytes = id == 0 ? std::int64_t(width) * height * std::int64_t(sizeof(glm::vec3)) : 0;
   const parix::MemoryReservation image_held = p.reserve_memory(image_bytes, "image");

@@ -1,6 +1,8 @@
 #include "apps/media/photon_map.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
@@ -55,6 +57,25 @@ NearestPhotons PhotonMap::nearest(const glm::dvec3& x, std::size_t k) const {
   const std::size_t found = index_->tree.knnSearch(q, k, result.indices.data(), d2.data());
   result.indices.resize(found);
   result.radius_squared = found ? d2[found - 1] : 0.0;
+  return result;
+}
+
+NearestPhotons PhotonMap::nearest_within(const glm::dvec3& x, std::size_t k, double bound,
+                                         std::size_t& candidates) const {
+  k = std::min(k, photons_.size());
+  const float q[3] = {static_cast<float>(x.x), static_cast<float>(x.y), static_cast<float>(x.z)};
+  // A relative margin so float rounding of the squared distances cannot drop a photon on the bound.
+  const float bound2 = static_cast<float>(bound * bound * (1.0 + 1e-4));
+  std::vector<std::pair<std::uint32_t, float>> found;
+  found.reserve(4 * k);
+  candidates = index_->tree.radiusSearch(q, bound2, found, nanoflann::SearchParams(32, 0.0f, false));
+  if (found.size() < k || k == 0) return nearest(x, k);  // the bound was not one: fall back
+  auto kth = found.begin() + static_cast<std::ptrdiff_t>(k - 1);
+  std::nth_element(found.begin(), kth, found.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  NearestPhotons result;
+  result.radius_squared = kth->second;
+  result.indices.reserve(k);
+  for (auto it = found.begin(); it <= kth; ++it) result.indices.push_back(it->first);
   return result;
 }
 

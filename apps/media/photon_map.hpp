@@ -31,6 +31,11 @@ class PhotonMap {
 
   const std::vector<Photon>& photons() const { return photons_; }
   NearestPhotons nearest(const glm::dvec3& x, std::size_t k) const;
+  // The k nearest photons of x when all of them are known to lie within `bound` of x — e.g. the k
+  // nearest of a point y at distance δ lie within r_k(y) + δ of x (triangle inequality). One radius
+  // search and a linear selection instead of a k-NN descent that keeps a sorted heap: the same set as
+  // nearest() up to ties at r_k. `candidates` is told how many photons the search returned.
+  NearestPhotons nearest_within(const glm::dvec3& x, std::size_t k, double bound, std::size_t& candidates) const;
 
   // Li(x, ω_o) ≈ (1/σt) Σ_{p≤k} p(ω_p·ω_o) ΔΦ_p / dV, dV = 4/3 π r_k³ (eq. 4); ω_o points toward the eye.
   double in_scattered(const glm::dvec3& x, const glm::dvec3& w_out, const HomogeneousMedium& medium,

@@ -18,28 +18,52 @@ glm::ivec3 radiance_grid_dims(const glm::dvec3& lo, const glm::dvec3& hi, std::s
   return dims;
 }
 
-RadianceGrid::RadianceGrid(const UniformGrid& grid, const PhotonMap& map, const HomogeneousMedium& medium,
-                           std::size_t k)
-    : RadianceGrid(grid, map, medium, k, 0, grid.voxel_count()) {}
-
-RadianceGrid::RadianceGrid(const UniformGrid& grid, const PhotonMap& map, const HomogeneousMedium& medium,
-                           std::size_t k, std::size_t first, std::size_t last)
-    : grid_(grid), voxels_(grid.voxel_count()) {
-  last = std::min(last, voxels_.size());
+std::vector<ShCoefficients> build_voxel_range(const UniformGrid& grid, const PhotonMap& map,
+                                              const HomogeneousMedium& medium, std::size_t k, std::size_t first,
+                                              std::size_t last, GridBuildCounts& counts) {
+  last = std::min(last, grid.voxel_count());
+  std::vector<ShCoefficients> voxels(last > first ? last - first : 0);
+  const std::vector<Photon>& photons = map.photons();
+  // ΔΦ_p w'_l Y_lm(ω_p) / σt per photon, made on first use: a voxel then adds 16 products per photon.
+  std::vector<ShCoefficients> projected(photons.size());
+  std::vector<bool> is_projected(photons.size(), false);
+  const double voxel_width = grid.cell_size().x;
+  double previous_radius = -1.0;  // r_k of the voxel before along x, or < 0: none
   for (std::size_t i = first; i < last; ++i) {
     const int x = static_cast<int>(i % grid.dims.x);
     const int y = static_cast<int>((i / grid.dims.x) % grid.dims.y);
     const int z = static_cast<int>(i / (static_cast<std::size_t>(grid.dims.x) * grid.dims.y));
     const glm::dvec3 centre = grid.cell_center({x, y, z});
-    const NearestPhotons n = map.nearest(centre, k);
+    NearestPhotons n;
+    if (x > 0 && i > first && previous_radius > 0.0) {
+      std::size_t candidates = 0;
+      n = map.nearest_within(centre, k, previous_radius + voxel_width, candidates);
+      ++counts.range_queries, counts.range_candidates += candidates;
+    } else {
+      n = map.nearest(centre, k);
+      ++counts.knn_queries, counts.knn_photons += n.indices.size();
+    }
+    previous_radius = n.radius_squared > 0.0 ? std::sqrt(n.radius_squared) : -1.0;
     if (n.radius_squared <= 0.0) continue;
     const double volume = 4.0 / 3.0 * kPi * n.radius_squared * std::sqrt(n.radius_squared);  // dV of eq. (4)
+    const float inverse_volume = static_cast<float>(1.0 / volume);
+    ShCoefficients& f = voxels[i - first];
     for (std::uint32_t p : n.indices) {
-      const Photon& ph = map.photons()[p];
-      sh_add_photon(voxels_[i], medium.phase, medium.sigma_t, ph.power / volume, glm::dvec3(ph.direction));
+      if (!is_projected[p]) {
+        projected[p] = sh_project_photon(medium.phase, medium.sigma_t, photons[p].power, glm::dvec3(photons[p].direction));
+        is_projected[p] = true, ++counts.projections;
+      }
+      for (int c = 0; c < kShCoefficients; ++c) f[c] += projected[p][c] * inverse_volume;
     }
-    photon_adds_ += n.indices.size();
+    counts.photon_adds += n.indices.size();
   }
+  return voxels;
+}
+
+RadianceGrid::RadianceGrid(const UniformGrid& grid, const PhotonMap& map, const HomogeneousMedium& medium,
+                           std::size_t k)
+    : grid_(grid) {
+  voxels_ = build_voxel_range(grid, map, medium, k, 0, grid.voxel_count(), counts_);  // after counts_ is made
 }
 
 double RadianceGrid::eval(const glm::dvec3& x, const ShBasis& y_out) const {

@@ -24,19 +24,38 @@ struct RayHistogram {
   std::vector<double> values;  // h_i = Σ f_lm Y_lm(−d) of the voxel crossed on [t_i, t_{i+1})
 };
 
+// What building (a slice of) the grid did, for the cost model. A voxel that starts a row of the slice
+// takes a k-NN descent; the next one along x takes a radius search bounded by its neighbour's r_k plus
+// the voxel width, which holds all its k nearest (triangle inequality), and a linear selection. Each
+// photon's SH vector (eqs. 23–30) is projected once and accumulated into every voxel that counts it.
+struct GridBuildCounts {
+  std::uint64_t knn_queries = 0, knn_photons = 0;         // k-NN descents and the photons they return
+  std::uint64_t range_queries = 0, range_candidates = 0;  // bounded radius searches and what they return
+  std::uint64_t projections = 0;                          // photons projected onto the 16 SH coefficients
+  std::uint64_t photon_adds = 0;                          // (voxel, photon) accumulations of 16 coefficients
+  std::uint64_t voxels() const { return knn_queries + range_queries; }
+  void add(const GridBuildCounts& o) {
+    knn_queries += o.knn_queries, knn_photons += o.knn_photons, range_queries += o.range_queries;
+    range_candidates += o.range_candidates, projections += o.projections, photon_adds += o.photon_adds;
+  }
+};
+
+// The voxels [first, last) of the grid in linear order (one node's share, or all of them), each the SH
+// projection of the k-NN estimate at its centre; adds the work done to `counts`.
+std::vector<ShCoefficients> build_voxel_range(const UniformGrid& grid, const PhotonMap& map,
+                                              const HomogeneousMedium& medium, std::size_t k, std::size_t first,
+                                              std::size_t last, GridBuildCounts& counts);
+
 class RadianceGrid {
  public:
-  // Builds every voxel from the photon map (one k-NN query per voxel centre); counts the SH photon adds.
+  // Builds every voxel from the photon map (the k nearest photons of each voxel centre); counts the work.
   RadianceGrid(const UniformGrid& grid, const PhotonMap& map, const HomogeneousMedium& medium, std::size_t k);
-  // The same with only the voxels [first, last) filled (one node's share); the rest stay zero.
-  RadianceGrid(const UniformGrid& grid, const PhotonMap& map, const HomogeneousMedium& medium, std::size_t k,
-               std::size_t first, std::size_t last);
   explicit RadianceGrid(const UniformGrid& grid) : grid_(grid), voxels_(grid.voxel_count()) {}
 
   const UniformGrid& grid() const { return grid_; }
   const ShCoefficients& voxel(std::size_t i) const { return voxels_[i]; }
   std::vector<ShCoefficients>& voxels() { return voxels_; }
-  std::uint64_t photon_adds() const { return photon_adds_; }
+  const GridBuildCounts& build_counts() const { return counts_; }
 
   // Li(x, ω_o) from the voxel holding x (no interpolation, as in the paper).
   double eval(const glm::dvec3& x, const ShBasis& y_out) const;
@@ -46,7 +65,7 @@ class RadianceGrid {
  private:
   UniformGrid grid_;
   std::vector<ShCoefficients> voxels_;
-  std::uint64_t photon_adds_ = 0;
+  GridBuildCounts counts_;
 };
 
 }  // namespace gcsim::media

@@ -25,8 +25,7 @@ RegionCache build_region(std::vector<Photon> photons, const HomogeneousMedium& m
   region.map = std::make_unique<PhotonMap>(std::move(photons));
   if (!with_grid) return region;
   region.grid = std::make_unique<RadianceGrid>(grid, *region.map, medium, k);
-  totals.knn_lookups += grid.voxel_count();
-  totals.sh_photon_adds += region.grid->photon_adds();
+  totals.grid_build.add(region.grid->build_counts());
   return region;
 }
 

@@ -17,7 +17,7 @@ struct RegionCache {
 
 struct SceneCaches {
   RegionCache outside, inside;
-  std::uint64_t knn_lookups = 0, sh_photon_adds = 0;  // spent building the grids
+  GridBuildCounts grid_build;  // the work of building both grids
 };
 
 // The grid geometry for a photon set: its bounding box (slightly padded) and eq. (12–13) dimensions.

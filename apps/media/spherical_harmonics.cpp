@@ -47,12 +47,19 @@ double sh_reconstruct(const ShCoefficients& f, const ShBasis& y) {
   return sum;
 }
 
-void sh_add_photon(ShCoefficients& f, const Phase& phase, double sigma_t, double flux_over_volume,
-                   const glm::dvec3& photon_direction) {
+ShCoefficients sh_project_photon(const Phase& phase, double sigma_t, double power, const glm::dvec3& photon_direction) {
   const ShBasis y = sh_basis(photon_direction);
   const auto& w = phase.legendre_moments();
-  const double scale = flux_over_volume / sigma_t;
-  for (int i = 0; i < kShCoefficients; ++i) f[i] += static_cast<float>(w[sh_band(i)] * scale * y[i]);
+  const double scale = power / sigma_t;
+  ShCoefficients c;
+  for (int i = 0; i < kShCoefficients; ++i) c[i] = static_cast<float>(w[sh_band(i)] * scale * y[i]);
+  return c;
+}
+
+void sh_add_photon(ShCoefficients& f, const Phase& phase, double sigma_t, double flux_over_volume,
+                   const glm::dvec3& photon_direction) {
+  const ShCoefficients c = sh_project_photon(phase, sigma_t, flux_over_volume, photon_direction);
+  for (int i = 0; i < kShCoefficients; ++i) f[i] += c[i];
 }
 
 }  // namespace gcsim::media

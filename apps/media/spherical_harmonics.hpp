@@ -23,6 +23,10 @@ ShBasis sh_basis(const glm::dvec3& w);
 // Σ f_lm Y_lm(ω) (eq. 15): a 16-term dot product once the basis of the ray direction is known.
 double sh_reconstruct(const ShCoefficients& f, const ShBasis& y);
 
+// One photon's Funk–Hecke coefficients (eqs. 23–30), (w'_l / σt) ΔΦ Y_lm(ω_p), before the 1/dV of
+// the voxel that counts it: the grid build projects each photon once and reuses it.
+ShCoefficients sh_project_photon(const Phase& phase, double sigma_t, double power, const glm::dvec3& photon_direction);
+
 // Adds one photon to a voxel's coefficients via Funk–Hecke (eqs. 23–30):
 // f_lm += (w'_l / σt) (ΔΦ / dV) Y_lm(ω_p), with ω_p the photon's travel direction [A9].
 void sh_add_photon(ShCoefficients& f, const Phase& phase, double sigma_t, double flux_over_volume,

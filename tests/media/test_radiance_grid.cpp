@@ -2,10 +2,13 @@
 // histograms along rays.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <glm/geometric.hpp>
 
 #include "apps/media/photon_tracer_infinite.hpp"
 #include "apps/media/radiance_grid.hpp"
+#include "apps/common/rng.hpp"
 #include "tests/media/quadrature.hpp"
 
 namespace gcsim::media {
@@ -28,7 +31,14 @@ TEST(RadianceGrid, VoxelsAreTheShProjectionOfTheKnnEstimate) {
   UniformGrid g{{-1, -1, -1}, {1, 1, 1}, {3, 3, 3}};
   const std::size_t k = 50;
   RadianceGrid grid(g, map, m, k);
-  EXPECT_EQ(grid.photon_adds(), 27u * k);
+  // Each of the 9 rows along x starts with a k-NN descent; the other 18 voxels take bounded searches.
+  const GridBuildCounts& n = grid.build_counts();
+  EXPECT_EQ(n.photon_adds, 27u * k);
+  EXPECT_EQ(n.knn_queries, 9u);
+  EXPECT_EQ(n.range_queries, 18u);
+  EXPECT_GE(n.range_candidates, 18u * k);
+  EXPECT_GT(n.projections, 0u);
+  EXPECT_LE(n.projections, n.photon_adds);
   for (glm::ivec3 c : {glm::ivec3(0, 0, 0), glm::ivec3(1, 1, 1), glm::ivec3(2, 0, 1)}) {
     const glm::dvec3 x = g.cell_center(c);
     // Project Li(x, ω) of eq. (4) on the SH basis by quadrature over the sphere.
@@ -47,6 +57,49 @@ TEST(RadianceGrid, VoxelsAreTheShProjectionOfTheKnnEstimate) {
     }
     const ShCoefficients& f = grid.voxel(g.linear_index(c));
     for (int l = 0; l < kShCoefficients; ++l) EXPECT_NEAR(f[l], ref[l], 1e-5 * std::abs(ref[0])) << l;
+  }
+}
+
+// The bounded radius search finds exactly the k nearest: the same r_k and the same set as the k-NN
+// descent, for bounds from the triangle inequality (a neighbour's r_k plus the distance) and for a
+// bound too small to hold k photons (then it falls back to the descent).
+TEST(PhotonMap, BoundedSearchFindsTheSameNearestPhotons) {
+  HomogeneousMedium m{1.0, 0.8, 0.0, Phase::isotropic()};
+  auto traced = trace_point_light_infinite(m, glm::dvec3(0), 5.0, 20000, 8, 5);
+  PhotonMap map(std::move(traced.photons));
+  apps::Rng rng(7, 1);
+  for (int trial = 0; trial < 200; ++trial) {
+    const glm::dvec3 y(2 * rng.uniform_double() - 1, 2 * rng.uniform_double() - 1, 2 * rng.uniform_double() - 1);
+    const glm::dvec3 x = y + 0.1 * glm::dvec3(rng.uniform_double(), rng.uniform_double() - 0.5, 0.0);
+    const std::size_t k = 1 + trial % 80;
+    const double bound = trial % 10 == 9 ? 1e-6 : std::sqrt(map.nearest(y, k).radius_squared) + glm::length(x - y);
+    std::size_t candidates = 0;
+    NearestPhotons a = map.nearest(x, k), b = map.nearest_within(x, k, bound, candidates);
+    EXPECT_EQ(a.radius_squared, b.radius_squared) << trial;
+    std::sort(a.indices.begin(), a.indices.end()), std::sort(b.indices.begin(), b.indices.end());
+    EXPECT_EQ(a.indices, b.indices) << trial;
+  }
+}
+
+// Every voxel of a grid built with bounded searches and projected photons equals the paper's recipe
+// done voxel by voxel: a k-NN descent, then each photon added with its Funk–Hecke weights (eq. 30).
+TEST(RadianceGrid, CoherentBuildEqualsOneKnnQueryPerVoxel) {
+  HomogeneousMedium m{1.0, 0.8, 0.0, Phase::schlick(0.5)};
+  auto traced = trace_point_light_infinite(m, glm::dvec3(0), 5.0, 20000, 8, 9);
+  PhotonMap map(std::move(traced.photons));
+  UniformGrid g{{-1.2, -1, -0.8}, {1, 1.1, 1}, {10, 9, 8}};
+  const std::size_t k = 40;
+  const RadianceGrid grid(g, map, m, k);
+  EXPECT_EQ(grid.build_counts().knn_queries, 9u * 8u);
+  for (std::size_t i = 0; i < g.voxel_count(); ++i) {
+    const glm::ivec3 c(int(i % 10), int(i / 10 % 9), int(i / 90));
+    const NearestPhotons n = map.nearest(g.cell_center(c), k);
+    const double volume = 4.0 / 3.0 * kPi * n.radius_squared * std::sqrt(n.radius_squared);
+    ShCoefficients ref{};
+    for (std::uint32_t p : n.indices)
+      sh_add_photon(ref, m.phase, m.sigma_t, map.photons()[p].power / volume, glm::dvec3(map.photons()[p].direction));
+    for (int l = 0; l < kShCoefficients; ++l)
+      ASSERT_NEAR(grid.voxel(i)[l], ref[l], 1e-5 * std::abs(ref[0]) + 1e-12) << "voxel " << i << " coefficient " << l;
   }
 }
 

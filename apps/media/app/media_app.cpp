@@ -86,6 +86,9 @@ void MediaExperiment::report(const pipeline::Outcome& out, nlohmann::json& extra
              r.counters.march.sh_evals, r.counters.march.segments);
   fmt::print("tiles     {} tiles of {}x{} handed out dynamically: {} assignments, {} B of tile records to node 0\n",
              r.tiles, kTileSize, kTileSize, r.tile_messages, r.tile_result_bytes);
+  const double grid_s = r.counters.grid_seconds, render_s = r.counters.tile_seconds;
+  fmt::print("compute   SH grids {:.3f} s, tiles {:.3f} s, summed over the nodes: the grids are {:.1f} % of the render\n",
+             grid_s, render_s, render_s > 0.0 ? 100.0 * grid_s / render_s : 0.0);
   if (!flags_.image.empty()) {
     const double exposure = flags_.exposure > 0.0 ? flags_.exposure : auto_exposure(r.image);
     apps::write_png(flags_.image, tone_mapped(r.image, exposure), 1.0f);
@@ -98,6 +101,8 @@ void MediaExperiment::report(const pipeline::Outcome& out, nlohmann::json& extra
                     {"sh_evals", r.counters.march.sh_evals},
                     {"segments", r.counters.march.segments},
                     {"surface_events", r.counters.surface_events},
+                    {"grid_compute_s", r.counters.grid_seconds},
+                    {"tile_compute_s", r.counters.tile_seconds},
                     {"photons_outside", r.outside_photons},
                     {"photons_inside", r.inside_photons},
                     {"photon_map_bytes", r.photon_bytes_all},
