@@ -40,20 +40,35 @@ inline apps::Image mean_image(const std::vector<apps::Image>& images) {
   return out;
 }
 
-// Noise spread over the image: per pixel, the relative standard deviation of repeated renders about the
-// reference, sqrt(mean_r (x_r − ref)²) / ref, over the pixels whose reference is at least `lit` × the
-// mean; returns its 95th percentile over its median (1 would be perfectly even noise; 0 if no pixel).
-inline double relative_noise_spread(const std::vector<apps::Image>& repeats, const apps::Image& reference,
-                                    double lit = 0.05) {
+// Per pixel, the relative standard deviation of repeated renders: the sample standard deviation about
+// their own mean (so the reference's noise does not add a floor that is the same for every estimator)
+// over the reference, for the pixels whose reference is at least `lit` x the image mean; 0 elsewhere.
+inline apps::Image relative_noise_map(const std::vector<apps::Image>& repeats, const apps::Image& reference,
+                                      double lit = 0.05) {
+  if (repeats.size() < 2) throw std::invalid_argument("a noise map needs at least two renders");
   const double threshold = lit * mean_value(reference);
-  std::vector<double> rel;
+  apps::Image out(reference.width(), reference.height());
   for (std::size_t i = 0; i < reference.pixels().size(); ++i) {
     const double ref = reference.pixels()[i].x;
     if (ref <= threshold || ref <= 0.0) continue;
-    double s = 0.0;
-    for (const apps::Image& r : repeats) s += std::pow(double(r.pixels()[i].x) - ref, 2);
-    rel.push_back(std::sqrt(s / double(repeats.size())) / ref);
+    double mean = 0.0, s = 0.0;
+    for (const apps::Image& r : repeats) mean += r.pixels()[i].x;
+    mean /= double(repeats.size());
+    for (const apps::Image& r : repeats) s += std::pow(double(r.pixels()[i].x) - mean, 2);
+    out.pixels()[i] = glm::vec3(static_cast<float>(std::sqrt(s / double(repeats.size() - 1)) / ref));
   }
+  return out;
+}
+
+// Noise spread over the image: the 95th percentile of relative_noise_map's lit pixels over their median
+// (1 would be perfectly even noise; 0 if no pixel is lit or none varies).
+inline double relative_noise_spread(const std::vector<apps::Image>& repeats, const apps::Image& reference,
+                                    double lit = 0.05) {
+  const apps::Image map = relative_noise_map(repeats, reference, lit);
+  const double threshold = lit * mean_value(reference);
+  std::vector<double> rel;
+  for (std::size_t i = 0; i < reference.pixels().size(); ++i)
+    if (reference.pixels()[i].x > threshold && reference.pixels()[i].x > 0.0) rel.push_back(map.pixels()[i].x);
   if (rel.empty()) return 0.0;
   auto quantile = [&rel](double q) {
     auto at = rel.begin() + static_cast<std::ptrdiff_t>(q * double(rel.size() - 1));

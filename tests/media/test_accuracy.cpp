@@ -49,6 +49,23 @@ TEST(ImageError, NoiseSpreadSeesUnevenRelativeNoise) {
   EXPECT_GT(uneven, 5.0);  // relative noise ∝ 1/ref: p95/median near 10^(2·0.45) ≈ 8
 }
 
+// The per-pixel std is taken about the renders' own mean: renders that agree with each other show no
+// noise however far the (noisy) reference is from them, and the std is the unbiased sample std.
+TEST(ImageError, NoiseMapIsAboutTheRendersOwnMean) {
+  const apps::Image ref = filled(4, 3, 2.0f);
+  const std::vector<apps::Image> same{filled(4, 3, 3.0f), filled(4, 3, 3.0f)};
+  const apps::Image agree = relative_noise_map(same, ref, 0.0);
+  for (const glm::vec3& p : agree.pixels()) EXPECT_EQ(p.x, 0.0f);
+  const std::vector<apps::Image> two{filled(4, 3, 1.0f), filled(4, 3, 3.0f)};  // sample std sqrt(2)
+  const apps::Image spread = relative_noise_map(two, ref, 0.0);
+  for (const glm::vec3& p : spread.pixels()) EXPECT_NEAR(p.x, std::sqrt(2.0) / 2.0, 1e-6);
+  EXPECT_THROW(relative_noise_map({ref}, ref), std::invalid_argument);
+  // Unlit pixels (reference at most `lit` x the mean) are left out: 0 in the map.
+  apps::Image dim = ref;
+  dim.at(0, 0) = glm::vec3(0.01f);
+  EXPECT_EQ(relative_noise_map(two, dim, 0.05).at(0, 0).x, 0.0f);
+}
+
 TEST(ToneMap, ThePercentileMapsToWhiteAndFaintValuesKeepTheirRatio) {
   apps::Image im(100, 1);
   for (int x = 0; x < 100; ++x) im.at(x, 0) = glm::vec3(float(x + 1));  // 1 .. 100

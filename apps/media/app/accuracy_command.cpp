@@ -43,6 +43,36 @@ struct AccuracyFlags {
 // DIR/media-SCENE-ESTIMATOR.png per estimator at the spread budget, DIR/media-SCENE-reference.png and
 // DIR/media-SCENE-equal-time.png (uniform | transmittance | radiance side by side), all with the
 // reference's exposure so they compare.
+// The per-pixel relative std of the noise-spread renders, uniform | transmittance | radiance side by side
+// on one grey scale (white: the largest 95th percentile of the three), so where each estimator's
+// noise sits shows at a glance; unlit pixels are black.
+void write_noise_maps(const std::string& file, const SceneAccuracy& a) {
+  const Estimator side[] = {Estimator::uniform, Estimator::transmittance, Estimator::radiance};
+  std::vector<const apps::Image*> maps;
+  for (Estimator e : side)
+    for (const auto& [me, map] : a.noise_maps)
+      if (me == e) maps.push_back(&map);
+  if (maps.size() != 3) return;
+  double white = 0.0;
+  for (const apps::Image* m : maps) {
+    std::vector<float> lit;
+    for (const glm::vec3& p : m->pixels())
+      if (p.x > 0.0f) lit.push_back(p.x);
+    if (lit.empty()) continue;
+    auto at = lit.begin() + static_cast<std::ptrdiff_t>(0.95 * double(lit.size() - 1));
+    std::nth_element(lit.begin(), at, lit.end());
+    white = std::max(white, double(*at));
+  }
+  if (white <= 0.0) return;
+  apps::Image strip(3 * a.width + 2 * 2, a.height);
+  for (auto& px : strip.pixels()) px = glm::vec3(0.0f, 0.0f, 1.0f);  // blue gaps
+  for (int i = 0; i < 3; ++i)
+    for (int y = 0; y < a.height; ++y)
+      for (int x = 0; x < a.width; ++x)
+        strip.at(i * (a.width + 2) + x, y) = glm::vec3(std::min(1.0f, maps[i]->at(x, y).x / float(white)));
+  apps::write_png(file, strip, 1.0f);
+}
+
 void write_images(const std::string& dir, const SceneAccuracy& a, double budget) {
   std::filesystem::create_directories(dir);
   const double exposure = auto_exposure(a.reference);
@@ -64,6 +94,7 @@ void write_images(const std::string& dir, const SceneAccuracy& a, double budget)
       }
   }
   if (column == 3) apps::write_png(path("equal-time"), strip, 1.0f);
+  write_noise_maps(path("noise"), a);
   fmt::print("images    {}/media-{}-*.png (budget {}, the reference's exposure)\n", dir, a.scene, budget);
 }
 
@@ -132,13 +163,16 @@ void print_targets(const std::vector<SceneAccuracy>& all, const AccuracyOptions&
       if (e == Estimator::transmittance) spread_t = v;
       if (e == Estimator::radiance) spread_r = v;
     }
+    // The spread target is the paper's claim about its scenes; in the fog (and the small test scene)
+    // transmittance sampling is already near ideal, so the ratio is shown without a target.
+    const bool paper_scene = s.scene.rfind("exp", 0) == 0;
     if (spread_t > 0 && spread_r > 0)
-      fmt::print("  {:<58} {:.2f} (target >= 1.5): {}\n", s.scene + ": noise spread transmittance / radiance", spread_t / spread_r,
-                 spread_t / spread_r >= 1.5 ? "met" : "not met");
+      fmt::print("  {:<58} {:.2f} {}\n", s.scene + ": noise spread transmittance / radiance", spread_t / spread_r,
+                 !paper_scene ? "(no target here)" : spread_t / spread_r >= 1.5 ? "(target >= 1.5): met" : "(target >= 1.5): not met");
     const double smallest = *std::min_element(o.budgets.begin(), o.budgets.end());
     const double share = s.grid_build_seconds / (smallest * s.unit_seconds);
     const double share_paper = share * s.width * s.height / (640.0 * 480.0);
-    fmt::print("  {:<58} {:.1f} % here, {:.2f} % at 640x480 (target <= 5 %)\n",
+    fmt::print("  {:<58} {:.1f} % here, {:.2f} % at 640x480 (the <= 5 % target is on a whole run: gcsim run media)\n",
                s.scene + ": grid build / render at the smallest budget", 100 * share, 100 * share_paper);
   }
 }
@@ -183,7 +217,7 @@ void write_results(const AccuracyFlags& f, const std::vector<SceneAccuracy>& all
 void run_accuracy(AccuracyFlags f) {
   if (f.quick) {
     f.o.width = 64, f.o.height = 48, f.o.photons = f.o.photons > 0 ? f.o.photons : 20000;
-    f.budgets = "2,8", f.photon_fractions = "0.5,1", f.o.reference_factor = 4, f.o.spread_repeats = 2;
+    f.budgets = "2,8", f.photon_fractions = "0.5,1", f.o.reference_factor = 8, f.o.spread_repeats = 8;
     f.o.spread_budget = 0;
   }
   const machine::MachineConfig m = f.config.empty() ? machine::default_machine_config() : machine::load_machine_config(f.config);
@@ -248,13 +282,17 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
   cmd->add_option("--reference-factor", f->o.reference_factor, "Reference budget over the largest budget")
       ->check(CLI::Range(1.0, 1e6))
       ->capture_default_str();
+  cmd->add_option("--alpha", f->o.defensive_alpha,
+                  "Transmittance share of the defensive radiance density (radiance and MIS estimators, and the reference)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   cmd->add_option("--repeats", f->o.spread_repeats, "Renders per estimator for the noise spread")
       ->check(CLI::Range(2, 1000))
       ->capture_default_str();
   cmd->add_option("--photon-fractions", f->photon_fractions, "Photon study: fractions of the scene's photons (empty: skip)")
       ->capture_default_str();
   cmd->add_option("--seed", f->o.seed, "Random seed")->capture_default_str();
-  cmd->add_flag("--quick", f->quick, "CI-sized: 64x48, 20000 photons, budgets 2,8, reference x4, 2 repeats");
+  cmd->add_flag("--quick", f->quick, "CI-sized: 64x48, 20000 photons, budgets 2,8, reference x8, 8 repeats");
   cmd->add_option("--config", f->config, "Machine file whose [ops] costs turn counts into seconds")->check(CLI::ExistingFile);
   cmd->add_option("--csv", f->csv, "Write scene,estimator,budget,b,sim_s,wall_s,samples,rmse,rel_rmse (gcsim plot --accuracy)");
   cmd->add_option("--json", f->json, "Write every table as JSON");

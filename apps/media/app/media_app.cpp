@@ -21,7 +21,7 @@ struct MediaFlags {
   std::string estimator = "radiance";
   double b = 8.0;
   double b_histogram = 0.0;
-  double alpha = 0.1;
+  double alpha = MarchSettings{}.defensive_alpha;
   std::string rounding = "at-least-one";
   long photons = 0;  // 0: the scene's
   int k = 0;         // 0: the scene's
@@ -117,7 +117,9 @@ pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) 
       ->capture_default_str();
   cmd.add_option("--b", f->b, "samples per unit of the segment integral S (M = b S, eq. 21)")->capture_default_str();
   cmd.add_option("--b-histogram", f->b_histogram, "radiance estimator: M = b_h S_h (eq. 22) when > 0");
-  cmd.add_option("--alpha", f->alpha, "transmittance share of the defensive radiance density")->capture_default_str();
+  cmd.add_option("--alpha", f->alpha, "transmittance share of the defensive radiance density (0: the paper's pure density, biased where h <= 0)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   cmd.add_option("--rounding", f->rounding,
                  "M < 1: one sample (at-least-one, notes A12) or one with probability M and weight 1/M (stochastic)")
       ->check(CLI::IsMember({"at-least-one", "stochastic"}))
