@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "apps/common/image.hpp"
+#include "apps/media/boundary.hpp"
 #include "apps/media/scene_caches.hpp"
 #include "apps/media/segment_march.hpp"
 
@@ -18,7 +19,10 @@ inline constexpr double kMinBranchWeight = 1e-3;
 struct RenderCounters {
   MarchCounters march;
   std::uint64_t surface_events = 0, pixels = 0;
-  void add(const RenderCounters& o) { march.add(o.march), surface_events += o.surface_events, pixels += o.pixels; }
+  BoundaryTally boundary;  // a mesh object's tree nodes and triangles tested
+  void add(const RenderCounters& o) {
+    march.add(o.march), surface_events += o.surface_events, pixels += o.pixels, boundary.add(o.boundary);
+  }
 };
 
 // Radiance (luminance) of pixel (x, y), row 0 at the top.

@@ -106,7 +106,9 @@ void MediaExperiment::report(const pipeline::Outcome& out, nlohmann::json& extra
 
 pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) {
   auto f = std::make_shared<MediaFlags>();
-  cmd.add_option("--scene", f->scene, "small, exp1 (sigma_s read as albedo), exp1-literal, exp2")->capture_default_str();
+  cmd.add_option("--scene", f->scene,
+                 "small, exp1 (sigma_s read as albedo), exp1-literal, exp2, fog, exp1-bunny, exp2-bunny (the Stanford "
+                 "bunny of scenes/meshes/bunny.obj in place of the sphere)")->capture_default_str();
   cmd.add_option("--estimator", f->estimator, "uniform, transmittance, radiance, equiangular, mis or grid")
       ->check(CLI::IsMember({"uniform", "transmittance", "radiance", "equiangular", "mis", "grid"}))
       ->capture_default_str();
