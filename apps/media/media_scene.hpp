@@ -58,7 +58,7 @@ MediaScene experiment2_scene();
 MediaScene uniform_fog_scene();
 // The scanned model of the paper's experiments: the Stanford bunny (scenes/meshes/bunny.obj) where the
 // sphere of experiments 1 and 2 is, fitted into that sphere (centre (0, −0.3, 0.5), radius 0.9).
-inline const MeshPlacement kBunnyPlacement{{0.0, -0.3, 0.5}, 0.9, 0.0};
+inline const MeshPlacement kBunnyPlacement{{0.0, -0.3, 0.5}, 0.9, 180.0};
 // Scene s with the bunny in place of its object, named s.name + "-bunny"; the mesh is found with
 // find_scene_data (scene_data.hpp), and a missing file is an error naming the paths tried.
 MediaScene with_bunny(MediaScene s);
