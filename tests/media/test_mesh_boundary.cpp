@@ -121,38 +121,43 @@ std::vector<glm::dvec3> points_inside(const MeshBoundary& m, int count, apps::Rn
   return out;
 }
 
-// From inside, every ray leaves through an exit hit; at each exit the ray refracts out (then it is
-// outside and its next hit, if any, enters) or is totally reflected (then it stays inside and exits
-// again): the photon tracer's crossing, with leave_surface's offset, followed for 30 events.
-TEST(MeshBoundary, PathsFromInsideExitRefractOutOrStayInsideUnderTotalReflection) {
+// Follows a ray through the bunny for 30 surface events or until it leaves for good: at each hit it
+// refracts through (then it is on the other side, and a ray that went in finds its exit) or, at total
+// internal reflection, reflects and stays inside: the photon tracer's crossing with leave_surface.
+struct PathCounts {
+  int total_reflections = 0, refractions_out = 0, refractions_in = 0;
+};
+void follow_path(const MeshBoundary& m, glm::dvec3 x, glm::dvec3 w, bool in, PathCounts& counts) {
+  for (int event = 0; event < 30; ++event) {
+    const auto hit = m.intersect(x, w, 0.0, kInf);
+    if (!in && !hit) return;  // left the bunny for good
+    ASSERT_TRUE(hit) << "a ray from inside found no exit (event " << event << ")";
+    ASSERT_EQ(hit->entering, !in) << "event " << event;
+    const glm::dvec3 at = x + hit->t * w;
+    const double eta_i = in ? 1.5 : 1.0, eta_t = in ? 1.0 : 1.5;
+    const auto refracted = refract_direction(w, hit->normal, eta_i, eta_t);
+    counts.total_reflections += !refracted;
+    (in ? counts.refractions_out : counts.refractions_in) += refracted.has_value();
+    w = refracted ? *refracted : reflect_direction(w, hit->normal);
+    x = m.leave_surface(at, *hit, w);
+    if (refracted) in = !in;
+    ASSERT_EQ(m.inside(x), in) << "event " << event << (refracted ? " after refraction" : " after reflection");
+  }
+}
+
+TEST(MeshBoundary, PathsRefractingInAndOutAlwaysFindTheirExitAndStayOnTheirSide) {
   const MeshBoundary& m = bunny();
   apps::Rng rng(13, 1);
-  int total_reflections = 0, refractions = 0;
-  for (const glm::dvec3& start : points_inside(m, 150, rng)) {
-    glm::dvec3 x = start, w = random_direction(rng);
-    bool in = true;
-    for (int event = 0; event < 30; ++event) {
-      const auto hit = m.intersect(x, w, 0.0, kInf);
-      if (!in && !hit) break;  // left the bunny for good
-      ASSERT_TRUE(hit) << "a ray from inside found no exit";
-      ASSERT_EQ(hit->entering, !in) << "event " << event;
-      const glm::dvec3 at = x + hit->t * w;
-      const double eta_i = in ? 1.5 : 1.0, eta_t = in ? 1.0 : 1.5;
-      const auto refracted = refract_direction(w, hit->normal, eta_i, eta_t);
-      // Outside rays always go back in by reflection here, so the path keeps meeting the surface.
-      const bool through = refracted.has_value() && in;
-      const glm::dvec3 nw = through ? *refracted : reflect_direction(w, hit->normal);
-      total_reflections += in && !refracted;
-      refractions += through;
-      x = m.leave_surface(at, *hit, nw);
-      w = nw;
-      if (through) in = false;
-      ASSERT_EQ(m.inside(x), in) << "event " << event << (through ? " after refraction" : " after reflection");
-      if (!in && !through) break;
-    }
+  PathCounts counts;
+  for (const glm::dvec3& start : points_inside(m, 150, rng)) follow_path(m, start, random_direction(rng), true, counts);
+  // From outside, aimed at a point inside: the ray refracts in, then must find its way out.
+  for (const glm::dvec3& target : points_inside(m, 150, rng)) {
+    const glm::dvec3 from = kBunnyPlacement.centre + 1.5 * random_direction(rng);
+    follow_path(m, from, glm::normalize(target - from), false, counts);
   }
-  EXPECT_GT(total_reflections, 50);
-  EXPECT_GT(refractions, 50);
+  EXPECT_GT(counts.total_reflections, 50);
+  EXPECT_GT(counts.refractions_out, 200);
+  EXPECT_GT(counts.refractions_in, 100);
 }
 
 // Total internal reflection every time, 40 bounces: the path never leaves the bunny.
