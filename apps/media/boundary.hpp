@@ -1,8 +1,9 @@
 #pragma once
 // The closed object's surface as seen by the media code: the closest hit along a ray, with the normal
-// facing the incoming ray and whether the ray enters the object. An analytic sphere for now; a triangle
-// mesh (the shared BVH of apps/common) can implement the same interface later.
+// facing the incoming ray and whether the ray enters the object. An analytic sphere here; the triangle
+// mesh through the shared BVH of apps/common is mesh_boundary.hpp.
 #include <cmath>
+#include <cstdint>
 #include <optional>
 
 #include <glm/geometric.hpp>
@@ -16,20 +17,36 @@ struct BoundaryHit {
   bool entering;      // the ray goes from outside to inside
 };
 
+// The work a boundary query did beyond the analytic sphere test that media_camera_ray and
+// media_photon_step already include: box-tree nodes expanded and triangles tested (a mesh).
+struct BoundaryTally {
+  std::uint64_t node_tests = 0, triangle_tests = 0;
+  bool any() const { return node_tests != 0 || triangle_tests != 0; }
+  void add(const BoundaryTally& o) { node_tests += o.node_tests, triangle_tests += o.triangle_tests; }
+};
+
+// A ray leaving the sphere starts this far along its direction from the hit point.
+inline constexpr double kSphereSurfaceOffset = 1e-7;
+
 class Boundary {
  public:
   virtual ~Boundary() = default;
-  // The closest hit with t in (t_min, t_max).
-  virtual std::optional<BoundaryHit> intersect(const glm::dvec3& o, const glm::dvec3& d, double t_min,
-                                               double t_max) const = 0;
-  virtual bool inside(const glm::dvec3& p) const = 0;
+  // The closest hit with t in (t_min, t_max); the work is added to *tally when given.
+  virtual std::optional<BoundaryHit> intersect(const glm::dvec3& o, const glm::dvec3& d, double t_min, double t_max,
+                                               BoundaryTally* tally = nullptr) const = 0;
+  virtual bool inside(const glm::dvec3& p, BoundaryTally* tally = nullptr) const = 0;
+  // Where a ray leaving the surface at `at` (the point of `hit`) along `direction` starts, so that
+  // it cannot hit the same surface again at t ≈ 0 and starts on the side it goes to.
+  virtual glm::dvec3 leave_surface(const glm::dvec3& at, const BoundaryHit& /*hit*/, const glm::dvec3& direction) const {
+    return at + kSphereSurfaceOffset * direction;
+  }
 };
 
 class SphereBoundary final : public Boundary {
  public:
   SphereBoundary(glm::dvec3 centre, double radius) : centre_(centre), radius_(radius) {}
-  std::optional<BoundaryHit> intersect(const glm::dvec3& o, const glm::dvec3& d, double t_min,
-                                       double t_max) const override {
+  std::optional<BoundaryHit> intersect(const glm::dvec3& o, const glm::dvec3& d, double t_min, double t_max,
+                                       BoundaryTally* /*tally*/ = nullptr) const override {
     // Solved in the numerically stable form (q = −(b + sign(b)√disc)), d unit length.
     const glm::dvec3 oc = o - centre_;
     const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - radius_ * radius_;
@@ -48,7 +65,7 @@ class SphereBoundary final : public Boundary {
     }
     return std::nullopt;
   }
-  bool inside(const glm::dvec3& p) const override {
+  bool inside(const glm::dvec3& p, BoundaryTally* /*tally*/ = nullptr) const override {
     const glm::dvec3 v = p - centre_;
     return glm::dot(v, v) < radius_ * radius_;
   }

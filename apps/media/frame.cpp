@@ -18,11 +18,17 @@ double cycles(const machine::MachineConfig& m, const std::string& op) {
 
 }  // namespace
 
+double boundary_cycles(const BoundaryTally& t, const machine::MachineConfig& m) {
+  if (!t.any()) return 0.0;  // the analytic sphere: its test is part of media_camera_ray and media_photon_step
+  return double(t.node_tests) * cycles(m, "media_bvh_node") + double(t.triangle_tests) * cycles(m, "media_triangle_test");
+}
+
 double render_seconds(const RenderCounters& c, std::size_t k, const machine::MachineConfig& m) {
   const double per_sample = cycles(m, "media_march_sample") + cycles(m, "media_knn_lookup") +
                             double(k) * cycles(m, "media_knn_photon");
-  const double total = double(c.pixels + c.surface_events) * cycles(m, "media_camera_ray") +
-                       double(c.march.samples) * per_sample + double(c.march.sh_evals) * cycles(m, "media_sh_eval");
+  double total = double(c.pixels + c.surface_events) * cycles(m, "media_camera_ray") +
+                 double(c.march.samples) * per_sample + double(c.march.sh_evals) * cycles(m, "media_sh_eval");
+  total += boundary_cycles(c.boundary, m);
   return total / m.clock_hz;
 }
 

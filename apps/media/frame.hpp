@@ -18,6 +18,8 @@ struct Frame {
   double wall_seconds = 0.0;       // host
 };
 
+// Cycles of a mesh object's tree nodes and triangle tests (zero for the sphere, whose ops are not read).
+double boundary_cycles(const BoundaryTally& t, const machine::MachineConfig& m);
 // Seconds of one CPU for the camera rays, march samples (each a k-NN estimate) and SH evaluations.
 double render_seconds(const RenderCounters& c, std::size_t k, const machine::MachineConfig& m);
 // Seconds of one CPU to build SH grids (the k nearest photons per voxel, Funk–Hecke per photon).

@@ -53,13 +53,13 @@ double render_pixel(const MediaScene& scene, const SceneCaches& caches, const Ma
   // (what the paper compares) and a high-sample reference converges to the same value.
   const glm::dvec3 eye = scene.camera.eye;
   std::vector<PathBranch> stack{{eye, camera_direction(scene.camera, x + 0.5, y + 0.5),
-                                 scene.object && scene.object->inside(eye), 1.0, 0}};
+                                 scene.object && scene.object->inside(eye, &counters.boundary), 1.0, 0}};
   double radiance = 0.0;
   const double inf = std::numeric_limits<double>::infinity();
   while (!stack.empty()) {
     const PathBranch b = stack.back();
     stack.pop_back();
-    auto hit = scene.object ? scene.object->intersect(b.origin, b.direction, 0.0, inf) : std::nullopt;
+    auto hit = scene.object ? scene.object->intersect(b.origin, b.direction, 0.0, inf, &counters.boundary) : std::nullopt;
     double t0 = 0.0, t1 = hit ? hit->t : inf;
     if (!b.inside && !clip_to_box(scene.fog_box, b.origin, b.direction, t0, t1)) continue;
     if (b.inside) t1 = hit ? hit->t : 0.0;
@@ -76,9 +76,9 @@ double render_pixel(const MediaScene& scene, const SceneCaches& caches, const Ma
     // Branches whose weight falls below kMinBranchWeight end there (a small bias every estimator and
     // the reference share).
     if (throughput * reflectance >= kMinBranchWeight)
-      stack.push_back({at + 1e-7 * reflected, reflected, b.inside, throughput * reflectance, b.depth + 1});
+      stack.push_back({scene.object->leave_surface(at, *hit, reflected), reflected, b.inside, throughput * reflectance, b.depth + 1});
     if (refracted && throughput * (1.0 - reflectance) >= kMinBranchWeight)
-      stack.push_back({at + 1e-7 * *refracted, *refracted, !b.inside, throughput * (1.0 - reflectance), b.depth + 1});
+      stack.push_back({scene.object->leave_surface(at, *hit, *refracted), *refracted, !b.inside, throughput * (1.0 - reflectance), b.depth + 1});
   }
   return radiance;
 }

@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "apps/common/image.hpp"
+#include "apps/media/boundary.hpp"
 #include "apps/media/scene_caches.hpp"
 #include "apps/media/segment_march.hpp"
 
@@ -18,13 +19,14 @@ inline constexpr double kMinBranchWeight = 1e-3;
 struct RenderCounters {
   MarchCounters march;
   std::uint64_t surface_events = 0, pixels = 0;
+  BoundaryTally boundary;  // a mesh object's tree nodes and triangles tested
   // What the parallel program charged (a host render builds no grid and charges nothing): its share of
   // the SH grids, and the simulated compute seconds of the grids and of the tiles.
   GridBuildCounts grid_build;
   double grid_seconds = 0.0, tile_seconds = 0.0;
   void add(const RenderCounters& o) {
-    march.add(o.march), surface_events += o.surface_events, pixels += o.pixels, grid_build.add(o.grid_build);
-    grid_seconds += o.grid_seconds, tile_seconds += o.tile_seconds;
+    march.add(o.march), surface_events += o.surface_events, pixels += o.pixels, boundary.add(o.boundary);
+    grid_build.add(o.grid_build), grid_seconds += o.grid_seconds, tile_seconds += o.tile_seconds;
   }
 };
 

@@ -4,6 +4,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "apps/media/mesh_boundary.hpp"
+#include "apps/media/scene_data.hpp"
+
 namespace gcsim::media {
 
 MediaScene small_scene() {
@@ -72,13 +75,22 @@ MediaScene uniform_fog_scene() {
   return s;
 }
 
+MediaScene with_bunny(MediaScene s) {
+  s.name += "-bunny";
+  s.object = load_mesh_boundary(find_scene_data("meshes/bunny.obj"), kBunnyPlacement);
+  return s;
+}
+
 MediaScene scene_by_name(const std::string& name) {
   if (name == "small") return small_scene();
   if (name == "exp1") return experiment1_scene(Exp1Reading::albedo);
   if (name == "exp1-literal") return experiment1_scene(Exp1Reading::literal);
   if (name == "exp2") return experiment2_scene();
   if (name == "fog") return uniform_fog_scene();
-  throw std::invalid_argument("media scene '" + name + "': expected small, exp1, exp1-literal, exp2 or fog");
+  if (name == "exp1-bunny") return with_bunny(experiment1_scene(Exp1Reading::albedo));
+  if (name == "exp2-bunny") return with_bunny(experiment2_scene());
+  throw std::invalid_argument("media scene '" + name +
+                              "': expected small, exp1, exp1-literal, exp2, fog, exp1-bunny or exp2-bunny");
 }
 
 }  // namespace gcsim::media

@@ -10,6 +10,7 @@
 #include "apps/media/fresnel.hpp"
 #include "apps/media/grid_dda.hpp"
 #include "apps/media/medium.hpp"
+#include "apps/media/mesh_boundary.hpp"
 #include "apps/media/single_scattering.hpp"
 
 namespace gcsim::media {
@@ -55,7 +56,14 @@ MediaScene experiment2_scene();
 // Uniformly lit fog (issue 9 §3): no object, a box of thin fog under a Lambertian disk as wide as the
 // box, so the in-scattered radiance varies little along a ray and transmittance sampling is near ideal.
 MediaScene uniform_fog_scene();
-// "small", "exp1" (albedo reading), "exp1-literal", "exp2", "fog"; throws naming the choices otherwise.
+// The scanned model of the paper's experiments: the Stanford bunny (scenes/meshes/bunny.obj) where the
+// sphere of experiments 1 and 2 is, fitted into that sphere (centre (0, −0.3, 0.5), radius 0.9).
+inline const MeshPlacement kBunnyPlacement{{0.0, -0.3, 0.5}, 0.9, 180.0};
+// Scene s with the bunny in place of its object, named s.name + "-bunny"; the mesh is found with
+// find_scene_data (scene_data.hpp), and a missing file is an error naming the paths tried.
+MediaScene with_bunny(MediaScene s);
+// "small", "exp1" (albedo reading), "exp1-literal", "exp2", "fog", "exp1-bunny", "exp2-bunny"; throws
+// naming the choices otherwise.
 MediaScene scene_by_name(const std::string& name);
 
 }  // namespace gcsim::media

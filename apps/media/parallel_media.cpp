@@ -71,6 +71,13 @@ struct Tiling {
   int y1(int t) const { return std::min(height, y0(t) + kTileSize); }
 };
 
+// A mesh object's box-tree nodes and triangle tests; nothing for the sphere, so its runs keep their times.
+void charge_boundary(parix::Processor& p, const BoundaryTally& t) {
+  if (!t.any()) return;
+  p.compute({{"media_bvh_node", static_cast<std::int64_t>(t.node_tests)},
+             {"media_triangle_test", static_cast<std::int64_t>(t.triangle_tests)}});
+}
+
 // Charges a tile's counted work; returns the simulated seconds it took.
 double charge_render(parix::Processor& p, const RenderCounters& c, std::size_t k) {
   const double start = p.now_seconds();
@@ -79,6 +86,7 @@ double charge_render(parix::Processor& p, const RenderCounters& c, std::size_t k
              {"media_knn_lookup", static_cast<std::int64_t>(c.march.samples)},
              {"media_knn_photon", static_cast<std::int64_t>(c.march.samples * k)},
              {"media_sh_eval", static_cast<std::int64_t>(c.march.sh_evals)}});
+  charge_boundary(p, c.boundary);
   return p.now_seconds() - start;
 }
 
@@ -125,6 +133,7 @@ void media_program(parix::Processor& p, const MediaScene& scene, const MarchSett
   PhotonPassResult photons = trace_photons(scene, share_begin(scene.photons_emitted, id, nodes),
                                            share_begin(scene.photons_emitted, id + 1, nodes));
   p.compute("media_photon_step", static_cast<std::int64_t>(photons.flights + photons.surface_events));
+  charge_boundary(p, photons.boundary);
   std::uint64_t photon_bytes = 0, grid_bytes = 0;
   const std::uint64_t my_photon_bytes = (photons.outside.size() + photons.inside.size()) * sizeof(Photon);
   SceneCaches caches;

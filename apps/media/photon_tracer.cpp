@@ -8,8 +8,6 @@
 namespace gcsim::media {
 namespace {
 
-constexpr double kSurfaceOffset = 1e-7;  // leaves the surface along the new direction
-
 // Reflects or refracts at the boundary; returns the new direction.
 glm::dvec3 cross_boundary(const BoundaryHit& hit, const glm::dvec3& d, double ior, apps::Rng& rng) {
   const double eta_i = hit.entering ? 1.0 : ior, eta_t = hit.entering ? ior : 1.0;
@@ -45,23 +43,23 @@ PhotonPassResult trace_photons(const MediaScene& scene, std::size_t first, std::
     apps::Rng rng(scene.seed, 0x70686f746f6eULL + i);
     glm::dvec3 x, w;
     emit_photon(scene, rng, x, w);
-    bool inside = scene.object && scene.object->inside(x);
+    bool inside = scene.object && scene.object->inside(x, &out.boundary);
     int events = 0;
     for (; events < scene.max_photon_events; ++events) {
       const HomogeneousMedium& m = inside ? scene.inside : scene.outside;
       const double flight = m.sigma_t > 0 ? -std::log1p(-rng.uniform_double()) / m.sigma_t : 1e30;
       ++out.flights;
-      auto hit = scene.object ? scene.object->intersect(x, w, 0.0, flight) : std::nullopt;
+      auto hit = scene.object ? scene.object->intersect(x, w, 0.0, flight, &out.boundary) : std::nullopt;
       if (hit) {
         ++out.surface_events;
-        x += hit->t * w;
+        const glm::dvec3 at = x + hit->t * w;
         const glm::dvec3 nw = cross_boundary(*hit, w, scene.ior, rng);
         if (glm::dot(nw, hit->normal) < 0.0) {  // went through
           inside = !inside;
           if (inside) ++out.entered;
         }
         w = nw;
-        x += kSurfaceOffset * w;
+        x = scene.object->leave_surface(at, *hit, w);
         continue;
       }
       double t_lo = 0.0, t_hi = flight;

@@ -16,6 +16,7 @@ struct PhotonPassResult {
   std::vector<Photon> outside, inside;
   std::uint64_t flights = 0, surface_events = 0, escaped = 0, absorbed = 0, capped = 0;
   std::uint64_t entered = 0;  // crossings of the boundary from outside to inside
+  BoundaryTally boundary;     // a mesh object's tree nodes and triangles tested
 };
 
 // Traces photons [first, last) of the scene's photons_emitted; photon i uses its own random stream

@@ -271,7 +271,7 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
       "high-sample reference (radiance sampling, two seeds) on the same photon map (so only the estimators differ), the noise spread\n"
       "over the image, the SH grid's share of the render time, the photon count's effect at fixed samples,\n"
       "and the targets of issue 9 as measured. Wall times are the host's.");
-  cmd->add_option("--scenes", f->scenes, "Scenes (exp1, exp2, fog, small, exp1-literal)")->capture_default_str();
+  cmd->add_option("--scenes", f->scenes, "Scenes (exp1, exp2, fog, small, exp1-literal, exp1-bunny, exp2-bunny)")->capture_default_str();
   cmd->add_option("--estimators", f->estimators, "Estimators to compare")->capture_default_str();
   cmd->add_option("--budgets", f->budgets, "Budgets in units (the transmittance estimator's time at M = unit-b S)")
       ->capture_default_str();

@@ -84,6 +84,9 @@ void MediaExperiment::report(const pipeline::Outcome& out, nlohmann::json& extra
              r.photon_bytes_all, r.photon_bytes, r.grid_bytes_all);
   fmt::print("work      {} march samples, {} SH evaluations, {} segments\n", r.counters.march.samples,
              r.counters.march.sh_evals, r.counters.march.segments);
+  if (r.counters.boundary.any())
+    fmt::print("mesh      {} tree nodes and {} triangles tested by the camera paths (media_bvh_node, media_triangle_test)\n",
+               r.counters.boundary.node_tests, r.counters.boundary.triangle_tests);
   fmt::print("tiles     {} tiles of {}x{} handed out dynamically: {} assignments, {} B of tile records to node 0\n",
              r.tiles, kTileSize, kTileSize, r.tile_messages, r.tile_result_bytes);
   const double grid_s = r.counters.grid_seconds, render_s = r.counters.tile_seconds;
@@ -107,11 +110,17 @@ void MediaExperiment::report(const pipeline::Outcome& out, nlohmann::json& extra
                     {"photons_inside", r.inside_photons},
                     {"photon_map_bytes", r.photon_bytes_all},
                     {"sh_grid_bytes", r.grid_bytes_all}};
+  if (r.counters.boundary.any()) {  // a mesh object; the sphere scenes' records stay as they were
+    extra["media"]["mesh_node_tests"] = r.counters.boundary.node_tests;
+    extra["media"]["mesh_triangle_tests"] = r.counters.boundary.triangle_tests;
+  }
 }
 
 pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) {
   auto f = std::make_shared<MediaFlags>();
-  cmd.add_option("--scene", f->scene, "small, exp1 (sigma_s read as albedo), exp1-literal, exp2")->capture_default_str();
+  cmd.add_option("--scene", f->scene,
+                 "small, exp1 (sigma_s read as albedo), exp1-literal, exp2, fog, exp1-bunny, exp2-bunny (the Stanford "
+                 "bunny of scenes/meshes/bunny.obj in place of the sphere)")->capture_default_str();
   cmd.add_option("--estimator", f->estimator, "uniform, transmittance, radiance, equiangular, mis or grid")
       ->check(CLI::IsMember({"uniform", "transmittance", "radiance", "equiangular", "mis", "grid"}))
       ->capture_default_str();
