@@ -53,7 +53,13 @@ PassCost media(const Ops& op, const SceneFacts& f, int nodes, const CostModel& m
   // Photon pass: each photon scatters about 1 / (1 - albedo) times; then every camera ray marches.
   const double events = std::min<double>(m.max_photon_events, 1.0 / std::max(1e-3, 1.0 - f.largest_albedo));
   const bool estimate = f.media_sampling == MediaSampling::radiance_estimate;
-  const double photon_cycles = op("media_photon_step") + (estimate ? op("media_sh_add") : 0.0);
+  // The SH grid (apps/media/radiance_grid.hpp): n k = a N voxel-photon pairs, a = 125 (eq. 13); each
+  // pair is about 1.9 photons returned by the voxel's bounded radius search (measured on exp1) and
+  // one accumulation, and each photon is projected once.
+  constexpr double kVoxelsPerPhoton = 125.0, kCandidatesPerPair = 1.9;
+  const double grid_cycles = op("media_sh_project") +
+                             kVoxelsPerPhoton * (op("media_sh_accumulate") + kCandidatesPerPair * op("media_range_candidate"));
+  const double photon_cycles = op("media_photon_step") + (estimate ? grid_cycles : 0.0);
   const double per_sample = op("media_march_sample") +
                             (estimate ? op("media_sh_eval") : op("media_knn_lookup") + m.k_nearest * op("media_knn_photon"));
   const double camera_rays = double(f.pixels) * f.samples_per_pixel;
