@@ -17,9 +17,9 @@ const BudgetRow* SceneAccuracy::row(Estimator e, double budget) const {
   return nullptr;
 }
 
-MarchSettings settings_at(Estimator e, double beta, double histogram_scale, double defensive_alpha) {
-  MarchSettings s{e, beta};
-  s.defensive_alpha = defensive_alpha;
+MarchSettings settings_at(Estimator e, double beta, double histogram_scale, const MarchSettings& base) {
+  MarchSettings s = base;
+  s.estimator = e, s.b = beta, s.b_histogram = 0.0;
   s.at_least_one_sample = true;  // M < 1: one sample; stochastic rounding leaves 1/M weights of 50 on the object
   if (e == Estimator::radiance) s.b_histogram = beta * histogram_scale;  // eq. (22), as the paper's (c)
   return s;
@@ -36,7 +36,7 @@ struct CostModel {
   const SceneCaches& caches;
   const machine::MachineConfig& m;
   int stride;
-  double alpha;
+  MarchSettings density;
 
   struct Cost {
     double fixed, total;
@@ -57,7 +57,7 @@ struct CostModel {
   std::optional<double> fit(Estimator e, double target, double histogram_scale) const {
     double beta = 1.0, predicted = 0.0;
     for (int step = 0; step < 6; ++step) {
-      const Cost c = predict(settings_at(e, beta, histogram_scale, alpha));
+      const Cost c = predict(settings_at(e, beta, histogram_scale, density));
       predicted = c.total;
       if (target <= c.fixed * 1.01) return std::nullopt;
       if (std::abs(c.total / target - 1.0) < 0.01) break;
@@ -84,7 +84,7 @@ void measure_photon_effect(const MediaScene& scene, const AccuracyOptions& o, co
   out.photon_study_b = b;
   if (progress) progress(fmt::format("photon reference, {} photons", ref_scene.photons_emitted));
   const SceneCaches ref_caches = caches_for(ref_scene, false);
-  const Frame ref = render_frame(ref_scene, ref_caches, settings_at(Estimator::transmittance, 4.0 * b, 0.0, o.defensive_alpha),
+  const Frame ref = render_frame(ref_scene, ref_caches, settings_at(Estimator::transmittance, 4.0 * b, 0.0, o.density),
                                  o.seed + 3, m);
   for (double fraction : o.photon_fractions) {
     MediaScene s = scene;
@@ -92,7 +92,7 @@ void measure_photon_effect(const MediaScene& scene, const AccuracyOptions& o, co
     if (progress) progress(fmt::format("{} photons", s.photons_emitted));
     const auto start = std::chrono::steady_clock::now();
     const SceneCaches caches = caches_for(s, false);
-    const Frame f = render_frame(s, caches, settings_at(Estimator::transmittance, b, 0.0, o.defensive_alpha), o.seed + 4, m);
+    const Frame f = render_frame(s, caches, settings_at(Estimator::transmittance, b, 0.0, o.density), o.seed + 4, m);
     PhotonRow r;
     r.emitted = s.photons_emitted;
     r.stored = stored(caches);
@@ -120,12 +120,12 @@ SceneAccuracy measure_accuracy(MediaScene scene, const AccuracyOptions& o, const
 
   const int stride = o.pilot_stride > 0 ? o.pilot_stride
                                          : std::max(1, int(std::sqrt(double(o.width) * o.height / 2000.0)));
-  const CostModel model{scene, caches, m, stride, o.defensive_alpha};
-  const CostModel::Cost radiance_pilot = model.predict(settings_at(Estimator::radiance, 1.0, 0.0, o.defensive_alpha));
+  const CostModel model{scene, caches, m, stride, o.density};
+  const CostModel::Cost radiance_pilot = model.predict(settings_at(Estimator::radiance, 1.0, 0.0, o.density));
   const double histogram_scale = radiance_pilot.counters.march.integral_s_h > 0.0
                                      ? radiance_pilot.counters.march.integral_s / radiance_pilot.counters.march.integral_s_h
                                      : 0.0;
-  out.unit_seconds = model.predict(settings_at(Estimator::transmittance, o.unit_b, 0.0, o.defensive_alpha)).total;
+  out.unit_seconds = model.predict(settings_at(Estimator::transmittance, o.unit_b, 0.0, o.density)).total;
   const double largest = *std::max_element(o.budgets.begin(), o.budgets.end());
 
   // The reference: radiance sampling (the lowest variance per time in every scene we tried; any
@@ -135,7 +135,7 @@ SceneAccuracy measure_accuracy(MediaScene scene, const AccuracyOptions& o, const
   const double half = 0.5 * o.reference_factor * largest * out.unit_seconds;
   const MarchSettings ref_settings =
       settings_at(Estimator::radiance, model.fit(Estimator::radiance, half, histogram_scale).value_or(1.0), histogram_scale,
-                  o.defensive_alpha);
+                  o.density);
   const Frame ref_a = render_frame(scene, caches, ref_settings, o.seed + 1000, m);
   const Frame ref_b = render_frame(scene, caches, ref_settings, o.seed + 2000, m);
   out.reference = mean_image({ref_a.image, ref_b.image});
@@ -154,7 +154,7 @@ SceneAccuracy measure_accuracy(MediaScene scene, const AccuracyOptions& o, const
       const auto beta = model.fit(e, r.budget * out.unit_seconds, histogram_scale);
       if (beta) {
         r.fits = true, r.beta = *beta;
-        const MarchSettings s = settings_at(e, *beta, histogram_scale, o.defensive_alpha);
+        const MarchSettings s = settings_at(e, *beta, histogram_scale, o.density);
         const Frame f = render_frame(scene, caches, s, o.seed, m);
         r.simulated_seconds = f.simulated_seconds, r.wall_seconds = f.wall_seconds, r.samples = f.counters.march.samples;
         r.rmse = rmse(f.image, reference);

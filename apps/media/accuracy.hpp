@@ -30,7 +30,8 @@ struct AccuracyOptions {
   // deviation from n renders scatters like a chi variable with n − 1 degrees of freedom, which alone
   // gives a p95/median near 1.7 at n = 4 for any estimator; near 1.3 at n = 16.
   int spread_repeats = 16;
-  double defensive_alpha = MarchSettings{}.defensive_alpha;  // transmittance share of the radiance density [A11]
+  // The radiance density's settings every render uses: defensive_alpha and max_voxel_optical_depth.
+  MarchSettings density;
   std::size_t spread_budget = 1;
   std::vector<double> photon_fractions{0.25, 0.5, 1.0};  // of the scene's photons, at fixed samples
   double photon_reference_factor = 4.0;                  // photons of the photon study's reference
@@ -76,8 +77,8 @@ struct SceneAccuracy {
   const BudgetRow* row(Estimator e, double budget) const;
 };
 
-// The march settings of an estimator at parameter β (see BudgetRow::beta).
-MarchSettings settings_at(Estimator e, double beta, double histogram_scale, double defensive_alpha);
+// The march settings of an estimator at parameter β (see BudgetRow::beta), with base's density settings.
+MarchSettings settings_at(Estimator e, double beta, double histogram_scale, const MarchSettings& base);
 
 // Measures one scene; `progress` (may be empty) is told what is being rendered.
 SceneAccuracy measure_accuracy(MediaScene scene, const AccuracyOptions& o, const machine::MachineConfig& m,

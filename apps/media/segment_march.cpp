@@ -25,6 +25,13 @@ int sample_count(double m, bool at_least_one, apps::Rng& rng, double& scale) {
   return n;
 }
 
+// Whether the grid's voxels are thin enough, in mean free paths, for h to follow Li along a ray
+// (MarchSettings::max_voxel_optical_depth).
+bool grid_resolves_transmittance(const RadianceGrid& grid, const HomogeneousMedium& m, const MarchSettings& s) {
+  const glm::dvec3 size = grid.grid().cell_size();
+  return m.sigma_t * std::cbrt(size.x * size.y * size.z) <= s.max_voxel_optical_depth;
+}
+
 }  // namespace
 
 double march_segment_in_scatter(const SegmentQuery& q, const MarchSettings& s,
@@ -70,6 +77,8 @@ double march_segment_in_scatter(const SegmentQuery& q, const MarchSettings& s,
     case Estimator::transmittance:
       return scale * m.sigma_s * estimate_in_scatter(TransmittanceDistance(seg), stratified_numbers(count, rng), li_at);
     case Estimator::radiance:
+      if (!grid_resolves_transmittance(*q.grid, m, s))
+        return scale * m.sigma_s * estimate_in_scatter(TransmittanceDistance(seg), stratified_numbers(count, rng), li_at);
       return scale * m.sigma_s * estimate_in_scatter(*hist, stratified_numbers(count, rng), li_at);
     case Estimator::equiangular:
       if (eq) return scale * m.sigma_s * estimate_in_scatter(*eq, stratified_numbers(count, rng), li_at);

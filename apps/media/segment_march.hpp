@@ -25,6 +25,12 @@ struct MarchSettings {
   // accuracy scenes and evener noise (apps/media/README.md, "The defensive share").
   double defensive_alpha = 0.03;
   bool at_least_one_sample = false; // M < 1: one sample (notes [A12]) instead of stochastic rounding
+  // Beyond the paper: where the medium's voxels are more than this many mean free paths across
+  // (σt times the voxel's mean width), the grid cannot resolve Li where the transmittance puts its
+  // mass, and the radiance density only adds variance (its jumps at voxel faces reweight samples by
+  // Li/h); such segments draw their distances from the transmittance, with the radiance estimator's
+  // M kept. A huge value (1e9): the paper's density everywhere.
+  double max_voxel_optical_depth = 1.0;
 };
 
 struct MarchCounters {

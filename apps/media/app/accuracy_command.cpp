@@ -282,9 +282,14 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
   cmd->add_option("--reference-factor", f->o.reference_factor, "Reference budget over the largest budget")
       ->check(CLI::Range(1.0, 1e6))
       ->capture_default_str();
-  cmd->add_option("--alpha", f->o.defensive_alpha,
+  cmd->add_option("--alpha", f->o.density.defensive_alpha,
                   "Transmittance share of the defensive radiance density (radiance and MIS estimators, and the reference)")
       ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--max-voxel-optical-depth", f->o.density.max_voxel_optical_depth,
+                  "Radiance sampling draws from the transmittance where voxels are thicker than this many mean free paths "
+                  "(1e9: the paper's density everywhere)")
+      ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->add_option("--repeats", f->o.spread_repeats, "Renders per estimator for the noise spread")
       ->check(CLI::Range(2, 1000))

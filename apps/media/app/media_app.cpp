@@ -22,6 +22,7 @@ struct MediaFlags {
   double b = 8.0;
   double b_histogram = 0.0;
   double alpha = MarchSettings{}.defensive_alpha;
+  double max_voxel_optical_depth = MarchSettings{}.max_voxel_optical_depth;
   std::string rounding = "at-least-one";
   long photons = 0;  // 0: the scene's
   int k = 0;         // 0: the scene's
@@ -39,7 +40,8 @@ struct MediaOutcome : pipeline::Outcome {
 class MediaExperiment final : public pipeline::Experiment {
  public:
   explicit MediaExperiment(const MediaFlags& f)
-      : flags_(f), scene_(scene_by_name(f.scene)), settings_{*parse_estimator(f.estimator), f.b, f.b_histogram, f.alpha, f.rounding == "at-least-one"} {
+      : flags_(f), scene_(scene_by_name(f.scene)), settings_{*parse_estimator(f.estimator), f.b, f.b_histogram, f.alpha, f.rounding == "at-least-one",
+                                                                   f.max_voxel_optical_depth} {
     if (f.photons > 0) scene_.photons_emitted = static_cast<std::size_t>(f.photons);
     if (f.k > 0) scene_.k_nearest = static_cast<std::size_t>(f.k);
     if (f.width > 0) scene_.camera.width = f.width;
@@ -128,6 +130,11 @@ pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) 
   cmd.add_option("--b-histogram", f->b_histogram, "radiance estimator: M = b_h S_h (eq. 22) when > 0");
   cmd.add_option("--alpha", f->alpha, "transmittance share of the defensive radiance density (0: the paper's pure density, biased where h <= 0)")
       ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd.add_option("--max-voxel-optical-depth", f->max_voxel_optical_depth,
+                 "radiance estimator: draw from the transmittance where the grid's voxels are thicker than this many mean "
+                 "free paths (1e9: the paper's density everywhere)")
+      ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd.add_option("--rounding", f->rounding,
                  "M < 1: one sample (at-least-one, notes A12) or one with probability M and weight 1/M (stochastic)")
