@@ -6,6 +6,7 @@
 #include "apps/media/frame.hpp"
 #include "apps/media/parallel_media.hpp"
 #include "machine/machine_config.hpp"
+#include "tests/support/published_machine.hpp"
 
 namespace gcsim::media {
 namespace {
@@ -42,18 +43,11 @@ TEST(BunnyScenes, PhotonsStoredInsideTheBunnyAreInsideIt) {
   EXPECT_EQ(outside_but_in, 0u);
 }
 
-parix::SimulationOptions machine_with(int nodes) {
-  parix::SimulationOptions o;
-  o.config = machine::with_nodes(machine::default_machine_config(), nodes);
-  o.nodes = nodes;
-  return o;
-}
-
 TEST(BunnyScenes, ImageIsBitIdenticalOnOneAndTwoNodesAndTheMeshIsCharged) {
   const MediaScene s = few_photon_bunny();
   const MarchSettings settings{Estimator::radiance, 4.0};
-  const ParallelMediaResult one = render_media_parallel(s, settings, 3, machine_with(1));
-  const ParallelMediaResult two = render_media_parallel(s, settings, 3, machine_with(2));
+  const ParallelMediaResult one = render_media_parallel(s, settings, 3, test_support::published_machine(1));
+  const ParallelMediaResult two = render_media_parallel(s, settings, 3, test_support::published_machine(2));
   ASSERT_EQ(one.image.pixels().size(), two.image.pixels().size());
   double lit = 0.0;
   for (std::size_t i = 0; i < one.image.pixels().size(); ++i) {
@@ -64,7 +58,7 @@ TEST(BunnyScenes, ImageIsBitIdenticalOnOneAndTwoNodesAndTheMeshIsCharged) {
   EXPECT_GT(one.inside_photons, 0u);
   EXPECT_GT(one.counters.boundary.node_tests, 0u);
   // The same run with the mesh's operations free computes less: they are charged.
-  parix::SimulationOptions free_mesh = machine_with(1);
+  parix::SimulationOptions free_mesh = test_support::published_machine(1);
   free_mesh.config.cycles_per_op["media_bvh_node"] = 0.0;
   free_mesh.config.cycles_per_op["media_triangle_test"] = 0.0;
   const ParallelMediaResult cheap = render_media_parallel(s, settings, 3, free_mesh);

@@ -4,16 +4,10 @@
 
 #include "apps/media/parallel_media.hpp"
 #include "machine/machine_config.hpp"
+#include "tests/support/published_machine.hpp"
 
 namespace gcsim::media {
 namespace {
-
-parix::SimulationOptions machine_with(int nodes) {
-  parix::SimulationOptions o;
-  o.config = machine::with_nodes(machine::default_machine_config(), nodes);
-  o.nodes = nodes;
-  return o;
-}
 
 TEST(ParallelMedia, ImageDoesNotDependOnTheNodeCount) {
   MediaScene s = small_scene();
@@ -25,7 +19,7 @@ TEST(ParallelMedia, ImageDoesNotDependOnTheNodeCount) {
   render_rows(s, caches, settings, 5, 0, s.camera.height, sequential, counters);
   double previous_time = 0.0;
   for (int nodes : {1, 2, 4, 8}) {
-    ParallelMediaResult r = render_media_parallel(s, settings, 5, machine_with(nodes));
+    ParallelMediaResult r = render_media_parallel(s, settings, 5, test_support::published_machine(nodes));
     ASSERT_EQ(r.image.pixels().size(), sequential.pixels().size());
     for (std::size_t i = 0; i < sequential.pixels().size(); ++i)
       ASSERT_EQ(r.image.pixels()[i].x, sequential.pixels()[i].x) << nodes << " nodes, pixel " << i;
@@ -33,7 +27,9 @@ TEST(ParallelMedia, ImageDoesNotDependOnTheNodeCount) {
     EXPECT_GT(r.run.simulated_seconds(), 0.0);
     // Every phase is split over the nodes, so the mean compute per node shrinks (on this tiny scene
     // the all-gathers of the replicated photon maps make 8 nodes slower overall than 4).
-    if (nodes > 1) EXPECT_LT(r.run.mean_compute_seconds(), previous_time) << nodes;
+    if (nodes > 1) {
+      EXPECT_LT(r.run.mean_compute_seconds(), previous_time) << nodes;
+    }
     previous_time = r.run.mean_compute_seconds();
   }
 }
@@ -44,8 +40,8 @@ TEST(ParallelMedia, DynamicTilesGiveADeterministicMakespan) {
   MediaScene s = small_scene();
   s.photons_emitted = 2000, s.k_nearest = 20, s.camera.width = 40, s.camera.height = 36;
   const MarchSettings settings{Estimator::radiance, 4.0};
-  const ParallelMediaResult a = render_media_parallel(s, settings, 7, machine_with(4));
-  const ParallelMediaResult b = render_media_parallel(s, settings, 7, machine_with(4));
+  const ParallelMediaResult a = render_media_parallel(s, settings, 7, test_support::published_machine(4));
+  const ParallelMediaResult b = render_media_parallel(s, settings, 7, test_support::published_machine(4));
   EXPECT_EQ(a.run.makespan, b.run.makespan);
   EXPECT_EQ(a.tiles, 9u);  // 3 x 3 tiles of 16 x 16
   EXPECT_LE(a.tile_messages, a.tiles);  // the rest rendered by the master's own thread

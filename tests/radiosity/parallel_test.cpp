@@ -6,6 +6,7 @@
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/backend.hpp"
+#include "tests/support/published_machine.hpp"
 #include "test_scenes.hpp"
 
 namespace gcsim::radiosity {
@@ -19,9 +20,7 @@ struct Variant {
 };
 
 ParallelOutcome run(const Scene& scene, const ParallelOptions& o, int nodes, parix::RunResult* result = nullptr) {
-  parix::SimulationOptions sim;
-  sim.config = machine::with_nodes(machine::default_machine_config(), nodes);
-  sim.nodes = nodes;
+  const parix::SimulationOptions sim = test_support::published_machine(nodes);
   ParallelOutcome out;
   auto r = parix::run({"simulated", sim}, [&](parix::Processor& p) { radiosity_program(p, scene, o, &out); });
   if (result) *result = r;

@@ -7,6 +7,7 @@
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/backend.hpp"
+#include "tests/support/published_machine.hpp"
 #include "test_scenes.hpp"
 
 namespace gcsim::radiosity {
@@ -18,9 +19,7 @@ struct Outcome {
 };
 
 Outcome run(const Scene& scene, const ParallelOptions& o, int nodes) {
-  parix::SimulationOptions sim;
-  sim.config = machine::with_nodes(machine::default_machine_config(), nodes);
-  sim.nodes = nodes;
+  const parix::SimulationOptions sim = test_support::published_machine(nodes);
   Outcome r;
   r.result = parix::run({"simulated", sim}, [&](parix::Processor& p) { radiosity_program(p, scene, o, &r.outcome); });
   return r;

@@ -7,16 +7,10 @@
 #include "apps/raytrace/pixel_encoding.hpp"
 #include "apps/raytrace/render.hpp"
 #include "machine/machine_config.hpp"
+#include "tests/support/published_machine.hpp"
 
 namespace gcsim::raytrace {
 namespace {
-
-parix::SimulationOptions machine_with(int nodes) {
-  parix::SimulationOptions o;
-  o.config = machine::with_nodes(machine::default_machine_config(), nodes);
-  o.nodes = nodes;
-  return o;
-}
 
 TEST(Parallel, EveryDistributionAssemblesTheSequentialImage) {
   const Scene s = make_builtin_scene("teapots");
@@ -27,7 +21,7 @@ TEST(Parallel, EveryDistributionAssemblesTheSequentialImage) {
   const RenderOutput seq = render_image(s, bvh, rs);
   for (Distribution d : {Distribution::static_blocks, Distribution::interleaved, Distribution::dynamic}) {
     for (int nodes : {1, 3, 8}) {
-      const ParallelRender par = render_parallel(s, bvh, rs, d, machine_with(nodes));
+      const ParallelRender par = render_parallel(s, bvh, rs, d, test_support::published_machine(nodes));
       int differ = 0;
       for (int y = 0; y < rs.height; ++y)
         for (int x = 0; x < rs.width; ++x)
@@ -49,11 +43,11 @@ TEST(Parallel, SimulatedTimeIsDeterministicAndFallsWithNodes) {
   const Bvh bvh = build_bvh_by_clustering(s);
   RenderSettings rs;
   rs.width = rs.height = 96;
-  const auto a = render_parallel(s, bvh, rs, Distribution::dynamic, machine_with(4));
-  const auto b = render_parallel(s, bvh, rs, Distribution::dynamic, machine_with(4));
+  const auto a = render_parallel(s, bvh, rs, Distribution::dynamic, test_support::published_machine(4));
+  const auto b = render_parallel(s, bvh, rs, Distribution::dynamic, test_support::published_machine(4));
   EXPECT_EQ(a.run.makespan, b.run.makespan);
   EXPECT_EQ(a.tiles_per_node, b.tiles_per_node);
-  const auto one = render_parallel(s, bvh, rs, Distribution::dynamic, machine_with(1));
+  const auto one = render_parallel(s, bvh, rs, Distribution::dynamic, test_support::published_machine(1));
   EXPECT_LT(a.run.makespan, one.run.makespan);
 }
 
