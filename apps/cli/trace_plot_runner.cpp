@@ -12,6 +12,8 @@
 
 #include <fmt/format.h>
 
+#include "apps/common/data_file.hpp"
+
 extern char** environ;
 
 namespace gcsim::cli {
@@ -27,21 +29,7 @@ std::string plot_python() {
 }
 
 std::string plot_script() {
-  std::vector<fs::path> candidates;
-  if (const char* d = std::getenv("GCSIM_TRACES_DIR"); d && *d) candidates.push_back(fs::path(d) / "plot_trace.py");
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) candidates.push_back(exe.parent_path().parent_path() / "share" / "gcsim" / "traces" / "plot_trace.py");
-#ifdef GCSIM_SOURCE_DIR
-  candidates.push_back(fs::path(GCSIM_SOURCE_DIR) / "traces" / "plot_trace.py");
-#endif
-  for (const fs::path& c : candidates) {
-    if (fs::exists(c)) return c.string();
-  }
-  std::string tried;
-  for (const fs::path& c : candidates) tried += "\n  " + c.string();
-  throw std::runtime_error("cannot find the plotting script traces/plot_trace.py; looked in:" + tried +
-                           "\n(set GCSIM_TRACES_DIR to the traces/ folder of the gcsim sources)");
+  return apps::find_data_file("traces", "plot_trace.py", "GCSIM_TRACES_DIR", "the plotting script").string();
 }
 
 int run_plot_script(const std::vector<std::string>& args) {

@@ -16,20 +16,33 @@ double cycles(const machine::MachineConfig& m, const std::string& op) {
   return it->second;
 }
 
+double ops_cycles(const std::vector<parix::OpCount>& ops, const machine::MachineConfig& m) {
+  double total = 0.0;
+  for (const parix::OpCount& op : ops) total += double(op.count) * cycles(m, std::string(op.op));
+  return total;
+}
+
 }  // namespace
 
-double boundary_cycles(const BoundaryTally& t, const machine::MachineConfig& m) {
-  if (!t.any()) return 0.0;  // the analytic sphere: its test is part of media_camera_ray and media_photon_step
-  return double(t.node_tests) * cycles(m, "media_bvh_node") + double(t.triangle_tests) * cycles(m, "media_triangle_test");
+std::vector<parix::OpCount> render_ops(const RenderCounters& c, std::size_t k) {
+  auto n = [](std::uint64_t v) { return static_cast<std::int64_t>(v); };
+  return {{"media_camera_ray", n(c.pixels + c.surface_events)},
+          {"media_march_sample", n(c.march.samples)},
+          {"media_knn_lookup", n(c.march.samples)},  // each sample's Li is a k-NN estimate
+          {"media_knn_photon", n(c.march.samples * k)},
+          {"media_sh_eval", n(c.march.sh_evals)}};
+}
+
+std::vector<parix::OpCount> boundary_ops(const BoundaryTally& t) {
+  // The analytic sphere: its test is part of media_camera_ray and media_photon_step, and the mesh
+  // ops are not even read, so sphere runs need not list them.
+  if (!t.any()) return {};
+  return {{"media_bvh_node", static_cast<std::int64_t>(t.node_tests)},
+          {"media_triangle_test", static_cast<std::int64_t>(t.triangle_tests)}};
 }
 
 double render_seconds(const RenderCounters& c, std::size_t k, const machine::MachineConfig& m) {
-  const double per_sample = cycles(m, "media_march_sample") + cycles(m, "media_knn_lookup") +
-                            double(k) * cycles(m, "media_knn_photon");
-  double total = double(c.pixels + c.surface_events) * cycles(m, "media_camera_ray") +
-                 double(c.march.samples) * per_sample + double(c.march.sh_evals) * cycles(m, "media_sh_eval");
-  total += boundary_cycles(c.boundary, m);
-  return total / m.clock_hz;
+  return (ops_cycles(render_ops(c, k), m) + ops_cycles(boundary_ops(c.boundary), m)) / m.clock_hz;
 }
 
 std::vector<parix::OpCount> grid_build_ops(const GridBuildCounts& c) {
@@ -42,9 +55,7 @@ std::vector<parix::OpCount> grid_build_ops(const GridBuildCounts& c) {
 }
 
 double grid_build_seconds(const GridBuildCounts& c, const machine::MachineConfig& m) {
-  double total = 0.0;
-  for (const parix::OpCount& op : grid_build_ops(c)) total += double(op.count) * cycles(m, std::string(op.op));
-  return total / m.clock_hz;
+  return ops_cycles(grid_build_ops(c), m) / m.clock_hz;
 }
 
 Frame render_frame(const MediaScene& scene, const SceneCaches& caches, const MarchSettings& settings,

@@ -18,9 +18,12 @@ struct Frame {
   double wall_seconds = 0.0;       // host
 };
 
-// Cycles of a mesh object's tree nodes and triangle tests (zero for the sphere, whose ops are not read).
-double boundary_cycles(const BoundaryTally& t, const machine::MachineConfig& m);
-// Seconds of one CPU for the camera rays, march samples (each a k-NN estimate) and SH evaluations.
+// The [ops] counts of camera paths (rays, march samples with their k-NN estimates, SH evaluations),
+// as the host-side cost model reads them and parix::Processor::compute charges them.
+std::vector<parix::OpCount> render_ops(const RenderCounters& c, std::size_t k);
+// A mesh object's tree nodes and triangle tests; empty for the sphere (its test is in the ray costs).
+std::vector<parix::OpCount> boundary_ops(const BoundaryTally& t);
+// Seconds of one CPU for render_ops and boundary_ops.
 double render_seconds(const RenderCounters& c, std::size_t k, const machine::MachineConfig& m);
 // Seconds of one CPU to build SH grids (the k nearest photons per voxel, Funk–Hecke per photon).
 double grid_build_seconds(const GridBuildCounts& c, const machine::MachineConfig& m);

@@ -40,6 +40,13 @@ inline apps::Image mean_image(const std::vector<apps::Image>& images) {
   return out;
 }
 
+// The q-quantile of non-empty `values` (the element at rank q (n − 1), rounded down); reorders them.
+inline double quantile(std::vector<double>& values, double q) {
+  const auto at = values.begin() + static_cast<std::ptrdiff_t>(std::clamp(q, 0.0, 1.0) * double(values.size() - 1));
+  std::nth_element(values.begin(), at, values.end());
+  return *at;
+}
+
 // Per pixel, the relative standard deviation of repeated renders: the sample standard deviation about
 // their own mean (so the reference's noise does not add a floor that is the same for every estimator)
 // over the reference, for the pixels whose reference is at least `lit` x the image mean; 0 elsewhere.
@@ -70,13 +77,8 @@ inline double relative_noise_spread(const std::vector<apps::Image>& repeats, con
   for (std::size_t i = 0; i < reference.pixels().size(); ++i)
     if (reference.pixels()[i].x > threshold && reference.pixels()[i].x > 0.0) rel.push_back(map.pixels()[i].x);
   if (rel.empty()) return 0.0;
-  auto quantile = [&rel](double q) {
-    auto at = rel.begin() + static_cast<std::ptrdiff_t>(q * double(rel.size() - 1));
-    std::nth_element(rel.begin(), at, rel.end());
-    return *at;
-  };
-  const double median = quantile(0.5);
-  return median > 0.0 ? quantile(0.95) / median : 0.0;
+  const double median = quantile(rel, 0.5);
+  return median > 0.0 ? quantile(rel, 0.95) / median : 0.0;
 }
 
 }  // namespace gcsim::media

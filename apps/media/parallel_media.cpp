@@ -73,19 +73,15 @@ struct Tiling {
 
 // A mesh object's box-tree nodes and triangle tests; nothing for the sphere, so its runs keep their times.
 void charge_boundary(parix::Processor& p, const BoundaryTally& t) {
-  if (!t.any()) return;
-  p.compute({{"media_bvh_node", static_cast<std::int64_t>(t.node_tests)},
-             {"media_triangle_test", static_cast<std::int64_t>(t.triangle_tests)}});
+  const auto ops = boundary_ops(t);
+  if (!ops.empty()) p.compute(std::span<const parix::OpCount>(ops));
 }
 
 // Charges a tile's counted work; returns the simulated seconds it took.
 double charge_render(parix::Processor& p, const RenderCounters& c, std::size_t k) {
   const double start = p.now_seconds();
-  p.compute({{"media_camera_ray", static_cast<std::int64_t>(c.pixels + c.surface_events)},
-             {"media_march_sample", static_cast<std::int64_t>(c.march.samples)},
-             {"media_knn_lookup", static_cast<std::int64_t>(c.march.samples)},
-             {"media_knn_photon", static_cast<std::int64_t>(c.march.samples * k)},
-             {"media_sh_eval", static_cast<std::int64_t>(c.march.sh_evals)}});
+  const auto ops = render_ops(c, k);
+  p.compute(std::span<const parix::OpCount>(ops));
   charge_boundary(p, c.boundary);
   return p.now_seconds() - start;
 }

@@ -1,19 +1,18 @@
 #include "apps/media/tone_map.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <vector>
+
+#include "apps/media/image_error.hpp"
 
 namespace gcsim::media {
 
 double auto_exposure(const apps::Image& image, const ToneMap& t) {
-  std::vector<float> lit;
+  std::vector<double> lit;
   for (const glm::vec3& c : image.pixels())
     if (c.x > 0.0f && std::isfinite(c.x)) lit.push_back(c.x);
   if (lit.empty()) return 1.0;
-  const auto at = static_cast<std::size_t>(std::clamp(t.percentile, 0.0, 1.0) * double(lit.size() - 1));
-  std::nth_element(lit.begin(), lit.begin() + static_cast<std::ptrdiff_t>(at), lit.end());
-  return t.white / lit[at];
+  return t.white / quantile(lit, t.percentile);
 }
 
 apps::Image tone_mapped(const apps::Image& image, double exposure, const ToneMap& t) {

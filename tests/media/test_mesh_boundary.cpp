@@ -239,7 +239,9 @@ TEST(MeshBoundary, TessellatedSphereMatchesTheAnalyticSphereWithinItsTessellatio
     ++compared;
     const glm::dvec3 p = o + (0.5 + rng.uniform_double()) * s->t * d;  // around the surface
     const double r = glm::length(p - centre);
-    if (std::abs(r - radius) > sagitta) EXPECT_EQ(mesh.inside(p), sphere.inside(p)) << "point " << i;
+    if (std::abs(r - radius) > sagitta) {
+      EXPECT_EQ(mesh.inside(p), sphere.inside(p)) << "point " << i;
+    }
   }
   EXPECT_GT(compared, 300);
 }

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/media/accuracy.hpp"
+#include "apps/media/image_error.hpp"
 #include "apps/media/tone_map.hpp"
 #include "apps/media/app/commands.hpp"
 #include "apps/pipeline/list_parsing.hpp"
@@ -55,13 +56,10 @@ void write_noise_maps(const std::string& file, const SceneAccuracy& a) {
   if (maps.size() != 3) return;
   double white = 0.0;
   for (const apps::Image* m : maps) {
-    std::vector<float> lit;
+    std::vector<double> lit;
     for (const glm::vec3& p : m->pixels())
       if (p.x > 0.0f) lit.push_back(p.x);
-    if (lit.empty()) continue;
-    auto at = lit.begin() + static_cast<std::ptrdiff_t>(0.95 * double(lit.size() - 1));
-    std::nth_element(lit.begin(), at, lit.end());
-    white = std::max(white, double(*at));
+    if (!lit.empty()) white = std::max(white, quantile(lit, 0.95));
   }
   if (white <= 0.0) return;
   apps::Image strip(3 * a.width + 2 * 2, a.height);
