@@ -83,7 +83,7 @@ Entity rug() {
 Camera room_camera() {
   Camera c;
   c.eye = {4.75, 1.65, 0.2};
-  c.target = {1.6, 0.75, 3.1};
+  c.look_at = {1.6, 0.75, 3.1};
   c.fov_y_degrees = 62;
   return c;
 }
@@ -249,7 +249,7 @@ World cornell_world() {
   for (int i = 0; i < int(w.entities.size()); ++i) w.instances.push_back(at(i, {0, 0, 0}));
   Camera cam;
   cam.eye = {278, 273, -800};
-  cam.target = {278, 273, 0};
+  cam.look_at = {278, 273, 0};
   cam.fov_y_degrees = 39.3;  // 35 mm focal length, 25 mm film
   w.camera = cam;
   return w;

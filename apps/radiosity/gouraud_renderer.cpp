@@ -38,7 +38,7 @@ apps::Image render(const Scene& scene, const std::vector<Rgb>& b, const Camera& 
     return area > 0 ? sum / area : b[e];
   };
 
-  Vec3 fwd = glm::normalize(cam.target - cam.eye);
+  Vec3 fwd = glm::normalize(cam.look_at - cam.eye);
   Vec3 right = glm::normalize(glm::cross(fwd, cam.up));
   Vec3 up = glm::cross(right, fwd);
   const double f = 1.0 / std::tan(cam.fov_y_degrees * std::numbers::pi / 360.0);

@@ -109,7 +109,7 @@ Camera default_camera(const Scene& scene) {
   Vec3 c = 0.5 * (lo + hi);
   double r = 0.5 * glm::length(hi - lo);
   Camera cam;
-  cam.target = c;
+  cam.look_at = c;
   cam.eye = c + glm::normalize(Vec3(0.3, 0.4, -1.0)) * (r * 2.8 + 1e-9);
   cam.up = {0, 1, 0};
   cam.fov_y_degrees = 45;

@@ -20,7 +20,7 @@ using scene::Placement;
 using scene::PolygonRecord;
 using scene::Surface;
 using scene::World;
-using Camera = scene::WorldCamera;
+using scene::Camera;
 
 // Flattened scene: global indices, geometry precomputed.
 struct ScenePatch {

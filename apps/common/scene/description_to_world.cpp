@@ -178,7 +178,7 @@ World to_world(const SceneDescription& d) {
     w.instances.push_back({int(w.entities.size()), Placement{}});
     w.entities.push_back(x.take());
   }
-  if (d.camera) w.camera = WorldCamera{d.camera->eye, d.camera->look_at, d.camera->up, d.camera->fov_y_degrees};
+  w.camera = d.camera;
   return w;
 }
 

@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "apps/common/scene/camera.hpp"
 #include "apps/common/scene/triangle_mesh.hpp"
 
 namespace gcsim::scene {
@@ -92,11 +93,6 @@ struct SpotLight {
   double cone_degrees = 30.0;  // half-angle of the cone
 };
 using Light = std::variant<PointLight, SpotLight>;  // area lights are shapes with emission
-
-struct Camera {
-  glm::dvec3 eye{0.0, 0.0, 5.0}, look_at{0.0}, up{0.0, 1.0, 0.0};
-  double fov_y_degrees = 40.0;
-};
 
 struct ImageSettings {
   int width = 512, height = 512;

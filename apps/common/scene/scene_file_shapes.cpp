@@ -161,7 +161,7 @@ void add_world(const World& w, const std::string& prefix, SceneDescription& out)
       out.shapes.push_back(s);
     }
   }
-  if (!out.camera && w.camera) out.camera = Camera{w.camera->eye, w.camera->target, w.camera->up, w.camera->fov_y_degrees};
+  if (!out.camera) out.camera = w.camera;
 }
 
 void read_world(const Reader& r, const toml::table& t, SceneDescription& out) {

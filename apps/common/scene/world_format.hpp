@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "apps/common/geometry/polygon.hpp"
+#include "apps/common/scene/camera.hpp"
 
 namespace gcsim::scene {
 
@@ -48,18 +49,11 @@ struct Instance {
   Placement placement;
 };
 
-struct WorldCamera {
-  Vec3 eye{0.0};
-  Vec3 target{0.0, 0.0, 1.0};
-  Vec3 up{0.0, 1.0, 0.0};
-  double fov_y_degrees = 40.0;
-};
-
 struct World {
   std::string name;
   std::vector<Entity> entities;
   std::vector<Instance> instances;
-  std::optional<WorldCamera> camera;
+  std::optional<Camera> camera;  // the WORLD file's CAMERA record
 };
 
 }  // namespace gcsim::scene

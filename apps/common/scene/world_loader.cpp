@@ -248,9 +248,9 @@ World parse_world(std::string_view text, const std::string& file, const std::fil
       continue;
     }
     if (c.accept("CAMERA")) {
-      WorldCamera cam;
+      Camera cam;
       cam.eye = c.triple('<', '>', "camera eye");
-      cam.target = c.triple('<', '>', "camera target");
+      cam.look_at = c.triple('<', '>', "camera target");
       cam.up = c.triple('<', '>', "camera up vector");
       cam.fov_y_degrees = c.number("vertical field of view in degrees");
       if (!(cam.fov_y_degrees > 0 && cam.fov_y_degrees < 180)) c.fail_at(tl, "field of view must be in (0, 180) degrees");
@@ -328,7 +328,7 @@ std::string format_world(const World& w, const std::vector<std::string>& files) 
                      vec('<', '>', inst.placement.rotation_degrees), vec('<', '>', inst.placement.translation));
   }
   if (w.camera)
-    s += fmt::format("CAMERA {} {} {} {}\n", vec('<', '>', w.camera->eye), vec('<', '>', w.camera->target),
+    s += fmt::format("CAMERA {} {} {} {}\n", vec('<', '>', w.camera->eye), vec('<', '>', w.camera->look_at),
                      vec('<', '>', w.camera->up), w.camera->fov_y_degrees);
   return s + "END_FILE\n";
 }

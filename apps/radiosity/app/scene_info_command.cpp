@@ -45,7 +45,7 @@ void print_geometry(const Scene& scene) {
   fmt::print("lights    {} emitting patches, emitted energy (r+g+b) {:g}\n", lights, emitted);
   if (scene.camera)
     fmt::print("camera    eye ({:g}, {:g}, {:g}) target ({:g}, {:g}, {:g}) fov {:g}\n", scene.camera->eye.x, scene.camera->eye.y,
-               scene.camera->eye.z, scene.camera->target.x, scene.camera->target.y, scene.camera->target.z,
+               scene.camera->eye.z, scene.camera->look_at.x, scene.camera->look_at.y, scene.camera->look_at.z,
                scene.camera->fov_y_degrees);
 }
 

@@ -121,14 +121,14 @@ Camera parse_camera(const std::string& s) {
     throw std::invalid_argument(fmt::format("--camera: expected 6 or 7 numbers (ex,ey,ez,tx,ty,tz[,fov]), got {}", v.size()));
   Camera c;
   c.eye = {v[0], v[1], v[2]};
-  c.target = {v[3], v[4], v[5]};
+  c.look_at = {v[3], v[4], v[5]};
   if (v.size() == 7) c.fov_y_degrees = v[6];
   if (!(c.fov_y_degrees > 0.01 && c.fov_y_degrees < 179)) throw std::invalid_argument("--camera: field of view must be in (0.01, 179) degrees");
-  const double distance = glm::length(c.target - c.eye);
+  const double distance = glm::length(c.look_at - c.eye);
   if (!std::isfinite(distance)) throw std::invalid_argument("--camera: eye or target too far out (the distance between them overflows)");
   if (distance == 0) throw std::invalid_argument("--camera: eye and target coincide");
   // The image's vertical is `up` made orthogonal to the view: looking straight along it leaves no vertical.
-  const double sine = glm::length(glm::cross((c.target - c.eye) / distance, glm::normalize(c.up)));
+  const double sine = glm::length(glm::cross((c.look_at - c.eye) / distance, glm::normalize(c.up)));
   if (!(sine > 1e-6))
     throw std::invalid_argument(fmt::format("--camera: the view direction is parallel to the up direction ({},{},{}); "
                                             "look from a point not straight above or below the target",
