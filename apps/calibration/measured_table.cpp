@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "apps/cli/broadcast_experiment.hpp"
+#include "apps/common/programs/broadcast_experiment.hpp"
 #include "apps/radiosity/thesis_tables.hpp"
 
 namespace gcsim::calibration {
@@ -21,7 +21,7 @@ bool same_name(std::string_view a, std::string_view b) {
          });
 }
 
-MeasuredTable broadcast_table(std::string id, const cli::ThesisBroadcastRow (&rows)[6], const char* title) {
+MeasuredTable broadcast_table(std::string id, const programs::ThesisBroadcastRow (&rows)[6], const char* title) {
   MeasuredTable t{std::move(id), title, "ms", {"connect_only", "1KB", "4KB", "16KB"}, {}, {}, "thesis"};
   for (const auto& r : rows) {
     t.nodes.push_back(r.nodes);
@@ -69,8 +69,8 @@ MeasuredTable thesis_table(std::string_view id) {
   if (id == "4.5")
     return radiosity_table("4.5", "radiosity, seconds spent communicating (sequential broadcast)", "s", false,
                            [](const SceneFigures& s) { return s.comm_seconds; });
-  if (id == "4.6") return broadcast_table("4.6", cli::kThesisSequentialBroadcast, "one all-node broadcast, sequential");
-  if (id == "4.7") return broadcast_table("4.7", cli::kThesisTreeBroadcast, "one all-node broadcast, tree");
+  if (id == "4.6") return broadcast_table("4.6", programs::kThesisSequentialBroadcast, "one all-node broadcast, sequential");
+  if (id == "4.7") return broadcast_table("4.7", programs::kThesisTreeBroadcast, "one all-node broadcast, tree");
   if (id == "4.8")
     return radiosity_table("4.8", "radiosity, seconds to shoot 99.9% (tree broadcast)", "s", true,
                            [](const SceneFigures& s) { return s.time_tree_bcast; });

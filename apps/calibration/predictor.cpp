@@ -8,7 +8,7 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "apps/cli/broadcast_experiment.hpp"
+#include "apps/common/programs/broadcast_experiment.hpp"
 #include "apps/radiosity/builtin_scenes.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "parix/interruption.hpp"
@@ -76,9 +76,9 @@ void Predictor::predict_broadcast(const MeasuredTable& t, const machine::Machine
   parallel_for(int(cells.size()), settings_.jobs, [&](int i) {
     const auto [r, k] = cells[i];
     const int column = layout.column_of(t.columns[k]);
-    const std::int64_t bytes = cli::kThesisBroadcastSizes[column];
+    const std::int64_t bytes = programs::kThesisBroadcastSizes[column];
     const parix::RunResult run = parix::run_simulated(simulation(c, t.nodes[r], settings_.model), [&](parix::Processor& p) {
-      cli::all_node_broadcast(p, bytes, algo);
+      programs::all_node_broadcast(p, bytes, algo);
     });
     std::lock_guard<std::mutex> guard(lock);
     g[r][k] = machine::to_milliseconds(run.makespan);

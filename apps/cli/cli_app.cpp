@@ -85,8 +85,7 @@ void declare_commands(CLI::App* app) {
   for (CLI::App* verb : {g.run, g.sweep, g.table, g.accuracy, g.bench, g.scene}) verb->require_subcommand(1);
 
   add_machine_commands(g);
-  pipeline::add_app_commands(g);  // run APP, sweep APP and the commands of every registered app
-  add_calibration_commands(g);  // calibrate, validate, accuracy network
+  pipeline::add_app_commands(g);  // run APP, sweep APP, every app's commands and command family's (calibrate, ...)
   add_trace_commands(g);
   summarize_descriptions(app);
   pipeline::reject_non_finite_numbers(app);

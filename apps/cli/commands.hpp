@@ -18,7 +18,6 @@ using pipeline::simulation_options;
 using pipeline::write_json_file;
 
 void add_machine_commands(CommandGroups& g);
-void add_calibration_commands(CommandGroups& g);
 void add_trace_commands(CommandGroups& g);
 
 }  // namespace gcsim::cli

@@ -7,16 +7,17 @@
 
 #include <fmt/format.h>
 
-#include "apps/cli/broadcast_experiment.hpp"
+#include "apps/common/programs/broadcast_experiment.hpp"
 #include "apps/cli/commands.hpp"
 #include "apps/pipeline/option_checks.hpp"
-#include "apps/cli/ring_program.hpp"
+#include "apps/common/programs/ring_program.hpp"
 #include "parix/backend.hpp"
 #include "machine/mesh.hpp"
 #include "machine/topology.hpp"
 
 namespace gcsim::cli {
 namespace {
+using namespace gcsim::programs;  // the broadcast and ring programs these commands run
 
 // Without --nodes, bcast and bench ring use every node of the machine file (64 on the GC,
 // 65536 on whatif-65536-nodes.toml).

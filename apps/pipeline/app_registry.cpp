@@ -15,15 +15,30 @@ std::vector<AppSpec>& registry() {
   static std::vector<AppSpec> apps;
   return apps;
 }
+std::vector<CommandFamilySpec>& families() {
+  static std::vector<CommandFamilySpec> f;
+  return f;
+}
+
+bool name_taken(const std::string& name) {
+  return std::ranges::any_of(registry(), [&](const AppSpec& a) { return a.name == name; }) ||
+         std::ranges::any_of(families(), [&](const CommandFamilySpec& f) { return f.name == name; });
+}
 
 }  // namespace
 
 void register_app(AppSpec spec) {
   if (spec.name.empty() || spec.summary.empty() || !spec.options)
     throw std::logic_error("gcsim: an application must register a name, a summary and its options");
-  for (const AppSpec& a : registry())
-    if (a.name == spec.name) throw std::logic_error("gcsim: application '" + spec.name + "' registered twice");
+  if (name_taken(spec.name)) throw std::logic_error("gcsim: application '" + spec.name + "' registered twice");
   registry().push_back(std::move(spec));
+}
+
+void register_command_family(CommandFamilySpec spec) {
+  if (spec.name.empty() || !spec.commands)
+    throw std::logic_error("gcsim: a command family must register a name and its commands");
+  if (name_taken(spec.name)) throw std::logic_error("gcsim: command family '" + spec.name + "' registered twice");
+  families().push_back(std::move(spec));
 }
 
 std::vector<const AppSpec*> registered_apps() {
@@ -40,6 +55,10 @@ void add_app_commands(CommandGroups& g) {
   }
   for (const AppSpec* app : registered_apps())
     if (app->commands) app->commands(g);
+  std::vector<const CommandFamilySpec*> sorted;
+  for (const CommandFamilySpec& f : families()) sorted.push_back(&f);
+  std::ranges::sort(sorted, {}, &CommandFamilySpec::name);
+  for (const CommandFamilySpec* f : sorted) f->commands(g);
 }
 
 }  // namespace gcsim::pipeline

@@ -63,7 +63,21 @@ struct AppRegistrar {
 // Every registered application, sorted by name (registration order across files is unspecified).
 std::vector<const AppSpec*> registered_apps();
 
-// Adds `run NAME` and `sweep NAME` for every registered application, and their own commands.
+// A family of commands that is not an application (nothing to `run` or `sweep`) but lives in its own
+// folder under apps/ and registers itself the same way, e.g. calibration's calibrate, validate and
+// `accuracy network`, which drive other apps' programs. Its folder calls gcsim_add_app like an app.
+struct CommandFamilySpec {
+  std::string name;
+  std::function<void(CommandGroups& g)> commands;
+};
+// Throws std::logic_error if the name is taken (by a family or an application) or a field is missing.
+void register_command_family(CommandFamilySpec spec);
+struct CommandFamilyRegistrar {
+  explicit CommandFamilyRegistrar(CommandFamilySpec spec) { register_command_family(std::move(spec)); }
+};
+
+// Adds `run NAME` and `sweep NAME` for every registered application, then the applications' own
+// commands, then every command family's, each in order of name.
 void add_app_commands(CommandGroups& g);
 
 }  // namespace gcsim::pipeline

@@ -1,12 +1,12 @@
 // The thesis's broadcast experiment (4.4.2) on the simulated GC: the shape the thesis reports,
 // and the sequential algorithm's figures within a stated tolerance of table 4.6.
-#include "apps/cli/broadcast_experiment.hpp"
+#include "apps/common/programs/broadcast_experiment.hpp"
 
 #include <gtest/gtest.h>
 
 #include "parix/backend.hpp"
 
-namespace gcsim::cli {
+namespace gcsim::programs {
 namespace {
 
 double broadcast_ms(const std::string& config_file, int nodes, std::int64_t bytes, parix::BcastAlgo algo,
@@ -58,4 +58,4 @@ TEST(BroadcastExperiment, ConnectOnlyIsCheaperThanTransfer) {
 }
 
 }  // namespace
-}  // namespace gcsim::cli
+}  // namespace gcsim::programs

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "apps/cli/broadcast_experiment.hpp"
+#include "apps/common/programs/broadcast_experiment.hpp"
 #include "apps/pipeline/resource_check.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/simulated_runtime.hpp"
@@ -83,32 +83,32 @@ TEST(NodeMemoryRuntime, AMessageIsHeldByTheReceiverUntilReceived) {
 }
 
 TEST(NodeMemoryRuntime, ABroadcastOfMoreThanANodeHoldsFailsAtOnce) {
-  const std::string what = error_of(on_nodes(4), [](Processor& p) { cli::all_node_broadcast(p, 100 * kMB, BcastAlgo::tree); });
+  const std::string what = error_of(on_nodes(4), [](Processor& p) { programs::all_node_broadcast(p, 100 * kMB, BcastAlgo::tree); });
   EXPECT_NE(what.find("out of node memory: broadcast data 100.0 MB"), std::string::npos) << what;
   // 8 MB: the data and one message copy fit in 32 MB.
-  EXPECT_NO_THROW(run_simulated(on_nodes(4), [](Processor& p) { cli::all_node_broadcast(p, 8 * kMB, BcastAlgo::tree); }));
+  EXPECT_NO_THROW(run_simulated(on_nodes(4), [](Processor& p) { programs::all_node_broadcast(p, 8 * kMB, BcastAlgo::tree); }));
 }
 
 TEST(NodeMemoryRuntime, WarnFinishesTheRunAndReportsThePeak) {
   const RunResult r = run_simulated(on_nodes(4, machine::MemoryLimit::warn),
-                                    [](Processor& p) { cli::all_node_broadcast(p, 20 * kMB, BcastAlgo::sequential); });
+                                    [](Processor& p) { programs::all_node_broadcast(p, 20 * kMB, BcastAlgo::sequential); });
   EXPECT_GE(r.memory_peak, 40 * kMB);  // the data and a message copy on one node
   EXPECT_EQ(r.memory_capacity, 32 * kMB);
   EXPECT_NE(r.memory_warning.find("node memory over its limit"), std::string::npos) << r.memory_warning;
   EXPECT_TRUE(r.to_json().contains("memory"));
   // Under the limit nothing is reported, and the JSON is as before.
-  const RunResult fits = run_simulated(on_nodes(4), [](Processor& p) { cli::all_node_broadcast(p, 1024, BcastAlgo::tree); });
+  const RunResult fits = run_simulated(on_nodes(4), [](Processor& p) { programs::all_node_broadcast(p, 1024, BcastAlgo::tree); });
   EXPECT_TRUE(fits.memory_warning.empty());
   EXPECT_FALSE(fits.to_json().contains("memory"));
 }
 
 TEST(BroadcastArguments, SizesParseWithBinaryUnitsAndBadOnesAreRefusedClearly) {
-  EXPECT_EQ(cli::parse_message_size("0"), 0);
-  EXPECT_EQ(cli::parse_message_size("16KB"), 16384);
-  EXPECT_EQ(cli::parse_message_size("10GB"), std::int64_t(10) << 30);
+  EXPECT_EQ(programs::parse_message_size("0"), 0);
+  EXPECT_EQ(programs::parse_message_size("16KB"), 16384);
+  EXPECT_EQ(programs::parse_message_size("10GB"), std::int64_t(10) << 30);
   for (const char* bad : {"-1KB", "-0", "abc", "12XB", "99999999999999999999", "9000000TB"}) {
     try {
-      cli::parse_message_size(bad);
+      programs::parse_message_size(bad);
       ADD_FAILURE() << bad << " accepted";
     } catch (const std::invalid_argument& e) {
       const std::string what = e.what();
@@ -117,7 +117,7 @@ TEST(BroadcastArguments, SizesParseWithBinaryUnitsAndBadOnesAreRefusedClearly) {
     }
   }
   try {
-    cli::parse_message_size("-1KB");
+    programs::parse_message_size("-1KB");
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("must be positive"), std::string::npos) << e.what();
   }
@@ -126,7 +126,7 @@ TEST(BroadcastArguments, SizesParseWithBinaryUnitsAndBadOnesAreRefusedClearly) {
 TEST(BroadcastArguments, TheNodeLimitIsCheckedBeforeTheHostLimit) {
   const std::int64_t ten_gb = std::int64_t(10) << 30;
   try {
-    cli::check_broadcast_resources(ten_gb, 4, 32 * kMB, machine::MemoryLimit::enforce);
+    programs::check_broadcast_resources(ten_gb, 4, 32 * kMB, machine::MemoryLimit::enforce);
     FAIL() << "10 GB per message accepted on 32 MB nodes";
   } catch (const OutOfMemoryError& e) {
     EXPECT_NE(std::string(e.what()).find("broadcast data 10.0 GB"), std::string::npos) << e.what();
@@ -135,13 +135,13 @@ TEST(BroadcastArguments, TheNodeLimitIsCheckedBeforeTheHostLimit) {
   const std::int64_t exabyte = std::int64_t(1) << 60;
   if (pipeline::host_available_bytes() > 0) {
     try {
-      cli::check_broadcast_resources(exabyte, 4, 32 * kMB, machine::MemoryLimit::warn);
+      programs::check_broadcast_resources(exabyte, 4, 32 * kMB, machine::MemoryLimit::warn);
       FAIL() << "an exabyte per message accepted";
     } catch (const pipeline::HostMemoryError& e) {
       EXPECT_NE(std::string(e.what()).find("of host memory"), std::string::npos) << e.what();
     }
   }
-  EXPECT_NO_THROW(cli::check_broadcast_resources(16384, 64, 32 * kMB, machine::MemoryLimit::enforce));
+  EXPECT_NO_THROW(programs::check_broadcast_resources(16384, 64, 32 * kMB, machine::MemoryLimit::enforce));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // unknown backend is refused with the known ones named.
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -27,6 +28,25 @@ TEST(AppRegistry, ListsAppsSortedByNameAndRefusesDuplicates) {
   EXPECT_THROW(register_app(spec("aa-registry-test")), std::logic_error);
   AppSpec nameless = spec("");
   EXPECT_THROW(register_app(nameless), std::logic_error);
+}
+
+TEST(AppRegistry, CommandFamiliesAddTheirCommandsAfterTheAppsAndShareTheirNames) {
+  register_app(spec("family-clash-test"));
+  std::vector<std::string> order;
+  register_command_family({.name = "zz-family-test", .commands = [&](CommandGroups& g) {
+                             order.push_back("zz");
+                             g.app->add_subcommand("zz-family-cmd", "from a family");
+                           }});
+  register_command_family({.name = "aa-family-test", .commands = [&](CommandGroups&) { order.push_back("aa"); }});
+  EXPECT_THROW(register_command_family({.name = "aa-family-test", .commands = [](CommandGroups&) {}}), std::logic_error);
+  EXPECT_THROW(register_command_family({.name = "family-clash-test", .commands = [](CommandGroups&) {}}), std::logic_error);
+  EXPECT_THROW(register_command_family({.name = "no-commands-test", .commands = {}}), std::logic_error);
+  CLI::App app;
+  CommandGroups g{&app, app.add_subcommand("run"), app.add_subcommand("sweep")};
+  add_app_commands(g);
+  EXPECT_EQ(order, (std::vector<std::string>{"aa", "zz"}));
+  EXPECT_NO_THROW(app.get_subcommand("zz-family-cmd"));
+  EXPECT_NO_THROW(g.run->get_subcommand("family-clash-test"));
 }
 
 TEST(Backend, SimulatedRunsTheProgramOnEveryNode) {

@@ -12,7 +12,7 @@
 #include "parix/collectives.hpp"
 #include "parix/processor.hpp"
 
-namespace gcsim::cli {
+namespace gcsim::programs {
 
 void all_node_broadcast(parix::Processor& p, std::int64_t bytes, parix::BcastAlgo algo);
 
@@ -39,4 +39,4 @@ inline constexpr ThesisBroadcastRow kThesisTreeBroadcast[] = {
     {16, {34.9, 36.6, 40.4, 54.7}}, {32, {75.3, 74.7, 78.1, 79.1}}, {64, {103, 105, 104, 137}},
 };
 
-}  // namespace gcsim::cli
+}  // namespace gcsim::programs

@@ -1,5 +1,6 @@
-// gcsim calibrate and gcsim validate: fit a machine file to measured tables, then predict the
-// tables that played no part in the fit.
+// gcsim calibrate, gcsim validate and gcsim accuracy network: fit a machine file to measured tables,
+// predict the tables that played no part in the fit, and compare the network models. A command
+// family registered from its own folder (apps/pipeline/app_registry.hpp), not an application.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -13,16 +14,21 @@
 #include <fmt/format.h>
 
 #include "apps/calibration/calibration.hpp"
-#include "apps/cli/commands.hpp"
+#include "apps/pipeline/app_registry.hpp"
+#include "apps/pipeline/machine_options.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/progress.hpp"
 #include "machine/network_registry.hpp"
 #include "parix/interruption.hpp"
 
-namespace gcsim::cli {
+namespace gcsim::calibration {
 namespace {
 
-namespace cal = gcsim::calibration;
+using pipeline::CommandGroups;
+using pipeline::ExitStatus;
+using pipeline::write_json_file;
+
+namespace cal = gcsim::calibration;  // the library this family drives
 
 struct PredictFlags {
   std::string model;
@@ -319,12 +325,11 @@ void add_network_accuracy(CommandGroups& g) {
   });
 }
 
+const pipeline::CommandFamilyRegistrar registrar{{.name = "calibration", .commands = [](CommandGroups& g) {
+                                                    add_calibrate(g);
+                                                    add_validate(g);
+                                                    add_network_accuracy(g);
+                                                  }}};
+
 }  // namespace
-
-void add_calibration_commands(CommandGroups& g) {
-  add_calibrate(g);
-  add_validate(g);
-  add_network_accuracy(g);
-}
-
-}  // namespace gcsim::cli
+}  // namespace gcsim::calibration

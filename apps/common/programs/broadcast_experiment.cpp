@@ -1,4 +1,4 @@
-#include "apps/cli/broadcast_experiment.hpp"
+#include "apps/common/programs/broadcast_experiment.hpp"
 
 #include <cctype>
 #include <cerrno>
@@ -11,7 +11,7 @@
 
 #include "apps/pipeline/resource_check.hpp"
 
-namespace gcsim::cli {
+namespace gcsim::programs {
 namespace {
 
 constexpr int kTag = 4402;  // section 4.4.2
@@ -91,4 +91,4 @@ void all_node_broadcast(parix::Processor& p, std::int64_t bytes, parix::BcastAlg
   for (int c : children) send_one(p, c, payload, connect_only);
 }
 
-}  // namespace gcsim::cli
+}  // namespace gcsim::programs

@@ -1,6 +1,6 @@
-#include "apps/cli/ring_program.hpp"
+#include "apps/common/programs/ring_program.hpp"
 
-namespace gcsim::cli {
+namespace gcsim::programs {
 
 void ring_exchange(parix::Processor& p, int iterations, std::int64_t bytes) {
   const int n = p.count(), me = p.id();
@@ -34,4 +34,4 @@ void ring_exchange(parix::Processor& p, int iterations, std::int64_t bytes) {
   }
 }
 
-}  // namespace gcsim::cli
+}  // namespace gcsim::programs

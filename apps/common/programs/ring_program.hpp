@@ -5,8 +5,8 @@
 
 #include "parix/processor.hpp"
 
-namespace gcsim::cli {
+namespace gcsim::programs {
 
 void ring_exchange(parix::Processor& p, int iterations, std::int64_t bytes);
 
-}  // namespace gcsim::cli
+}  // namespace gcsim::programs
