@@ -96,144 +96,184 @@ HemicubeOptions hemicube_of(const ParallelOptions& o) {
   return hc;
 }
 
-void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOptions& o, ParallelOutcome* outcome) {
-  // Refused before any work (every replica decides alike): a closed scene that never absorbs.
-  check_energy_can_be_absorbed(scene, o.solver.hemicube);
-  const int id = p.id(), n = p.count();
-  const int np = int(scene.patches.size()), ne = int(scene.elements.size());
-  // Declared before the host builds them, so that a node too small fails at once.
-  const parix::MemoryReservation replica = p.reserve_memory(replica_bytes(scene), "scene replica");
+namespace {
 
-  const HemicubeOptions hc = hemicube_of(o);
-  const parix::MemoryReservation buffers = p.reserve_memory(hemicube_buffer_bytes(hc), "hemicube");
-  HemicubeRenderer renderer(scene, hc);
-  const int cells = renderer.cell_count();
+// One processor's part of the parallel progressive solver (thesis 4.4): each loop chooses the
+// shooters, computes this node's share of their form factors, exchanges the shares, and every
+// replica shoots alike. Operations are charged at the same points in every variant, so the
+// simulated time depends only on the options.
+class RadiosityNode {
+ public:
+  RadiosityNode(parix::Processor& p, const Scene& scene, const ParallelOptions& o)
+      : p_(p), o_(o), id_(p.id()), n_(p.count()), np_(int(scene.patches.size())), ne_(int(scene.elements.size())),
+        renderer_(scene, hemicube_of(o)), cells_(renderer_.cell_count()), state_(scene) {
+    coll_.algo = o.bcast;
+    coll_.connect_per_message = !o.keep_links;
+    if (o.solver.shooters < 1) throw std::invalid_argument("shooters per step must be at least 1");
+  }
 
-  parix::CollectiveOptions coll;
-  coll.algo = o.bcast;
-  coll.connect_per_message = !o.keep_links;
-
-  ProgressiveState state(scene);
-  OpCounts ops;
-  std::vector<StepRecord> steps;
-  std::int64_t exchanged = 0;
-  const int k_shooters = o.solver.shooters;
-  if (k_shooters < 1) throw std::invalid_argument("shooters per step must be at least 1");
-
-  while (state.shot_fraction() < o.solver.energy && state.steps() < o.solver.max_steps) {
-    // 1. Choose the shooters.
-    std::vector<int> shooters;
-    if (!sorts_this_step(o.solver, state.shot_fraction())) {
-      // 4.4.1: index order needs no exchange; every replica knows the next patches.
-      shooters = state.select_in_index_order(k_shooters, ops);
-      ops.charge(p);
-    } else if (o.aggregate) {
-      shooters = state.select_shooters(k_shooters, ops);
-      ops.charge(p);
-    } else {
-      // Each node proposes its own K best; the K best of all proposals are the global K best.
-      std::vector<Proposal> mine;
-      {
-        std::vector<int> own;
-        ops.patch_select += (np - id + n - 1) / n;
-        for (int q = id; q < np; q += n)
-          if (state.unshot_energy(q) > 0) own.push_back(q);
-        auto larger = [&](int a, int b) {
-          double ea = state.unshot_energy(a), eb = state.unshot_energy(b);
-          return ea != eb ? ea > eb : a < b;
-        };
-        int m = std::min<int>(k_shooters, int(own.size()));
-        std::partial_sort(own.begin(), own.begin() + m, own.end(), larger);
-        for (int i = 0; i < m; ++i) mine.push_back({state.unshot_energy(own[i]), own[i]});
-      }
-      ops.charge(p);
-      auto all = parix::allgather_vectors<Proposal>(p, std::span<const Proposal>(mine), coll);
-      exchanged += std::int64_t(mine.size() * sizeof(Proposal));
-      std::vector<Proposal> merged;
-      for (auto& v : all) merged.insert(merged.end(), v.begin(), v.end());
-      std::sort(merged.begin(), merged.end(), [](const Proposal& a, const Proposal& b) {
-        return a.energy != b.energy ? a.energy > b.energy : a.patch < b.patch;
-      });
-      ops.patch_select += std::int64_t(merged.size());
-      for (int i = 0; i < std::min<int>(k_shooters, int(merged.size())); ++i) shooters.push_back(merged[i].patch);
+  void solve() {
+    while (state_.shot_fraction() < o_.solver.energy && state_.steps() < o_.solver.max_steps) {
+      const std::vector<int> shooters = choose_shooters();
+      if (shooters.empty()) break;
+      shoot(shooters, exchange_form_factors(shooters));
     }
-    if (shooters.empty()) break;
+    ops_.charge(p_);
+  }
 
-    // 2. This node's share of the form factors, and 3. the all-node exchange. Unaggregated, as in
-    // the thesis, every shooter's delta form factors are exchanged on their own; aggregated, one
-    // exchange carries every shooter's.
-    std::vector<std::vector<CellFormFactors>> by_cell(shooters.size(), std::vector<CellFormFactors>(cells));
-    auto compute_share = [&](std::size_t k, Writer& w) {
-      int s = shooters[k];
-      const bool patch_mode = o.algorithm == ParallelAlgorithm::patch;
-      if (patch_mode && s % n != id) return;
-      if (o.shared_projections) o.shared_projections->project(renderer, state.steps(), s, ops);
-      else renderer.project(s, ops);
-      for (int c = patch_mode ? 0 : id; c < cells; c += patch_mode ? 1 : n) {
-        w.put<std::int32_t>(std::int32_t(k));
-        put_cell(w, renderer.cell_form_factors(c, ops));
-      }
+  void write(ParallelOutcome& outcome) {
+    outcome.element_radiosity = state_.element_radiosity();
+    outcome.steps = std::move(steps_);
+    outcome.energy = state_.energy();
+    outcome.converged = state_.shot_fraction() >= o_.solver.energy;
+    outcome.exchanged_bytes = exchanged_;
+  }
+
+  ParallelOutcome* snapshots_to = nullptr;  // node 0's outcome, for --snapshot loops
+
+ private:
+  using FormFactorsByCell = std::vector<std::vector<CellFormFactors>>;  // [shooter][cell]
+
+  // 1. The shooters of this loop, identical on every node.
+  std::vector<int> choose_shooters() {
+    const int k = o_.solver.shooters;
+    if (!sorts_this_step(o_.solver, state_.shot_fraction())) {
+      // 4.4.1: index order needs no exchange; every replica knows the next patches.
+      std::vector<int> shooters = state_.select_in_index_order(k, ops_);
+      ops_.charge(p_);
+      return shooters;
+    }
+    if (o_.aggregate) {
+      std::vector<int> shooters = state_.select_shooters(k, ops_);
+      ops_.charge(p_);
+      return shooters;
+    }
+    return propose_and_merge(k);
+  }
+
+  // Each node proposes its own K best; the K best of all proposals are the global K best.
+  std::vector<int> propose_and_merge(int k) {
+    std::vector<int> own;
+    ops_.patch_select += (np_ - id_ + n_ - 1) / n_;
+    for (int q = id_; q < np_; q += n_)
+      if (state_.unshot_energy(q) > 0) own.push_back(q);
+    auto larger = [&](int a, int b) {
+      double ea = state_.unshot_energy(a), eb = state_.unshot_energy(b);
+      return ea != eb ? ea > eb : a < b;
     };
-    auto absorb = [&](const std::vector<parix::Bytes>& all) {
-      for (const parix::Bytes& b : all) {
-        Reader r{b};
-        while (r.at < b.size()) {
-          int k = r.get<std::int32_t>();
-          CellFormFactors c = get_cell(r);
-          if (k < 0 || k >= int(shooters.size()) || c.cell < 0 || c.cell >= cells)
-            throw std::runtime_error("radiosity: malformed form factor message");
-          by_cell[k][c.cell] = std::move(c);
-        }
-      }
-    };
-    auto exchange = [&](Writer& w, int owner) {
-      exchanged += std::int64_t(w.bytes.size());
-      ops.charge(p);
-      if (owner >= 0) {
-        // Patch partition: the shooter's owner has the whole row; it broadcasts it.
-        absorb({parix::broadcast(p, owner, owner == id ? std::move(w.bytes) : parix::Bytes{}, coll)});
-      } else {
-        absorb(parix::allgather(p, w.bytes, coll));
-      }
-    };
-    if (o.aggregate) {
+    const int m = std::min<int>(k, int(own.size()));
+    std::partial_sort(own.begin(), own.begin() + m, own.end(), larger);
+    std::vector<Proposal> mine;
+    for (int i = 0; i < m; ++i) mine.push_back({state_.unshot_energy(own[i]), own[i]});
+    ops_.charge(p_);
+    auto all = parix::allgather_vectors<Proposal>(p_, std::span<const Proposal>(mine), coll_);
+    exchanged_ += std::int64_t(mine.size() * sizeof(Proposal));
+    std::vector<Proposal> merged;
+    for (auto& v : all) merged.insert(merged.end(), v.begin(), v.end());
+    std::sort(merged.begin(), merged.end(), [](const Proposal& a, const Proposal& b) {
+      return a.energy != b.energy ? a.energy > b.energy : a.patch < b.patch;
+    });
+    ops_.patch_select += std::int64_t(merged.size());
+    std::vector<int> shooters;
+    for (int i = 0; i < std::min<int>(k, int(merged.size())); ++i) shooters.push_back(merged[i].patch);
+    return shooters;
+  }
+
+  // 2. This node's share of the form factors, and 3. the all-node exchange. Unaggregated, as in
+  // the thesis, every shooter's delta form factors are exchanged on their own; aggregated, one
+  // exchange carries every shooter's.
+  FormFactorsByCell exchange_form_factors(const std::vector<int>& shooters) {
+    FormFactorsByCell by_cell(shooters.size(), std::vector<CellFormFactors>(cells_));
+    const bool patch_mode = o_.algorithm == ParallelAlgorithm::patch;
+    if (o_.aggregate) {
       Writer w;
-      for (std::size_t k = 0; k < shooters.size(); ++k) compute_share(k, w);
-      exchange(w, -1);
+      for (std::size_t k = 0; k < shooters.size(); ++k) compute_share(shooters, k, w);
+      exchange(w, -1, by_cell);
     } else {
       for (std::size_t k = 0; k < shooters.size(); ++k) {
         Writer w;
-        compute_share(k, w);
-        exchange(w, o.algorithm == ParallelAlgorithm::patch ? shooters[k] % n : -1);
+        compute_share(shooters, k, w);
+        exchange(w, patch_mode ? shooters[k] % n_ : -1, by_cell);
       }
     }
+    return by_cell;
+  }
 
-    // 4. Every node assembles the rows, adding cells in the fixed cell order, and shoots.
-    std::vector<std::vector<double>> rows(shooters.size(), std::vector<double>(ne, 0.0));
+  void compute_share(const std::vector<int>& shooters, std::size_t k, Writer& w) {
+    const int s = shooters[k];
+    const bool patch_mode = o_.algorithm == ParallelAlgorithm::patch;
+    if (patch_mode && s % n_ != id_) return;
+    if (o_.shared_projections) o_.shared_projections->project(renderer_, state_.steps(), s, ops_);
+    else renderer_.project(s, ops_);
+    for (int c = patch_mode ? 0 : id_; c < cells_; c += patch_mode ? 1 : n_) {
+      w.put<std::int32_t>(std::int32_t(k));
+      put_cell(w, renderer_.cell_form_factors(c, ops_));
+    }
+  }
+
+  // owner >= 0 (patch partition): the shooter's owner has the whole row and broadcasts it.
+  void exchange(Writer& w, int owner, FormFactorsByCell& by_cell) {
+    exchanged_ += std::int64_t(w.bytes.size());
+    ops_.charge(p_);
+    if (owner >= 0) absorb({parix::broadcast(p_, owner, owner == id_ ? std::move(w.bytes) : parix::Bytes{}, coll_)}, by_cell);
+    else absorb(parix::allgather(p_, w.bytes, coll_), by_cell);
+  }
+
+  void absorb(const std::vector<parix::Bytes>& all, FormFactorsByCell& by_cell) const {
+    for (const parix::Bytes& b : all) {
+      Reader r{b};
+      while (r.at < b.size()) {
+        int k = r.get<std::int32_t>();
+        CellFormFactors c = get_cell(r);
+        if (k < 0 || k >= int(by_cell.size()) || c.cell < 0 || c.cell >= cells_)
+          throw std::runtime_error("radiosity: malformed form factor message");
+        by_cell[k][c.cell] = std::move(c);
+      }
+    }
+  }
+
+  // 4. Every node assembles the rows, adding cells in the fixed cell order, and shoots.
+  void shoot(const std::vector<int>& shooters, const FormFactorsByCell& by_cell) {
+    std::vector<std::vector<double>> rows(shooters.size(), std::vector<double>(ne_, 0.0));
     for (std::size_t k = 0; k < shooters.size(); ++k)
-      for (int c = 0; c < cells; ++c) {
+      for (int c = 0; c < cells_; ++c) {
         const CellFormFactors& cf = by_cell[k][c];
-        ops.form_factor_sum += std::int64_t(cf.element.size());
+        ops_.form_factor_sum += std::int64_t(cf.element.size());
         for (std::size_t i = 0; i < cf.element.size(); ++i) rows[k][cf.element[i]] += cf.value[i];
       }
-    state.shoot(shooters, rows, ops);
-    ops.charge(p);
-    StepRecord rec{state.steps(), state.shot_fraction(), shooters};
-    if (id == 0) {
-      steps.push_back(std::move(rec));
-      if (o.on_loop) o.on_loop(state.steps(), state.shot_fraction());
-      if (outcome && std::find(o.snapshot_loops.begin(), o.snapshot_loops.end(), state.steps()) != o.snapshot_loops.end())
-        outcome->snapshots.emplace_back(state.steps(), state.element_radiosity());
-    }
+    state_.shoot(shooters, rows, ops_);
+    ops_.charge(p_);
+    if (id_ != 0) return;
+    steps_.push_back(StepRecord{state_.steps(), state_.shot_fraction(), shooters});
+    if (o_.on_loop) o_.on_loop(state_.steps(), state_.shot_fraction());
+    if (snapshots_to && std::ranges::find(o_.snapshot_loops, state_.steps()) != o_.snapshot_loops.end())
+      snapshots_to->snapshots.emplace_back(state_.steps(), state_.element_radiosity());
   }
-  ops.charge(p);
-  if (id == 0 && outcome) {
-    outcome->element_radiosity = state.element_radiosity();
-    outcome->steps = std::move(steps);
-    outcome->energy = state.energy();
-    outcome->converged = state.shot_fraction() >= o.solver.energy;
-    outcome->exchanged_bytes = exchanged;
-  }
+
+  parix::Processor& p_;
+  const ParallelOptions& o_;
+  const int id_, n_, np_, ne_;
+  HemicubeRenderer renderer_;
+  const int cells_;
+  parix::CollectiveOptions coll_;
+  ProgressiveState state_;
+  OpCounts ops_;
+  std::vector<StepRecord> steps_;
+  std::int64_t exchanged_ = 0;
+};
+
+}  // namespace
+
+void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOptions& o, ParallelOutcome* outcome) {
+  // Refused before any work (every replica decides alike): a closed scene that never absorbs.
+  check_energy_can_be_absorbed(scene, o.solver.hemicube);
+  // Declared before the host builds them, so that a node too small fails at once.
+  const parix::MemoryReservation replica = p.reserve_memory(replica_bytes(scene), "scene replica");
+  const parix::MemoryReservation buffers = p.reserve_memory(hemicube_buffer_bytes(hemicube_of(o)), "hemicube");
+  RadiosityNode node(p, scene, o);
+  if (p.id() == 0) node.snapshots_to = outcome;
+  node.solve();
+  if (p.id() == 0 && outcome) node.write(*outcome);
 }
 
 }  // namespace gcsim::radiosity
