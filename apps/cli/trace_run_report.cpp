@@ -74,7 +74,7 @@ double number_at(const json& j, const char* a, const char* b) {
   return -1;
 }
 
-void table_row(std::ostringstream& h, std::string_view name, const std::string& a, const std::string& b = {}) {
+void table_row(std::ostream& h, std::string_view name, const std::string& a, const std::string& b = {}) {
   h << "<tr><th>" << escape(name) << "</th><td>" << a << "</td>";
   if (!b.empty()) h << "<td>" << b << "</td>";
   h << "</tr>\n";
@@ -95,7 +95,7 @@ std::pair<std::string, const json*> find_setting(const json& j, const char* key)
 
 // Settings as dotted rows: {"radiosity": {"scene": "CORNELL", "counts": {"patches": 112}}} gives
 // radiosity.scene and radiosity.counts.patches.
-void setting_rows(std::ostringstream& h, const std::string& prefix, const json& v, int depth) {
+void setting_rows(std::ostream& h, const std::string& prefix, const json& v, int depth) {
   if (v.is_object()) {
     if (depth > 2) return;
     for (const auto& [k, sub] : v.items()) setting_rows(h, prefix.empty() ? k : prefix + "." + k, sub, depth + 1);
@@ -104,18 +104,8 @@ void setting_rows(std::ostringstream& h, const std::string& prefix, const json& 
   }
 }
 
-}  // namespace
-
-std::string write_run_report(const ReportOptions& o) {
-  const json j = read_run_json(o.run_json);
-  if (!o.trace.empty() && !fs::exists(o.trace) && !fs::exists(fs::path(o.trace).replace_extension(".csv"))) {
-    throw std::runtime_error("--trace " + o.trace + ": no such file (expected FILE.json written by --trace, with FILE.csv beside it)");
-  }
-  std::error_code ec;
-  fs::create_directories(o.out_dir, ec);
-  if (ec) throw std::runtime_error("--out " + o.out_dir + ": cannot create the directory: " + ec.message());
-
-  std::ostringstream h;
+// The page's title: the app, algorithm and scene the run names, and its node count.
+std::string report_heading(const json& j) {
   std::string heading = "gcsim run";
   for (const char* k : {"experiment", "app", "algo", "scene"}) {
     const auto [app, v] = find_setting(j, k);
@@ -124,20 +114,19 @@ std::string write_run_report(const ReportOptions& o) {
     heading += " &middot; " + escape(v->get<std::string>());
   }
   if (j.contains("nodes") && j["nodes"].is_number_integer()) heading += fmt::format(" &middot; {} nodes", j["nodes"].get<int>());
-  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << heading << "</title>\n"
-    << "<style>body{font-family:sans-serif;max-width:1200px;margin:2em auto;padding:0 1em;color:#222}"
-       "table{border-collapse:collapse;margin:0.5em 0 1.5em}th,td{border:1px solid #ccc;padding:3px 10px;text-align:left}"
-       "td{font-variant-numeric:tabular-nums}th{background:#f4f4f4}img{max-width:100%;border:1px solid #ddd}"
-       "figure{margin:1em 0 2em}figcaption{color:#555;font-size:0.9em}.note{color:#a33}</style></head><body>\n";
-  h << "<h1>" << heading << "</h1>\n<p>Report of <code>" << escape(o.run_json) << "</code>.</p>\n";
+  return heading;
+}
 
+void write_configuration(std::ostream& h, const json& j) {
   h << "<h2>Configuration</h2>\n<table>\n";
   static const std::set<std::string> kShownElsewhere{"simulated", "wall", "processors", "ops", "events", "messages"};
   for (const auto& [k, v] : j.items()) {
     if (!kShownElsewhere.count(k)) setting_rows(h, k, v, 1);
   }
   h << "</table>\n";
+}
 
+void write_times(std::ostream& h, const json& j) {
   const double sim_total = number_at(j, "simulated", "total_s");
   const double wall_total = number_at(j, "wall", "total_s");
   h << "<h2>Simulated time next to wall-clock time</h2>\n<table>\n"
@@ -152,13 +141,14 @@ std::string write_run_report(const ReportOptions& o) {
   if (j.contains("events")) table_row(h, "discrete events", show(j["events"]), "&nbsp;");
   if (j.contains("messages")) table_row(h, "messages sent", show(j["messages"]), "&nbsp;");
   h << "</table>\n";
-
   if (j.contains("ops") && j["ops"].is_object() && !j["ops"].empty()) {
     h << "<h2>Counted operations</h2>\n<table>\n";
     for (const auto& [k, v] : j["ops"].items()) table_row(h, k, show(v));
     h << "</table>\n";
   }
+}
 
+void write_processors(std::ostream& h, const json& j) {
   if (j.contains("processors") && j["processors"].is_array() && !j["processors"].empty()) {
     const auto& ps = j["processors"];
     h << "<details" << (ps.size() <= 16 ? " open" : "") << "><summary><b>Processors</b> (" << ps.size()
@@ -174,7 +164,11 @@ std::string write_run_report(const ReportOptions& o) {
     }
     h << "</table></details>\n";
   }
+}
 
+// The run's image, copied beside the page.
+void write_image(std::ostream& h, const json& j, const ReportOptions& o) {
+  std::error_code ec;
   if (const auto [app, named] = find_setting(j, "image"); named) {
     const fs::path image = resolve_named(named->get<std::string>(), o.run_json);
     h << "<h2>Image</h2>\n";
@@ -192,7 +186,10 @@ std::string write_run_report(const ReportOptions& o) {
       h << "<p class=\"note\">The run names the image " << escape(image.string()) << ", which does not exist.</p>\n";
     }
   }
+}
 
+// The trace's plots, drawn by gcsim plot into OUT/plots.
+void write_trace(std::ostream& h, const json& j, const ReportOptions& o) {
   std::string trace = o.trace;
   if (const auto [app, named] = find_setting(j, "trace"); trace.empty() && named) {
     trace = resolve_named(named->get<std::string>(), o.run_json).string();
@@ -216,6 +213,33 @@ std::string write_run_report(const ReportOptions& o) {
       }
     }
   }
+}
+
+}  // namespace
+
+std::string write_run_report(const ReportOptions& o) {
+  const json j = read_run_json(o.run_json);
+  if (!o.trace.empty() && !fs::exists(o.trace) && !fs::exists(fs::path(o.trace).replace_extension(".csv"))) {
+    throw std::runtime_error("--trace " + o.trace + ": no such file (expected FILE.json written by --trace, with FILE.csv beside it)");
+  }
+  std::error_code ec;
+  fs::create_directories(o.out_dir, ec);
+  if (ec) throw std::runtime_error("--out " + o.out_dir + ": cannot create the directory: " + ec.message());
+
+  std::ostringstream h;
+  const std::string heading = report_heading(j);
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << heading << "</title>\n"
+    << "<style>body{font-family:sans-serif;max-width:1200px;margin:2em auto;padding:0 1em;color:#222}"
+       "table{border-collapse:collapse;margin:0.5em 0 1.5em}th,td{border:1px solid #ccc;padding:3px 10px;text-align:left}"
+       "td{font-variant-numeric:tabular-nums}th{background:#f4f4f4}img{max-width:100%;border:1px solid #ddd}"
+       "figure{margin:1em 0 2em}figcaption{color:#555;font-size:0.9em}.note{color:#a33}</style></head><body>\n";
+  h << "<h1>" << heading << "</h1>\n<p>Report of <code>" << escape(o.run_json) << "</code>.</p>\n";
+
+  write_configuration(h, j);
+  write_times(h, j);
+  write_processors(h, j);
+  write_image(h, j, o);
+  write_trace(h, j, o);
   h << "<hr><p><small>Written by <code>gcsim report</code>. Simulated times are the modelled machine's; wall "
        "times are the host's.</small></p>\n</body></html>\n";
 
