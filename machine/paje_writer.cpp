@@ -73,7 +73,7 @@ constexpr StateValue kStates[] = {
 
 // Simulated milliseconds, exact: picoseconds are the ninth decimal.
 std::string ms(SimTime t) {
-  if (t < 0) return "-" + ms(-t);
+  if (t < 0) return fmt::format("-{}", ms(-t));
   return fmt::format("{}.{:09d}", t / kMillisecond, t % kMillisecond);
 }
 
@@ -119,14 +119,8 @@ class PajeFile {
   std::string buffer_;
 };
 
-}  // namespace
-
-void write_paje(const TraceCsv& trace, const std::string& path) {
-  PajeFile out(path);
-  out.raw(kHeader);
-  const Mesh mesh(std::max(1, trace.mesh_width), std::max(1, trace.mesh_height));
-
-  // Type hierarchy: Machine > Node > Channel; states on Node, a variable on Channel, links in Machine.
+// Type hierarchy: Machine > Node > Channel; states on Node, a variable on Channel, links in Machine.
+void write_types(PajeFile& out) {
   out.line("{} M 0 \"Machine\"", int(kDefineContainerType));
   out.line("{} N M \"Node\"", int(kDefineContainerType));
   out.line("{} T N \"Thread\"", int(kDefineContainerType));
@@ -141,32 +135,45 @@ void write_paje(const TraceCsv& trace, const std::string& path) {
   out.line("{} L M N N \"Message\"", int(kDefineLinkType));
   // The links' value "msg" is left undefined: ViTE rejects entity values of link types, and
   // Paje readers (ViTE, pajeng) take an undefined link value as its own name.
+}
 
-  // Containers: every processor, and the channels the trace uses (link records exist at level full).
+// Containers: every processor, and the channels the trace uses (link records exist at level full).
+struct Containers {
   std::set<int> channels;
   std::set<std::pair<int, int>> threads;  // (processor, thread > 0): threads spawned on a node overlap it in time
   SimTime last = 0;
+};
+
+Containers find_containers(const TraceCsv& trace, const Mesh& mesh) {
+  Containers c;
   for (const StoredTraceRecord& r : trace.records) {
-    if (r.kind == TraceKind::link && r.id >= 0 && r.id < mesh.channel_count()) channels.insert(static_cast<int>(r.id));
-    if (is_state(r.kind) && r.thread > 0 && r.proc >= 0 && r.proc < trace.processors) threads.insert({r.proc, r.thread});
-    last = std::max(last, r.end);
+    if (r.kind == TraceKind::link && r.id >= 0 && r.id < mesh.channel_count()) c.channels.insert(static_cast<int>(r.id));
+    if (is_state(r.kind) && r.thread > 0 && r.proc >= 0 && r.proc < trace.processors) c.threads.insert({r.proc, r.thread});
+    c.last = std::max(c.last, r.end);
   }
+  return c;
+}
+
+void create_containers(PajeFile& out, const TraceCsv& trace, const Mesh& mesh, const Containers& c) {
   out.line("{} {} gc M 0 \"GC-PowerPlus {} processors, mesh {}x{}\"", int(kCreateContainer), ms(0), trace.processors,
            trace.mesh_width, trace.mesh_height);
   for (int p = 0; p < trace.processors; ++p) {
     out.line("{} {} p{} N gc \"P{} ({},{})\"", int(kCreateContainer), ms(0), p, p, mesh.x(p), mesh.y(p));
   }
-  for (const auto& [p, t] : threads) {
+  for (const auto& [p, t] : c.threads) {
     out.line("{} {} p{}t{} T p{} \"P{} thread {}\"", int(kCreateContainer), ms(0), p, t, p, p, t);
   }
-  for (int ch : channels) {
+  for (int ch : c.channels) {
     const MeshChannel e = mesh.channel_ends(ch);
     if (e.from >= trace.processors) continue;
     out.line("{} {} c{} C p{} \"channel {} P{}->P{} {}\"", int(kCreateContainer), ms(0), ch, e.from, ch, e.from, e.to,
              direction_name(ch));
     out.line("{} {} V c{} 0", int(kSetVariable), ms(0), ch);
   }
+}
 
+// Every record's start and end, in time order; records of containers that do not exist are left out.
+std::vector<TimedEvent> timed_events(const TraceCsv& trace, const Mesh& mesh, const Containers& c) {
   std::vector<TimedEvent> events;
   events.reserve(trace.records.size() * 2);
   auto in_range = [&](int p) { return p >= 0 && p < trace.processors; };
@@ -174,7 +181,7 @@ void write_paje(const TraceCsv& trace, const std::string& path) {
     const StoredTraceRecord& r = trace.records[i];
     if (r.kind == TraceKind::link) {
       const MeshChannel e = mesh.channel_ends(static_cast<int>(r.id));
-      if (!channels.count(static_cast<int>(r.id)) || e.from >= trace.processors) continue;
+      if (!c.channels.count(static_cast<int>(r.id)) || e.from >= trace.processors) continue;
     } else if (r.kind == TraceKind::message) {
       if (!in_range(r.proc) || !in_range(r.peer)) continue;
     } else if (!in_range(r.proc) || r.end <= r.start) {
@@ -184,31 +191,46 @@ void write_paje(const TraceCsv& trace, const std::string& path) {
     events.push_back({r.end, 0, i});
   }
   std::sort(events.begin(), events.end());
+  return events;
+}
 
-  for (const TimedEvent& e : events) {
-    const StoredTraceRecord& r = trace.records[e.record];
-    const std::string t = ms(e.time);
-    if (is_state(r.kind) && r.thread > 0) {
-      if (e.phase == 1) out.line("{} {} TS p{}t{} t_{}", int(kPushState), t, r.proc, r.thread, to_string(r.kind));
-      else out.line("{} {} TS p{}t{}", int(kPopState), t, r.proc, r.thread);
-    } else if (is_state(r.kind)) {
-      if (e.phase == 1) out.line("{} {} S p{} {}", int(kPushState), t, r.proc, to_string(r.kind));
-      else out.line("{} {} S p{}", int(kPopState), t, r.proc);
-    } else if (r.kind == TraceKind::message) {
-      if (e.phase == 1) out.line("{} {} L gc msg p{} m{}", int(kStartLink), t, r.proc, r.id);
-      else out.line("{} {} L gc msg p{} m{}", int(kEndLink), t, r.peer, r.id);
-    } else {
-      out.line("{} {} V c{} 1", int(e.phase == 1 ? kAddVariable : kSubVariable), t, r.id);
-    }
+void write_event(PajeFile& out, const TimedEvent& e, const StoredTraceRecord& r) {
+  const std::string t = ms(e.time);
+  if (is_state(r.kind) && r.thread > 0) {
+    if (e.phase == 1) out.line("{} {} TS p{}t{} t_{}", int(kPushState), t, r.proc, r.thread, to_string(r.kind));
+    else out.line("{} {} TS p{}t{}", int(kPopState), t, r.proc, r.thread);
+  } else if (is_state(r.kind)) {
+    if (e.phase == 1) out.line("{} {} S p{} {}", int(kPushState), t, r.proc, to_string(r.kind));
+    else out.line("{} {} S p{}", int(kPopState), t, r.proc);
+  } else if (r.kind == TraceKind::message) {
+    if (e.phase == 1) out.line("{} {} L gc msg p{} m{}", int(kStartLink), t, r.proc, r.id);
+    else out.line("{} {} L gc msg p{} m{}", int(kEndLink), t, r.peer, r.id);
+  } else {
+    out.line("{} {} V c{} 1", int(e.phase == 1 ? kAddVariable : kSubVariable), t, r.id);
   }
+}
 
-  // Closing the containers at the last event, innermost first.
-  for (int ch : channels) {
-    if (mesh.channel_ends(ch).from < trace.processors) out.line("{} {} C c{}", int(kDestroyContainer), ms(last), ch);
+// Closing the containers at the last event, innermost first.
+void close_containers(PajeFile& out, const TraceCsv& trace, const Mesh& mesh, const Containers& c) {
+  for (int ch : c.channels) {
+    if (mesh.channel_ends(ch).from < trace.processors) out.line("{} {} C c{}", int(kDestroyContainer), ms(c.last), ch);
   }
-  for (const auto& [p, t] : threads) out.line("{} {} T p{}t{}", int(kDestroyContainer), ms(last), p, t);
-  for (int p = 0; p < trace.processors; ++p) out.line("{} {} N p{}", int(kDestroyContainer), ms(last), p);
-  out.line("{} {} M gc", int(kDestroyContainer), ms(last));
+  for (const auto& [p, t] : c.threads) out.line("{} {} T p{}t{}", int(kDestroyContainer), ms(c.last), p, t);
+  for (int p = 0; p < trace.processors; ++p) out.line("{} {} N p{}", int(kDestroyContainer), ms(c.last), p);
+  out.line("{} {} M gc", int(kDestroyContainer), ms(c.last));
+}
+
+}  // namespace
+
+void write_paje(const TraceCsv& trace, const std::string& path) {
+  PajeFile out(path);
+  out.raw(kHeader);
+  const Mesh mesh(std::max(1, trace.mesh_width), std::max(1, trace.mesh_height));
+  write_types(out);
+  const Containers containers = find_containers(trace, mesh);
+  create_containers(out, trace, mesh, containers);
+  for (const TimedEvent& e : timed_events(trace, mesh, containers)) write_event(out, e, trace.records[e.record]);
+  close_containers(out, trace, mesh, containers);
   out.flush();
 }
 
