@@ -142,11 +142,11 @@ int mpi_size() {
 MpiRunResult run_mpi(const SimulationOptions& options, const std::function<void(Processor&)>& program) {
   mpi_initialize();
   const int size = mpi_size();
-  const int nodes = options.nodes > 0 ? options.nodes : options.config.nodes;
+  const int nodes = options.config.nodes;
   if (nodes != size)
     throw ParixError(fmt::format("the MPI backend runs one processor per rank: {} ranks (mpirun -np {}) but {} nodes "
                                  "(expected --nodes {} or mpirun -np {})", size, size, nodes, size, nodes));
-  const machine::MachineConfig config = options.nodes > 0 ? machine::with_nodes(options.config, nodes) : options.config;
+  const machine::MachineConfig& config = options.config;
   mpi::RankState state;
   state.rank = mpi_rank();
   state.size = size;

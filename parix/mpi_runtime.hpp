@@ -27,7 +27,7 @@ struct MpiRunResult {
   bool root = false;
 };
 
-// options.nodes (or the config's node count) must equal the number of ranks; the machine file
+// The machine's node count (options.config.nodes) must equal the number of ranks; the machine file
 // supplies the name and the node memory that use_memory() checks against.
 MpiRunResult run_mpi(const SimulationOptions& options, const std::function<void(Processor&)>& program);
 

@@ -15,9 +15,9 @@
 namespace gcsim::parix {
 
 struct SimulationOptions {
+  // The machine the program runs on: one processor per node (machine::with_nodes cuts a machine
+  // down to N nodes), connected by the config's network model.
   machine::MachineConfig config;
-  int nodes = 0;                       // 0: every node of the config
-  std::string network_model;           // "" : the config's default
   machine::TraceOptions trace;         // no path: no trace
   // Processor i runs on node placement[i]; empty: processor i on node i. A permutation of the
   // nodes, e.g. machine::map_onto_mesh(...).node_of for a virtual topology (parix/virtual_topology.hpp).

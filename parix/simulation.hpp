@@ -118,10 +118,10 @@ std::vector<int> checked_placement(const std::vector<int>& placement, int nodes)
 class Simulation {
  public:
   explicit Simulation(const SimulationOptions& o)
-      : config(o.nodes > 0 ? machine::with_nodes(o.config, o.nodes) : o.config),
+      : config(o.config),
         mesh(config.mesh_width, config.mesh_height),
         trace(o.trace, config.nodes, config.mesh_width, config.mesh_height),
-        network(machine::make_network_model(o.network_model.empty() ? config.network_model : o.network_model,
+        network(machine::make_network_model(config.network_model,
                                             {kernel, mesh, config, trace.enabled() ? &trace : nullptr})),
         connections(config, mesh),
         fibers(static_cast<std::size_t>(config.fiber_stack_bytes)) {

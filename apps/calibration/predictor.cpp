@@ -20,8 +20,7 @@ namespace {
 parix::SimulationOptions simulation(const machine::MachineConfig& c, int nodes, const std::string& model) {
   parix::SimulationOptions s;
   s.config = machine::with_nodes(c, nodes);
-  s.nodes = nodes;
-  s.network_model = model;
+  if (!model.empty()) s.config.network_model = model;  // "": the machine file's own
   return s;
 }
 

@@ -112,7 +112,6 @@ void print_bcast_table(const MachineOptions& mo) {
       for (int s = 0; s < 4; ++s) {
         parix::RunOptions so{whole.backend, whole_machine};
         so.simulation.config = machine::with_nodes(whole_machine.config, n);
-        so.simulation.nodes = n;
         const std::int64_t bytes = kThesisBroadcastSizes[s];
         const parix::BcastAlgo a = parse_algo(algo);
         parix::RunResult r = parix::run(so, [&](parix::Processor& p) { all_node_broadcast(p, bytes, a); });

@@ -158,7 +158,7 @@ ParallelMediaResult render_media_parallel(const MediaScene& scene, const MarchSe
                                           const parix::SimulationOptions& sim) {
   ParallelMediaResult result;
   result.image = apps::Image(scene.camera.width, scene.camera.height);
-  std::vector<RenderCounters> per_node(static_cast<std::size_t>(sim.nodes));
+  std::vector<RenderCounters> per_node(static_cast<std::size_t>(sim.config.nodes));
   result.run = parix::run_simulated(
       sim, [&](parix::Processor& p) { media_program(p, scene, settings, seed, result, per_node); });
   for (const RenderCounters& c : per_node) result.counters.add(c);

@@ -7,7 +7,7 @@
 namespace gcsim::pipeline {
 
 std::unique_ptr<Outcome> run_experiment(const Experiment& e, const parix::RunOptions& options, nlohmann::json* reached) {
-  const int nodes = options.simulation.nodes > 0 ? options.simulation.nodes : options.simulation.config.nodes;
+  const int nodes = options.simulation.config.nodes;
   int fullest = 0;
   const std::vector<MemoryNeed> needs = e.node_memory(nodes, &fullest);
   check_node_memory(needs, fullest, options.simulation.config.memory_bytes, options.simulation.memory_limit);

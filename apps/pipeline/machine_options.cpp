@@ -80,8 +80,7 @@ parix::SimulationOptions simulation_options(const MachineOptions& o, int default
   std::optional<machine::MeshShape> shape;
   if (!o.shape.empty()) shape = machine::parse_mesh_shape(o.shape);
   s.config = machine::with_nodes(s.config, n, shape);
-  s.nodes = n;
-  s.network_model = o.model;
+  if (!o.model.empty()) s.config.network_model = o.model;
   s.memory_limit = machine::parse_memory_limit(o.memory_limit);
   s.trace.path = o.trace;
   s.trace.level = machine::parse_trace_level(o.trace_level);

@@ -22,7 +22,7 @@ void add_run_command(CLI::App& run, const AppSpec& app) {
     check_machine_outputs(*machine);
     e->check_outputs();
     const parix::RunOptions options = run_options(*machine, default_nodes);
-    e->print_setup(options.simulation.nodes);
+    e->print_setup(options.simulation.config.nodes);
     std::unique_ptr<Outcome> out;
     nlohmann::json reached = nlohmann::json::object();
     try {

@@ -312,7 +312,7 @@ void ParallelRenderJob::finish(ParallelRender& out) const {
 ParallelRender render_parallel(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Distribution distribution,
                                const parix::SimulationOptions& options) {
   const ParallelRenderJob job(scene, bvh, settings, distribution);
-  ParallelRender out = job.new_result(options.nodes > 0 ? options.nodes : options.config.nodes);
+  ParallelRender out = job.new_result(options.config.nodes);
   out.run = parix::run({"simulated", options}, [&](parix::Processor& p) { job.program(p, out); });
   job.finish(out);
   return out;

@@ -13,8 +13,8 @@ double broadcast_ms(const std::string& config_file, int nodes, std::int64_t byte
                     const std::string& model = "") {
   parix::SimulationOptions o;
   o.config = config_file.empty() ? machine::default_machine_config() : machine::load_machine_config(config_file);
-  o.nodes = nodes;
-  o.network_model = model;
+  o.config = machine::with_nodes(o.config, nodes);
+  if (!model.empty()) o.config.network_model = model;  // "": the machine file's own
   return machine::to_milliseconds(
       parix::run({"simulated", o}, [&](parix::Processor& p) { all_node_broadcast(p, bytes, algo); }).makespan);
 }

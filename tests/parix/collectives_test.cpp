@@ -12,7 +12,7 @@ namespace {
 SimulationOptions on_nodes(int n) {
   SimulationOptions o;
   o.config = machine::default_machine_config();
-  o.nodes = n;
+  o.config = machine::with_nodes(o.config, n);
   return o;
 }
 

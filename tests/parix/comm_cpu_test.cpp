@@ -23,7 +23,7 @@ SimulationOptions with_costs(SimTime send, SimTime recv, SimTime connect, double
   o.config.comm_cpu.recv = recv;
   o.config.comm_cpu.connect = connect;
   o.config.comm_cpu.seconds_per_byte = ns_per_byte * 1e-9;
-  o.nodes = 2;
+  o.config = machine::with_nodes(o.config, 2);
   return o;
 }
 

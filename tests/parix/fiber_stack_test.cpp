@@ -107,7 +107,7 @@ void run_deep_program() {
   SimulationOptions o;
   o.config = machine::default_machine_config();
   o.config.fiber_stack_bytes = 16 << 10;
-  o.nodes = 4;
+  o.config = machine::with_nodes(o.config, 4);
   run_simulated(o, [](Processor& p) {
     if (p.id() == 3) dig(40);
   });
@@ -124,7 +124,7 @@ TEST(FiberStackPool, TheSameProgramRunsWithALargerStack) {
   SimulationOptions o;
   o.config = machine::default_machine_config();
   o.config.fiber_stack_bytes = 256 << 10;
-  o.nodes = 4;
+  o.config = machine::with_nodes(o.config, 4);
   const RunResult r = run_simulated(o, [](Processor& p) {
     if (p.id() == 3) dig(40);
   });

@@ -18,7 +18,7 @@ constexpr std::int64_t kMB = std::int64_t(1) << 20;
 SimulationOptions on_nodes(int n, machine::MemoryLimit limit = machine::MemoryLimit::enforce) {
   SimulationOptions o;
   o.config = machine::default_machine_config();  // 32 MB a node
-  o.nodes = n;
+  o.config = machine::with_nodes(o.config, n);
   o.memory_limit = limit;
   return o;
 }

@@ -15,8 +15,8 @@ using machine::kMillisecond;
 SimulationOptions on_nodes(int n, const std::string& model = "") {
   SimulationOptions o;
   o.config = machine::default_machine_config();
-  o.nodes = n;
-  o.network_model = model;
+  o.config = machine::with_nodes(o.config, n);
+  if (!model.empty()) o.config.network_model = model;  // "": the machine file's own
   return o;
 }
 
@@ -328,7 +328,7 @@ TEST(Runtime, ReportsStatsPerProcessor) {
 TEST(Runtime, ManyProcessorsBeyondTheGC) {
   SimulationOptions o;
   o.config = machine::load_machine_config(GCSIM_SOURCE_DIR "/configs/whatif-1024-nodes.toml");
-  o.nodes = 1024;
+  o.config = machine::with_nodes(o.config, 1024);
   int sum = 0;
   run_simulated(o, [&](Processor& p) {
     p.compute("cycle", p.id());

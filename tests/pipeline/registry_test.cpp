@@ -52,7 +52,6 @@ TEST(AppRegistry, CommandFamiliesAddTheirCommandsAfterTheAppsAndShareTheirNames)
 TEST(Backend, SimulatedRunsTheProgramOnEveryNode) {
   parix::RunOptions o;
   o.simulation.config = machine::with_nodes(machine::default_machine_config(), 4);
-  o.simulation.nodes = 4;
   int ran = 0;
   const parix::RunResult r = parix::run(o, [&](parix::Processor& p) {
     ++ran;

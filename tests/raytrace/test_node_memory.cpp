@@ -26,7 +26,6 @@ TEST(ParallelNodeMemory, APictureTooBigForOneNodeFitsOnEight) {
   auto on = [&](int nodes) {
     parix::SimulationOptions o;
     o.config = machine::with_nodes(small, nodes);
-    o.nodes = nodes;
     return o;
   };
   try {

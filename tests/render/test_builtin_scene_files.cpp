@@ -79,7 +79,6 @@ TEST(BuiltinSceneFiles, CornellFileGivesTheBuiltInRadiositiesExactly) {
   options.solver.energy = 0.9;
   parix::SimulationOptions sim;
   sim.config = machine::with_nodes(machine::default_machine_config(), 2);
-  sim.nodes = 2;
   ParallelOutcome a, b;
   const auto run_a = parix::run_simulated(sim, [&](parix::Processor& p) { radiosity_program(p, from_file, options, &a); });
   const auto run_b = parix::run_simulated(sim, [&](parix::Processor& p) { radiosity_program(p, built_in, options, &b); });

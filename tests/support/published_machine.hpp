@@ -8,7 +8,6 @@ namespace gcsim::test_support {
 inline parix::SimulationOptions published_machine(int nodes) {
   parix::SimulationOptions o;
   o.config = machine::with_nodes(machine::default_machine_config(), nodes);
-  o.nodes = nodes;
   return o;
 }
 

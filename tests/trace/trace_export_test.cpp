@@ -79,7 +79,7 @@ std::vector<std::string> lines_of(const std::string& text) {
 void run_small_program(const fs::path& dir, machine::TraceLevel level = machine::TraceLevel::full) {
   parix::SimulationOptions o;
   o.config = small_machine();
-  o.network_model = "analytic";
+  o.config.network_model = "analytic";
   o.trace.path = (dir / "t.json").string();
   o.trace.level = level;
   parix::run_simulated(o, [](parix::Processor& p) {
@@ -223,8 +223,8 @@ TEST(TraceExport, BusyRunsFollowPerfettosRules) {
   const fs::path d = fresh_dir("busy");
   parix::SimulationOptions o;
   o.config = machine::default_machine_config();
-  o.nodes = 16;
-  o.network_model = "flow";
+  o.config = machine::with_nodes(o.config, 16);
+  o.config.network_model = "flow";
   o.trace.path = (d / "t.json").string();
   parix::run_simulated(o, [](parix::Processor& p) {
     if (p.id() == 0) {
