@@ -113,6 +113,25 @@ void threads(parix::Processor& p, std::vector<int>& out) {
   if (p.id() == 0) out.push_back(total);
 }
 
+void cancelled_receives(parix::Processor& p, std::vector<int>& out) {
+  // Each processor withdraws a receive from its predecessor before anything is sent: the
+  // predecessor's message goes to the next receive instead. Connect order as in threads().
+  if (p.count() == 1) return;
+  const int next = (p.id() + 1) % p.count(), prev = (p.id() + p.count() - 1) % p.count();
+  parix::Link to, from;
+  if (p.id() % 2 == 0) to = p.connect(next, 9), from = p.connect(prev, 9);
+  else from = p.connect(prev, 9), to = p.connect(next, 9);
+  parix::Request withdrawn = p.irecv(from);
+  const int cancelled = p.cancel(withdrawn) ? 1 : 0;
+  p.wait(withdrawn);  // returns at once
+  const int mine = 100 + p.id();
+  parix::Request sent = p.isend(to, std::as_bytes(std::span(&mine, 1)));
+  const int got = p.recv_value<int>(from);
+  p.wait(sent);
+  const int total = parix::allreduce_sum(p, 1000 * cancelled + got + static_cast<int>(withdrawn.take().size()));
+  if (p.id() == 0) out.push_back(total);
+}
+
 }  // namespace
 
 int main() {
@@ -120,6 +139,7 @@ int main() {
   compare<std::vector<double>>("collectives", collectives);
   compare<std::vector<float>>("CORNELL radiosities", cornell_radiosities);
   compare<std::vector<int>>("node-local threads", threads);
+  compare<std::vector<int>>("cancelled receives", cancelled_receives);
   compare<std::vector<double>>("collectives", collectives, true);
   compare<std::vector<int>>("node-local threads", threads, true);
   if (parix::mpi_rank() == 0) std::printf("%d passed, %d failed\n", passed, failed);
