@@ -7,6 +7,7 @@
 
 #include <cstring>
 #include <string>
+#include <utility>
 
 namespace gcsim::parix {
 namespace {
@@ -14,10 +15,11 @@ namespace {
 using machine::kMicrosecond;
 using machine::kMillisecond;
 
-SimulationOptions on_nodes(int n) {
+SimulationOptions on_nodes(int n, const std::string& model = "") {
   SimulationOptions o;
   o.config = machine::default_machine_config();
   o.nodes = n;
+  o.network_model = model;
   return o;
 }
 
@@ -96,6 +98,34 @@ TEST(Cancel, AWithdrawnSendIsNeverDeliveredAndItsSuccessorStillArrivesInOrder) {
   EXPECT_TRUE(still_waiting);
   EXPECT_TRUE(withdrew_the_spare);
   EXPECT_EQ(r.processors[1].finish, received + 10 * kMillisecond);
+}
+
+// When the message after a withdrawn one is received, and the sender's clock at the end, with and
+// without the cancellation: a withdrawn message still takes its time in the network.
+std::pair<SimTime, SimTime> successor_received(const std::string& model, bool withdraw) {
+  SimTime received = -1, sender_done = -1;
+  run_simulated(on_nodes(2, model), [&](Processor& p) {
+    Link l = p.connect(1 - p.id());
+    if (p.id() == 0) {
+      Request long_one = p.isend(l, Bytes(3000, std::byte{'A'}));
+      Request short_one = p.isend(l, bytes_of("B"));
+      if (withdraw) EXPECT_TRUE(p.cancel(long_one));
+      else p.wait(long_one);
+      p.wait(short_one);
+      sender_done = p.now();
+      return;
+    }
+    if (!withdraw) p.recv(l);
+    EXPECT_EQ(p.recv(l), bytes_of("B"));
+    received = p.now();
+  });
+  return {received, sender_done};
+}
+
+TEST(Cancel, LaterMessagesArriveAsIfTheWithdrawnOneHadBeenDelivered) {
+  for (const std::string model : {"analytic", "flow", "packet"}) {
+    EXPECT_EQ(successor_received(model, true), successor_received(model, false)) << model;
+  }
 }
 
 TEST(Cancel, ACompletedCommunicationCannotBeCancelled) {
