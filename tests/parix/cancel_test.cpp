@@ -128,6 +128,26 @@ TEST(Cancel, LaterMessagesArriveAsIfTheWithdrawnOneHadBeenDelivered) {
   }
 }
 
+// A withdrawn message is never charged to the receiver's node: with its 64 KB, the receiver's node
+// could not also hold all but 32 KB of its memory.
+void hold_nearly_all_memory_after_64_kb_arrive(bool withdraw) {
+  run_simulated(on_nodes(2), [&](Processor& p) {
+    Link l = p.connect(1 - p.id());
+    if (p.id() == 0) {
+      Request r = p.isend(l, Bytes(1 << 16));
+      if (withdraw) EXPECT_TRUE(p.cancel(r));
+      return;
+    }
+    p.compute("cycle", 800'000);  // 10 ms: the 64 KB arrive in 7.6 ms
+    auto held = p.reserve_memory(machine::default_machine_config().memory_bytes - (1 << 15), "scene");
+  });
+}
+
+TEST(Cancel, AWithdrawnMessageIsNeverChargedToTheReceiver) {
+  EXPECT_THROW(hold_nearly_all_memory_after_64_kb_arrive(false), OutOfMemoryError);
+  EXPECT_NO_THROW(hold_nearly_all_memory_after_64_kb_arrive(true));
+}
+
 TEST(Cancel, ACompletedCommunicationCannotBeCancelled) {
   bool send_cancelled = true, recv_cancelled = true, early_cancelled = true, recv_done = false;
   Bytes got, early;
