@@ -1,10 +1,14 @@
 #pragma once
-// Activities, as SimGrid calls them: what a simulated process starts and later waits for -- a
-// computation on its node, the set-up of a connection, a communication. The machine model
-// finishes an activity by an event (complete()), which wakes the process waiting on it. A process
-// can test an activity without blocking, wait for it (SimProcess::wait_for_activity), or cancel it
-// when the run is abandoned; a cancelled activity ignores its completion.
-// Communications are RequestState objects (parix/processor.hpp), the activity behind a Request.
+// Activities, as SimGrid calls them: what a process starts and later tests, waits for or cancels
+// -- a computation on its node, the set-up of a connection, a communication. Each is running until
+// it ends done (complete(), by the machine model's event, which wakes whoever waits on it) or
+// cancelled (cancel()); the first of the two wins and the state never changes again, so an event
+// arriving for a cancelled activity is ignored.
+//  - Computations and connection set-ups are cancelled only when a run is abandoned (deadlock,
+//    error, interruption): SimProcess::wait_for_activity cancels what it was waiting for.
+//  - Communications are RequestState objects (parix/processor.hpp), the activity behind a Request.
+//    The application cancels them with Processor::cancel(Request&); the backend decides whether a
+//    communication can still be withdrawn (see processor.hpp) and only then calls cancel().
 #include <functional>
 
 namespace gcsim::parix::detail {
@@ -13,18 +17,22 @@ class Activity {
  public:
   enum class State { running, done, cancelled };
 
-  // The process (or whoever) to wake when the activity completes; empty: nobody waits.
+  // The process (or whoever) to wake when the activity ends, done or cancelled; empty: nobody waits.
   std::function<void()> on_complete;
 
   State state() const { return state_; }
+  bool running() const { return state_ == State::running; }
   bool test() const { return state_ == State::done; }
+  bool cancelled() const { return state_ == State::cancelled; }
   void complete() {
     if (state_ != State::running) return;
     state_ = State::done;
     if (on_complete) on_complete();
   }
   void cancel() {
-    if (state_ == State::running) state_ = State::cancelled;
+    if (state_ != State::running) return;
+    state_ = State::cancelled;
+    if (on_complete) on_complete();  // a waiter (another thread of the process) stops waiting
   }
 
  private:

@@ -149,13 +149,15 @@ Request MpiProcessor::irecv(Link& link) {
 }
 
 bool MpiProcessor::poll(RequestState& state) {
-  if (state.done) return true;
+  if (!state.running()) return true;
   auto& r = static_cast<MpiRequest&>(state);
   if (!r.is_receive) {
     int flag = 0;
     check(MPI_Test(&r.request, &flag, MPI_STATUS_IGNORE), "wait");
-    if (flag) r.buffer.clear();
-    return r.done = flag != 0;
+    if (!flag) return false;
+    r.buffer.clear();
+    r.complete();
+    return true;
   }
   int flag = 0;
   MPI_Message message;
@@ -166,12 +168,14 @@ bool MpiProcessor::poll(RequestState& state) {
   MPI_Get_count(&status, MPI_BYTE, &size);
   r.data.resize(static_cast<std::size_t>(size));
   check(MPI_Mrecv(r.data.data(), size, MPI_BYTE, &message, MPI_STATUS_IGNORE), "recv");
-  return r.done = true;
+  r.complete();
+  return true;
 }
 
 void MpiProcessor::block_on(RequestState& r, const char* call, machine::TraceKind kind) {
   const SimTime start = now();
   for (int spins = 0; !poll(r); ++spins) back_off(spins);
+  if (r.cancelled()) return;  // withdrawn: returns at once, as on the simulated backend
   count_comm(start, now(), r.peer, static_cast<std::int64_t>(r.data.size()), call, kind);
 }
 
@@ -190,15 +194,36 @@ std::size_t MpiProcessor::wait_any(std::span<Request* const> rs) {
   if (rs.empty()) throw ParixError(fmt::format("processor {}: wait_any on no requests", id()));
   const SimTime start = now();
   for (int spins = 0;; ++spins) {
+    bool any_running = false;
     for (std::size_t i = 0; i < rs.size(); ++i) {
       if (!rs[i]->valid()) throw ParixError(fmt::format("processor {}: wait_any on an empty request", id()));
+      if (rs[i]->cancelled()) continue;
+      any_running = true;
       if (poll(*rs[i]->state())) {
         count_comm(start, now(), rs[i]->state()->peer, 0, "wait_any", machine::TraceKind::wait);
         return i;
       }
     }
+    if (!any_running) throw ParixError(fmt::format("processor {}: wait_any on {} requests, all cancelled", id(), rs.size()));
     back_off(spins);
   }
+}
+
+bool MpiProcessor::cancel(Request& request) {
+  if (!request.valid()) throw ParixError(fmt::format("processor {}: cancel on an empty request", id()));
+  RequestState& r = *request.state();
+  if (!r.running()) return r.cancelled();
+  // A receive is matched (MPI_Improbe + MPI_Mrecv) only inside poll, so a running one holds no
+  // message: withdrawing it is marking it, and the message it would have taken stays queued in
+  // MPI for the link's next receive.
+  if (r.is_receive) {
+    r.cancel();
+    return true;
+  }
+  if (poll(r)) return false;  // MPI has completed the send: it is done
+  throw ParixError(fmt::format("processor {}: cancel of a send to processor {} still in progress: the MPI backend cannot "
+                               "withdraw a message MPI has taken (MPI_Cancel of sends is deprecated and not honoured by Open MPI)",
+                               id(), r.peer));
 }
 
 Thread MpiProcessor::spawn(std::function<void(Processor&)> body) {

@@ -55,6 +55,7 @@ class MpiProcessor final : public Processor {
   Request irecv(Link& link) override;
   void wait(Request& r) override;
   std::size_t wait_any(std::span<Request* const> rs) override;
+  bool cancel(Request& r) override;
   Thread spawn(std::function<void(Processor&)> body) override;
 
  protected:
@@ -66,7 +67,7 @@ class MpiProcessor final : public Processor {
     int mpi_tag;
   };
   const LinkInfo& link_info(const Link& link, const char* call) const;
-  bool poll(RequestState& r);  // advances r; true once it is done
+  bool poll(RequestState& r);  // advances r; true once it is done or cancelled
   void block_on(RequestState& r, const char* call, machine::TraceKind kind);
   void count_comm(SimTime start, SimTime end, int peer, std::int64_t bytes, const char* call, machine::TraceKind kind);
 

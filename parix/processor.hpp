@@ -8,6 +8,7 @@
 //  - send() is synchronous: it returns once the receiver has the message. isend() returns at once;
 //    the message travels while the sender goes on. Messages on one link arrive in order.
 //  - recv() blocks until a message arrives on the link; irecv()/wait()/wait_any() split that up.
+//  - cancel(request) withdraws an isend or irecv that has not taken effect yet (see Processor).
 //  - compute() charges simulated CPU time for counted operations (cycles per operation and clock
 //    rate come from the machine file), so that simulated time is deterministic.
 //  - spawn() starts a thread on the same node; it shares the node's CPUs and this processor's id.
@@ -27,6 +28,7 @@
 #include <utility>
 
 #include "machine/sim_time.hpp"
+#include "parix/activity.hpp"
 
 namespace gcsim::parix {
 
@@ -65,14 +67,13 @@ class Link {
   std::int64_t handle_ = -1;
 };
 
-// Shared state of an asynchronous send or receive; backends fill it in.
-struct RequestState {
-  bool done = false;
+// Shared state of an asynchronous send or receive, an activity (parix/activity.hpp): running, then
+// done or cancelled. Backends fill it in; on_complete is backend-private (who to wake).
+struct RequestState : detail::Activity {
   bool is_receive = false;
   Bytes data;                  // received bytes once done (receives only)
   std::int64_t link = -1;      // link handle
   int peer = -1;
-  void* waiter = nullptr;      // backend-private: who to wake when done
   bool cpu_charged = false;    // backend-private: the receive's CPU cost was paid
 };
 
@@ -82,8 +83,12 @@ class Request {
   Request() = default;
   explicit Request(std::shared_ptr<RequestState> s) : state_(std::move(s)) {}
   bool valid() const { return state_ != nullptr; }
-  bool done() const { return state_ && state_->done; }
-  // The received bytes (a completed receive); moves them out.
+  // Whether the communication completed (never true for a cancelled one); does not block.
+  bool test() const { return state_ && state_->test(); }
+  bool done() const { return test(); }
+  // Whether Processor::cancel withdrew it.
+  bool cancelled() const { return state_ && state_->cancelled(); }
+  // The received bytes (a completed receive); moves them out. Empty for a cancelled receive.
   Bytes take() { return std::move(state_->data); }
   RequestState* state() const { return state_.get(); }
 
@@ -151,7 +156,24 @@ class Processor {
   virtual Request irecv(Link& link) = 0;
   virtual void wait(Request& r) = 0;
   // Blocks until one of the requests is done; returns its index (the lowest, if several are).
+  // Cancelled requests are skipped; throws ParixError if every request is cancelled.
   virtual std::size_t wait_any(std::span<Request* const> rs) = 0;
+  // Withdraws a communication that has not taken effect, like MPI_Cancel. Returns true if the
+  // request is now cancelled (also when it already was), false if it completed first.
+  //  - A receive not yet matched with a message is withdrawn: the link's next message goes to the
+  //    next receive posted on it, or waits for one. A receive holding its message is done.
+  //  - A send (isend) whose message has not been delivered is withdrawn: the receiver never gets
+  //    it and later messages on the link arrive as if it had never been sent. On the simulated
+  //    machine a message leaves while isend returns, so a withdrawn one still crosses the network
+  //    (its time and its share of the channels are unchanged: the network model and the link's
+  //    in-order delivery always finish what they started) and the receiving link drops it on
+  //    arrival, before it is charged to the receiver's memory. A delivered send is done.
+  //  - A cancelled request is finished but not done: wait() on it returns at once, taking no
+  //    time; test() stays false and take() gives nothing.
+  //  - MPI backend: receives as above (a receive is matched only while it is waited for). A send
+  //    MPI has completed returns false; a send still in progress cannot be withdrawn safely
+  //    (MPI_Cancel of sends is deprecated and not honoured by Open MPI) and throws ParixError.
+  virtual bool cancel(Request& r) = 0;
 
   virtual Thread spawn(std::function<void(Processor&)> body) = 0;
 

@@ -43,7 +43,7 @@ void SimProcess::wake() {
 }
 
 bool SimProcess::wait_for_activity(Activity& a, const char* call, int peer) {
-  while (!a.test()) {
+  while (a.running()) {
     a.on_complete = [this] { wake(); };
     block(call, peer);
     a.on_complete = nullptr;
@@ -165,7 +165,7 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
     // The CPU hands the message to the communication processors before it travels (copying it).
     if (!charge_comm_cpu(sim_.config.comm_cpu.send, static_cast<std::int64_t>(data.size()), "send_cpu")) {
       auto abandoned = new_request(sim_.request_blocks);
-      abandoned->done = true;
+      abandoned->complete();
       return Request(std::move(abandoned));
     }
   }
@@ -205,6 +205,9 @@ void Simulation::deliver(Message&& m) {
 }
 
 void Simulation::accept(LinkEnd& e, Message&& m) {
+  // Withdrawn by its sender (SimProcess::cancel) while it travelled: the link drops it, after the
+  // network and the in-order delivery have finished with it.
+  if (m.send->cancelled()) return;
   if (trace.enabled()) {
     trace.record({TraceKind::message, m.src, e.owner, m.sent, kernel.now(), static_cast<std::int64_t>(m.data.size()),
                   m.id, "message"});
@@ -245,7 +248,7 @@ Request SimProcess::irecv(Link& link) {
     e.arrived.pop_front();
     if (!m.data.empty()) sim_.use_memory(id_, -static_cast<std::int64_t>(m.data.size()), kMessagesReceived);
     req->data = std::move(m.data);
-    req->done = true;
+    req->complete();
     if (m.synchronous) sim_.complete(m.send);
   } else {
     e.receives.push_back(req);
@@ -261,14 +264,10 @@ Bytes SimProcess::recv(Link& link) {
 
 void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {
   const machine::SimTime start = sim_.kernel.now();
-  while (!r.done) {
-    r.waiter = this;
-    block(call, r.peer);
-    r.waiter = nullptr;
-    if (sim_.cancelling) return;
-  }
+  if (!wait_for_activity(r, call, r.peer)) return;
   const machine::SimTime end = sim_.kernel.now();
   sim_.stats[id_].comm += end - start;
+  if (r.cancelled()) return;  // withdrawn (before the wait, or by another thread meanwhile)
   if (sim_.trace.enabled() && end > start) {
     sim_.trace.record({kind, id_, r.peer, start, end, static_cast<std::int64_t>(r.data.size()), -1, call, thread_});
   }
@@ -286,21 +285,30 @@ void SimProcess::wait(Request& r) {
   wait_for(*r.state(), "wait", TraceKind::wait);
 }
 
+namespace {
+
+// The lowest index of a completed request; rs.size() if none is, while some still run.
+std::size_t first_done(std::span<Request* const> rs, int processor) {
+  bool any_running = false;
+  for (std::size_t i = 0; i < rs.size(); ++i) {
+    if (!rs[i]->valid()) throw ParixError(fmt::format("processor {}: wait_any on an empty request", processor));
+    if (rs[i]->test()) return i;
+    any_running = any_running || rs[i]->state()->running();
+  }
+  if (!any_running) throw ParixError(fmt::format("processor {}: wait_any on {} requests, all cancelled", processor, rs.size()));
+  return rs.size();
+}
+
+}  // namespace
+
 std::size_t SimProcess::wait_any(std::span<Request* const> rs) {
   if (rs.empty()) throw ParixError(fmt::format("processor {}: wait_any on no requests", id_));
   const machine::SimTime start = sim_.kernel.now();
-  auto first_done = [&]() -> std::size_t {
-    for (std::size_t i = 0; i < rs.size(); ++i) {
-      if (!rs[i]->valid()) throw ParixError(fmt::format("processor {}: wait_any on an empty request", id_));
-      if (rs[i]->done()) return i;
-    }
-    return rs.size();
-  };
   std::size_t i;
-  while ((i = first_done()) == rs.size()) {
-    for (Request* r : rs) r->state()->waiter = this;
+  while ((i = first_done(rs, id_)) == rs.size()) {
+    for (Request* r : rs) r->state()->on_complete = [this] { wake(); };
     block("wait_any", rs.size() == 1 ? rs[0]->state()->peer : -1);
-    for (Request* r : rs) r->state()->waiter = nullptr;
+    for (Request* r : rs) r->state()->on_complete = nullptr;
     if (sim_.cancelling) return 0;
   }
   const machine::SimTime end = sim_.kernel.now();
@@ -310,6 +318,21 @@ std::size_t SimProcess::wait_any(std::span<Request* const> rs) {
   }
   charge_receive_cpu(*rs[i]->state());
   return i;
+}
+
+bool SimProcess::cancel(Request& r) {
+  if (!r.valid()) throw ParixError(fmt::format("processor {}: cancel on an empty request", id_));
+  RequestState& s = *r.state();
+  if (!s.running()) return s.cancelled();
+  if (s.is_receive) {
+    // Not yet matched, so still queued on its link: the link's next message goes to the next one.
+    LinkEnd& e = sim_.links.at(s.link);
+    if (e.owner != id_) throw ParixError(fmt::format("processor {}: cancel of a receive of processor {}", id_, e.owner));
+    std::erase_if(e.receives, [&s](const std::shared_ptr<RequestState>& q) { return q.get() == &s; });
+  }
+  // A send: its message is still in the network (or held for in-order delivery); accept drops it.
+  s.cancel();
+  return true;
 }
 
 Thread SimProcess::spawn(std::function<void(Processor&)> body) {

@@ -38,7 +38,8 @@ class Simulation;
 // A message on its way or waiting in a link's queue.
 struct Message {
   Bytes data;
-  std::shared_ptr<RequestState> send;  // completed when received (synchronous) or delivered
+  std::shared_ptr<RequestState> send;  // completed when received (synchronous) or delivered;
+                                       // cancelled: the link drops the message on arrival
   bool synchronous = false;
   std::int64_t id = 0;
   std::int64_t link_seq = 0;  // position on its link: a link delivers in sending order
@@ -76,12 +77,14 @@ class SimProcess final : public Processor {
   Request irecv(Link& link) override;
   void wait(Request& r) override;
   std::size_t wait_any(std::span<Request* const> rs) override;
+  bool cancel(Request& r) override;
   Thread spawn(std::function<void(Processor&)> body) override;
 
   // Suspends this fiber until wake(); `call` and `peer` describe the wait for deadlock reports.
   void block(const char* call, int peer);
   void wake();
-  // Blocks until a completes; false when the run was abandoned meanwhile (a is then cancelled).
+  // Blocks while a is running (until it is done or cancelled); false when the run was abandoned
+  // meanwhile (a is then cancelled).
   bool wait_for_activity(Activity& a, const char* call, int peer);
 
   int thread() const { return thread_; }
@@ -187,10 +190,7 @@ class Simulation {
   // else the out-of-memory report to raise; the first overrun of a run that only warns is kept
   // in memory_warning.
   std::string use_memory(int processor, std::int64_t bytes, std::string_view kind);
-  void complete(const std::shared_ptr<RequestState>& r) {
-    r->done = true;
-    if (r->waiter) static_cast<SimProcess*>(r->waiter)->wake();
-  }
+  void complete(const std::shared_ptr<RequestState>& r) { r->complete(); }
 
 
   std::string deadlock_report() const;

@@ -112,6 +112,53 @@ void threads(parix::Processor& p, std::vector<int>& out) {
   if (p.id() == 0) out.push_back(total);
 }
 
+void cancelled_receives(parix::Processor& p, std::vector<int>& out) {
+  // Each processor withdraws a receive from its predecessor before anything is sent: the
+  // predecessor's message goes to the next receive instead. Connect order as in threads().
+  if (p.count() == 1) return;
+  const int next = (p.id() + 1) % p.count(), prev = (p.id() + p.count() - 1) % p.count();
+  parix::Link to, from;
+  if (p.id() % 2 == 0) to = p.connect(next, 9), from = p.connect(prev, 9);
+  else from = p.connect(prev, 9), to = p.connect(next, 9);
+  parix::Request withdrawn = p.irecv(from);
+  const int cancelled = p.cancel(withdrawn) ? 1 : 0;
+  p.wait(withdrawn);  // returns at once
+  const int mine = 100 + p.id();
+  parix::Request sent = p.isend(to, std::as_bytes(std::span(&mine, 1)));
+  const int got = p.recv_value<int>(from);
+  p.wait(sent);
+  const int total = parix::allreduce_sum(p, 1000 * cancelled + got + static_cast<int>(withdrawn.take().size()));
+  if (p.id() == 0) out.push_back(total);
+}
+
+// Not an equivalence: the MPI backend refuses to withdraw a send MPI still holds. A long message
+// (past Open MPI's eager limit, so it waits for its receive, which is posted only after the
+// cancel) makes cancel throw ParixError; the message is then delivered intact.
+void refused_send_cancel() {
+  int threw = 0, intact = 0;
+  parix::run_mpi(options(parix::mpi_size(), false), [&](parix::Processor& p) {
+    if (p.id() > 1) return;
+    parix::Link data = p.connect(1 - p.id(), 11), signal = p.connect(1 - p.id(), 12);
+    if (p.id() == 0) {
+      parix::Request long_one = p.isend(data, parix::Bytes(1 << 20, std::byte{7}));
+      try {
+        p.cancel(long_one);
+      } catch (const parix::ParixError&) {
+        threw = 1;
+      }
+      p.send_value(signal, threw);
+      p.wait(long_one);
+    } else {
+      p.recv_value<int>(signal);
+      intact = p.recv(data) == parix::Bytes(1 << 20, std::byte{7});
+    }
+  });
+  int all_threw = 0, all_intact = 0;
+  MPI_Allreduce(&threw, &all_threw, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Allreduce(&intact, &all_intact, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  expect(all_threw && all_intact, "cancelling a send in progress throws on MPI, and the message still arrives");
+}
+
 }  // namespace
 
 int main() {
@@ -119,6 +166,8 @@ int main() {
   compare<std::vector<double>>("collectives", collectives);
   compare<std::vector<float>>("CORNELL radiosities", cornell_radiosities);
   compare<std::vector<int>>("node-local threads", threads);
+  compare<std::vector<int>>("cancelled receives", cancelled_receives);
+  refused_send_cancel();
   compare<std::vector<double>>("collectives", collectives, true);
   compare<std::vector<int>>("node-local threads", threads, true);
   if (parix::mpi_rank() == 0) std::printf("%d passed, %d failed\n", passed, failed);

@@ -1,7 +1,8 @@
 // The runtime's units on their own, without running a simulation: connection matching, in-order
-// delivery on a link and the deadlock report.
+// delivery on a link, the deadlock report, activities and the requests built on them.
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "parix/connection_matcher.hpp"
 #include "parix/deadlock_report.hpp"
 #include "parix/in_order_delivery.hpp"
+#include "parix/processor.hpp"
 
 namespace gcsim::parix {
 namespace {
@@ -89,15 +91,40 @@ TEST(Activity, CompletesOnceAndWakesWhoeverWaits) {
   EXPECT_EQ(woken, 1);
 }
 
-TEST(Activity, ACancelledActivityIgnoresItsCompletion) {
+TEST(Activity, ACancelledActivityWakesItsWaiterOnceAndIgnoresItsCompletion) {
   detail::Activity a;
   int woken = 0;
   a.on_complete = [&] { ++woken; };
-  a.cancel();
+  a.cancel();  // whoever waits learns that the activity ended
   a.complete();
+  a.cancel();
   EXPECT_EQ(a.state(), detail::Activity::State::cancelled);
+  EXPECT_TRUE(a.cancelled());
   EXPECT_FALSE(a.test());
-  EXPECT_EQ(woken, 0);
+  EXPECT_FALSE(a.running());
+  EXPECT_EQ(woken, 1);
+}
+
+TEST(Activity, ADoneActivityCannotBeCancelled) {
+  detail::Activity a;
+  a.complete();
+  a.cancel();
+  EXPECT_EQ(a.state(), detail::Activity::State::done);
+}
+
+TEST(Request, ReportsItsCommunicationsState) {
+  EXPECT_FALSE(Request().test());
+  EXPECT_FALSE(Request().cancelled());
+  auto done = std::make_shared<RequestState>(), withdrawn = std::make_shared<RequestState>();
+  Request d(done), w(withdrawn);
+  EXPECT_FALSE(d.test());
+  done->data = Bytes(3);
+  done->complete();
+  withdrawn->cancel();
+  EXPECT_TRUE(d.test() && d.done() && !d.cancelled());
+  EXPECT_TRUE(w.cancelled() && !w.test() && !w.done());
+  EXPECT_EQ(d.take().size(), 3u);
+  EXPECT_TRUE(w.take().empty());
 }
 
 }  // namespace
