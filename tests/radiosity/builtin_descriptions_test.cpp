@@ -3,7 +3,10 @@
 // records, instances, camera), so table 4.1's counts and every simulated figure stay as they were.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "apps/common/scene/description_to_world.hpp"
+#include "apps/common/scene/scene_file.hpp"
 #include "apps/radiosity/builtin_descriptions.hpp"
 #include "apps/radiosity/builtin_scenes.hpp"
 
@@ -61,6 +64,15 @@ TEST(BuiltinDescriptions, PicroomIsTheEntityBuilderPicroom) {
 }
 TEST(BuiltinDescriptions, CornellIsTheEntityBuilderCornell) {
   expect_same_world(scene::to_world(cornell_description()), cornell_world());
+}
+
+// scenes/cornell.toml transcribes the built-in CORNELL: through the scene-file loader it is the same
+// WORLD, so `--scene scenes/cornell.toml` and `--scene cornell` solve one mesh.
+TEST(BuiltinDescriptions, CornellFileIsTheBuiltInCornellWorld) {
+  const World from_file = scene::to_world(
+      scene::load_scene_file(std::filesystem::path(GCSIM_SOURCE_DIR) / "scenes" / "cornell.toml"));
+  expect_same_world(from_file, scene::to_world(cornell_description()));
+  EXPECT_EQ(flatten(from_file).counts(), thesis_counts("cornell"));
 }
 
 }  // namespace
