@@ -140,6 +140,8 @@ TEST(DescriptionToWorld, PatchMaterialsColourTheGrid) {
   EXPECT_EQ(e.patches[3].owner, 0);
   std::get<Polygon>(d.shapes[0].geometry).patch_materials.pop_back();
   EXPECT_THROW(to_world(d), std::invalid_argument);
+  std::get<Polygon>(d.shapes[0].geometry).single_patch = true;
+  EXPECT_THROW(to_world(d), std::invalid_argument);  // one patch has no grid to colour
 }
 
 }  // namespace

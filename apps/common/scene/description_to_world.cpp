@@ -11,7 +11,8 @@ namespace gcsim::scene {
 
 namespace {
 
-// One entity under construction: its surfaces are created per material on first use.
+// One entity under construction: its surfaces are created per material, those of its layout first,
+// the others on first use; its layout's shared vertices come first.
 class EntityLowering {
  public:
   EntityLowering(std::string name, const SceneDescription& d, const ObjectLayout* layout) : d_(d), layout_(layout) {
@@ -110,6 +111,8 @@ std::array<int, 4> EntityLowering::corners(const Polygon& p) {
 
 // One patch on the corners; its elements explicit or the patch itself; the back side on the same corners.
 void EntityLowering::single_patch(const Polygon& p, int front, int back) {
+  if (!p.patch_materials.empty())
+    throw std::invalid_argument(fmt::format("entity '{}': a one-patch polygon gives patch materials", e_.name));
   const std::array<int, 4> v = corners(p);
   for (int side = 0; side < (back >= 0 ? 2 : 1); ++side) {
     const int patch = add_patch(record(v, p.count, p.facing, side == 1, side == 1 ? back : front));
