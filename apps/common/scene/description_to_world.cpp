@@ -12,14 +12,13 @@ namespace gcsim::scene {
 namespace {
 
 // One entity under construction: its surfaces are created per material, those of its layout first,
-// the others on first use; its layout's shared vertices come first.
+// the others on first use.
 class EntityLowering {
  public:
   EntityLowering(std::string name, const SceneDescription& d, const ObjectLayout* layout) : d_(d), layout_(layout) {
     e_.name = std::move(name);
     if (!layout) return;
     for (int m : layout->surface_materials) surface_of(m);
-    for (const Vec3& v : layout->vertices) vertex(v);
   }
 
   int surface_of(int material) {
@@ -56,16 +55,21 @@ class EntityLowering {
   void box(const Box& b, int material);
   void sphere(const Sphere& s, int material);
   void mesh(const Mesh& m, int material);
-  Entity take() { return std::move(e_); }
+  Entity take() {
+    if (layout_ && !layout_->vertices.empty()) shared_vertex(int(layout_->vertices.size()) - 1);  // unused ones last
+    return std::move(e_);
+  }
 
  private:
   void grid_side(const Polygon& p, int base, int surface, bool back);
   int patch_surface(const Polygon& p, int pi, int pj, int surface);
   std::array<int, 4> corners(const Polygon& p);
+  int shared_vertex(int layout_index);
   const SceneDescription& d_;
   const ObjectLayout* layout_;
   Entity e_;
   std::map<int, int> surface_index_;
+  std::vector<int> shared_index_;  // entity vertex of each layout vertex added so far
 };
 
 void EntityLowering::grid_side(const Polygon& p, int base, int surface, bool back) {
@@ -93,19 +97,21 @@ int EntityLowering::patch_surface(const Polygon& p, int pi, int pj, int surface)
   return surface_of(p.patch_materials[std::size_t(pj) * p.patch_columns + pi]);
 }
 
+// The entity's vertex for a layout vertex. Layout vertices enter the entity in their order, each no
+// later than the first polygon that uses it, as EntityBuilder adds a box's shared corners just
+// before its faces.
+int EntityLowering::shared_vertex(int i) {
+  if (!layout_ || i < 0 || i >= int(layout_->vertices.size()))
+    throw std::invalid_argument(fmt::format("entity '{}': a polygon names shared vertex {}, but its layout has {}",
+                                            e_.name, i, layout_ ? layout_->vertices.size() : 0));
+  while (int(shared_index_.size()) <= i) shared_index_.push_back(vertex(layout_->vertices[shared_index_.size()]));
+  return shared_index_[i];
+}
+
 // The corners of a one-patch polygon: the object's shared vertices it names, or vertices of its own.
 std::array<int, 4> EntityLowering::corners(const Polygon& p) {
   std::array<int, 4> v{};
-  for (int k = 0; k < p.count; ++k) {
-    if (!p.layout_vertex) {
-      v[k] = vertex(p.vertex[k]);
-      continue;
-    }
-    v[k] = (*p.layout_vertex)[k];
-    if (!layout_ || v[k] < 0 || v[k] >= int(layout_->vertices.size()))
-      throw std::invalid_argument(fmt::format("entity '{}': a polygon names shared vertex {}, but its layout has {}",
-                                              e_.name, v[k], layout_ ? layout_->vertices.size() : 0));
-  }
+  for (int k = 0; k < p.count; ++k) v[k] = p.layout_vertex ? shared_vertex((*p.layout_vertex)[k]) : vertex(p.vertex[k]);
   return v;
 }
 

@@ -100,7 +100,9 @@ struct Shape {
 struct ObjectLayout {
   std::string object;
   std::vector<int> surface_materials;  // the entity's first surfaces, in this order
-  std::vector<glm::dvec3> vertices;    // the entity's first vertices, shared by index (layout_vertex)
+  // Vertices shared by index (Polygon::layout_vertex); they enter the entity in this order, each
+  // no later than the first polygon that uses it (unused ones at the end).
+  std::vector<glm::dvec3> vertices;
   std::vector<Placement> instances;    // empty: one instance, unmoved
 };
 
