@@ -1,8 +1,9 @@
 #pragma once
 // Builds ENTITY records from simple shapes: quads split into a grid of patches, each patch split
 // into a grid of elements (vertices shared on the grid), and boxes whose faces share their corner
-// vertices or keep their own. The built-in scenes are made with it; the result is exactly what a
-// parsed ENTITY file gives.
+// vertices or keep their own; the result is exactly what a parsed ENTITY file gives. The analytic
+// form-factor cases and the test scenes use it; the built-in scenes are scene descriptions made with
+// ObjectBuilder (object_builder.hpp), which to_world lowers to the same ENTITY as these calls.
 #include <functional>
 #include <string>
 

@@ -187,6 +187,20 @@ TEST_F(SceneFileTest, DegenerateShapes) {
   expect_error(m + "[[polygon]]\nmaterial = \"white\"\nvertices = [[0,0,0],[1,0,0],[1,1,0],[0,1,0]]\npatches = [0, 1]\n",
                7, "two integers in [1, 1000]");
   expect_error(m + "[[box]]\nmaterial = \"white\"\nmin = [0, 0, 0]\nmax = [1, 0, 1]\n", 7, "flat or inverted along axis y");
+  expect_error(m + "[[polygon]]\nmaterial = \"white\"\nvertices = [[0,0,0],[1,0,0],[1,1,0],[0,1,0]]\npatches = [2, 1]\n"
+                   "single_patch = true\n",
+               7, "'single_patch' in [[polygon]] is one patch of one element");
+}
+
+TEST_F(SceneFileTest, SinglePatchPolygon) {
+  const SceneDescription d =
+      parse(std::string(kMaterials) + "[[polygon]]\nmaterial = \"white\"\nvertices = [[0,0,0],[1,0,0],[1,1,0],[0,1,0]]\n"
+                                      "single_patch = true\n");
+  ASSERT_EQ(d.shapes.size(), 1u);
+  EXPECT_TRUE(std::get<Polygon>(d.shapes[0].geometry).single_patch);
+  expect_error(std::string(kMaterials) + "[[polygon]]\nmaterial = \"white\"\nvertices = [[0,0,0],[1,0,0],[1,1,0]]\n"
+                                         "single_patch = 1\n",
+               7, "single_patch");
 }
 
 TEST_F(SceneFileTest, UnknownMaterialIsNamedWithTheKnownOnes) {

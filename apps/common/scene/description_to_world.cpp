@@ -11,10 +11,15 @@ namespace gcsim::scene {
 
 namespace {
 
-// One entity under construction: its surfaces are created per material on first use.
+// One entity under construction: its surfaces are created per material, those of its layout first,
+// the others on first use.
 class EntityLowering {
  public:
-  EntityLowering(std::string name, const SceneDescription& d) : d_(d) { e_.name = std::move(name); }
+  EntityLowering(std::string name, const SceneDescription& d, const ObjectLayout* layout) : d_(d), layout_(layout) {
+    e_.name = std::move(name);
+    if (!layout) return;
+    for (int m : layout->surface_materials) surface_of(m);
+  }
 
   int surface_of(int material) {
     if (material < 0 || material >= int(d_.materials.size()))
@@ -46,16 +51,25 @@ class EntityLowering {
   void add_element(const PolygonRecord& r) { e_.elements.push_back(r); }
 
   void polygon(const Polygon& p, int material, int back_material);
+  void single_patch(const Polygon& p, int front, int back);
   void box(const Box& b, int material);
   void sphere(const Sphere& s, int material);
   void mesh(const Mesh& m, int material);
-  Entity take() { return std::move(e_); }
+  Entity take() {
+    if (layout_ && !layout_->vertices.empty()) shared_vertex(int(layout_->vertices.size()) - 1);  // unused ones last
+    return std::move(e_);
+  }
 
  private:
   void grid_side(const Polygon& p, int base, int surface, bool back);
+  int patch_surface(const Polygon& p, int pi, int pj, int surface);
+  std::array<int, 4> corners(const Polygon& p);
+  int shared_vertex(int layout_index);
   const SceneDescription& d_;
+  const ObjectLayout* layout_;
   Entity e_;
   std::map<int, int> surface_index_;
+  std::vector<int> shared_index_;  // entity vertex of each layout vertex added so far
 };
 
 void EntityLowering::grid_side(const Polygon& p, int base, int surface, bool back) {
@@ -64,8 +78,8 @@ void EntityLowering::grid_side(const Polygon& p, int base, int surface, bool bac
   for (int pj = 0; pj < p.patch_rows; ++pj)
     for (int pi = 0; pi < p.patch_columns; ++pi) {
       const int i0 = pi * eu, j0 = pj * ev;
-      const int patch =
-          add_patch(record({at(i0, j0), at(i0 + eu, j0), at(i0 + eu, j0 + ev), at(i0, j0 + ev)}, 4, p.facing, back, surface));
+      const int patch = add_patch(record({at(i0, j0), at(i0 + eu, j0), at(i0 + eu, j0 + ev), at(i0, j0 + ev)}, 4,
+                                         p.facing, back, back ? surface : patch_surface(p, pi, pj, surface)));
       for (int ej = 0; ej < ev; ++ej)
         for (int ei = 0; ei < eu; ++ei) {
           const int i = i0 + ei, j = j0 + ej;
@@ -74,24 +88,53 @@ void EntityLowering::grid_side(const Polygon& p, int base, int surface, bool bac
     }
 }
 
+// A grid patch's surface: its own material where the polygon gives one per patch.
+int EntityLowering::patch_surface(const Polygon& p, int pi, int pj, int surface) {
+  if (p.patch_materials.empty()) return surface;
+  if (p.patch_materials.size() != std::size_t(p.patch_rows) * p.patch_columns)
+    throw std::invalid_argument(fmt::format("entity '{}': a polygon of {} x {} patches gives {} patch materials", e_.name,
+                                            p.patch_columns, p.patch_rows, p.patch_materials.size()));
+  return surface_of(p.patch_materials[std::size_t(pj) * p.patch_columns + pi]);
+}
+
+// The entity's vertex for a layout vertex. Layout vertices enter the entity in their order, each no
+// later than the first polygon that uses it, as EntityBuilder adds a box's shared corners just
+// before its faces.
+int EntityLowering::shared_vertex(int i) {
+  if (!layout_ || i < 0 || i >= int(layout_->vertices.size()))
+    throw std::invalid_argument(fmt::format("entity '{}': a polygon names shared vertex {}, but its layout has {}",
+                                            e_.name, i, layout_ ? layout_->vertices.size() : 0));
+  while (int(shared_index_.size()) <= i) shared_index_.push_back(vertex(layout_->vertices[shared_index_.size()]));
+  return shared_index_[i];
+}
+
+// The corners of a one-patch polygon: the object's shared vertices it names, or vertices of its own.
+std::array<int, 4> EntityLowering::corners(const Polygon& p) {
+  std::array<int, 4> v{};
+  for (int k = 0; k < p.count; ++k) v[k] = p.layout_vertex ? shared_vertex((*p.layout_vertex)[k]) : vertex(p.vertex[k]);
+  return v;
+}
+
+// One patch on the corners; its elements explicit or the patch itself; the back side on the same corners.
+void EntityLowering::single_patch(const Polygon& p, int front, int back) {
+  if (!p.patch_materials.empty())
+    throw std::invalid_argument(fmt::format("entity '{}': a one-patch polygon gives patch materials", e_.name));
+  const std::array<int, 4> v = corners(p);
+  for (int side = 0; side < (back >= 0 ? 2 : 1); ++side) {
+    const int patch = add_patch(record(v, p.count, p.facing, side == 1, side == 1 ? back : front));
+    if (p.elements.empty()) add_element(record(v, p.count, p.facing, side == 1, patch));
+    for (const ExplicitElement& x : p.elements) {
+      std::array<int, 4> ev{};
+      for (int k = 0; k < x.count; ++k) ev[k] = vertex(x.vertex[k]);
+      add_element(record(ev, x.count, p.facing, side == 1, patch));
+    }
+  }
+}
+
 void EntityLowering::polygon(const Polygon& p, int material, int back_material) {
   const int front = surface_of(material);
   const int back = back_material >= 0 ? surface_of(back_material) : -1;
-  if (!p.elements.empty() || p.count == 3) {
-    // One patch on its own vertices; its elements explicit or the patch itself.
-    std::array<int, 4> v{};
-    for (int k = 0; k < p.count; ++k) v[k] = vertex(p.vertex[k]);
-    for (int side = 0; side < (back >= 0 ? 2 : 1); ++side) {
-      const int patch = add_patch(record(v, p.count, p.facing, side == 1, side == 1 ? back : front));
-      if (p.elements.empty()) add_element(record(v, p.count, p.facing, side == 1, patch));
-      for (const ExplicitElement& x : p.elements) {
-        std::array<int, 4> ev{};
-        for (int k = 0; k < x.count; ++k) ev[k] = vertex(x.vertex[k]);
-        add_element(record(ev, x.count, p.facing, side == 1, patch));
-      }
-    }
-    return;
-  }
+  if (!p.elements.empty() || p.count == 3 || p.single_patch || p.layout_vertex) return single_patch(p, front, back);
   // The grid of EntityBuilder::quad: u runs vertex 0 -> 1, v runs vertex 0 -> 3.
   const Vec3 c00 = p.vertex[0], c10 = p.vertex[1], c11 = p.vertex[2], c01 = p.vertex[3];
   const int nu = p.patch_columns * p.element_columns, nv = p.patch_rows * p.element_rows;
@@ -151,19 +194,36 @@ std::string default_object_name(const Shape& s, std::size_t index) {
   return fmt::format("{} {}", kKinds[s.geometry.index()], index);
 }
 
+// The layout of each named object (null where it has none); a layout naming no shape's object is an error.
+std::map<std::string, const ObjectLayout*> layouts_by_object(const SceneDescription& d) {
+  std::map<std::string, const ObjectLayout*> layouts;
+  for (const Shape& s : d.shapes) layouts.emplace(s.object, nullptr);
+  for (const ObjectLayout& l : d.layouts) {
+    auto it = layouts.find(l.object);
+    if (l.object.empty() || it == layouts.end())
+      throw std::invalid_argument(fmt::format("scene '{}': a layout for object '{}', which no shape belongs to", d.name, l.object));
+    if (it->second) throw std::invalid_argument(fmt::format("scene '{}': two layouts for object '{}'", d.name, l.object));
+    it->second = &l;
+  }
+  return layouts;
+}
+
 }  // namespace
 
 World to_world(const SceneDescription& d) {
   World w;
   w.name = d.name;
   std::vector<EntityLowering> entities;
+  std::vector<const ObjectLayout*> entity_layout;
   std::map<std::string, std::size_t> by_object;
+  const auto layouts = layouts_by_object(d);
   for (std::size_t i = 0; i < d.shapes.size(); ++i) {
     const Shape& s = d.shapes[i];
     std::size_t e;
     if (s.object.empty() || !by_object.count(s.object)) {
       e = entities.size();
-      entities.emplace_back(s.object.empty() ? default_object_name(s, i) : s.object, d);
+      entity_layout.push_back(s.object.empty() ? nullptr : layouts.at(s.object));
+      entities.emplace_back(s.object.empty() ? default_object_name(s, i) : s.object, d, entity_layout.back());
       if (!s.object.empty()) by_object[s.object] = e;
     } else {
       e = by_object[s.object];
@@ -174,9 +234,12 @@ World to_world(const SceneDescription& d) {
     else if (const auto* sp = std::get_if<Sphere>(&s.geometry)) x.sphere(*sp, s.material);
     else x.mesh(std::get<Mesh>(s.geometry), s.material);
   }
-  for (auto& x : entities) {
-    w.instances.push_back({int(w.entities.size()), Placement{}});
-    w.entities.push_back(x.take());
+  for (std::size_t e = 0; e < entities.size(); ++e) {
+    const int index = int(w.entities.size());
+    if (!entity_layout[e] || entity_layout[e]->instances.empty()) w.instances.push_back({index, Placement{}});
+    else
+      for (const Placement& at : entity_layout[e]->instances) w.instances.push_back({index, at});
+    w.entities.push_back(entities[e].take());
   }
   w.camera = d.camera;
   return w;

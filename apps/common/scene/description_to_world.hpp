@@ -1,7 +1,9 @@
 #pragma once
 // Lowers the shared description to the thesis's WORLD of entities (vertices, surfaces, patches,
 // elements), which radiosity flattens into its mesh. Shapes of one `object` form one entity with one
-// surface per material (in order of first use); every entity is placed once, unmoved. A quad is
+// surface per material (in order of first use); every entity is placed once, unmoved. An object's
+// ObjectLayout can declare the surface order, vertices that single-patch polygons share, and the
+// instances (the radiosity app's built-in scenes need all three). A quad is
 // gridded exactly as the radiosity app's EntityBuilder::quad grids it (same vertices, same record
 // order, records reversed where they do not look along `facing`), so a scene file that transcribes a
 // built-in scene gives the same polygons. Boxes: six outward faces on shared corners; spheres: a

@@ -13,6 +13,7 @@
 
 #include "apps/common/scene/camera.hpp"
 #include "apps/common/scene/triangle_mesh.hpp"
+#include "apps/common/scene/world_format.hpp"
 
 namespace gcsim::scene {
 
@@ -60,6 +61,15 @@ struct Polygon {
   // direction and are reversed otherwise (as the thesis's entity builder orients its records).
   std::optional<glm::dvec3> facing;
   std::vector<ExplicitElement> elements;  // non-empty: these elements instead of the grid
+  // Radiosity: one patch with one element on the corners in their order instead of a grid (as a
+  // triangle always is); the thesis's single records (a box face, the Cornell light).
+  bool single_patch = false;
+  // With single_patch: the corners are these vertices of the object's layout (ObjectLayout::vertices),
+  // shared with other polygons of the object; `vertex` still holds their positions.
+  std::optional<std::array<int, 4>> layout_vertex;
+  // Non-empty: the material of each patch of the grid, row by row (patch_rows x patch_columns), e.g.
+  // a picture; `Shape::material` is then the first patch's. Radiosity only.
+  std::vector<int> patch_materials;
 };
 struct Sphere {
   glm::dvec3 center{0.0};
@@ -81,6 +91,19 @@ struct Shape {
   // The object (the thesis's ENTITY) the shape belongs to; shapes of one object share its vertices'
   // numbering and one surface per material. Empty: an object of its own.
   std::string object{};
+};
+
+// How an object becomes the thesis's ENTITY where the defaults (surfaces in order of first use, each
+// polygon on vertices of its own, one unmoved instance) do not say enough: the radiosity app's
+// built-in scenes, whose entities are placed several times (chairs, lights, pictures). Read by
+// `to_world` only; the other renderers' lowerings do not place objects yet.
+struct ObjectLayout {
+  std::string object;
+  std::vector<int> surface_materials;  // the entity's first surfaces, in this order
+  // Vertices shared by index (Polygon::layout_vertex); they enter the entity in this order, each
+  // no later than the first polygon that uses it (unused ones at the end).
+  std::vector<glm::dvec3> vertices;
+  std::vector<Placement> instances;    // empty: one instance, unmoved
 };
 
 struct PointLight {
@@ -106,6 +129,7 @@ struct SceneDescription {
   std::vector<Material> materials;
   std::vector<Shape> shapes;
   std::vector<Light> lights;
+  std::vector<ObjectLayout> layouts;  // per object, optional (radiosity's built-in scenes)
   std::optional<Camera> camera;  // none: each renderer frames the scene itself
   ImageSettings image;
 

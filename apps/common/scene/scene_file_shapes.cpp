@@ -48,7 +48,7 @@ geometry::Polygon as_geometry(const std::array<glm::dvec3, 4>& v, int count) {
 
 void read_polygon(const Reader& r, const toml::table& t, const MaterialIndex& materials, SceneDescription& out) {
   const std::string where = "[[polygon]]";
-  r.only_keys(t, where, {"material", "object", "vertices", "patches", "elements", "facing", "back_material"});
+  r.only_keys(t, where, {"material", "object", "vertices", "patches", "elements", "facing", "back_material", "single_patch"});
   Shape s = shape_base(r, t, where, materials);
   Polygon p;
   const toml::node* vn = t.get("vertices");
@@ -69,6 +69,10 @@ void read_polygon(const Reader& r, const toml::table& t, const MaterialIndex& ma
     r.fail(t.get("elements"), fmt::format("[[polygon]] asks for more than {} elements", kMaxElementsPerPolygon));
   p.patch_columns = patches[0], p.patch_rows = patches[1];
   p.element_columns = elements[0], p.element_rows = elements[1];
+  p.single_patch = r.boolean(t, "single_patch", where, false);
+  if (p.single_patch && (patches != std::array<int, 2>{1, 1} || elements != std::array<int, 2>{1, 1}))
+    r.fail(t.get("patches") ? t.get("patches") : t.get("elements"),
+           "'single_patch' in [[polygon]] is one patch of one element; expected no 'patches' or 'elements'");
   if (t.get("facing")) {
     p.facing = r.vec3(t, "facing", where);
     if (glm::dot(*p.facing, geometry::newell_normal(g)) == 0.0)

@@ -70,7 +70,7 @@ void add_scene_info_command(pipeline::CommandGroups& g) {
       "info",
       "Print a scene's counts of instances, surfaces, patches, elements and vertices (the columns of the\n"
       "thesis's table 4.1), next to the thesis's figures for the built-in scenes.");
-  cmd->add_option("scene", f->scene, "room, picroom, cornell or the path of a WORLD file")->required();
+  cmd->add_option("scene", f->scene, "room, picroom, cornell or the path of a TOML scene file or a WORLD file")->required();
   cmd->add_option("--export", f->export_dir, "Also write the scene as WORLD and ENTITY files into this directory");
   cmd->callback([f] {
     const World world = load_scene_world(f->scene);

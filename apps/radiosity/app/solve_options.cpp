@@ -11,7 +11,7 @@
 namespace gcsim::radiosity::app {
 
 void add_solve_options(CLI::App* cmd, SolveFlags& f) {
-  cmd->add_option("--scene", f.scene, "room, picroom, cornell (thesis table 4.1) or the path of a WORLD file")
+  cmd->add_option("--scene", f.scene, "room, picroom, cornell (thesis table 4.1) or the path of a TOML scene file or a WORLD file")
       ->capture_default_str();
   cmd->add_option("--hemicube", f.hemicube,
                   "Hemicube resolution: pixels across the top face (side faces are half as high). Cost and "
