@@ -26,10 +26,11 @@ void add_key_light(Scene& s) {
   const Bounds3 b = s.bounds();
   const glm::vec3 c = b.center();
   const float r = 0.5f * glm::length(b.extent());
-  const glm::vec3 to_eye = glm::normalize(s.camera.eye - c);
+  const glm::vec3 eye(s.camera.eye), up(s.camera.up);
+  const glm::vec3 to_eye = glm::normalize(eye - c);
   // Above and to the left of the eye, so shapes read in relief.
-  const glm::vec3 side = glm::normalize(glm::cross(s.camera.up, to_eye));
-  s.lights.push_back({c + 3.0f * r * glm::normalize(to_eye + 0.8f * s.camera.up - 0.6f * side), glm::vec3(9.0f * r * r)});
+  const glm::vec3 side = glm::normalize(glm::cross(up, to_eye));
+  s.lights.push_back({c + 3.0f * r * glm::normalize(to_eye + 0.8f * up - 0.6f * side), glm::vec3(9.0f * r * r)});
 }
 
 Scene sphere_grid(std::string name, float radius) {
@@ -126,7 +127,7 @@ Scene whitted_scene() {
     t.p2 *= 0.5f;
   }
   add_teapot(s, small, 2.2f, glm::vec3(2.0f, 3.5f, 0.0f), brass);
-  s.camera = {.eye = {-1.0f, -10.5f, 4.2f}, .look_at = {0.3f, 0.4f, 0.9f}, .up = {0, 0, 1}, .fov_degrees = 45.0f};
+  s.camera = {.eye = glm::vec3(-1.0f, -10.5f, 4.2f), .look_at = glm::vec3(0.3f, 0.4f, 0.9f), .up = {0, 0, 1}, .fov_y_degrees = 45.0f};
   s.lights.push_back({{-6.0f, -7.0f, 10.0f}, glm::vec3(180.0f)});
   s.lights.push_back({{7.0f, -3.0f, 6.0f}, glm::vec3(50.0f)});
   return s;
@@ -142,11 +143,12 @@ bool is_builtin_scene(std::string_view name) {
   return false;
 }
 
-CameraSpec frame_scene(const Bounds3& b, glm::vec3 direction, glm::vec3 up, float fov_degrees, float margin) {
+scene::Camera frame_scene(const Bounds3& b, glm::vec3 direction, glm::vec3 up, float fov_degrees, float margin) {
   const glm::vec3 c = b.center();
   const float r = 0.5f * glm::length(b.extent());
   const float d = margin * r / std::sin(glm::radians(fov_degrees) * 0.5f);
-  return {c + d * glm::normalize(direction), c, up, fov_degrees};
+  const glm::vec3 eye = c + d * glm::normalize(direction);
+  return {glm::dvec3(eye), glm::dvec3(c), glm::dvec3(up), double(fov_degrees)};
 }
 
 Scene make_builtin_scene(std::string_view name) {

@@ -24,7 +24,7 @@ Scene make_builtin_scene(std::string_view name);
 Scene load_scene(const std::string& name_or_path);
 
 // Places the camera at `direction` (from the scene's centre) far enough back that the scene's
-// bounding sphere fills the view.
-CameraSpec frame_scene(const Bounds3& bounds, glm::vec3 direction, glm::vec3 up, float fov_degrees, float margin = 1.0f);
+// bounding sphere fills the view. Computed in float; the camera's double fields hold those floats.
+scene::Camera frame_scene(const Bounds3& bounds, glm::vec3 direction, glm::vec3 up, float fov_degrees, float margin = 1.0f);
 
 }  // namespace gcsim::raytrace

@@ -91,8 +91,7 @@ Scene lower_scene(const scene::SceneDescription& d) {
   out.background = glm::vec3(d.image.background);
   out.ambient = glm::vec3(d.image.ambient);
   if (d.camera) {
-    out.camera = {glm::vec3(d.camera->eye), glm::vec3(d.camera->look_at), glm::vec3(d.camera->up),
-                  static_cast<float>(d.camera->fov_y_degrees)};
+    out.camera = *d.camera;
   } else if (out.prim_count() > 0) {
     out.camera = frame_scene(out.bounds(), {0.6f, 0.5f, 1.0f}, {0, 1, 0}, 40.0f);
   }

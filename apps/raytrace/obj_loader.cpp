@@ -18,7 +18,7 @@ Scene lower_obj_mesh(const scene::TriangleMesh& mesh, const std::string& source)
   out.camera = frame_scene(out.bounds(), {0.6f, 0.5f, 1.0f}, {0, 1, 0}, 40.0f);
   const Bounds3 b = out.bounds();
   const float r = 0.5f * glm::length(b.extent());
-  out.lights.push_back({out.camera.eye + glm::vec3(0, 2.0f * r, 0), glm::vec3(9.0f * r * r)});
+  out.lights.push_back({glm::vec3(out.camera.eye) + glm::vec3(0, 2.0f * r, 0), glm::vec3(9.0f * r * r)});
   return out;
 }
 
