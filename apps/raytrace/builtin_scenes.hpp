@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "apps/common/scene/scene_description.hpp"
 #include "apps/raytrace/scene.hpp"
 
 namespace gcsim::raytrace {
@@ -19,6 +20,7 @@ std::span<const std::string_view> builtin_scene_names();
 std::span<const std::string_view> paper_scene_names();  // the five of table 1, in its order
 bool is_builtin_scene(std::string_view name);
 // Throws std::invalid_argument listing the known names.
+scene::SceneDescription builtin_scene_description(std::string_view name);
 Scene make_builtin_scene(std::string_view name);
 // A built-in scene name, or else a path to a Wavefront OBJ file.
 Scene load_scene(const std::string& name_or_path);
