@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "apps/raytrace/builtin_scenes.hpp"
+#include "apps/raytrace/framing.hpp"
 
 namespace gcsim::raytrace {
 
