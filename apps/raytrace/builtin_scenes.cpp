@@ -209,7 +209,7 @@ scene::SceneDescription load_scene_description(const std::string& name_or_path) 
   auto ends_with = [&](std::string_view lower) {
     if (name_or_path.size() <= lower.size()) return false;
     const std::string_view tail = std::string_view(name_or_path).substr(name_or_path.size() - lower.size());
-    return std::equal(tail.begin(), tail.end(), lower.begin(), [](char a, char b) { return std::tolower(a) == b; });
+    return std::equal(tail.begin(), tail.end(), lower.begin(), [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
   };
   if (ends_with(".obj")) return load_obj_description(name_or_path);
   if (ends_with(".toml")) return scene::load_scene_file(name_or_path);
