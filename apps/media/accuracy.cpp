@@ -44,9 +44,9 @@ struct CostModel {
   };
   Cost predict(const MarchSettings& s) const {
     const Frame f = render_frame(scene, caches, s, kPilotSeed, m, stride);
-    const double across = std::ceil(scene.camera.width / double(stride));
-    const double down = std::ceil(scene.camera.height / double(stride));
-    const double scale = double(scene.camera.width) * scene.camera.height / (across * down);
+    const double across = std::ceil(scene.image.width / double(stride));
+    const double down = std::ceil(scene.image.height / double(stride));
+    const double scale = double(scene.image.width) * scene.image.height / (across * down);
     RenderCounters fixed = f.counters;
     fixed.march.samples = 0;
     return {scale * render_seconds(fixed, scene.k_nearest, m), scale * f.simulated_seconds, f.counters};
@@ -107,7 +107,7 @@ void measure_photon_effect(const MediaScene& scene, const AccuracyOptions& o, co
 
 SceneAccuracy measure_accuracy(MediaScene scene, const AccuracyOptions& o, const machine::MachineConfig& m,
                                const std::function<void(const std::string&)>& progress) {
-  scene.camera.width = o.width, scene.camera.height = o.height;
+  scene.image.width = o.width, scene.image.height = o.height;
   if (o.photons > 0) scene.photons_emitted = static_cast<std::size_t>(o.photons);
   scene.seed = o.seed;
   SceneAccuracy out;

@@ -62,11 +62,11 @@ Frame render_frame(const MediaScene& scene, const SceneCaches& caches, const Mar
                    std::uint64_t seed, const machine::MachineConfig& m, int stride) {
   const auto start = std::chrono::steady_clock::now();
   Frame f;
-  f.image = apps::Image(scene.camera.width, scene.camera.height);
-  for (int y = 0; y < scene.camera.height; y += stride) {
+  f.image = apps::Image(scene.image.width, scene.image.height);
+  for (int y = 0; y < scene.image.height; y += stride) {
     // Renders on the host, outside the simulated machine: SIGINT/SIGTERM is polled here, a row apart.
     parix::throw_if_interrupted();
-    for (int x = 0; x < scene.camera.width; x += stride)
+    for (int x = 0; x < scene.image.width; x += stride)
       f.image.at(x, y) = glm::vec3(static_cast<float>(render_pixel(scene, caches, settings, seed, x, y, f.counters)));
   }
   f.simulated_seconds = render_seconds(f.counters, scene.k_nearest, m);

@@ -9,13 +9,13 @@
 namespace gcsim::media {
 namespace {
 
-glm::dvec3 camera_direction(const PinholeCamera& c, double px, double py) {
+glm::dvec3 camera_direction(const scene::Camera& c, const ImageSize& image, double px, double py) {
   const glm::dvec3 forward = glm::normalize(c.look_at - c.eye);
   const glm::dvec3 right = glm::normalize(glm::cross(forward, c.up));
   const glm::dvec3 up = glm::cross(right, forward);
-  const double half = std::tan(0.5 * c.vertical_fov_degrees * kPi / 180.0);
-  const double sx = (2.0 * px / c.width - 1.0) * half * c.width / c.height;
-  const double sy = (1.0 - 2.0 * py / c.height) * half;
+  const double half = std::tan(0.5 * c.fov_y_degrees * kPi / 180.0);
+  const double sx = (2.0 * px / image.width - 1.0) * half * image.width / image.height;
+  const double sy = (1.0 - 2.0 * py / image.height) * half;
   return glm::normalize(forward + sx * right + sy * up);
 }
 
@@ -45,14 +45,14 @@ double segment_radiance(const MediaScene& scene, const SceneCaches& caches, cons
 
 double render_pixel(const MediaScene& scene, const SceneCaches& caches, const MarchSettings& settings,
                     std::uint64_t seed, int x, int y, RenderCounters& counters) {
-  const std::uint64_t pixel = static_cast<std::uint64_t>(y) * scene.camera.width + x;
+  const std::uint64_t pixel = static_cast<std::uint64_t>(y) * scene.image.width + x;
   apps::Rng rng(seed, 0x706978656cULL + pixel);
   ++counters.pixels;
   // The ray through the pixel centre, and at each Fresnel surface both the reflected and the refracted
   // branch: the camera path is deterministic, so all the pixel's noise is the distance estimator's
   // (what the paper compares) and a high-sample reference converges to the same value.
   const glm::dvec3 eye = scene.camera.eye;
-  std::vector<PathBranch> stack{{eye, camera_direction(scene.camera, x + 0.5, y + 0.5),
+  std::vector<PathBranch> stack{{eye, camera_direction(scene.camera, scene.image, x + 0.5, y + 0.5),
                                  scene.object && scene.object->inside(eye, &counters.boundary), 1.0, 0}};
   double radiance = 0.0;
   const double inf = std::numeric_limits<double>::infinity();
@@ -86,7 +86,7 @@ double render_pixel(const MediaScene& scene, const SceneCaches& caches, const Ma
 void render_rows(const MediaScene& scene, const SceneCaches& caches, const MarchSettings& settings,
                  std::uint64_t seed, int y0, int y1, apps::Image& image, RenderCounters& counters) {
   for (int y = y0; y < y1; ++y)
-    for (int x = 0; x < scene.camera.width; ++x)
+    for (int x = 0; x < scene.image.width; ++x)
       image.at(x, y) = glm::vec3(static_cast<float>(render_pixel(scene, caches, settings, seed, x, y, counters)));
 }
 

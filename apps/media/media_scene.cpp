@@ -17,7 +17,8 @@ MediaScene small_scene() {
   s.inside = {8.0, 6.4, 0.0, Phase::schlick(0.5)};         // a thinner, bright version of its inside
   s.object = std::make_shared<SphereBoundary>(glm::dvec3(0.0, -0.2, 0.3), 0.8);
   s.light = {{-0.9, 0.8, -0.5}, 1.0};  // out of the frame, lighting the side the camera sees
-  s.camera = {{0, 0.1, -1.4}, {0, -0.1, 0.3}, {0, 1, 0}, 70.0, 64, 48};
+  s.camera = {{0, 0.1, -1.4}, {0, -0.1, 0.3}, {0, 1, 0}, 70.0};
+  s.image = {64, 48};
   return s;
 }
 
@@ -37,7 +38,8 @@ MediaScene experiment1_scene(Exp1Reading reading) {
   // side: the object is optically thick (σt = 50 per unit, radius 0.9), so its glow is light scattered
   // just below that side. The camera stands one mean free path of fog away from it.
   s.light = {{-0.9, 0.9, -0.3}, 1.0};
-  s.camera = {{0, 0.1, -1.3}, {0, -0.2, 0.5}, {0, 1, 0}, 70.0, 640, 480};
+  s.camera = {{0, 0.1, -1.3}, {0, -0.2, 0.5}, {0, 1, 0}, 70.0};
+  s.image = {640, 480};
   s.photons_emitted = 100000;
   s.k_nearest = 100;
   return s;
@@ -54,7 +56,8 @@ MediaScene experiment2_scene() {
   // 9.5° off axis), a beam about as wide as the object by the time it gets there.
   const glm::dvec3 centre(-1.0, 1.1, -0.5), target(0.0, -0.3, 0.5);
   s.area_light = DirectionalAreaLight{centre, glm::normalize(target - centre), 0.5, 50.0, 40.0};
-  s.camera = {{0, 0.1, -1.3}, {0, -0.2, 0.5}, {0, 1, 0}, 70.0, 640, 480};
+  s.camera = {{0, 0.1, -1.3}, {0, -0.2, 0.5}, {0, 1, 0}, 70.0};
+  s.image = {640, 480};
   // The outside albedo is 1, so a photon scatters until it leaves the box (about 5 times here): we
   // read the paper's 10^5 photons as stored ones, as experiment 1's 10^5 emitted nearly are.
   s.photons_emitted = 20000;
@@ -69,7 +72,8 @@ MediaScene uniform_fog_scene() {
   s.outside = {0.5, 0.4, 0.0, Phase::isotropic()};
   // A Lambertian disk as wide as the box above it (exponent 1: radiance constant over directions).
   s.area_light = DirectionalAreaLight{{0.0, 1.49, 0.0}, {0.0, -1.0, 0.0}, 2.0, 1.0, 20.0};
-  s.camera = {{0, 0, -1.95}, {0, 0, 0}, {0, 1, 0}, 50.0, 128, 96};
+  s.camera = {{0, 0, -1.95}, {0, 0, 0}, {0, 1, 0}, 50.0};
+  s.image = {128, 96};
   s.photons_emitted = 50000;
   s.k_nearest = 100;
   return s;

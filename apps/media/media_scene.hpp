@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "apps/common/scene/camera.hpp"
 #include "apps/media/boundary.hpp"
 #include "apps/media/fresnel.hpp"
 #include "apps/media/grid_dda.hpp"
@@ -15,9 +16,8 @@
 
 namespace gcsim::media {
 
-struct PinholeCamera {
-  glm::dvec3 eye{0, 0, -3}, look_at{0, 0, 0}, up{0, 1, 0};
-  double vertical_fov_degrees = 40.0;
+// The rendered image's size in pixels (the camera, scene::Camera, leaves it to the image).
+struct ImageSize {
   int width = 64, height = 48;
 };
 
@@ -39,7 +39,8 @@ struct MediaScene {
   double ior = kDefaultIor;
   PointLight light;                              // used when area_light is empty
   std::optional<DirectionalAreaLight> area_light;
-  PinholeCamera camera;
+  scene::Camera camera;  // the scene layer's pinhole camera
+  ImageSize image;
   std::size_t photons_emitted = 20000;
   std::size_t k_nearest = 50;
   int max_photon_events = 64;     // scatterings plus surface events per photon

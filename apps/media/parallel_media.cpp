@@ -90,7 +90,7 @@ double charge_render(parix::Processor& p, const RenderCounters& c, std::size_t k
 TileFarmStats render_tiles(parix::Processor& p, const MediaScene& scene, const SceneCaches& caches,
                            const MarchSettings& settings, std::uint64_t seed, apps::Image& image,
                            std::vector<RenderCounters>& per_node) {
-  const Tiling tiling{scene.camera.width, scene.camera.height};
+  const Tiling tiling{scene.image.width, scene.image.height};
   TileFarm farm;
   farm.tiles = tiling.count();
   farm.render = [&](parix::Processor& q, int t) {
@@ -124,7 +124,7 @@ TileFarmStats render_tiles(parix::Processor& p, const MediaScene& scene, const S
 
 void media_program(parix::Processor& p, const MediaScene& scene, const MarchSettings& settings, std::uint64_t seed,
                    ParallelMediaResult& result, std::vector<RenderCounters>& per_node) {
-  const int width = scene.camera.width, height = scene.camera.height;
+  const int width = scene.image.width, height = scene.image.height;
   const int id = p.id(), nodes = p.count();
   PhotonPassResult photons = trace_photons(scene, share_begin(scene.photons_emitted, id, nodes),
                                            share_begin(scene.photons_emitted, id + 1, nodes));
@@ -157,7 +157,7 @@ void media_program(parix::Processor& p, const MediaScene& scene, const MarchSett
 ParallelMediaResult render_media_parallel(const MediaScene& scene, const MarchSettings& settings, std::uint64_t seed,
                                           const parix::SimulationOptions& sim) {
   ParallelMediaResult result;
-  result.image = apps::Image(scene.camera.width, scene.camera.height);
+  result.image = apps::Image(scene.image.width, scene.image.height);
   std::vector<RenderCounters> per_node(static_cast<std::size_t>(sim.config.nodes));
   result.run = parix::run_simulated(
       sim, [&](parix::Processor& p) { media_program(p, scene, settings, seed, result, per_node); });

@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "apps/common/scene/scene_description.hpp"
 #include "apps/raytrace/scene.hpp"
 
 namespace gcsim::raytrace {
@@ -18,13 +19,13 @@ namespace gcsim::raytrace {
 std::span<const std::string_view> builtin_scene_names();
 std::span<const std::string_view> paper_scene_names();  // the five of table 1, in its order
 bool is_builtin_scene(std::string_view name);
-// Throws std::invalid_argument listing the known names.
+// The built-in's scene description; throws std::invalid_argument listing the known names.
+scene::SceneDescription builtin_scene_description(std::string_view name);
+// A built-in scene name, or else the path of a Wavefront OBJ file (.obj) or a TOML scene file
+// (.toml, apps/common/scene/README.md). Throws as the loaders do (ObjError, SceneFileError).
+scene::SceneDescription load_scene_description(const std::string& name_or_path);
+// The same lowered to the ray tracer's float primitives (lower_scene): one path for all three.
 Scene make_builtin_scene(std::string_view name);
-// A built-in scene name, or else a path to a Wavefront OBJ file.
 Scene load_scene(const std::string& name_or_path);
-
-// Places the camera at `direction` (from the scene's centre) far enough back that the scene's
-// bounding sphere fills the view.
-CameraSpec frame_scene(const Bounds3& bounds, glm::vec3 direction, glm::vec3 up, float fov_degrees, float margin = 1.0f);
 
 }  // namespace gcsim::raytrace

@@ -5,16 +5,19 @@
 
 namespace gcsim::raytrace {
 
-Camera::Camera(const CameraSpec& spec, int width, int height) : width_(width), height_(height), eye_(spec.eye) {
+Camera::Camera(const scene::Camera& spec, int width, int height)
+    : width_(width), height_(height), eye_(glm::vec3(spec.eye)) {
   if (width <= 0 || height <= 0) throw std::invalid_argument("image size must be positive");
-  glm::vec3 f = spec.look_at - spec.eye;
+  const glm::vec3 look_at(spec.look_at), up(spec.up);
+  const float fov_y_degrees = static_cast<float>(spec.fov_y_degrees);
+  glm::vec3 f = look_at - eye_;
   if (glm::length(f) == 0) throw std::invalid_argument("camera eye and look_at coincide");
   forward_ = glm::normalize(f);
-  glm::vec3 r = glm::cross(forward_, spec.up);
+  glm::vec3 r = glm::cross(forward_, up);
   if (glm::length(r) < 1e-6f) r = glm::cross(forward_, std::abs(forward_.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0));
   right_ = glm::normalize(r);
   up_ = glm::cross(right_, forward_);
-  half_h_ = std::tan(glm::radians(spec.fov_degrees) * 0.5f);
+  half_h_ = std::tan(glm::radians(fov_y_degrees) * 0.5f);
   half_w_ = half_h_ * float(width) / float(height);
   two_over_width_ = 2.0f / float(width);
   two_over_height_ = 2.0f / float(height);

@@ -21,7 +21,9 @@ struct Plane {
 
 class Camera {
  public:
-  Camera(const CameraSpec& spec, int width, int height);
+  // The scene's camera, its eye, look_at, up and field of view rounded to float: every ray
+  // computation below is in float.
+  Camera(const scene::Camera& spec, int width, int height);
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -3,13 +3,17 @@
 #include <stdexcept>
 #include <string>
 
-#include "apps/raytrace/builtin_scenes.hpp"
+#include "apps/raytrace/framing.hpp"
 
 namespace gcsim::raytrace {
 
 namespace {
 
-Material lower_material(const scene::Material& m) {
+Material lower_material(const scene::Material& m, std::size_t index) {
+  if (m.transmittance > 0.0 && (!m.fresnel || m.mirror > 0.0))
+    throw std::invalid_argument("material " + std::to_string(index) + " ('" + m.name + "') is glass " +
+                                (m.fresnel ? "with a mirror weight besides" : "without Fresnel") +
+                                "; the ray tracer's glass reflects and refracts by Fresnel only");
   Material out;
   out.diffuse = glm::vec3(m.diffuse);
   if (m.checker_other) out.checker_other = glm::vec3(*m.checker_other);
@@ -19,6 +23,9 @@ Material lower_material(const scene::Material& m) {
   out.reflectance = static_cast<float>(m.mirror);
   out.transmittance = static_cast<float>(m.transmittance);
   out.ior = static_cast<float>(m.ior);
+  // The dielectric weighs its reflected ray F * reflectance and its refracted one
+  // (1 - F) * transmittance: reflectance = transmittance gives glass of weight g.
+  if (m.transmittance > 0.0) out.reflectance = out.transmittance;
   return out;
 }
 
@@ -51,7 +58,7 @@ void add_mesh(Scene& out, const scene::Mesh& m, int material) {
   }
 }
 
-void add_shape(Scene& out, const scene::Shape& shape, int index) {
+void add_shape(Scene& out, const scene::Shape& shape) {
   const int material = shape.material;
   if (const auto* s = std::get_if<scene::Sphere>(&shape.geometry)) {
     out.add_sphere({glm::vec3(s->center), static_cast<float>(s->radius)}, material);
@@ -74,14 +81,14 @@ Scene lower_scene(const scene::SceneDescription& d) {
     if (d.materials[i].medium)
       throw std::invalid_argument("material " + std::to_string(i) + " ('" + d.materials[i].name +
                                   "') holds a participating medium, which the ray tracer cannot render");
-    out.add_material(lower_material(d.materials[i]));
+    out.add_material(lower_material(d.materials[i], i));
   }
   for (std::size_t i = 0; i < d.shapes.size(); ++i) {
     if (d.shapes[i].material < 0 || d.shapes[i].material >= static_cast<int>(d.materials.size()))
       throw std::invalid_argument("shape " + std::to_string(i) + " names material " +
                                   std::to_string(d.shapes[i].material) + ", expected one of the " +
                                   std::to_string(d.materials.size()) + " materials");
-    add_shape(out, d.shapes[i], static_cast<int>(i));
+    add_shape(out, d.shapes[i]);
   }
   for (std::size_t i = 0; i < d.lights.size(); ++i) {
     const auto* p = std::get_if<scene::PointLight>(&d.lights[i]);
@@ -91,13 +98,18 @@ Scene lower_scene(const scene::SceneDescription& d) {
   out.background = glm::vec3(d.image.background);
   out.ambient = glm::vec3(d.image.ambient);
   if (d.camera) {
-    out.camera = {glm::vec3(d.camera->eye), glm::vec3(d.camera->look_at), glm::vec3(d.camera->up),
-                  static_cast<float>(d.camera->fov_y_degrees)};
+    out.camera = *d.camera;
   } else if (out.prim_count() > 0) {
     out.camera = frame_scene(out.bounds(), {0.6f, 0.5f, 1.0f}, {0, 1, 0}, 40.0f);
   }
   out.validate();
   return out;
+}
+
+Bounds3 lowered_bounds(const scene::SceneDescription& d) {
+  Scene shapes;
+  for (const auto& shape : d.shapes) add_shape(shapes, shape);
+  return shapes.bounds();
 }
 
 }  // namespace gcsim::raytrace

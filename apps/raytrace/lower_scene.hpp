@@ -7,7 +7,14 @@
 
 namespace gcsim::raytrace {
 
-// Throws std::invalid_argument naming the shape or light it cannot lower.
+// Throws std::invalid_argument naming the shape, material or light it cannot lower. A glass
+// material of weight g lowers to the ray tracer's dielectric with reflectance = transmittance = g
+// (Fresnel splits g between the reflected and refracted rays); glass without Fresnel, or glass
+// with a mirror weight besides, has no ray-tracer counterpart and is refused.
 Scene lower_scene(const scene::SceneDescription& description);
+
+// The bounds of the float primitives the shapes lower to, exactly Scene::bounds() of the lowered
+// scene: builders frame their camera and place their lights with it before the scene is complete.
+Bounds3 lowered_bounds(const scene::SceneDescription& description);
 
 }  // namespace gcsim::raytrace

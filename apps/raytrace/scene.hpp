@@ -1,6 +1,6 @@
 #pragma once
 // A scene: spheres and triangles with one id space (spheres first), a material per primitive,
-// point lights and the camera that frames it.
+// point lights and the camera that frames it (the scene layer's one camera type).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "apps/common/geometry/bounds.hpp"
+#include "apps/common/scene/camera.hpp"
 #include "apps/raytrace/material.hpp"
 #include "apps/common/geometry/sphere.hpp"
 #include "apps/common/geometry/triangle.hpp"
@@ -16,13 +17,6 @@
 #include "apps/raytrace/geometry_names.hpp"
 
 namespace gcsim::raytrace {
-
-struct CameraSpec {
-  glm::vec3 eye{0.0f, 0.0f, 5.0f};
-  glm::vec3 look_at{0.0f};
-  glm::vec3 up{0.0f, 1.0f, 0.0f};
-  float fov_degrees = 40.0f;  // vertical field of view
-};
 
 class Scene : public PrimitiveArrays {
  public:
@@ -35,7 +29,7 @@ class Scene : public PrimitiveArrays {
   std::vector<PointLight> lights;
   glm::vec3 background{0.05f, 0.06f, 0.09f};
   glm::vec3 ambient{0.12f};
-  CameraSpec camera;
+  scene::Camera camera;  // the shared camera; raytrace::Camera converts it to float
 
   const Material& material_of(int prim) const { return materials[prim_material[prim]]; }
   bool has_secondary_effects() const;

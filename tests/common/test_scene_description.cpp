@@ -66,5 +66,27 @@ TEST(LowerScene, RefusesMediaSpotLightsAndBadMaterialIndices) {
   EXPECT_THROW(lower_scene(d), std::invalid_argument);
 }
 
+// Glass of weight g is the ray tracer's dielectric with reflectance = transmittance = g: Fresnel's F
+// sends g F along the reflected ray and g (1 - F) along the refracted one. What that dielectric cannot
+// express (glass without Fresnel, a mirror weight besides) is refused, naming the material.
+TEST(LowerScene, GlassSplitsItsWeightByFresnel) {
+  auto d = two_shapes_and_a_box();
+  d.materials[1].transmittance = 0.75;
+  const Scene s = lower_scene(d);
+  EXPECT_EQ(s.material_of(0).transmittance, 0.75f);
+  EXPECT_EQ(s.material_of(0).reflectance, 0.75f);
+  EXPECT_EQ(s.material_of(1).reflectance, 0.0f);  // grey: no mirror
+  d.materials[1].fresnel = false;
+  EXPECT_THROW(lower_scene(d), std::invalid_argument);
+  d.materials[1].fresnel = true;
+  d.materials[1].mirror = 0.2;
+  try {
+    lower_scene(d);
+    ADD_FAILURE() << "glass with a mirror weight lowered";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'glass'"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace gcsim::raytrace

@@ -14,7 +14,7 @@ MediaScene tiny_scene() {
   MediaScene s = small_scene();
   s.photons_emitted = 4000;
   s.k_nearest = 30;
-  s.camera.width = 16, s.camera.height = 12;
+  s.image.width = 16, s.image.height = 12;
   return s;
 }
 
@@ -51,10 +51,10 @@ TEST(MediaRender, ImageIsFiniteLitAndIndependentOfTheRowSplit) {
   ASSERT_TRUE(caches.outside.map && caches.inside.map);
   for (Estimator e : kAllEstimators) {
     MarchSettings settings{e, 4.0};
-    apps::Image whole(s.camera.width, s.camera.height), split(s.camera.width, s.camera.height);
+    apps::Image whole(s.image.width, s.image.height), split(s.image.width, s.image.height);
     RenderCounters c1, c2;
-    render_rows(s, caches, settings, 9, 0, s.camera.height, whole, c1);
-    render_rows(s, caches, settings, 9, 5, s.camera.height, split, c2);
+    render_rows(s, caches, settings, 9, 0, s.image.height, whole, c1);
+    render_rows(s, caches, settings, 9, 5, s.image.height, split, c2);
     render_rows(s, caches, settings, 9, 0, 5, split, c2);
     double total = 0.0;
     for (std::size_t i = 0; i < whole.pixels().size(); ++i) {

@@ -13,7 +13,7 @@ namespace {
 
 MediaScene few_photon_bunny() {
   MediaScene s = scene_by_name("exp1-bunny");
-  s.photons_emitted = 4000, s.k_nearest = 30, s.camera.width = 24, s.camera.height = 18;
+  s.photons_emitted = 4000, s.k_nearest = 30, s.image.width = 24, s.image.height = 18;
   return s;
 }
 
@@ -71,13 +71,13 @@ TEST(BunnyScenes, ImageIsBitIdenticalOnOneAndTwoNodesAndTheMeshIsCharged) {
 
 TEST(BunnyScenes, TheSphereScenesCountNoMeshWork) {
   MediaScene s = scene_by_name("exp1");
-  s.photons_emitted = 2000, s.camera.width = 8, s.camera.height = 6;
+  s.photons_emitted = 2000, s.image.width = 8, s.image.height = 6;
   const PhotonPassResult r = trace_photons(s, 0, s.photons_emitted);
   EXPECT_FALSE(r.boundary.any());
   const SceneCaches caches = build_caches(s, r);
-  apps::Image image(s.camera.width, s.camera.height);
+  apps::Image image(s.image.width, s.image.height);
   RenderCounters c;
-  render_rows(s, caches, MarchSettings{Estimator::radiance, 2.0}, 1, 0, s.camera.height, image, c);
+  render_rows(s, caches, MarchSettings{Estimator::radiance, 2.0}, 1, 0, s.image.height, image, c);
   EXPECT_GT(c.surface_events, 0u);
   EXPECT_FALSE(c.boundary.any());
 }

@@ -11,12 +11,12 @@ namespace {
 
 TEST(ParallelMedia, ImageDoesNotDependOnTheNodeCount) {
   MediaScene s = small_scene();
-  s.photons_emitted = 3000, s.k_nearest = 30, s.camera.width = 20, s.camera.height = 15;
+  s.photons_emitted = 3000, s.k_nearest = 30, s.image.width = 20, s.image.height = 15;
   const MarchSettings settings{Estimator::radiance, 4.0};
   SceneCaches caches = build_caches(s, trace_photons(s, 0, s.photons_emitted));
-  apps::Image sequential(s.camera.width, s.camera.height);
+  apps::Image sequential(s.image.width, s.image.height);
   RenderCounters counters;
-  render_rows(s, caches, settings, 5, 0, s.camera.height, sequential, counters);
+  render_rows(s, caches, settings, 5, 0, s.image.height, sequential, counters);
   double previous_time = 0.0;
   for (int nodes : {1, 2, 4, 8}) {
     ParallelMediaResult r = render_media_parallel(s, settings, 5, test_support::published_machine(nodes));
@@ -38,7 +38,7 @@ TEST(ParallelMedia, ImageDoesNotDependOnTheNodeCount) {
 // makespan to the picosecond, and every tile is assigned once.
 TEST(ParallelMedia, DynamicTilesGiveADeterministicMakespan) {
   MediaScene s = small_scene();
-  s.photons_emitted = 2000, s.k_nearest = 20, s.camera.width = 40, s.camera.height = 36;
+  s.photons_emitted = 2000, s.k_nearest = 20, s.image.width = 40, s.image.height = 36;
   const MarchSettings settings{Estimator::radiance, 4.0};
   const ParallelMediaResult a = render_media_parallel(s, settings, 7, test_support::published_machine(4));
   const ParallelMediaResult b = render_media_parallel(s, settings, 7, test_support::published_machine(4));

@@ -17,8 +17,8 @@ TEST(Experiment1, TheTwoReadingsDifferOnlyInTheInsideScatteringCoefficient) {
   EXPECT_NEAR(literal.inside.sigma_s, kLuminance, 1e-12);         // read as σs: albedo 0.0174
   EXPECT_EQ(albedo.outside.sigma_s, literal.outside.sigma_s);
   EXPECT_EQ(albedo.photons_emitted, 100000u);
-  EXPECT_EQ(albedo.camera.width, 640);
-  EXPECT_EQ(albedo.camera.height, 480);
+  EXPECT_EQ(albedo.image.width, 640);
+  EXPECT_EQ(albedo.image.height, 480);
 }
 
 // What distinguishes the readings in the photon pass: a photon entering the object interacts

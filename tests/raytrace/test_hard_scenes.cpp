@@ -75,7 +75,7 @@ TEST(HardScenes, SpheresOfRadius1e4And1e4Together) {
   s.add_sphere({{0, 0, -1e4f}, 1e4f}, m);  // a huge ground sphere, top at z = 0
   for (int i = 0; i < 20; ++i) s.add_sphere({{-0.5f + 0.05f * i, 0.0f, 1e-4f}, 1e-4f}, m);  // tiny spheres on it
   s.add_sphere({{0.2f, 0.3f, 0.1f}, 0.1f}, m);
-  s.camera = {.eye = {0.0f, -0.3f, 0.05f}, .look_at = {0.0f, 0.0f, 0.0f}, .up = {0, 0, 1}, .fov_degrees = 60.0f};
+  s.camera = {.eye = {0.0f, -0.3f, 0.05f}, .look_at = {0.0f, 0.0f, 0.0f}, .up = {0, 0, 1}, .fov_y_degrees = 60.0f};
   expect_every_algorithm_matches_brute_force(s, 40);
 }
 
@@ -93,7 +93,7 @@ TEST(HardScenes, AxisParallelRaysOnAnAxisAlignedGrid) {
       s.add_triangle({p00, p11, p01}, m);
     }
   for (int i = 0; i < 5; ++i) s.add_sphere({{i - 2.0f, 0.0f, 1.0f}, 0.4f}, m);
-  s.camera = {.eye = {0.0f, 0.0f, 10.0f}, .look_at = {0.0f, 0.0f, 0.0f}, .up = {0, 1, 0}, .fov_degrees = 50.0f};
+  s.camera = {.eye = {0.0f, 0.0f, 10.0f}, .look_at = {0.0f, 0.0f, 0.0f}, .up = {0, 1, 0}, .fov_y_degrees = 50.0f};
   const Camera cam(s.camera, 33, 33);
   const Ray centre = cam.pixel_ray(16, 16);
   EXPECT_EQ(centre.direction.x, 0.0f);

@@ -44,14 +44,14 @@ class MediaExperiment final : public pipeline::Experiment {
                                                                    f.max_voxel_optical_depth} {
     if (f.photons > 0) scene_.photons_emitted = static_cast<std::size_t>(f.photons);
     if (f.k > 0) scene_.k_nearest = static_cast<std::size_t>(f.k);
-    if (f.width > 0) scene_.camera.width = f.width;
-    if (f.height > 0) scene_.camera.height = f.height;
+    if (f.width > 0) scene_.image.width = f.width;
+    if (f.height > 0) scene_.image.height = f.height;
     scene_.seed = f.seed;
   }
 
   std::unique_ptr<pipeline::Outcome> new_outcome(int nodes) const override {
     auto o = std::make_unique<MediaOutcome>();
-    o->result.image = apps::Image(scene_.camera.width, scene_.camera.height);
+    o->result.image = apps::Image(scene_.image.width, scene_.image.height);
     o->per_node.resize(static_cast<std::size_t>(nodes));
     return o;
   }
@@ -69,8 +69,8 @@ class MediaExperiment final : public pipeline::Experiment {
 
  private:
   std::string setup_line() const {
-    return fmt::format("scene {}, {}x{}, {} photons emitted, k = {}, estimator {}, b = {}", scene_.name, scene_.camera.width,
-                       scene_.camera.height, scene_.photons_emitted, scene_.k_nearest, flags_.estimator, flags_.b);
+    return fmt::format("scene {}, {}x{}, {} photons emitted, k = {}, estimator {}, b = {}", scene_.name, scene_.image.width,
+                       scene_.image.height, scene_.photons_emitted, scene_.k_nearest, flags_.estimator, flags_.b);
   }
   MediaFlags flags_;
   MediaScene scene_;

@@ -17,7 +17,7 @@ namespace {
 const std::string kScenesHelp =
     "Scene: spheres-a, spheres-b (512 spheres on an 8x8x8 grid, two radii: the paper's photos 1, 2), "
     "spheres-random (photo 3), teapot (552 triangles, photo 4), teapots (4416, photo 5), whitted (mirror and "
-    "glass spheres: secondary rays), or a .obj file";
+    "glass spheres: secondary rays), or a .obj file or a .toml scene file (point lights only)";
 const std::string kAlgoHelp =
     "Primary-ray algorithm: A1 (BVH only), A2 (BVH + front-to-back child sorting and pruning), A2p = A2' "
     "(per-subregion dynamic subtree), A3 (subtree + sorting), A4 (A3 + subregion uniformity test), "
