@@ -50,22 +50,6 @@ void EntityBuilder::single(std::array<int, 4> v, const Vec3& facing, int surface
   e_.elements.push_back(oriented(v, 4, facing, int(e_.patches.size()) - 1));
 }
 
-namespace {
-struct BoxFace {
-  EntityBuilder::Face face;
-  std::array<int, 4> corner;  // indices into the 8 corners, bit 0 = x, bit 1 = y, bit 2 = z
-  Vec3 normal;
-};
-constexpr BoxFace kBoxFaces[] = {
-    {EntityBuilder::kTop, {2, 3, 7, 6}, {0, 1, 0}},   {EntityBuilder::kBottom, {0, 1, 5, 4}, {0, -1, 0}},
-    {EntityBuilder::kMinX, {0, 2, 6, 4}, {-1, 0, 0}}, {EntityBuilder::kMaxX, {1, 3, 7, 5}, {1, 0, 0}},
-    {EntityBuilder::kMinZ, {0, 1, 3, 2}, {0, 0, -1}}, {EntityBuilder::kMaxZ, {4, 5, 7, 6}, {0, 0, 1}},
-};
-Vec3 box_corner(const Vec3& lo, const Vec3& hi, int k) {
-  return {(k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z};
-}
-}  // namespace
-
 void EntityBuilder::box_shared(const Vec3& lo, const Vec3& hi, int faces, const std::function<int(Face)>& surface_of) {
   // Only the corners some chosen face uses become vertices.
   int index[8];

@@ -4,6 +4,7 @@
 // vertices or keep their own; the result is exactly what a parsed ENTITY file gives. The analytic
 // form-factor cases and the test scenes use it; the built-in scenes are scene descriptions made with
 // ObjectBuilder (object_builder.hpp), which to_world lowers to the same ENTITY as these calls.
+#include <array>
 #include <functional>
 #include <string>
 
@@ -49,5 +50,21 @@ class EntityBuilder {
   PolygonRecord oriented(std::array<int, 4> v, int count, const Vec3& facing, int owner) const;
   Entity e_;
 };
+
+// A box's faces in the order both builders emit them (so that records come out alike), each as
+// four of the 8 corners (bit 0 = x, bit 1 = y, bit 2 = z) and its outward normal.
+struct BoxFace {
+  EntityBuilder::Face face;
+  std::array<int, 4> corner;
+  Vec3 normal;
+};
+inline constexpr BoxFace kBoxFaces[] = {
+    {EntityBuilder::kTop, {2, 3, 7, 6}, {0, 1, 0}},   {EntityBuilder::kBottom, {0, 1, 5, 4}, {0, -1, 0}},
+    {EntityBuilder::kMinX, {0, 2, 6, 4}, {-1, 0, 0}}, {EntityBuilder::kMaxX, {1, 3, 7, 5}, {1, 0, 0}},
+    {EntityBuilder::kMinZ, {0, 1, 3, 2}, {0, 0, -1}}, {EntityBuilder::kMaxZ, {4, 5, 7, 6}, {0, 0, 1}},
+};
+inline Vec3 box_corner(const Vec3& lo, const Vec3& hi, int k) {
+  return {(k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z};
+}
 
 }  // namespace gcsim::radiosity

@@ -6,25 +6,6 @@
 
 namespace gcsim::radiosity {
 
-namespace {
-
-struct BoxFace {
-  EntityBuilder::Face face;
-  std::array<int, 4> corner;  // indices into the 8 corners, bit 0 = x, bit 1 = y, bit 2 = z
-  Vec3 normal;
-};
-// The faces in EntityBuilder's order, so that records come out in the same order.
-constexpr BoxFace kBoxFaces[] = {
-    {EntityBuilder::kTop, {2, 3, 7, 6}, {0, 1, 0}},   {EntityBuilder::kBottom, {0, 1, 5, 4}, {0, -1, 0}},
-    {EntityBuilder::kMinX, {0, 2, 6, 4}, {-1, 0, 0}}, {EntityBuilder::kMaxX, {1, 3, 7, 5}, {1, 0, 0}},
-    {EntityBuilder::kMinZ, {0, 1, 3, 2}, {0, 0, -1}}, {EntityBuilder::kMaxZ, {4, 5, 7, 6}, {0, 0, 1}},
-};
-Vec3 box_corner(const Vec3& lo, const Vec3& hi, int k) {
-  return {(k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z};
-}
-
-}  // namespace
-
 ObjectBuilder::ObjectBuilder(scene::SceneDescription& d, std::string object)
     : d_(d), object_(std::move(object)), layout_(d.layouts.size()) {
   d_.layouts.push_back({object_, {}, {}, {}});
