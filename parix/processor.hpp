@@ -163,11 +163,11 @@ class Processor {
   //  - A receive not yet matched with a message is withdrawn: the link's next message goes to the
   //    next receive posted on it, or waits for one. A receive holding its message is done.
   //  - A send (isend) whose message has not been delivered is withdrawn: the receiver never gets
-  //    it and later messages on the link arrive as if it had never been sent. On the simulated
-  //    machine a message leaves while isend returns, so a withdrawn one still crosses the network
-  //    (its time and its share of the channels are unchanged: the network model and the link's
-  //    in-order delivery always finish what they started) and the receiving link drops it on
-  //    arrival, before it is charged to the receiver's memory. A delivered send is done.
+  //    it. On the simulated machine a message leaves while isend returns, so a withdrawn one still
+  //    crosses the network (its time and its share of the channels are unchanged: the network
+  //    model and the link's in-order delivery always finish what they started; later messages on
+  //    the link arrive exactly when they would have without the cancel) and the receiving link
+  //    drops it on arrival, before it is charged to the receiver's memory. A delivered send is done.
   //  - A cancelled request is finished but not done: wait() on it returns at once, taking no
   //    time; test() stays false and take() gives nothing.
   //  - MPI backend: receives as above (a receive is matched only while it is waited for). A send
