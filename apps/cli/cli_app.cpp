@@ -99,10 +99,8 @@ void declare_commands(CLI::App* app) {
       "  gcsim topo --topology hypercube --nodes 64        thesis table 2.1 parameters, exact and by formula\n"
       "  gcsim bcast --nodes 64 --size 16KB --algo tree    one all-node broadcast (thesis 4.4.2)\n"
       "  gcsim bcast --table                               the whole grid next to thesis tables 4.6/4.7\n"
-      "  gcsim bench ring --nodes 64 --iterations 2000     kernel throughput in simulated messages/s\n"
-      "  gcsim run radiosity --scene cornell --nodes 8 --image c.png   parallel radiosity, thesis ch. 4\n"
-      "  gcsim run raytrace --scene teapots --algo A4 --nodes 16 --image t.png\n"
-      "  gcsim sweep radiosity --scene cornell --jobs 2     node counts 1..64, two simulations at a time\n"
+      "  gcsim bench ring --nodes 64 --iterations 2000     kernel throughput in simulated messages/s\n" +
+      pipeline::app_examples(50) +  // each registered application's own lines
       "  gcsim plot t.json --out plots/                    pictures of a trace written with --trace t.json\n\n" +
       pipeline::exit_code_table());
   // (after the subcommands exist, so they do not inherit it)

@@ -38,7 +38,7 @@ int report_failure(std::exception_ptr e) {
   } catch (const CLI::ParseError& x) {  // a check in a command's callback (CLI::ValidationError)
     return fail(x, kExitUsage);
   } catch (const parix::Interrupted& x) {
-    // Host-side loops (accuracy tables, media renders) have no simulated clock to report.
+    // Host-side loops (accuracy tables, renders on the host) have no simulated clock to report.
     print_error(x.partial().makespan > 0 ? fmt::format("interrupted at simulated time {:.6f} s; finished results were written",
                                                        x.partial().simulated_seconds())
                                          : std::string("interrupted; finished results were written"));

@@ -82,8 +82,8 @@ void table_row(std::ostream& h, std::string_view name, const std::string& a, con
 
 std::string seconds(double s) { return s < 0 ? "&ndash;" : fmt::format("{:.6f} s", s); }
 
-// Run JSONs keep app settings in an object named after the app ({"radiosity": {"scene", "image",
-// ...}}): a key is looked up at the top level, then in those objects. Returns (app, value) or nulls.
+// Run JSONs keep app settings in an object named after the app ({"APP": {"scene", "image", ...}}):
+// a key is looked up at the top level, then in those objects. Returns (app, value) or nulls.
 std::pair<std::string, const json*> find_setting(const json& j, const char* key) {
   if (j.contains(key) && j[key].is_string()) return {"", &j[key]};
   static const std::set<std::string> kRunBlocks{"simulated", "wall", "ops"};
@@ -93,8 +93,8 @@ std::pair<std::string, const json*> find_setting(const json& j, const char* key)
   return {"", nullptr};
 }
 
-// Settings as dotted rows: {"radiosity": {"scene": "CORNELL", "counts": {"patches": 112}}} gives
-// radiosity.scene and radiosity.counts.patches.
+// Settings as dotted rows: {"APP": {"scene": "CORNELL", "counts": {"patches": 112}}} gives
+// APP.scene and APP.counts.patches.
 void setting_rows(std::ostream& h, const std::string& prefix, const json& v, int depth) {
   if (v.is_object()) {
     if (depth > 2) return;

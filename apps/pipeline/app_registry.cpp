@@ -48,6 +48,20 @@ std::vector<const AppSpec*> registered_apps() {
   return apps;
 }
 
+std::string app_examples(std::size_t width) {
+  std::string out;
+  for (const AppSpec* app : registered_apps())
+    for (const std::string& line : app->examples) {
+      const std::size_t split = line.find("  ");  // "command  what it shows"
+      const std::string command = line.substr(0, split);
+      const std::string what = split == std::string::npos ? "" : line.substr(line.find_first_not_of(' ', split));
+      out += "  " + command;
+      if (!what.empty()) out += std::string(command.size() + 2 <= width ? width - command.size() : 2, ' ') + what;
+      out += "\n";
+    }
+  return out;
+}
+
 void add_app_commands(CommandGroups& g) {
   for (const AppSpec* app : registered_apps()) {
     add_run_command(*g.run, *app);

@@ -44,6 +44,8 @@ struct AppSpec {
   std::string run_footer;    // e.g. examples, shown at the end of `run NAME --help`
   std::string sweep_summary; // description of `sweep NAME` (default: a generic one)
   std::string sweep_footer;
+  // Lines for the examples of `gcsim --help`: a command, then what it shows (may be empty).
+  std::vector<std::string> examples;
   int default_nodes = 1;     // node count of `run NAME` without --nodes
   // Declares the application's own options on `run NAME` or `sweep NAME` (the pipeline adds the
   // machine options, --nodes, --json, ...) and returns the factory of its experiment.
@@ -75,6 +77,9 @@ void register_command_family(CommandFamilySpec spec);
 struct CommandFamilyRegistrar {
   explicit CommandFamilyRegistrar(CommandFamilySpec spec) { register_command_family(std::move(spec)); }
 };
+
+// Every registered application's example lines for `gcsim --help`, each command padded to `width`.
+std::string app_examples(std::size_t width);
 
 // Adds `run NAME` and `sweep NAME` for every registered application, then the applications' own
 // commands, then every command family's, each in order of name.

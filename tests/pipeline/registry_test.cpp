@@ -49,6 +49,18 @@ TEST(AppRegistry, CommandFamiliesAddTheirCommandsAfterTheAppsAndShareTheirNames)
   EXPECT_NO_THROW(g.run->get_subcommand("family-clash-test"));
 }
 
+TEST(AppRegistry, ExamplesAreListedWithTheirDescriptionsInOneColumn) {
+  AppSpec s = spec("examples-test");
+  s.examples = {"gcsim run examples-test --nodes 4  what it shows", "gcsim run examples-test --a-very-long-option-list  long",
+                "gcsim run examples-test"};
+  register_app(s);
+  const std::string text = app_examples(40);
+  const std::string command = "gcsim run examples-test --nodes 4";
+  EXPECT_NE(text.find("  " + command + std::string(40 - command.size(), ' ') + "what it shows\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("--a-very-long-option-list  long\n"), std::string::npos) << text;  // too long: two spaces
+  EXPECT_NE(text.find("  gcsim run examples-test\n"), std::string::npos) << text;        // no description
+}
+
 TEST(Backend, SimulatedRunsTheProgramOnEveryNode) {
   parix::RunOptions o;
   o.simulation.config = machine::with_nodes(machine::default_machine_config(), 4);

@@ -161,6 +161,7 @@ pipeline::AppSpec media_app() {
       "on the simulated GC: photons traced in parallel, photon maps and SH grids all-gathered, image rows\n"
       "handed out dynamically by node 0. The image does not depend on the node count.";
   s.run_footer = "\nExample:\n  gcsim run media --scene small --estimator radiance --nodes 16 --image m.png --json m.json";
+  s.examples = {"gcsim run media --scene small --image m.png  participating media by photon maps, 16 nodes"};
   s.default_nodes = 16;
   s.options = declare_options;
   s.commands = [](pipeline::CommandGroups& g) { add_accuracy_command(g); };

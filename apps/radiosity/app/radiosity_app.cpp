@@ -63,6 +63,8 @@ pipeline::AppSpec radiosity_app() {
       "  gcsim run radiosity --scene picroom --parallel hemicube-hierarchical --levels 2 --nodes 8\n"
       "  gcsim run radiosity --scene cornell --nodes 8 --order index --max-steps 2000   (thesis 4.4.1)\n"
       "  gcsim run radiosity --scene tests/radiosity/fixtures/opposing_squares_lit.wld --energy 0.99999";
+  s.examples = {"gcsim run radiosity --scene cornell --nodes 8  parallel radiosity, thesis ch. 4",
+                "gcsim sweep radiosity --scene cornell --jobs 2  node counts 1..64, two simulations at a time"};
   s.sweep_summary =
       "Run radiosity for several node counts and print, per count, simulated seconds, speedup over the\n"
       "first count, simulated communication seconds (mean per node) and wall seconds, next to the\n"

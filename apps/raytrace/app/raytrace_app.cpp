@@ -37,6 +37,7 @@ pipeline::AppSpec raytrace_app() {
       "counted ray-box and ray-primitive tests to its CPU, and node 0 assembles the image.\n"
       "Prints the paper's counters (BV and primitive tests per ray) and simulated next to wall time.";
   s.run_footer = "\nExample:\n  gcsim run raytrace --scene teapots --algo A4 --nodes 16 --image t.png --json t.json";
+  s.examples = {"gcsim run raytrace --scene teapots --nodes 16  ray tracing by subtrees (A4), the paper's photo 5"};
   s.sweep_summary =
       "Render the same image on 1..64 simulated nodes: simulated time, speedup over 1 node, parallel\n"
       "efficiency, mean communication time per node, and the host's wall time for each run.";

@@ -108,6 +108,7 @@ pipeline::AppSpec spec() {
   pipeline::AppSpec s;
   s.name = "render";
   s.summary = "Render a TOML scene file with the passes its plan needs (so far: the radiosity pass).";
+  s.examples = {"gcsim plan scenes/cornell.toml --nodes 8  which passes a scene needs, and why"};
   s.run_footer = "Example:\n  gcsim plan scenes/cornell.toml --nodes 8\n  gcsim run render --scene scenes/cornell.toml --nodes 8";
   s.options = [](CLI::App& cmd, pipeline::Verb verb) -> pipeline::ExperimentFactory {
     auto scene = std::make_shared<std::string>();
