@@ -51,15 +51,18 @@ void add_sphere(scene::SceneDescription& d, glm::vec3 center, float radius, int 
   add_shape(d, scene::Sphere{glm::dvec3(center), radius}, material);
 }
 
-void add_key_light(scene::SceneDescription& d) {
+// Frames the scene from `direction` (40 degrees, `margin` of its bounding sphere) and adds the key
+// light, both from the float scene's bounds, as the ray tracer will hold them.
+void frame_and_light(scene::SceneDescription& d, glm::vec3 direction, glm::vec3 up, float margin = 1.0f) {
   const Bounds3 b = lowered_bounds(d);
+  d.camera = frame_scene(b, direction, up, 40.0f, margin);
   const glm::vec3 c = b.center();
   const float r = 0.5f * glm::length(b.extent());
-  const glm::vec3 eye(d.camera->eye), up(d.camera->up);
+  const glm::vec3 eye(d.camera->eye), camera_up(d.camera->up);
   const glm::vec3 to_eye = glm::normalize(eye - c);
   // Above and to the left of the eye, so shapes read in relief.
-  const glm::vec3 side = glm::normalize(glm::cross(up, to_eye));
-  const glm::vec3 position = c + 3.0f * r * glm::normalize(to_eye + 0.8f * up - 0.6f * side);
+  const glm::vec3 side = glm::normalize(glm::cross(camera_up, to_eye));
+  const glm::vec3 position = c + 3.0f * r * glm::normalize(to_eye + 0.8f * camera_up - 0.6f * side);
   d.lights.push_back(scene::PointLight{glm::dvec3(position), glm::dvec3(glm::vec3(9.0f * r * r))});
 }
 
@@ -71,8 +74,7 @@ scene::SceneDescription sphere_grid_description(std::string name, float radius) 
     for (int y = 0; y < 8; ++y)
       for (int x = 0; x < 8; ++x) add_sphere(d, glm::vec3(x, y, z), radius, (x + y + z) % 8);
   // Close enough that the grid fills the frame: every ray crosses the lattice.
-  d.camera = frame_scene(lowered_bounds(d), {1.0f, 0.75f, 1.35f}, {0, 1, 0}, 40.0f, 0.72f);
-  add_key_light(d);
+  frame_and_light(d, {1.0f, 0.75f, 1.35f}, {0, 1, 0}, 0.72f);
   return d;
 }
 
@@ -86,8 +88,7 @@ scene::SceneDescription spheres_random_description() {
     const float r = rng.uniform(0.1f, 0.5f);
     add_sphere(d, c, r, i % 8);
   }
-  d.camera = frame_scene(lowered_bounds(d), {1.0f, 0.75f, 1.35f}, {0, 1, 0}, 40.0f);
-  add_key_light(d);
+  frame_and_light(d, {1.0f, 0.75f, 1.35f}, {0, 1, 0});
   return d;
 }
 
@@ -113,8 +114,7 @@ scene::SceneDescription teapot_description() {
   d.name = "teapot";
   const int m = d.add_material(phong("teapot", {0.8f, 0.55f, 0.3f}, 0.4f, 48.0f));
   add_teapot(d, make_teapot(), 0.0f, glm::vec3(0), m);
-  d.camera = frame_scene(lowered_bounds(d), {-0.45f, -1.0f, 0.55f}, {0, 0, 1}, 40.0f, 0.85f);
-  add_key_light(d);
+  frame_and_light(d, {-0.45f, -1.0f, 0.55f}, {0, 0, 1}, 0.85f);
   return d;
 }
 
@@ -127,8 +127,7 @@ scene::SceneDescription teapots_description() {
     const int x = i % 2, y = (i / 2) % 2, z = i / 4;
     add_teapot(d, mesh, 0.7f * float(i), glm::vec3(7.0f * x + 1.5f * z, 5.5f * y, 4.0f * z), m);
   }
-  d.camera = frame_scene(lowered_bounds(d), {-0.5f, -1.0f, 0.6f}, {0, 0, 1}, 40.0f, 0.8f);
-  add_key_light(d);
+  frame_and_light(d, {-0.5f, -1.0f, 0.6f}, {0, 0, 1}, 0.8f);
   return d;
 }
 

@@ -55,6 +55,11 @@ class EntityLowering {
   void box(const Box& b, int material);
   void sphere(const Sphere& s, int material);
   void mesh(const Mesh& m, int material);
+  // The entity's instances: its layout's placements, else one unmoved.
+  std::vector<Placement> placements() const {
+    if (!layout_ || layout_->instances.empty()) return {Placement{}};
+    return layout_->instances;
+  }
   Entity take() {
     if (layout_ && !layout_->vertices.empty()) shared_vertex(int(layout_->vertices.size()) - 1);  // unused ones last
     return std::move(e_);
@@ -214,7 +219,6 @@ World to_world(const SceneDescription& d) {
   World w;
   w.name = d.name;
   std::vector<EntityLowering> entities;
-  std::vector<const ObjectLayout*> entity_layout;
   std::map<std::string, std::size_t> by_object;
   const auto layouts = layouts_by_object(d);
   for (std::size_t i = 0; i < d.shapes.size(); ++i) {
@@ -222,8 +226,8 @@ World to_world(const SceneDescription& d) {
     std::size_t e;
     if (s.object.empty() || !by_object.count(s.object)) {
       e = entities.size();
-      entity_layout.push_back(s.object.empty() ? nullptr : layouts.at(s.object));
-      entities.emplace_back(s.object.empty() ? default_object_name(s, i) : s.object, d, entity_layout.back());
+      entities.emplace_back(s.object.empty() ? default_object_name(s, i) : s.object, d,
+                            s.object.empty() ? nullptr : layouts.at(s.object));
       if (!s.object.empty()) by_object[s.object] = e;
     } else {
       e = by_object[s.object];
@@ -234,12 +238,10 @@ World to_world(const SceneDescription& d) {
     else if (const auto* sp = std::get_if<Sphere>(&s.geometry)) x.sphere(*sp, s.material);
     else x.mesh(std::get<Mesh>(s.geometry), s.material);
   }
-  for (std::size_t e = 0; e < entities.size(); ++e) {
+  for (EntityLowering& x : entities) {
     const int index = int(w.entities.size());
-    if (!entity_layout[e] || entity_layout[e]->instances.empty()) w.instances.push_back({index, Placement{}});
-    else
-      for (const Placement& at : entity_layout[e]->instances) w.instances.push_back({index, at});
-    w.entities.push_back(entities[e].take());
+    for (const Placement& at : x.placements()) w.instances.push_back({index, at});
+    w.entities.push_back(x.take());
   }
   w.camera = d.camera;
   return w;
