@@ -1,4 +1,5 @@
 #include "apps/radiosity/gouraud_renderer.hpp"
+#include "apps/radiosity/element_corners.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,22 +22,7 @@ namespace {
 apps::Image render(const Scene& scene, const std::vector<Rgb>& b, const Camera& cam, const RenderOptions& o,
                    double* chosen_exposure) {
   const int W = o.width, H = o.height;
-  // Per element corner: area-weighted mean over the elements sharing the vertex that lie in the same
-  // plane and have the same surface (so box edges and the colour fields of a picture stay crisp).
-  std::vector<std::vector<int>> users(scene.vertices.size());
-  for (int e = 0; e < int(scene.elements.size()); ++e)
-    for (int k = 0; k < scene.elements[e].count; ++k) users[scene.elements[e].vertex[k]].push_back(e);
-  auto corner_value = [&](int e, int v) {
-    Rgb sum(0.0);
-    double area = 0;
-    for (int u : users[v])
-      if (glm::dot(scene.elements[u].normal, scene.elements[e].normal) > 0.999 &&
-          scene.patches[scene.elements[u].patch].surface == scene.patches[scene.elements[e].patch].surface) {
-        sum += b[u] * scene.elements[u].area;
-        area += scene.elements[u].area;
-      }
-    return area > 0 ? sum / area : b[e];
-  };
+  const std::vector<std::array<Rgb, 4>> corners = element_corner_radiosity(scene, b);
 
   Vec3 fwd = glm::normalize(cam.look_at - cam.eye);
   Vec3 right = glm::normalize(glm::cross(fwd, cam.up));
@@ -89,7 +75,7 @@ apps::Image render(const Scene& scene, const std::vector<Rgb>& b, const Camera& 
     CameraVertex cv[4];
     for (int k = 0; k < el.count; ++k) {
       Vec3 d = scene.vertices[el.vertex[k]] - cam.eye;
-      cv[k] = {{glm::dot(d, right), glm::dot(d, up), glm::dot(d, fwd)}, corner_value(e, el.vertex[k])};
+      cv[k] = {{glm::dot(d, right), glm::dot(d, up), glm::dot(d, fwd)}, corners[e][k]};
     }
     bool emitter = channel_sum(scene.surface_of_element(e).exitance) > 0;
     for (int tri = 0; tri + 2 < el.count; ++tri) {

@@ -264,16 +264,32 @@ class RadiosityNode {
 
 }  // namespace
 
-void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOptions& o, ParallelOutcome* outcome) {
+namespace {
+
+// One node's solve: its replica written to `mine`; node 0 also records the snapshots there.
+void solve_on(parix::Processor& p, const Scene& scene, const ParallelOptions& o, ParallelOutcome& mine) {
   // Refused before any work (every replica decides alike): a closed scene that never absorbs.
   check_energy_can_be_absorbed(scene, o.solver.hemicube);
   // Declared before the host builds them, so that a node too small fails at once.
   const parix::MemoryReservation replica = p.reserve_memory(replica_bytes(scene), "scene replica");
   const parix::MemoryReservation buffers = p.reserve_memory(hemicube_buffer_bytes(hemicube_of(o)), "hemicube");
   RadiosityNode node(p, scene, o);
-  if (p.id() == 0) node.snapshots_to = outcome;
+  if (p.id() == 0) node.snapshots_to = &mine;
   node.solve();
-  if (p.id() == 0 && outcome) node.write(*outcome);
+  node.write(mine);
+}
+
+}  // namespace
+
+void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOptions& o, ParallelOutcome* outcome) {
+  ParallelOutcome local;
+  solve_on(p, scene, o, p.id() == 0 && outcome ? *outcome : local);
+}
+
+ParallelOutcome solve_replica(parix::Processor& p, const Scene& scene, const ParallelOptions& o) {
+  ParallelOutcome mine;
+  solve_on(p, scene, o, mine);
+  return mine;
 }
 
 }  // namespace gcsim::radiosity

@@ -70,5 +70,8 @@ ParallelOptions with_shared_projections(ParallelOptions options);
 // The SPMD program: run it on every processor; processor 0 fills *outcome.
 void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOptions& options,
                        ParallelOutcome* outcome);
+// The same solve, returning this node's own replica (the element radiosities every node holds,
+// identical on all; steps and snapshots only on node 0): for programs that go on to use it.
+ParallelOutcome solve_replica(parix::Processor& p, const Scene& scene, const ParallelOptions& options);
 
 }  // namespace gcsim::radiosity

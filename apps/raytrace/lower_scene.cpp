@@ -1,5 +1,7 @@
 #include "apps/raytrace/lower_scene.hpp"
 
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -91,9 +93,15 @@ Scene lower_scene(const scene::SceneDescription& d) {
     add_shape(out, d.shapes[i]);
   }
   for (std::size_t i = 0; i < d.lights.size(); ++i) {
-    const auto* p = std::get_if<scene::PointLight>(&d.lights[i]);
-    if (!p) throw std::invalid_argument("light " + std::to_string(i) + " is a spot light; the ray tracer takes point lights");
-    out.lights.push_back({glm::vec3(p->position), glm::vec3(p->intensity)});
+    if (const auto* p = std::get_if<scene::PointLight>(&d.lights[i])) {
+      out.lights.push_back({glm::vec3(p->position), glm::vec3(p->intensity)});
+      continue;
+    }
+    const auto& spot = std::get<scene::SpotLight>(d.lights[i]);
+    PointLight l{glm::vec3(spot.position), glm::vec3(spot.intensity)};
+    l.spot_direction = glm::vec3(glm::normalize(spot.direction));
+    l.spot_cos = float(std::cos(spot.cone_degrees * std::numbers::pi / 180.0));
+    out.lights.push_back(l);
   }
   out.background = glm::vec3(d.image.background);
   out.ambient = glm::vec3(d.image.ambient);

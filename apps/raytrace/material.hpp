@@ -14,13 +14,24 @@ struct Material {
   float reflectance = 0.0f;        // mirror weight (for dielectrics the Fresnel term replaces it)
   float transmittance = 0.0f;      // > 0: a dielectric that refracts with index ior
   float ior = 1.5f;
+  // The surface's outgoing radiance is given per triangle vertex (Scene::triangle_radiance), as the
+  // unified renderer's radiosity pass supplies it: no ambient term and no point-light shading.
+  bool given_radiance = false;
 
   bool spawns_secondary() const { return reflectance > 0.0f || transmittance > 0.0f; }
+  bool operator==(const Material&) const = default;  // (memcmp would read the padding after the bool)
 };
 
 struct PointLight {
   glm::vec3 position{0.0f};
   glm::vec3 intensity{1.0f};  // radiant intensity; falls off with the square of the distance
+  // A spot light lights only inside the cone of half-angle acos(spot_cos) about spot_direction
+  // (unit); spot_cos = -1: a point light, every direction.
+  glm::vec3 spot_direction{0.0f, -1.0f, 0.0f};
+  float spot_cos = -1.0f;
+  bool lights_direction(const glm::vec3& towards_point) const {
+    return spot_cos <= -1.0f || glm::dot(towards_point, spot_direction) >= spot_cos;
+  }
 };
 
 }  // namespace gcsim::raytrace

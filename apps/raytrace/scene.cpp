@@ -20,6 +20,13 @@ Bounds3 Scene::bounds() const {
   return b;
 }
 
+glm::vec3 Scene::given_radiance(const Ray& ray, int prim, float b1, float b2) const {
+  const GivenRadiance& g = triangle_radiance[std::size_t(prim - sphere_count())];
+  const bool back = glm::dot(ray.direction, triangle(prim).geometric_normal()) > 0.0f;
+  const VertexRadiance& r = back ? g.back : g.front;
+  return (1.0f - b1 - b2) * r.r0 + b1 * r.r1 + b2 * r.r2;
+}
+
 int Scene::add_material(const Material& m) {
   materials.push_back(m);
   return static_cast<int>(materials.size() - 1);
@@ -114,6 +121,12 @@ void Scene::validate() const {
   }
   for (auto m : prim_material)
     if (m >= materials.size()) throw std::invalid_argument("scene '" + name + "': material index out of range");
+  if (!triangle_radiance.empty() && triangle_radiance.size() != triangles.size())
+    throw std::invalid_argument("scene '" + name + "': given radiance for some triangles only");
+  for (int p = 0; p < prim_count(); ++p)
+    if (material_of(p).given_radiance && (is_sphere(p) || triangle_radiance.empty()))
+      throw std::invalid_argument("scene '" + name + "': primitive " + std::to_string(p) +
+                                  " has a material with given radiance but no radiance at its vertices");
 }
 
 }  // namespace gcsim::raytrace

@@ -24,6 +24,12 @@ class Scene : public PrimitiveArrays {
   // Optional per-vertex normals of triangles (for smooth shading); empty or one per triangle.
   struct VertexNormals { glm::vec3 n0, n1, n2; };
   std::vector<VertexNormals> triangle_normals;
+  // Per-vertex outgoing radiance of triangles whose material has given_radiance (displayed colour,
+  // linear), on the side the geometric normal faces and on the back: empty, or one per triangle.
+  // Interpolated with the hit's barycentrics.
+  struct VertexRadiance { glm::vec3 r0, r1, r2; };
+  struct GivenRadiance { VertexRadiance front, back; };
+  std::vector<GivenRadiance> triangle_radiance;
   std::vector<Material> materials;
   std::vector<std::uint16_t> prim_material;  // per primitive id
   std::vector<PointLight> lights;
@@ -32,6 +38,8 @@ class Scene : public PrimitiveArrays {
   scene::Camera camera;  // the shared camera; raytrace::Camera converts it to float
 
   const Material& material_of(int prim) const { return materials[prim_material[prim]]; }
+  // The given radiance at barycentrics (b1, b2) of triangle primitive prim, on the side ray comes from.
+  glm::vec3 given_radiance(const Ray& ray, int prim, float b1, float b2) const;
   bool has_secondary_effects() const;
 
   Bounds3 bounds() const;

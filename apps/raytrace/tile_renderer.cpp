@@ -110,6 +110,7 @@ Hit TileRenderer::trace_secondary(const Ray& ray, const Pencil* pencil, TraceCou
 glm::vec3 TileRenderer::local_light(const Ray& ray, const Hit& hit, const SurfacePoint& sp, bool shadows,
                                     TraceCounters& counters) {
   const Material& m = scene_.material_of(hit.prim);
+  if (m.given_radiance) return scene_.given_radiance(ray, hit.prim, hit.b1, hit.b2);
   glm::vec3 albedo = m.diffuse;
   if (m.checker_other.x >= 0.0f) {
     const int parity = int(std::floor(sp.position.x / m.checker_size)) + int(std::floor(sp.position.y / m.checker_size));
@@ -124,7 +125,7 @@ glm::vec3 TileRenderer::local_light(const Ray& ray, const Hit& hit, const Surfac
     const float dist = std::sqrt(dist2);
     l /= dist;
     const float cos_l = glm::dot(n, l);
-    if (cos_l <= 0.0f || glm::dot(sp.geometric_normal, l) <= 0.0f) continue;
+    if (cos_l <= 0.0f || glm::dot(sp.geometric_normal, l) <= 0.0f || !light.lights_direction(-l)) continue;
     if (shadows) {
       const Ray shadow(offset_ray_origin(sp, l), l);
       ++counters.shadow_rays;

@@ -1,3 +1,4 @@
+#include <cmath>
 // The scene description lowered to the ray tracer's primitives: counts, id order (spheres first),
 // materials per primitive, closed boxes, and refusal of what Whitted ray tracing cannot show.
 #include <gtest/gtest.h>
@@ -54,16 +55,34 @@ TEST(LowerScene, BoxIsClosed) {
   }
 }
 
-TEST(LowerScene, RefusesMediaSpotLightsAndBadMaterialIndices) {
+TEST(LowerScene, RefusesMediaAndBadMaterialIndices) {
   auto d = two_shapes_and_a_box();
   d.materials[0].medium = scene::Medium{};
   EXPECT_THROW(lower_scene(d), std::invalid_argument);
   d = two_shapes_and_a_box();
-  d.lights.push_back(scene::SpotLight{});
-  EXPECT_THROW(lower_scene(d), std::invalid_argument);
-  d = two_shapes_and_a_box();
   d.shapes[0].material = 7;
   EXPECT_THROW(lower_scene(d), std::invalid_argument);
+}
+
+// A spot light of half-angle 30 degrees pointing down lights directions within 30 degrees of down,
+// and nothing beyond; a point light lights every direction.
+TEST(LowerScene, SpotLightsLightOnlyInsideTheirCone) {
+  auto d = two_shapes_and_a_box();
+  scene::SpotLight spot;
+  spot.direction = {0, -2, 0};  // not unit: lowering normalizes it
+  spot.cone_degrees = 30;
+  d.lights.push_back(spot);
+  const Scene s = lower_scene(d);
+  const PointLight& l = s.lights.back();
+  auto at_degrees = [](double a) {
+    const double r = a * 3.14159265358979 / 180;
+    return glm::vec3(float(std::sin(r)), float(-std::cos(r)), 0.0f);
+  };
+  EXPECT_TRUE(l.lights_direction(at_degrees(0)));
+  EXPECT_TRUE(l.lights_direction(at_degrees(29.9)));
+  EXPECT_FALSE(l.lights_direction(at_degrees(30.1)));
+  EXPECT_FALSE(l.lights_direction(glm::vec3(0, 1, 0)));
+  EXPECT_TRUE(PointLight{}.lights_direction(glm::vec3(0, 1, 0)));
 }
 
 // Glass of weight g is the ray tracer's dielectric with reflectance = transmittance = g: Fresnel's F

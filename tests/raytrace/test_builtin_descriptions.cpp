@@ -159,12 +159,12 @@ TEST(BuiltinDescriptions, WhittedFromATomlFileIsTheBuiltInBarItsTeapot) {
   ASSERT_EQ(file.spheres.size(), builtin.spheres.size());
   for (int i = 0; i < file.sphere_count(); ++i) {
     EXPECT_TRUE(same_bits(file.spheres[i], builtin.spheres[i])) << "sphere " << i;
-    EXPECT_TRUE(same_bits(file.material_of(i), builtin.material_of(i))) << "material of sphere " << i;
+    EXPECT_EQ(file.material_of(i), builtin.material_of(i)) << "material of sphere " << i;
   }
   ASSERT_EQ(file.triangles.size(), 2u);  // the floor; the built-in's teapot follows it
   for (int i = 0; i < 2; ++i) {
     EXPECT_TRUE(same_bits(file.triangles[i], builtin.triangles[i])) << "triangle " << i;
-    EXPECT_TRUE(same_bits(file.material_of(file.sphere_count() + i), builtin.material_of(builtin.sphere_count() + i)));
+    EXPECT_EQ(file.material_of(file.sphere_count() + i), builtin.material_of(builtin.sphere_count() + i));
   }
   ASSERT_EQ(file.lights.size(), builtin.lights.size());
   for (std::size_t i = 0; i < file.lights.size(); ++i) EXPECT_TRUE(same_bits(file.lights[i], builtin.lights[i])) << i;

@@ -26,7 +26,7 @@ class EntityLowering {
       throw std::invalid_argument(fmt::format("entity '{}' uses material {}, but there are {}", e_.name, material,
                                               d_.materials.size()));
     auto [it, added] = surface_index_.emplace(material, int(e_.surfaces.size()));
-    if (added) e_.surfaces.push_back({d_.materials[material].diffuse, d_.materials[material].emission});
+    if (added) e_.surfaces.push_back({d_.materials[material].diffuse, d_.materials[material].emission, material});
     return it->second;
   }
   int vertex(const Vec3& v) {

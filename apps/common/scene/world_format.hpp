@@ -18,6 +18,7 @@ using geometry::Vec3;
 struct Surface {
   Rgb reflectance{0.0};  // rho per channel, in [0, 1)
   Rgb exitance{0.0};     // initial (self-emitted) exitance E
+  int material = -1;     // the scene description's material it lowers (-1: read from a WORLD file)
 };
 
 // A polygon given by 3 or 4 vertex indices and the record it belongs to: for a patch its surface,

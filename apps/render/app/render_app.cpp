@@ -1,7 +1,8 @@
 // The render app: `gcsim plan SCENE.toml` (plan_command.cpp) and `gcsim run render --scene
-// SCENE.toml`, which runs the plan's passes that the unified renderer has so far: the radiosity
-// pass (the thesis's parallel progressive refinement on the scene's polygons). The view, specular,
-// media and shadow passes are planned but not yet run here.
+// SCENE.toml`, which runs the plan's passes that the unified renderer has so far, one after the
+// other on every node: the radiosity pass (the thesis's parallel progressive refinement on the
+// scene's polygons), then the view pass (the ray tracer's parallel render, reading the radiosity
+// at diffuse hits and following mirrors and glass: the specular pass). Media are planned only.
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -12,22 +13,25 @@
 #include "apps/common/scene/scene_file.hpp"
 #include "apps/pipeline/app_registry.hpp"
 #include "apps/pipeline/progress.hpp"
+#include "apps/pipeline/run_command.hpp"
 #include "apps/common/image.hpp"
 #include "apps/radiosity/gouraud_renderer.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "apps/radiosity/scene.hpp"
 #include "apps/render/app/render_commands.hpp"
 #include "apps/render/plan.hpp"
+#include "apps/render/unified_render.hpp"
+#include "apps/raytrace/lower_scene.hpp"
 
 namespace gcsim::render::app {
 
 namespace {
 
 struct RenderOutcome : pipeline::Outcome {
-  radiosity::ParallelOutcome radiosity;  // node 0's replica after the run
   std::unique_ptr<pipeline::ProgressLine> progress;
   int loops_done = 0;          // the radiosity pass as processor 0 reported it: what an
   double shot_fraction = 0.0;  // interrupted run reached
+  std::unique_ptr<UnifiedRender> render;
 };
 
 class RenderExperiment : public pipeline::Experiment {
@@ -37,12 +41,21 @@ class RenderExperiment : public pipeline::Experiment {
         progress_(progress) {
     if (plan_.pass(PassId::radiosity).on) mesh_ = radiosity::flatten(scene::to_world(description_));
     options_.solver.hemicube.resolution = 256;  // `gcsim run radiosity`'s default
+    try {  // refuses, before any run, what the view pass cannot show yet
+      raytrace::lower_scene(description_);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(fmt::format("{}: the view pass cannot render this scene yet: {}{}", scene_file, e.what(),
+                                              plan_.pass(PassId::media).on ? " (media run in `gcsim run media` only)" : ""));
+    }
   }
-  std::unique_ptr<pipeline::Outcome> new_outcome(int) const override { return std::make_unique<RenderOutcome>(); }
+  std::unique_ptr<pipeline::Outcome> new_outcome(int nodes) const override {
+    auto o = std::make_unique<RenderOutcome>();
+    o->render = std::make_unique<UnifiedRender>(nodes);
+    return o;
+  }
   parix::Program program(pipeline::Outcome& out) const override {
-    if (!plan_.pass(PassId::radiosity).on) return [](parix::Processor&) {};
     RenderOutcome& o = pipeline::outcome_as<RenderOutcome>(out);
-    radiosity::ParallelOutcome* result = &o.radiosity;
+    const bool radiosity_on = plan_.pass(PassId::radiosity).on;
     if (progress_ && pipeline::progress_wanted()) o.progress = std::make_unique<pipeline::ProgressLine>("render", 0);
     radiosity::ParallelOptions shown = radiosity::with_shared_projections(options_);
     // As `gcsim run radiosity`'s line: unshot energy falls about geometrically per loop.
@@ -52,10 +65,14 @@ class RenderExperiment : public pipeline::Experiment {
       const double fraction = goal < 0 ? std::clamp(std::log(std::max(1 - shot, 1e-300)) / goal, 0.0, 1.0) : 1.0;
       o.progress->update_fraction(fraction, fmt::format("radiosity pass: loop {}, {:.4f}% of the energy shot", loop, 100 * shot));
     };
-    return [this, result, shown](parix::Processor& p) { radiosity::radiosity_program(p, mesh_, shown, result); };
+    const radiosity::Scene* mesh = radiosity_on ? &mesh_ : nullptr;
+    UnifiedRender* render = o.render.get();
+    return [this, render, mesh, shown](parix::Processor& p) { unified_render_program(p, description_, mesh, shown, *render); };
   }
   void after_run(pipeline::Outcome& out) const override {
-    pipeline::outcome_as<RenderOutcome>(out).progress.reset();  // erases the line before the report
+    RenderOutcome& o = pipeline::outcome_as<RenderOutcome>(out);
+    o.progress.reset();  // erases the line before the report
+    finish(*o.render);
   }
   void report_interrupted(const pipeline::Outcome& out, nlohmann::json& reached) const override {
     const auto& o = pipeline::outcome_as<RenderOutcome>(out);
@@ -65,23 +82,38 @@ class RenderExperiment : public pipeline::Experiment {
   void print_setup(int nodes) const override {
     fmt::print("scene     {}: {} patches, {} elements\n", plan_.scene_name, plan_.facts.patches, plan_.facts.elements);
     for (const PassPlan& p : plan_.passes) {
-      const bool runs = p.on && p.id == PassId::radiosity;
+      const bool runs = p.on && (p.id == PassId::radiosity || p.id == PassId::view || p.id == PassId::specular ||
+                                 p.id == PassId::shadows);
       fmt::print("pass      {:<10} {}\n", pass_name(p.id),
                  !p.on ? "off (gcsim plan says why)" : runs ? fmt::format("runs on {} nodes", nodes) : "planned, not yet run");
     }
   }
   void report(const pipeline::Outcome& out, nlohmann::json& extra) const override {
-    const auto& r = pipeline::outcome_as<RenderOutcome>(out).radiosity;
+    const auto& o = pipeline::outcome_as<RenderOutcome>(out);
+    const UnifiedRender& u = *o.render;
+    const double radiosity_s = u.radiosity_seconds();
     if (!plan_.pass(PassId::radiosity).on) {
       fmt::print("radiosity skipped: {}\n", plan_.pass(PassId::radiosity).reason);
       extra["radiosity"] = {{"ran", false}};
-      if (!image_.empty()) fmt::print("image     not written: only the radiosity pass renders so far, and it is off\n");
-      return;
+    } else {
+      const auto& r = u.radiosity;
+      fmt::print("radiosity {} steps, {}converged; the pass ended at {:.6f} s simulated (last node)\n", r.steps.size(),
+                 r.converged ? "" : "not ", radiosity_s);
+      extra["radiosity"] = {{"ran", true}, {"steps", r.steps.size()}, {"converged", r.converged},
+                            {"elements", r.element_radiosity.size()}, {"simulated_end_s", radiosity_s}};
     }
-    fmt::print("radiosity {} steps, {}converged\n", r.steps.size(), r.converged ? "" : "not ");
-    extra["radiosity"] = {{"ran", true}, {"steps", r.steps.size()}, {"converged", r.converged},
-                          {"elements", r.element_radiosity.size()}};
-    if (!image_.empty()) write_image(r);
+    if (!u.view) return;
+    const raytrace::ParallelRender& v = u.view->result;
+    const double total_s = o.run.simulated_seconds();
+    fmt::print("view      {} x {} pixels, {} primitives, {} shading rays; {:.6f} s simulated{}\n", u.view->settings.width,
+               u.view->settings.height, u.view->scene.prim_count(), v.counters.shades, total_s - radiosity_s,
+               plan_.pass(PassId::radiosity).on ? " after the radiosity pass" : "");
+    extra["view"] = {{"width", u.view->settings.width}, {"height", u.view->settings.height},
+                     {"primitives", u.view->scene.prim_count()}, {"shades", v.counters.shades},
+                     {"exposure", u.view->exposure}, {"simulated_s", total_s - radiosity_s}};
+    if (image_.empty()) return;
+    apps::write_png(image_, v.image);
+    fmt::print("image     {} (view pass, assembled on node 0)\n", image_);
   }
 
  private:
@@ -91,34 +123,30 @@ class RenderExperiment : public pipeline::Experiment {
   radiosity::ParallelOptions options_;
   std::string image_;
   bool progress_;  // gcsim run: a line per loop on a terminal
-
-  // The radiosity solution seen from the scene's camera, Gouraud-shaded on the host (not yet a
-  // pass on the simulated nodes).
-  void write_image(const radiosity::ParallelOutcome& r) const {
-    radiosity::RenderOptions ro;
-    ro.width = description_.image.width;
-    ro.height = description_.image.height;
-    const radiosity::Camera camera = mesh_.camera ? *mesh_.camera : radiosity::default_camera(mesh_);
-    apps::write_png(image_, radiosity::render_gouraud(mesh_, r.element_radiosity, camera, ro));
-    fmt::print("image     {} (radiosity, Gouraud-shaded on the host)\n", image_);
-  }
 };
 
 pipeline::AppSpec spec() {
   pipeline::AppSpec s;
   s.name = "render";
-  s.summary = "Render a TOML scene file with the passes its plan needs (so far: the radiosity pass).";
-  s.examples = {"gcsim plan scenes/cornell.toml --nodes 8  which passes a scene needs, and why"};
-  s.run_footer = "Example:\n  gcsim plan scenes/cornell.toml --nodes 8\n  gcsim run render --scene scenes/cornell.toml --nodes 8";
+  s.summary = "Render a TOML scene file with the passes its plan needs (radiosity, then the ray-traced view; media not yet).";
+  s.examples = {"gcsim plan scenes/cornell.toml --nodes 8  which passes a scene needs, and why",
+                "gcsim render scenes/cornell-mirror-glass.toml --nodes 8 --image out.png  radiosity, then the ray-traced view"};
+  s.run_footer = "Example:\n  gcsim plan scenes/cornell.toml --nodes 8\n  gcsim render scenes/cornell-mirror-glass.toml --nodes 8 --image out.png --json out.json\n"
+                 "  (gcsim run render --scene FILE ... is the same command)";
   s.options = [](CLI::App& cmd, pipeline::Verb verb) -> pipeline::ExperimentFactory {
     auto scene = std::make_shared<std::string>();
     auto image = std::make_shared<std::string>();
-    cmd.add_option("--scene", *scene, "a TOML scene file (scenes/*.toml)")->required();
-    cmd.add_option("--image", *image, "write the radiosity solution seen from the scene's camera as PNG");
+    cmd.add_option("scene,--scene", *scene, "a TOML scene file (scenes/*.toml)")->required();
+    cmd.add_option("--image", *image, "write the view pass's image (PNG, the scene's [image] size)");
     const bool progress = verb == pipeline::Verb::run;
     return [scene, image, progress] { return std::make_unique<RenderExperiment>(*scene, *image, progress); };
   };
-  s.commands = [](pipeline::CommandGroups& g) { add_plan_command(g); };
+  // `gcsim render SCENE.toml ...` is `gcsim run render --scene SCENE.toml ...`, top-level as the
+  // plan's companion.
+  s.commands = [](pipeline::CommandGroups& g) {
+    add_plan_command(g);
+    pipeline::add_run_command(*g.app, spec());
+  };
   return s;
 }
 const pipeline::AppRegistrar registrar{spec()};

@@ -1,0 +1,34 @@
+#pragma once
+// The per-processor program of the unified renderer: the passes of the plan that run, one after
+// the other on every node. First the radiosity pass (the thesis's parallel progressive
+// refinement, the radiosity app's own program), then the view pass (view_pass.hpp), which each node
+// starts when its own radiosity pass ends.
+#include <memory>
+#include <vector>
+
+#include "apps/common/scene/scene_description.hpp"
+#include "apps/radiosity/parallel_radiosity.hpp"
+#include "apps/render/view_pass.hpp"
+#include "parix/processor.hpp"
+
+namespace gcsim::render {
+
+struct UnifiedRender {
+  radiosity::ParallelOutcome radiosity;  // node 0's replica (empty without a radiosity pass)
+  // Built on the host by the first node whose radiosity pass ends: every replica holds the same
+  // radiosities bit for bit, so which node does not matter; under MPI each rank builds its own.
+  std::unique_ptr<ViewPass> view;
+  std::vector<double> radiosity_end_s;   // per node (its own slot): when its radiosity pass ended
+
+  explicit UnifiedRender(int nodes) : radiosity_end_s(std::size_t(nodes), 0.0) {}
+  double radiosity_seconds() const;      // the last node's end of the radiosity pass
+};
+
+// mesh: radiosity::flatten(to_world(description)), or nullptr when the plan skips radiosity.
+void unified_render_program(parix::Processor& p, const scene::SceneDescription& description,
+                            const radiosity::Scene* mesh, const radiosity::ParallelOptions& options, UnifiedRender& out);
+
+// After the run, on the host: merges the view pass's per-node counters and hit ids.
+void finish(UnifiedRender& out);
+
+}  // namespace gcsim::render

@@ -1,0 +1,31 @@
+#include "apps/render/view_pass.hpp"
+
+#include "apps/radiosity/gouraud_renderer.hpp"
+#include "apps/raytrace/lower_scene.hpp"
+#include "apps/render/view_scene.hpp"
+
+namespace gcsim::render {
+
+std::unique_ptr<ViewPass> make_view_pass(const scene::SceneDescription& d, const radiosity::Scene* mesh,
+                                         const std::vector<radiosity::Rgb>* b, int nodes) {
+  auto v = std::make_unique<ViewPass>();
+  if (mesh && b) {
+    radiosity::RenderOptions ro;
+    ro.width = d.image.width;
+    ro.height = d.image.height;
+    const radiosity::Camera camera = mesh->camera ? *mesh->camera : radiosity::default_camera(*mesh);
+    v->exposure = radiosity::auto_exposure(*mesh, *b, camera, ro);
+    v->scene = make_view_scene(d, *mesh, *b, v->exposure);
+  } else {
+    v->scene = raytrace::lower_scene(d);
+  }
+  v->bvh = geometry::build_bvh_by_clustering(v->scene);
+  v->settings.width = d.image.width;
+  v->settings.height = d.image.height;
+  v->settings.shading = raytrace::Shading::whitted;
+  v->job = std::make_unique<raytrace::ParallelRenderJob>(v->scene, v->bvh, v->settings, raytrace::Distribution::dynamic);
+  v->result = v->job->new_result(nodes);
+  return v;
+}
+
+}  // namespace gcsim::render

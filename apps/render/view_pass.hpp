@@ -1,0 +1,30 @@
+#pragma once
+// The view pass of the unified renderer: the ray tracer's parallel render (tiles over the nodes,
+// pixels to node 0) of the view scene (view_scene.hpp), Whitted-shaded so that mirrors and glass
+// are followed. It starts on each node when that node's radiosity pass ends.
+#include <memory>
+#include <vector>
+
+#include "apps/common/geometry/bvh.hpp"
+#include "apps/common/scene/scene_description.hpp"
+#include "apps/radiosity/scene.hpp"
+#include "apps/raytrace/parallel_render.hpp"
+#include "apps/raytrace/scene.hpp"
+
+namespace gcsim::render {
+
+struct ViewPass {
+  raytrace::Scene scene;
+  geometry::Bvh bvh;
+  raytrace::RenderSettings settings;
+  std::unique_ptr<raytrace::ParallelRenderJob> job;
+  raytrace::ParallelRender result;  // node 0 assembles the image; per-node counters
+  double exposure = 1.0;            // radiosity to displayed colour (the Gouraud display's automatic one)
+};
+
+// With a radiosity solution (mesh and one radiosity per element): its elements lit by it; without
+// (mesh == nullptr): the lowered scene lit by its point lights. Image size from the description.
+std::unique_ptr<ViewPass> make_view_pass(const scene::SceneDescription& description, const radiosity::Scene* mesh,
+                                         const std::vector<radiosity::Rgb>* element_radiosity, int nodes);
+
+}  // namespace gcsim::render

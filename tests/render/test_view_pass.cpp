@@ -1,0 +1,163 @@
+// The unified renderer's view pass: the radiosity pass's solution seen through the ray tracer.
+// Its radiosity pass is the radiosity program (same radiosities, same simulated time); its image
+// agrees with the Gouraud display of the same solution, shows a uniform radiosity as exactly its
+// exposed value, tells a polygon's back from its front, and is the same on any node count.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <set>
+#include <tuple>
+
+#include "apps/common/scene/description_to_world.hpp"
+#include "apps/common/scene/scene_file.hpp"
+#include "apps/radiosity/gouraud_renderer.hpp"
+#include "apps/radiosity/parallel_radiosity.hpp"
+#include "apps/raytrace/pixel_encoding.hpp"
+#include "apps/raytrace/render.hpp"
+#include "apps/render/unified_render.hpp"
+#include "apps/render/view_scene.hpp"
+#include "parix/simulated_runtime.hpp"
+
+namespace gcsim::render {
+namespace {
+
+scene::SceneDescription scene_file(const char* name) {
+  return scene::load_scene_file(std::filesystem::path(GCSIM_SOURCE_DIR) / "scenes" / name);
+}
+
+radiosity::ParallelOptions small_solve() {
+  radiosity::ParallelOptions o;
+  o.solver.hemicube.resolution = 32;
+  o.solver.energy = 0.9;
+  return o;
+}
+
+parix::SimulationOptions machine_of(int nodes) {
+  parix::SimulationOptions sim;
+  sim.config = machine::with_nodes(machine::default_machine_config(), nodes);
+  return sim;
+}
+
+struct Rendered {
+  std::unique_ptr<UnifiedRender> out;
+  parix::RunResult run;
+};
+
+Rendered render_on(const scene::SceneDescription& d, const radiosity::Scene* mesh, int nodes) {
+  Rendered r{std::make_unique<UnifiedRender>(nodes), {}};
+  const radiosity::ParallelOptions o = small_solve();
+  r.run = parix::run_simulated(machine_of(nodes), [&](parix::Processor& p) { unified_render_program(p, d, mesh, o, *r.out); });
+  finish(*r.out);
+  return r;
+}
+
+scene::SceneDescription small_image(scene::SceneDescription d) {
+  d.image.width = d.image.height = 64;
+  return d;
+}
+
+TEST(ViewPass, RadiosityPassIsTheRadiosityProgram) {
+  const auto d = small_image(scene_file("cornell.toml"));
+  const radiosity::Scene mesh = radiosity::flatten(scene::to_world(d));
+  const Rendered unified = render_on(d, &mesh, 2);
+  radiosity::ParallelOutcome alone;
+  const auto run = parix::run_simulated(machine_of(2), [&](parix::Processor& p) {
+    radiosity::radiosity_program(p, mesh, small_solve(), &alone);
+  });
+  EXPECT_EQ(unified.out->radiosity.element_radiosity, alone.element_radiosity);
+  EXPECT_EQ(unified.out->radiosity_seconds(), run.simulated_seconds());
+  EXPECT_GT(unified.run.simulated_seconds(), run.simulated_seconds());  // the view pass comes after
+}
+
+TEST(ViewPass, ImageIsTheSameOnAnyNodeCount) {
+  const auto d = small_image(scene_file("cornell-mirror-glass.toml"));
+  const radiosity::Scene mesh = radiosity::flatten(scene::to_world(d));
+  const Rendered one = render_on(d, &mesh, 1), three = render_on(d, &mesh, 3);
+  ASSERT_EQ(one.out->view->result.image.pixels().size(), three.out->view->result.image.pixels().size());
+  EXPECT_EQ(one.out->view->result.image.pixels(), three.out->view->result.image.pixels());
+  EXPECT_EQ(one.out->view->scene.sphere_count(), 2);  // the mirror and the glass, as true spheres
+}
+
+// Seen from the scene's camera, the ray-traced view of CORNELL's solution and the radiosity app's
+// Gouraud display of it (same exposure) differ only along edges, where the two rasterize a pixel
+// from different sides.
+TEST(ViewPass, CornellAgreesWithTheGouraudDisplay) {
+  const auto d = small_image(scene_file("cornell.toml"));
+  const radiosity::Scene mesh = radiosity::flatten(scene::to_world(d));
+  const Rendered r = render_on(d, &mesh, 2);
+  radiosity::RenderOptions ro;
+  ro.width = ro.height = 64;
+  ro.exposure = r.out->view->exposure;
+  const apps::Image gouraud = radiosity::render_gouraud(mesh, r.out->radiosity.element_radiosity, *mesh.camera, ro);
+  const apps::Image& view = r.out->view->result.image;
+  int far = 0, n = 0;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x, ++n)
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(int(raytrace::encode_srgb8(view.at(x, y)[c])) - int(raytrace::encode_srgb8(gouraud.at(x, y)[c]))) > 8) {
+          ++far;
+          break;
+        }
+  EXPECT_LT(far, n / 10) << far << " of " << n << " pixels differ by more than 8 of 255";
+}
+
+// Every element at the same radiosity B: every pixel that sees an element is exactly B x exposure.
+TEST(ViewPass, UniformRadiosityShowsAsItsExposedValue) {
+  const auto d = small_image(scene_file("cornell.toml"));
+  const radiosity::Scene mesh = radiosity::flatten(scene::to_world(d));
+  const std::vector<radiosity::Rgb> b(mesh.elements.size(), radiosity::Rgb(0.25, 0.5, 0.125));
+  const raytrace::Scene view = make_view_scene(d, mesh, b, 2.0);
+  raytrace::RenderSettings s;
+  s.width = s.height = 64;
+  s.shading = raytrace::Shading::whitted;
+  const raytrace::RenderOutput out = raytrace::render_image(view, geometry::build_bvh_by_clustering(view), s);
+  int seen = 0;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      if (out.prim_ids[std::size_t(y) * 64 + x] < 0) continue;
+      ++seen;
+      const glm::vec3 c = out.image.at(x, y);
+      ASSERT_NEAR(c.r, 0.5f, 1e-6f);
+      ASSERT_NEAR(c.g, 1.0f, 1e-6f);
+      ASSERT_NEAR(c.b, 0.25f, 1e-6f);
+    }
+  EXPECT_GT(seen, 64 * 64 / 2);
+}
+
+// A triangle shows its front radiance to rays that meet its front, its back radiance otherwise.
+TEST(ViewPass, GivenRadianceHasTwoSides) {
+  raytrace::Scene s;
+  raytrace::Material lit;
+  lit.given_radiance = true;
+  s.add_triangle(raytrace::Triangle{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, s.add_material(lit));  // normal +z
+  const glm::vec3 red(1, 0, 0), blue(0, 0, 1);
+  s.triangle_radiance.push_back({{red, red, red}, {blue, blue, blue}});
+  s.validate();
+  EXPECT_EQ(s.given_radiance(raytrace::Ray({0.2f, 0.2f, 1}, {0, 0, -1}), 0, 0.2f, 0.2f), red);
+  EXPECT_EQ(s.given_radiance(raytrace::Ray({0.2f, 0.2f, -1}, {0, 0, 1}), 0, 0.2f, 0.2f), blue);
+  s.triangle_radiance.clear();
+  EXPECT_THROW(s.validate(), std::invalid_argument);  // given radiance with none given
+}
+
+// The light of cornell-mirror-glass.toml is a two-sided polygon (emitter below, black housing
+// above) on the same vertices: it becomes one set of triangles, never two coincident ones.
+TEST(ViewPass, APolygonsBackIsNotASecondCoincidentSurface) {
+  const auto d = scene_file("cornell-mirror-glass.toml");
+  const radiosity::Scene mesh = radiosity::flatten(scene::to_world(d));
+  const std::vector<radiosity::Rgb> b(mesh.elements.size(), radiosity::Rgb(1.0));
+  const raytrace::Scene view = make_view_scene(d, mesh, b, 1.0);
+  std::set<std::array<float, 9>> seen;
+  for (const raytrace::Triangle& t : view.triangles) {
+    std::array<glm::vec3, 3> v{t.p0, t.p1, t.p2};
+    std::sort(v.begin(), v.end(), [](const glm::vec3& a, const glm::vec3& c) {
+      return std::tie(a.x, a.y, a.z) < std::tie(c.x, c.y, c.z);
+    });
+    EXPECT_TRUE(seen.insert({v[0].x, v[0].y, v[0].z, v[1].x, v[1].y, v[1].z, v[2].x, v[2].y, v[2].z}).second);
+  }
+}
+
+}  // namespace
+}  // namespace gcsim::render
