@@ -20,6 +20,10 @@ struct RenderSettings {
   Shading shading = Shading::local;
   bool pencils = true;     // whitted: first-generation secondary rays through pencil subtrees (2.3)
   int max_depth = 5;       // whitted: reflection/refraction levels
+  // whitted: which of its rays are cast at all (the unified renderer turns off what the scene's
+  // plan says cannot contribute: a scene without mirrors or glass, or nothing that can shadow).
+  bool shadow_rays = true;
+  bool secondary_rays = true;
 };
 
 }  // namespace gcsim::raytrace

@@ -20,7 +20,7 @@ void TileRenderer::render_tile(int x0, int y0, int x1, int y1, std::span<glm::ve
   const bool whitted = settings_.shading == Shading::whitted;
 
   std::optional<Pencil> pencils[2];
-  if (whitted && settings_.pencils && w >= 2 && h >= 2) {
+  if (whitted && settings_.secondary_rays && settings_.pencils && w >= 2 && h >= 2) {
     const int cx[4] = {x0, x1 - 1, x0, x1 - 1}, cy[4] = {y0, y0, y1 - 1, y1 - 1};
     Ray rays[4];
     Hit corner[4];
@@ -154,8 +154,8 @@ glm::vec3 TileRenderer::shade(const Ray& ray, const Hit& hit, int depth, const P
   ++counters.shades;
   const SurfacePoint sp = scene_.surface_point(ray, hit.prim, hit.t, hit.b1, hit.b2);
   const bool whitted = settings_.shading == Shading::whitted;
-  glm::vec3 color = local_light(ray, hit, sp, whitted, counters);
-  if (!whitted || depth >= settings_.max_depth) return color;
+  glm::vec3 color = local_light(ray, hit, sp, whitted && settings_.shadow_rays, counters);
+  if (!whitted || !settings_.secondary_rays || depth >= settings_.max_depth) return color;
   for (Bounce kind : {Bounce::reflection, Bounce::refraction}) {
     const SecondaryRay s = secondary_ray(ray, hit, kind);
     if (!s.valid || s.weight <= 0.0f) continue;

@@ -7,7 +7,7 @@
 namespace gcsim::render {
 
 std::unique_ptr<ViewPass> make_view_pass(const scene::SceneDescription& d, const radiosity::Scene* mesh,
-                                         const std::vector<radiosity::Rgb>* b, int nodes) {
+                                         const std::vector<radiosity::Rgb>* b, ViewRays rays, int nodes) {
   auto v = std::make_unique<ViewPass>();
   if (mesh && b) {
     radiosity::RenderOptions ro;
@@ -23,6 +23,8 @@ std::unique_ptr<ViewPass> make_view_pass(const scene::SceneDescription& d, const
   v->settings.width = d.image.width;
   v->settings.height = d.image.height;
   v->settings.shading = raytrace::Shading::whitted;
+  v->settings.secondary_rays = rays.secondary;
+  v->settings.shadow_rays = rays.shadows;
   v->job = std::make_unique<raytrace::ParallelRenderJob>(v->scene, v->bvh, v->settings, raytrace::Distribution::dynamic);
   v->result = v->job->new_result(nodes);
   return v;

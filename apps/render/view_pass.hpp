@@ -13,6 +13,12 @@
 
 namespace gcsim::render {
 
+// Which of the view's rays are cast: the plan's specular and shadows passes (or --force-pass).
+struct ViewRays {
+  bool secondary = true;  // mirror and glass: reflected and refracted rays
+  bool shadows = true;    // towards point and spot lights
+};
+
 struct ViewPass {
   raytrace::Scene scene;
   geometry::Bvh bvh;
@@ -25,6 +31,6 @@ struct ViewPass {
 // With a radiosity solution (mesh and one radiosity per element): its elements lit by it; without
 // (mesh == nullptr): the lowered scene lit by its point lights. Image size from the description.
 std::unique_ptr<ViewPass> make_view_pass(const scene::SceneDescription& description, const radiosity::Scene* mesh,
-                                         const std::vector<radiosity::Rgb>* element_radiosity, int nodes);
+                                         const std::vector<radiosity::Rgb>* element_radiosity, ViewRays rays, int nodes);
 
 }  // namespace gcsim::render

@@ -9,6 +9,7 @@
 #include <array>
 #include <filesystem>
 #include <set>
+#include <string>
 #include <tuple>
 
 #include "apps/common/scene/description_to_world.hpp"
@@ -46,10 +47,10 @@ struct Rendered {
   parix::RunResult run;
 };
 
-Rendered render_on(const scene::SceneDescription& d, const radiosity::Scene* mesh, int nodes) {
+Rendered render_on(const scene::SceneDescription& d, const radiosity::Scene* mesh, int nodes, ViewRays rays = {}) {
   Rendered r{std::make_unique<UnifiedRender>(nodes), {}};
   const radiosity::ParallelOptions o = small_solve();
-  r.run = parix::run_simulated(machine_of(nodes), [&](parix::Processor& p) { unified_render_program(p, d, mesh, o, *r.out); });
+  r.run = parix::run_simulated(machine_of(nodes), [&](parix::Processor& p) { unified_render_program(p, d, mesh, o, rays, *r.out); });
   finish(*r.out);
   return r;
 }
@@ -125,6 +126,27 @@ TEST(ViewPass, UniformRadiosityShowsAsItsExposedValue) {
       ASSERT_NEAR(c.b, 0.25f, 1e-6f);
     }
   EXPECT_GT(seen, 64 * 64 / 2);
+}
+
+// --force-pass: the plan turns off the shadow rays of direct-light.toml (a single plane cannot
+// shadow itself) and its secondary rays (no mirror or glass); casting them anyway costs simulated
+// time and changes no pixel. Likewise forced on in CORNELL, which has neither point lights nor
+// mirrors.
+TEST(ViewPass, ForcingAPassThePlanSkipsChangesNoPixel) {
+  for (const char* file : {"direct-light.toml", "cornell.toml"}) {
+    SCOPED_TRACE(file);
+    const auto d = small_image(scene_file(file));
+    const radiosity::Scene mesh = radiosity::flatten(scene::to_world(d));
+    const bool radiosity = std::string(file) == "cornell.toml";
+    const Rendered planned = render_on(d, radiosity ? &mesh : nullptr, 2, ViewRays{false, false});
+    const Rendered forced = render_on(d, radiosity ? &mesh : nullptr, 2, ViewRays{true, true});
+    EXPECT_EQ(planned.out->view->result.image.pixels(), forced.out->view->result.image.pixels());
+    EXPECT_EQ(planned.out->view->result.counters.shadow_rays, 0);
+    if (!radiosity) {
+      EXPECT_GT(forced.out->view->result.counters.shadow_rays, 0);
+      EXPECT_GT(forced.run.makespan, planned.run.makespan);
+    }
+  }
 }
 
 // A triangle shows its front radiance to rays that meet its front, its back radiance otherwise.

@@ -36,9 +36,12 @@ struct RenderOutcome : pipeline::Outcome {
 
 class RenderExperiment : public pipeline::Experiment {
  public:
-  RenderExperiment(const std::string& scene_file, std::string image, bool progress)
+  RenderExperiment(const std::string& scene_file, std::string image, const std::vector<std::string>& forced, bool progress)
       : description_(scene::load_scene_file(scene_file)), plan_(make_plan(description_)), image_(std::move(image)),
         progress_(progress) {
+    for (const std::string& name : forced) force(name);
+    rays_.secondary = runs(PassId::specular);
+    rays_.shadows = runs(PassId::shadows);
     if (plan_.pass(PassId::radiosity).on) mesh_ = radiosity::flatten(scene::to_world(description_));
     options_.solver.hemicube.resolution = 256;  // `gcsim run radiosity`'s default
     try {  // refuses, before any run, what the view pass cannot show yet
@@ -67,7 +70,9 @@ class RenderExperiment : public pipeline::Experiment {
     };
     const radiosity::Scene* mesh = radiosity_on ? &mesh_ : nullptr;
     UnifiedRender* render = o.render.get();
-    return [this, render, mesh, shown](parix::Processor& p) { unified_render_program(p, description_, mesh, shown, *render); };
+    return [this, render, mesh, shown](parix::Processor& p) {
+      unified_render_program(p, description_, mesh, shown, rays_, *render);
+    };
   }
   void after_run(pipeline::Outcome& out) const override {
     RenderOutcome& o = pipeline::outcome_as<RenderOutcome>(out);
@@ -82,10 +87,11 @@ class RenderExperiment : public pipeline::Experiment {
   void print_setup(int nodes) const override {
     fmt::print("scene     {}: {} patches, {} elements\n", plan_.scene_name, plan_.facts.patches, plan_.facts.elements);
     for (const PassPlan& p : plan_.passes) {
-      const bool runs = p.on && (p.id == PassId::radiosity || p.id == PassId::view || p.id == PassId::specular ||
-                                 p.id == PassId::shadows);
+      const bool forced = std::ranges::find(forced_, p.id) != forced_.end();
       fmt::print("pass      {:<10} {}\n", pass_name(p.id),
-                 !p.on ? "off (gcsim plan says why)" : runs ? fmt::format("runs on {} nodes", nodes) : "planned, not yet run");
+                 !runs(p.id) ? "off (gcsim plan says why)"
+                 : p.id == PassId::media ? "planned, not yet run"
+                                         : fmt::format("runs on {} nodes{}", nodes, forced ? " (forced on: the plan has it off)" : ""));
     }
   }
   void report(const pipeline::Outcome& out, nlohmann::json& extra) const override {
@@ -108,7 +114,10 @@ class RenderExperiment : public pipeline::Experiment {
     fmt::print("view      {} x {} pixels, {} primitives, {} shading rays; {:.6f} s simulated{}\n", u.view->settings.width,
                u.view->settings.height, u.view->scene.prim_count(), v.counters.shades, total_s - radiosity_s,
                plan_.pass(PassId::radiosity).on ? " after the radiosity pass" : "");
-    extra["view"] = {{"width", u.view->settings.width}, {"height", u.view->settings.height},
+    std::vector<std::string> forced_names;
+    for (PassId id : forced_) forced_names.emplace_back(pass_name(id));
+    extra["forced_passes"] = forced_names;
+    extra["view"] = {{"secondary_rays", rays_.secondary}, {"shadow_rays", rays_.shadows}, {"width", u.view->settings.width}, {"height", u.view->settings.height},
                      {"primitives", u.view->scene.prim_count()}, {"shades", v.counters.shades},
                      {"exposure", u.view->exposure}, {"simulated_s", total_s - radiosity_s}};
     if (image_.empty()) return;
@@ -123,6 +132,22 @@ class RenderExperiment : public pipeline::Experiment {
   radiosity::ParallelOptions options_;
   std::string image_;
   bool progress_;  // gcsim run: a line per loop on a terminal
+  std::vector<PassId> forced_;  // --force-pass: off in the plan, run anyway
+  ViewRays rays_;
+
+  bool runs(PassId id) const { return plan_.pass(id).on || std::ranges::find(forced_, id) != forced_.end(); }
+  // --force-pass NAME: only passes whose zero contribution the view can run and add as it is.
+  void force(const std::string& name) {
+    for (PassId id : {PassId::specular, PassId::shadows})
+      if (name == pass_name(id)) {
+        if (!plan_.pass(id).on) forced_.push_back(id);
+        return;
+      }
+    if (name == "radiosity" || name == "media" || name == "view")
+      throw std::invalid_argument(fmt::format(
+          "--force-pass {}: not supported yet; the passes that can be forced are specular and shadows", name));
+    throw std::invalid_argument(fmt::format("--force-pass {}: no such pass; expected specular or shadows", name));
+  }
 };
 
 pipeline::AppSpec spec() {
@@ -136,10 +161,17 @@ pipeline::AppSpec spec() {
   s.options = [](CLI::App& cmd, pipeline::Verb verb) -> pipeline::ExperimentFactory {
     auto scene = std::make_shared<std::string>();
     auto image = std::make_shared<std::string>();
+    auto forced = std::make_shared<std::vector<std::string>>();
     cmd.add_option("scene,--scene", *scene, "a TOML scene file (scenes/*.toml)")->required();
     cmd.add_option("--image", *image, "write the view pass's image (PNG, the scene's [image] size)");
+    cmd.add_option("--force-pass", *forced,
+                   "run a pass the plan has off (specular: reflected and refracted rays; shadows: shadow rays);\n"
+                   "what it adds is exactly nothing, so the image is the same bit for bit, at its cost in time")
+        ->delimiter(',');
     const bool progress = verb == pipeline::Verb::run;
-    return [scene, image, progress] { return std::make_unique<RenderExperiment>(*scene, *image, progress); };
+    return [scene, image, forced, progress] {
+      return std::make_unique<RenderExperiment>(*scene, *image, *forced, progress);
+    };
   };
   // `gcsim render SCENE.toml ...` is `gcsim run render --scene SCENE.toml ...`, top-level as the
   // plan's companion.
