@@ -9,12 +9,12 @@ double UnifiedRender::radiosity_seconds() const {
 }
 
 void unified_render_program(parix::Processor& p, const scene::SceneDescription& description,
-                            const radiosity::Scene* mesh, const radiosity::ParallelOptions& options, ViewRays rays,
+                            const radiosity::Scene* mesh, const radiosity::ParallelOptions& options, ViewSettings view,
                             UnifiedRender& out) {
   radiosity::ParallelOutcome mine;
   if (mesh) mine = radiosity::solve_replica(p, *mesh, options);
   out.radiosity_end_s[std::size_t(p.id())] = p.now_seconds();
-  if (!out.view) out.view = make_view_pass(description, mesh, mesh ? &mine.element_radiosity : nullptr, rays, p.count());
+  if (!out.view) out.view = make_view_pass(description, mesh, mesh ? &mine.element_radiosity : nullptr, view, p.count());
   if (p.id() == 0) out.radiosity = std::move(mine);
   out.view->job->program(p, out.view->result);
 }

@@ -26,7 +26,7 @@ struct UnifiedRender {
 
 // mesh: radiosity::flatten(to_world(description)), or nullptr when the plan skips radiosity.
 void unified_render_program(parix::Processor& p, const scene::SceneDescription& description,
-                            const radiosity::Scene* mesh, const radiosity::ParallelOptions& options, ViewRays rays,
+                            const radiosity::Scene* mesh, const radiosity::ParallelOptions& options, ViewSettings view,
                             UnifiedRender& out);
 
 // After the run, on the host: merges the view pass's per-node counters and hit ids.

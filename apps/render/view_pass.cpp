@@ -7,14 +7,14 @@
 namespace gcsim::render {
 
 std::unique_ptr<ViewPass> make_view_pass(const scene::SceneDescription& d, const radiosity::Scene* mesh,
-                                         const std::vector<radiosity::Rgb>* b, ViewRays rays, int nodes) {
+                                         const std::vector<radiosity::Rgb>* b, ViewSettings view, int nodes) {
   auto v = std::make_unique<ViewPass>();
   if (mesh && b) {
     radiosity::RenderOptions ro;
     ro.width = d.image.width;
     ro.height = d.image.height;
     const radiosity::Camera camera = mesh->camera ? *mesh->camera : radiosity::default_camera(*mesh);
-    v->exposure = radiosity::auto_exposure(*mesh, *b, camera, ro);
+    v->exposure = view.exposure > 0 ? view.exposure : radiosity::auto_exposure(*mesh, *b, camera, ro);
     v->scene = make_view_scene(d, *mesh, *b, v->exposure);
   } else {
     v->scene = raytrace::lower_scene(d);
@@ -23,8 +23,9 @@ std::unique_ptr<ViewPass> make_view_pass(const scene::SceneDescription& d, const
   v->settings.width = d.image.width;
   v->settings.height = d.image.height;
   v->settings.shading = raytrace::Shading::whitted;
-  v->settings.secondary_rays = rays.secondary;
-  v->settings.shadow_rays = rays.shadows;
+  v->settings.secondary_rays = view.secondary;
+  v->settings.shadow_rays = view.shadows;
+  v->settings.max_depth = view.max_depth;
   v->job = std::make_unique<raytrace::ParallelRenderJob>(v->scene, v->bvh, v->settings, raytrace::Distribution::dynamic);
   v->result = v->job->new_result(nodes);
   return v;

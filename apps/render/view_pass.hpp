@@ -13,10 +13,13 @@
 
 namespace gcsim::render {
 
-// Which of the view's rays are cast: the plan's specular and shadows passes (or --force-pass).
-struct ViewRays {
+// The view's rays and display. secondary and shadows: the plan's specular and shadows passes (or
+// --force-pass).
+struct ViewSettings {
   bool secondary = true;  // mirror and glass: reflected and refracted rays
   bool shadows = true;    // towards point and spot lights
+  int max_depth = 5;      // reflection and refraction levels
+  double exposure = 0;    // radiosity to displayed colour; 0: the Gouraud display's automatic one
 };
 
 struct ViewPass {
@@ -31,6 +34,6 @@ struct ViewPass {
 // With a radiosity solution (mesh and one radiosity per element): its elements lit by it; without
 // (mesh == nullptr): the lowered scene lit by its point lights. Image size from the description.
 std::unique_ptr<ViewPass> make_view_pass(const scene::SceneDescription& description, const radiosity::Scene* mesh,
-                                         const std::vector<radiosity::Rgb>* element_radiosity, ViewRays rays, int nodes);
+                                         const std::vector<radiosity::Rgb>* element_radiosity, ViewSettings view, int nodes);
 
 }  // namespace gcsim::render

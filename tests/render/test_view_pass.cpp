@@ -47,10 +47,10 @@ struct Rendered {
   parix::RunResult run;
 };
 
-Rendered render_on(const scene::SceneDescription& d, const radiosity::Scene* mesh, int nodes, ViewRays rays = {}) {
+Rendered render_on(const scene::SceneDescription& d, const radiosity::Scene* mesh, int nodes, ViewSettings view = {}) {
   Rendered r{std::make_unique<UnifiedRender>(nodes), {}};
   const radiosity::ParallelOptions o = small_solve();
-  r.run = parix::run_simulated(machine_of(nodes), [&](parix::Processor& p) { unified_render_program(p, d, mesh, o, rays, *r.out); });
+  r.run = parix::run_simulated(machine_of(nodes), [&](parix::Processor& p) { unified_render_program(p, d, mesh, o, view, *r.out); });
   finish(*r.out);
   return r;
 }
@@ -138,8 +138,8 @@ TEST(ViewPass, ForcingAPassThePlanSkipsChangesNoPixel) {
     const auto d = small_image(scene_file(file));
     const radiosity::Scene mesh = radiosity::flatten(scene::to_world(d));
     const bool radiosity = std::string(file) == "cornell.toml";
-    const Rendered planned = render_on(d, radiosity ? &mesh : nullptr, 2, ViewRays{false, false});
-    const Rendered forced = render_on(d, radiosity ? &mesh : nullptr, 2, ViewRays{true, true});
+    const Rendered planned = render_on(d, radiosity ? &mesh : nullptr, 2, ViewSettings{false, false});
+    const Rendered forced = render_on(d, radiosity ? &mesh : nullptr, 2, ViewSettings{true, true});
     EXPECT_EQ(planned.out->view->result.image.pixels(), forced.out->view->result.image.pixels());
     EXPECT_EQ(planned.out->view->result.counters.shadow_rays, 0);
     if (!radiosity) {

@@ -77,11 +77,14 @@ def plot_calibration(plt, path, out, title):
 
 def plot_accuracy(plt, path, out, title):
     """Median error against host seconds, one point per (model, table), a line per table; a CSV of
-    gcsim accuracy media goes to its own plot."""
+    gcsim accuracy media or gcsim accuracy render goes to its own plot."""
     from gcsim_plots.media_accuracy import is_media_accuracy, plot_media_accuracy
+    from gcsim_plots.render_accuracy import is_render_accuracy, plot_render_accuracy
     try:
         if is_media_accuracy(path):
             return plot_media_accuracy(plt, path, out, title)
+        if is_render_accuracy(path):
+            return plot_render_accuracy(plt, path, out, title)
     except OSError:
         pass  # read_rows below reports the file
     rows = read_rows(path, ACCURACY_COLUMNS)

@@ -40,8 +40,8 @@ class RenderExperiment : public pipeline::Experiment {
       : description_(scene::load_scene_file(scene_file)), plan_(make_plan(description_)), image_(std::move(image)),
         progress_(progress) {
     for (const std::string& name : forced) force(name);
-    rays_.secondary = runs(PassId::specular);
-    rays_.shadows = runs(PassId::shadows);
+    view_.secondary = runs(PassId::specular);
+    view_.shadows = runs(PassId::shadows);
     if (plan_.pass(PassId::radiosity).on) mesh_ = radiosity::flatten(scene::to_world(description_));
     options_.solver.hemicube.resolution = 256;  // `gcsim run radiosity`'s default
     try {  // refuses, before any run, what the view pass cannot show yet
@@ -71,7 +71,7 @@ class RenderExperiment : public pipeline::Experiment {
     const radiosity::Scene* mesh = radiosity_on ? &mesh_ : nullptr;
     UnifiedRender* render = o.render.get();
     return [this, render, mesh, shown](parix::Processor& p) {
-      unified_render_program(p, description_, mesh, shown, rays_, *render);
+      unified_render_program(p, description_, mesh, shown, view_, *render);
     };
   }
   void after_run(pipeline::Outcome& out) const override {
@@ -117,7 +117,7 @@ class RenderExperiment : public pipeline::Experiment {
     std::vector<std::string> forced_names;
     for (PassId id : forced_) forced_names.emplace_back(pass_name(id));
     extra["forced_passes"] = forced_names;
-    extra["view"] = {{"secondary_rays", rays_.secondary}, {"shadow_rays", rays_.shadows}, {"width", u.view->settings.width}, {"height", u.view->settings.height},
+    extra["view"] = {{"secondary_rays", view_.secondary}, {"shadow_rays", view_.shadows}, {"width", u.view->settings.width}, {"height", u.view->settings.height},
                      {"primitives", u.view->scene.prim_count()}, {"shades", v.counters.shades},
                      {"exposure", u.view->exposure}, {"simulated_s", total_s - radiosity_s}};
     if (image_.empty()) return;
@@ -133,7 +133,7 @@ class RenderExperiment : public pipeline::Experiment {
   std::string image_;
   bool progress_;  // gcsim run: a line per loop on a terminal
   std::vector<PassId> forced_;  // --force-pass: off in the plan, run anyway
-  ViewRays rays_;
+  ViewSettings view_;
 
   bool runs(PassId id) const { return plan_.pass(id).on || std::ranges::find(forced_, id) != forced_.end(); }
   // --force-pass NAME: only passes whose zero contribution the view can run and add as it is.
@@ -177,6 +177,7 @@ pipeline::AppSpec spec() {
   // plan's companion.
   s.commands = [](pipeline::CommandGroups& g) {
     add_plan_command(g);
+    add_render_accuracy_command(g);
     pipeline::add_run_command(*g.app, spec());
   };
   return s;

@@ -1,0 +1,60 @@
+// gcsim accuracy render's parts: the image error, the controls, and that spending more on a
+// control brings the render closer to the reference.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "apps/common/scene/scene_file.hpp"
+#include "apps/render/render_accuracy.hpp"
+
+namespace gcsim::render {
+namespace {
+
+apps::Image constant(float v) {
+  apps::Image im(4, 3);
+  for (auto& p : im.pixels()) p = glm::vec3(v);
+  return im;
+}
+
+TEST(RenderAccuracy, RelativeRmseOfKnownImages) {
+  EXPECT_EQ(relative_rmse(constant(0.5f), constant(0.5f)), 0.0);
+  EXPECT_DOUBLE_EQ(relative_rmse(constant(1.0f), constant(2.0f)), 0.5);  // |1 - 2| / 2
+  EXPECT_THROW(relative_rmse(apps::Image(2, 2), constant(1.0f)), std::invalid_argument);
+}
+
+TEST(RenderAccuracy, ControlsFollowThePlan) {
+  const auto dir = std::filesystem::path(GCSIM_SOURCE_DIR) / "scenes";
+  const Plan cornell = make_plan(scene::load_scene_file(dir / "cornell.toml"));
+  const Plan mirror = make_plan(scene::load_scene_file(dir / "cornell-mirror-glass.toml"));
+  const Plan direct = make_plan(scene::load_scene_file(dir / "direct-light.toml"));
+  EXPECT_EQ(control_sweeps(cornell, false).size(), 2u);  // hemicube, energy
+  EXPECT_EQ(control_sweeps(mirror, false).size(), 3u);   // and the reflection depth
+  EXPECT_TRUE(control_sweeps(direct, false).empty());
+  EXPECT_EQ(with_control({}, "energy", 0.9).energy, 0.9);
+  EXPECT_THROW(with_control({}, "spp", 4), std::invalid_argument);
+}
+
+// On a small CORNELL: the reference rendered twice is the same image (error exactly 0), and
+// shooting more of the energy brings the render monotonically closer to it, at more simulated time.
+TEST(RenderAccuracy, MoreEnergyShotIsCloserAndCostsMore) {
+  auto d = scene::load_scene_file(std::filesystem::path(GCSIM_SOURCE_DIR) / "scenes" / "cornell.toml");
+  d.image.width = d.image.height = 48;
+  const Plan plan = make_plan(d);
+  parix::SimulationOptions machine;
+  machine.config = machine::with_nodes(machine::default_machine_config(), 2);
+  const RenderControls reference{32, 0.99, 5};
+  const RenderRun ref = render_with(d, plan, reference, 0, machine);
+  EXPECT_EQ(relative_rmse(render_with(d, plan, reference, ref.exposure, machine).image, ref.image), 0.0);
+  double last_error = 1e9, last_time = 0;
+  for (double energy : {0.5, 0.8, 0.95}) {
+    const RenderRun r = render_with(d, plan, {32, energy, 5}, ref.exposure, machine);
+    const double e = relative_rmse(r.image, ref.image);
+    EXPECT_LT(e, last_error) << energy;
+    EXPECT_GT(r.simulated_s, last_time) << energy;
+    last_error = e, last_time = r.simulated_s;
+  }
+  EXPECT_GT(last_error, 0.0);
+}
+
+}  // namespace
+}  // namespace gcsim::render

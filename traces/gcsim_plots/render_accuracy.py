@@ -1,0 +1,46 @@
+"""Error against simulated time across a whole render (gcsim accuracy render --csv): one line per
+varied control, and the Pareto front of all renders (no other render is both faster and closer)."""
+
+from gcsim_plots.calibration import number, read_rows
+from gcsim_plots.style import DPI
+
+RENDER_ACCURACY_COLUMNS = ("pass", "control", "value", "relative_rmse", "simulated_s", "wall_s")
+
+
+def is_render_accuracy(path):
+    with open(path, newline="") as f:
+        header = f.readline().strip().split(",")
+    return "control" in header and "relative_rmse" in header
+
+
+def pareto_front(points):
+    """The points (time, error, ...) that no other point beats on both, by increasing time."""
+    front, best = [], float("inf")
+    for p in sorted(points):
+        if p[1] < best:
+            front.append(p)
+            best = p[1]
+    return front
+
+
+def plot_render_accuracy(plt, path, out, title):
+    rows = read_rows(path, RENDER_ACCURACY_COLUMNS)
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    points = []
+    for control in dict.fromkeys(f'{r["pass"]} {r["control"]}' for r in rows):
+        pts = sorted((number(r, "simulated_s", path, i + 2), 100 * number(r, "relative_rmse", path, i + 2), r["value"])
+                     for i, r in enumerate(rows) if f'{r["pass"]} {r["control"]}' == control)
+        points += pts
+        ax.plot([x for x, _, _ in pts], [y for _, y, _ in pts], marker="o", label=control)
+        for x, y, value in pts:
+            ax.annotate(value, (x, y), textcoords="offset points", xytext=(4, 4), fontsize=8)
+    front = pareto_front(points)
+    ax.plot([x for x, _, _ in front], [y for _, y, _ in front], color="black", linestyle=":", label="Pareto front")
+    ax.set_xlabel("simulated seconds of the render")
+    ax.set_ylabel("relative RMSE against the reference (%)")
+    ax.set_title(title or "What accuracy costs across a render")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(out, dpi=DPI)
+    plt.close(fig)
