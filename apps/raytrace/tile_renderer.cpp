@@ -113,7 +113,11 @@ glm::vec3 TileRenderer::local_light(const Ray& ray, const Hit& hit, const Surfac
   if (m.given_radiance) return scene_.given_radiance(ray, hit.prim, hit.b1, hit.b2);
   glm::vec3 albedo = m.diffuse;
   if (m.checker_other.x >= 0.0f) {
-    const int parity = int(std::floor(sp.position.x / m.checker_size)) + int(std::floor(sp.position.y / m.checker_size));
+    // Squares in the two axes closest to the surface's plane (x and y on a floor facing z).
+    const glm::vec3 an = glm::abs(sp.geometric_normal);
+    const int drop = an.x > an.y && an.x > an.z ? 0 : an.y > an.z ? 1 : 2;
+    const float u = sp.position[drop == 0 ? 1 : 0], v = sp.position[drop == 2 ? 1 : 2];
+    const int parity = int(std::floor(u / m.checker_size)) + int(std::floor(v / m.checker_size));
     if (parity & 1) albedo = m.checker_other;
   }
   glm::vec3 color = scene_.ambient * albedo;

@@ -149,6 +149,35 @@ TEST(ViewPass, ForcingAPassThePlanSkipsChangesNoPixel) {
   }
 }
 
+// A checkerboard lies in the plane of its surface: a floor facing +y (direct-light.toml's) shows
+// squares, changing colour along x and along z, not stripes along one of them.
+TEST(ViewPass, CheckerboardSquaresLieInTheFloorsPlane) {
+  raytrace::Scene s;
+  raytrace::Material floor;
+  floor.diffuse = glm::vec3(1.0f);
+  floor.checker_other = glm::vec3(0.0f);
+  floor.checker_size = 1.0f;
+  const int m = s.add_material(floor);
+  s.add_triangle(raytrace::Triangle{{-8, 0, -8}, {-8, 0, 8}, {8, 0, 8}}, m);
+  s.add_triangle(raytrace::Triangle{{-8, 0, -8}, {8, 0, 8}, {8, 0, -8}}, m);
+  s.ambient = glm::vec3(1.0f);
+  s.camera = scene::Camera{{0.25, 10, 0.25}, {0.25, 0, 0.2500001}, {0, 0, 1}, 60};
+  raytrace::RenderSettings rs;
+  rs.width = rs.height = 32;
+  const raytrace::RenderOutput out = raytrace::render_image(s, geometry::build_bvh_by_clustering(s), rs);
+  auto changes = [&](bool along_x) {
+    int n = 0;
+    for (int k = 1; k < 32; ++k) {
+      const glm::vec3 a = along_x ? out.image.at(k - 1, 16) : out.image.at(16, k - 1);
+      const glm::vec3 b = along_x ? out.image.at(k, 16) : out.image.at(16, k);
+      n += a != b;
+    }
+    return n;
+  };
+  EXPECT_GE(changes(true), 4);
+  EXPECT_GE(changes(false), 4);
+}
+
 // A triangle shows its front radiance to rays that meet its front, its back radiance otherwise.
 TEST(ViewPass, GivenRadianceHasTwoSides) {
   raytrace::Scene s;
