@@ -50,7 +50,10 @@ void RankState::record(machine::TraceRecord r, std::string_view label) {
   records.push_back(r);
 }
 
-MpiProcessor::~MpiProcessor() { drop_persistent_links(); }
+MpiProcessor::~MpiProcessor() {
+  drop_persistent_links();
+  if (rank_.main == this) rank_.main = nullptr;
+}
 
 void MpiProcessor::compute(std::span<const OpCount> ops) {
   std::lock_guard<std::mutex> g(rank_.lock);
@@ -96,23 +99,31 @@ Link MpiProcessor::connect(int peer, int tag) {
   check(MPI_Isend(nullptr, 0, MPI_BYTE, rank_.rank_of_processor(peer), t, MPI_COMM_WORLD, &handshake), "connect");
   check(MPI_Recv(nullptr, 0, MPI_BYTE, rank_.rank_of_processor(peer), t, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "connect");
   check(MPI_Wait(&handshake, MPI_STATUS_IGNORE), "connect");
-  const std::int64_t handle = next_link_++;
-  links_.emplace(handle, LinkInfo{peer, t});
+  std::int64_t handle;
+  {
+    std::lock_guard<std::mutex> g(rank_.lock);
+    handle = rank_.next_link++;
+    rank_.links.emplace(handle, MpiLink{peer, t});
+  }
   count_comm(start, now(), peer, 0, "connect", machine::TraceKind::connect);
-  return Link(this, peer, tag, handle);
+  return Link(rank_.main ? static_cast<Processor*>(rank_.main) : this, peer, tag, handle);
 }
 
-void MpiProcessor::close_link(std::int64_t handle) { links_.erase(handle); }
+void MpiProcessor::close_link(std::int64_t handle) {
+  std::lock_guard<std::mutex> g(rank_.lock);
+  rank_.links.erase(handle);
+}
 
-const MpiProcessor::LinkInfo& MpiProcessor::link_info(const Link& link, const char* call) const {
+MpiLink MpiProcessor::link_info(const Link& link, const char* call) const {
   if (!link.valid()) throw ParixError(fmt::format("processor {}: {} on a link that is not open", id(), call));
-  auto it = links_.find(link.handle());
-  if (it == links_.end()) throw ParixError(fmt::format("processor {}: {} on a link of another processor", id(), call));
+  std::lock_guard<std::mutex> g(rank_.lock);
+  auto it = rank_.links.find(link.handle());
+  if (it == rank_.links.end()) throw ParixError(fmt::format("processor {}: {} on a link of another processor", id(), call));
   return it->second;
 }
 
 void MpiProcessor::send(Link& link, std::span<const std::byte> data) {
-  const LinkInfo& l = link_info(link, "send");
+  const MpiLink l = link_info(link, "send");
   const SimTime start = now();
   // Synchronous mode: returns once the receiver has started to take the message, as PARIX's send.
   check(MPI_Ssend(data.data(), static_cast<int>(data.size()), MPI_BYTE, rank_.rank_of_processor(l.peer), l.mpi_tag, MPI_COMM_WORLD), "send");
@@ -125,7 +136,7 @@ void MpiProcessor::send(Link& link, std::span<const std::byte> data) {
 }
 
 Request MpiProcessor::isend(Link& link, std::span<const std::byte> data) {
-  const LinkInfo& l = link_info(link, "send");
+  const MpiLink l = link_info(link, "send");
   auto r = std::make_shared<MpiRequest>();
   r->peer = l.peer;
   r->link = link.handle();
@@ -139,7 +150,7 @@ Request MpiProcessor::isend(Link& link, std::span<const std::byte> data) {
 }
 
 Request MpiProcessor::irecv(Link& link) {
-  const LinkInfo& l = link_info(link, "recv");
+  const MpiLink l = link_info(link, "recv");
   auto r = std::make_shared<MpiRequest>();
   r->is_receive = true;
   r->peer = l.peer;

@@ -16,6 +16,14 @@
 
 namespace gcsim::parix::mpi {
 
+class MpiProcessor;
+
+// A link open on the rank: its peer processor and the MPI tag its messages carry.
+struct MpiLink {
+  int peer;
+  int mpi_tag;
+};
+
 // What the processor and its threads share on one rank.
 struct RankState {
   int rank = 0;
@@ -27,6 +35,11 @@ struct RankState {
   bool tracing = false;
   std::mutex lock;  // guards everything below and the counters of every processor on the rank
   std::map<std::pair<int, int>, std::int64_t> links_opened;  // (peer, tag) -> connects so far
+  // Links belong to the node, not to the thread that opened them (as in the simulated backend):
+  // a thread may open a link that the node's main processor then uses, after the thread ended.
+  std::map<std::int64_t, MpiLink> links;
+  std::int64_t next_link = 0;
+  MpiProcessor* main = nullptr;  // thread 0's processor, which lives for the whole run: every Link's owner
   ProcessorStats stats;
   std::vector<machine::TraceRecord> records;
   std::vector<std::unique_ptr<std::string>> labels;  // storage the records' labels point into
@@ -40,7 +53,9 @@ struct RankState {
 
 class MpiProcessor final : public Processor {
  public:
-  MpiProcessor(RankState& rank, int thread) : rank_(rank), thread_(thread) {}
+  MpiProcessor(RankState& rank, int thread) : rank_(rank), thread_(thread) {
+    if (thread == 0) rank.main = this;
+  }
   ~MpiProcessor() override;
 
   int id() const override { return rank_.processor; }
@@ -62,19 +77,13 @@ class MpiProcessor final : public Processor {
   void close_link(std::int64_t handle) override;
 
  private:
-  struct LinkInfo {
-    int peer;
-    int mpi_tag;
-  };
-  const LinkInfo& link_info(const Link& link, const char* call) const;
+  MpiLink link_info(const Link& link, const char* call) const;
   bool poll(RequestState& r);  // advances r; true once it is done or cancelled
   void block_on(RequestState& r, const char* call, machine::TraceKind kind);
   void count_comm(SimTime start, SimTime end, int peer, std::int64_t bytes, const char* call, machine::TraceKind kind);
 
   RankState& rank_;
   int thread_;
-  std::map<std::int64_t, LinkInfo> links_;
-  std::int64_t next_link_ = 0;
 };
 
 }  // namespace gcsim::parix::mpi

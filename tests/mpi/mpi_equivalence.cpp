@@ -10,7 +10,11 @@
 #include <string>
 #include <vector>
 
+#include <map>
+
 #include "apps/radiosity/builtin_scenes.hpp"
+#include "apps/raytrace/builtin_scenes.hpp"
+#include "apps/raytrace/parallel_render.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "parix/collectives.hpp"
 #include "parix/mpi_runtime.hpp"
@@ -112,6 +116,42 @@ void threads(parix::Processor& p, std::vector<int>& out) {
   if (p.id() == 0) out.push_back(total);
 }
 
+// Links belong to the node: threads open processor 0's links to every other processor and end;
+// processor 0 then receives on them (the ray tracer's image assembly does this).
+void links_opened_by_threads(parix::Processor& p, std::vector<int>& out) {
+  if (p.id() != 0) {
+    parix::Link root = p.connect(0, 13);
+    p.send_value(root, 10 * p.id());
+    return;
+  }
+  std::vector<parix::Link> links(std::size_t(p.count()));
+  std::vector<parix::Thread> openers;
+  for (int w = 1; w < p.count(); ++w)
+    openers.push_back(p.spawn([&links, w](parix::Processor& q) { links[std::size_t(w)] = q.connect(w, 13); }));
+  for (auto& t : openers) t.join();
+  int sum = 1;
+  for (int w = 1; w < p.count(); ++w) sum += p.recv_value<int>(links[std::size_t(w)]);
+  out.push_back(sum);
+}
+
+// The ray tracer's parallel render of Whitted's scene (dynamic distribution: a master, workers
+// and a worker thread on node 0): the image node 0 assembles.
+void whitted_image(parix::Processor& p, std::vector<float>& out) {
+  static const raytrace::Scene scene = raytrace::make_builtin_scene("whitted");
+  static const geometry::Bvh bvh = geometry::build_bvh_by_clustering(scene);
+  static const raytrace::ParallelRenderJob job = [] {
+    raytrace::RenderSettings s;
+    s.width = s.height = 40;
+    s.shading = raytrace::Shading::whitted;
+    return raytrace::ParallelRenderJob(scene, bvh, s, raytrace::Distribution::dynamic);
+  }();
+  static std::map<const void*, raytrace::ParallelRender> renders;  // one per run (per out)
+  raytrace::ParallelRender& r = renders.try_emplace(&out, job.new_result(p.count())).first->second;
+  job.program(p, r);
+  if (p.id() != 0) return;
+  for (const glm::vec3& c : r.image.pixels()) out.insert(out.end(), {c.r, c.g, c.b});
+}
+
 void cancelled_receives(parix::Processor& p, std::vector<int>& out) {
   // Each processor withdraws a receive from its predecessor before anything is sent: the
   // predecessor's message goes to the next receive instead. Connect order as in threads().
@@ -167,6 +207,8 @@ int main() {
   compare<std::vector<float>>("CORNELL radiosities", cornell_radiosities);
   compare<std::vector<int>>("node-local threads", threads);
   compare<std::vector<int>>("cancelled receives", cancelled_receives);
+  compare<std::vector<int>>("links opened by threads", links_opened_by_threads);
+  compare<std::vector<float>>("Whitted image, dynamic distribution", whitted_image);
   refused_send_cancel();
   compare<std::vector<double>>("collectives", collectives, true);
   compare<std::vector<int>>("node-local threads", threads, true);
