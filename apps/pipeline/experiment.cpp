@@ -13,6 +13,7 @@ std::unique_ptr<Outcome> run_experiment(const Experiment& e, const parix::RunOpt
   check_node_memory(needs, fullest, options.simulation.config.memory_bytes, options.simulation.memory_limit);
   check_host_memory(e.host_memory(nodes), fmt::format("a run on {} nodes", nodes));
   std::unique_ptr<Outcome> out = e.new_outcome(nodes);
+  out->options = options;
   try {
     out->run = parix::run(options, e.program(*out));
   } catch (const parix::Interrupted&) {

@@ -26,6 +26,7 @@ namespace gcsim::pipeline {
 struct Outcome {
   virtual ~Outcome() = default;
   parix::RunResult run;
+  parix::RunOptions options;  // what it ran on: the backend and the machine
 };
 
 class Experiment {

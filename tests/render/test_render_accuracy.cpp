@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "apps/common/scene/scene_file.hpp"
+#include "apps/render/error_budget.hpp"
 #include "apps/render/render_accuracy.hpp"
 
 namespace gcsim::render {
@@ -54,6 +55,38 @@ TEST(RenderAccuracy, MoreEnergyShotIsCloserAndCostsMore) {
     last_error = e, last_time = r.simulated_s;
   }
   EXPECT_GT(last_error, 0.0);
+}
+
+TEST(ErrorBudget, CoarsensWhatItsEstimatesAllow) {
+  const auto dir = std::filesystem::path(GCSIM_SOURCE_DIR) / "scenes";
+  auto d = scene::load_scene_file(dir / "cornell-mirror-glass.toml");
+  const Plan plan = make_plan(d);
+  EXPECT_THROW(controls_for_budget(d, plan, 0.0), std::invalid_argument);
+  EXPECT_THROW(controls_for_budget(d, plan, 1.0), std::invalid_argument);
+  const BudgetChoice tight = controls_for_budget(d, plan, 0.001), loose = controls_for_budget(d, plan, 0.05);
+  EXPECT_LT(loose.controls.energy, tight.controls.energy);
+  EXPECT_LE(tight.controls.energy, RenderControls{}.energy);
+  EXPECT_EQ(loose.controls.max_depth, 5);  // 0.95^5 is far above 0.05
+  for (auto& m : d.materials) m.mirror = std::min(m.mirror, 0.5), m.transmittance = std::min(m.transmittance, 0.5);
+  EXPECT_EQ(controls_for_budget(d, make_plan(d), 0.1).controls.max_depth, 4);  // 0.5^4 < 0.1 <= 0.5^3
+}
+
+// The budget's estimate holds on CORNELL: the coarsened render is within the budget of the full
+// plan's image (same exposure), and cheaper.
+TEST(ErrorBudget, CornellStaysWithinItsBudget) {
+  auto d = scene::load_scene_file(std::filesystem::path(GCSIM_SOURCE_DIR) / "scenes" / "cornell.toml");
+  d.image.width = d.image.height = 48;
+  const Plan plan = make_plan(d);
+  parix::SimulationOptions machine;
+  machine.config = machine::with_nodes(machine::default_machine_config(), 2);
+  const RenderRun full = render_with(d, plan, {32, 0.999, 5}, 0, machine);
+  for (double budget : {0.01, 0.03, 0.1}) {
+    RenderControls c = controls_for_budget(d, plan, budget).controls;
+    c.hemicube = 32;
+    const RenderRun r = render_with(d, plan, c, full.exposure, machine);
+    EXPECT_LE(relative_rmse(r.image, full.image), budget) << budget;
+    EXPECT_LT(r.simulated_s, full.simulated_s) << budget;
+  }
 }
 
 }  // namespace

@@ -19,7 +19,9 @@
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "apps/radiosity/scene.hpp"
 #include "apps/render/app/render_commands.hpp"
+#include "apps/render/error_budget.hpp"
 #include "apps/render/plan.hpp"
+#include "apps/render/render_accuracy.hpp"
 #include "apps/render/unified_render.hpp"
 #include "apps/raytrace/lower_scene.hpp"
 
@@ -36,14 +38,19 @@ struct RenderOutcome : pipeline::Outcome {
 
 class RenderExperiment : public pipeline::Experiment {
  public:
-  RenderExperiment(const std::string& scene_file, std::string image, const std::vector<std::string>& forced, bool progress)
+  RenderExperiment(const std::string& scene_file, std::string image, const std::vector<std::string>& forced,
+                   double error_budget, bool progress)
       : description_(scene::load_scene_file(scene_file)), plan_(make_plan(description_)), image_(std::move(image)),
         progress_(progress) {
     for (const std::string& name : forced) force(name);
+    if (error_budget > 0) budget_ = {error_budget, controls_for_budget(description_, plan_, error_budget)};
     view_.secondary = runs(PassId::specular);
     view_.shadows = runs(PassId::shadows);
     if (plan_.pass(PassId::radiosity).on) mesh_ = radiosity::flatten(scene::to_world(description_));
-    options_.solver.hemicube.resolution = 256;  // `gcsim run radiosity`'s default
+    const RenderControls controls = budget_ ? budget_->choice.controls : RenderControls{};
+    options_.solver.hemicube.resolution = controls.hemicube;  // `gcsim run radiosity`'s default 256
+    options_.solver.energy = controls.energy;
+    view_.max_depth = controls.max_depth;
     try {  // refuses, before any run, what the view pass cannot show yet
       raytrace::lower_scene(description_);
     } catch (const std::invalid_argument& e) {
@@ -122,6 +129,7 @@ class RenderExperiment : public pipeline::Experiment {
     extra["view"] = {{"secondary_rays", view_.secondary}, {"shadow_rays", view_.shadows}, {"width", u.view->settings.width}, {"height", u.view->settings.height},
                      {"primitives", u.view->scene.prim_count()}, {"shades", v.counters.shades},
                      {"exposure", u.view->exposure}, {"simulated_s", total_s - radiosity_s}};
+    if (budget_) report_budget(o, extra);
     if (image_.empty()) return;
     apps::write_png(image_, v.image);
     fmt::print("image     {} (view pass, assembled on node 0)\n", image_);
@@ -136,6 +144,27 @@ class RenderExperiment : public pipeline::Experiment {
   bool progress_;  // gcsim run: a line per loop on a terminal
   std::vector<PassId> forced_;  // --force-pass: off in the plan, run anyway
   ViewSettings view_;
+  struct Budget {
+    double error;
+    BudgetChoice choice;
+  };
+  std::optional<Budget> budget_;  // --error-budget
+
+  // The render under the budget against the full plan on the same machine (simulated again).
+  void report_budget(const RenderOutcome& o, nlohmann::json& extra) const {
+    for (const std::string& r : budget_->choice.reasons) fmt::print("budget    {}\n", r);
+    if (o.options.backend != "simulated") {
+      fmt::print("budget    the full plan is compared on the simulated backend only\n");
+      return;
+    }
+    const RenderRun full = render_with(description_, plan_, RenderControls{}, o.render->view->exposure, o.options.simulation);
+    const double error = relative_rmse(o.render->view->result.image, full.image), s = o.run.simulated_seconds();
+    fmt::print("budget    {:.6f} s simulated against the full plan's {:.6f} s ({:.1f} % saved); relative RMSE {:.4f} "
+               "against the full plan's image (budget {:g})\n",
+               s, full.simulated_s, 100 * (1 - s / full.simulated_s), error, budget_->error);
+    extra["error_budget"] = {{"budget", budget_->error}, {"reasons", budget_->choice.reasons}, {"full_plan_simulated_s", full.simulated_s},
+                             {"simulated_s", s}, {"relative_rmse_against_full_plan", error}};
+  }
 
   bool runs(PassId id) const { return plan_.pass(id).on || std::ranges::find(forced_, id) != forced_.end(); }
   // --force-pass NAME: only passes whose zero contribution the view can run and add as it is.
@@ -164,15 +193,21 @@ pipeline::AppSpec spec() {
     auto scene = std::make_shared<std::string>();
     auto image = std::make_shared<std::string>();
     auto forced = std::make_shared<std::vector<std::string>>();
+    auto budget = std::make_shared<double>(0.0);
     cmd.add_option("scene,--scene", *scene, "a TOML scene file (scenes/*.toml)")->required();
     cmd.add_option("--image", *image, "write the view pass's image (PNG, the scene's [image] size)");
     cmd.add_option("--force-pass", *forced,
                    "run a pass the plan has off (specular: reflected and refracted rays; shadows: shadow rays);\n"
                    "what it adds is exactly nothing, so the image is the same bit for bit, at its cost in time")
         ->delimiter(',');
+    cmd.add_option("--error-budget", *budget,
+                   "accept this relative image error (e.g. 0.02): coarsen what an estimate says costs less (radiosity\n"
+                   "energy, reflection depth), then render the full plan too and report the time saved and the error\n"
+                   "measured against it")
+        ->check(CLI::Range(1e-9, 0.999999));
     const bool progress = verb == pipeline::Verb::run;
-    return [scene, image, forced, progress] {
-      return std::make_unique<RenderExperiment>(*scene, *image, *forced, progress);
+    return [scene, image, forced, budget, progress] {
+      return std::make_unique<RenderExperiment>(*scene, *image, *forced, *budget, progress);
     };
   };
   // `gcsim render SCENE.toml ...` is `gcsim run render --scene SCENE.toml ...`, top-level as the
