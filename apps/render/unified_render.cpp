@@ -14,7 +14,10 @@ void unified_render_program(parix::Processor& p, const scene::SceneDescription& 
   radiosity::ParallelOutcome mine;
   if (mesh) mine = radiosity::solve_replica(p, *mesh, options);
   out.radiosity_end_s[std::size_t(p.id())] = p.now_seconds();
-  if (!out.view) out.view = make_view_pass(description, mesh, mesh ? &mine.element_radiosity : nullptr, view, p.count());
+  if (!out.view) {
+    out.view = make_view_pass(description, mesh, mesh ? &mine.element_radiosity : nullptr, view, p.count());
+    out.view->result.on_tile = out.on_view_tile;
+  }
   if (p.id() == 0) out.radiosity = std::move(mine);
   out.view->job->program(p, out.view->result);
 }

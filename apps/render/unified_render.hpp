@@ -3,6 +3,7 @@
 // the other on every node. First the radiosity pass (the thesis's parallel progressive
 // refinement, the radiosity app's own program), then the view pass (view_pass.hpp), which each node
 // starts when its own radiosity pass ends.
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -19,6 +20,8 @@ struct UnifiedRender {
   // radiosities bit for bit, so which node does not matter; under MPI each rank builds its own.
   std::unique_ptr<ViewPass> view;
   std::vector<double> radiosity_end_s;   // per node (its own slot): when its radiosity pass ended
+  // Host-side progress of the view pass (tiles rendered, of all): nothing of it is simulated.
+  std::function<void(int done, int total)> on_view_tile;
 
   explicit UnifiedRender(int nodes) : radiosity_end_s(std::size_t(nodes), 0.0) {}
   double radiosity_seconds() const;      // the last node's end of the radiosity pass

@@ -77,6 +77,9 @@ class RenderExperiment : public pipeline::Experiment {
     };
     const radiosity::Scene* mesh = radiosity_on ? &mesh_ : nullptr;
     UnifiedRender* render = o.render.get();
+    render->on_view_tile = [&o](int done, int total) {
+      if (o.progress) o.progress->update_fraction(double(done) / total, fmt::format("view pass: tile {} of {}", done, total));
+    };
     return [this, render, mesh, shown](parix::Processor& p) {
       unified_render_program(p, description_, mesh, shown, view_, *render);
     };
