@@ -28,6 +28,10 @@ TraceCounters& TraceCounters::operator+=(const TraceCounters& o) {
   candidate_sort_entries += o.candidate_sort_entries;
   beams += o.beams;
   shades += o.shades;
+  media_segments += o.media_segments;
+  media_samples += o.media_samples;
+  media_knn_photons += o.media_knn_photons;
+  media_sh_evals += o.media_sh_evals;
   return *this;
 }
 
@@ -45,6 +49,11 @@ std::vector<std::pair<std::string_view, std::int64_t>> TraceCounters::ops() cons
       {"rt_candidate_sort", candidate_sort_entries},
       {"rt_pencil", pencils},
       {"rt_shade", shades},
+      {"media_camera_ray", media_segments},
+      {"media_march_sample", media_samples},
+      {"media_knn_lookup", media_samples},
+      {"media_knn_photon", media_knn_photons},
+      {"media_sh_eval", media_sh_evals},
   };
 }
 

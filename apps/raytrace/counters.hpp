@@ -47,6 +47,12 @@ struct TraceCounters {
   std::int64_t beams = 0;
   // Shading evaluations (one per hit point shaded).
   std::int64_t shades = 0;
+  // Participating media (RayMedia): ray segments inside a medium, distance samples along them (each
+  // a k-nearest-photon query of k_nearest photons), SH histogram bins reconstructed.
+  std::int64_t media_segments = 0;
+  std::int64_t media_samples = 0;
+  std::int64_t media_knn_photons = 0;
+  std::int64_t media_sh_evals = 0;
 
   std::int64_t box_tests() const { return primary_box_tests + secondary_box_tests; }
   std::int64_t prim_tests() const { return primary_prim_tests + secondary_prim_tests; }

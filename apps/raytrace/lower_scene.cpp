@@ -79,11 +79,13 @@ void add_shape(Scene& out, const scene::Shape& shape) {
 Scene lower_scene(const scene::SceneDescription& d) {
   Scene out;
   out.name = d.name;
-  for (std::size_t i = 0; i < d.materials.size(); ++i) {
-    if (d.materials[i].medium)
-      throw std::invalid_argument("material " + std::to_string(i) + " ('" + d.materials[i].name +
+  for (std::size_t i = 0; i < d.materials.size(); ++i) out.add_material(lower_material(d.materials[i], i));
+  // A material no shape uses may hold a medium (the unified renderer takes the media's bounds out).
+  for (const scene::Shape& shape : d.shapes) {
+    const std::size_t m = std::size_t(shape.material);
+    if (m < d.materials.size() && d.materials[m].medium)
+      throw std::invalid_argument("material " + std::to_string(m) + " ('" + d.materials[m].name +
                                   "') holds a participating medium, which the ray tracer cannot render");
-    out.add_material(lower_material(d.materials[i], i));
   }
   for (std::size_t i = 0; i < d.shapes.size(); ++i) {
     if (d.shapes[i].material < 0 || d.shapes[i].material >= static_cast<int>(d.materials.size()))

@@ -1,11 +1,14 @@
 #pragma once
 // What a render does: which primary-ray algorithm, subregion size, image size and shading.
+#include <cstdint>
 #include <string>
 #include <string_view>
 
 #include "apps/raytrace/algorithm.hpp"
 
 namespace gcsim::raytrace {
+
+class RayMedia;
 
 enum class Shading {
   local,    // primary rays only: Lambert and Phong from the lights, no shadows (the paper's table)
@@ -24,6 +27,9 @@ struct RenderSettings {
   // plan says cannot contribute: a scene without mirrors or glass, or nothing that can shadow).
   bool shadow_rays = true;
   bool secondary_rays = true;
+  // whitted: the participating media every ray segment crosses (null: none). Not owned.
+  const RayMedia* media = nullptr;
+  std::uint64_t media_seed = 1;  // the pixels' random streams for the media's distance samples
 };
 
 }  // namespace gcsim::raytrace

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "apps/raytrace/optics.hpp"
+#include "apps/raytrace/ray_media.hpp"
 #include "apps/common/geometry/ray_offset.hpp"
 #include "apps/common/geometry/traversal.hpp"
 #include "apps/raytrace/geometry_names.hpp"
@@ -36,6 +37,7 @@ void TileRenderer::render_tile(int x0, int y0, int x1, int y1, std::span<glm::ve
       const std::size_t i = std::size_t(y - y0) * w + (x - x0);
       const Hit& hit = hits_[i];
       prims[i] = hit.prim;
+      if (settings_.media) pixel_rng_ = apps::Rng(settings_.media_seed, std::uint64_t(y) * settings_.width + x);
       colors[i] = shade(camera_.pixel_ray(x, y), hit, 0, pencils[0] ? &*pencils[0] : nullptr,
                         pencils[1] ? &*pencils[1] : nullptr, counters);
     }
@@ -142,7 +144,8 @@ glm::vec3 TileRenderer::local_light(const Ray& ray, const Hit& hit, const Surfac
       counters.triangle_tests += tally.triangles;
       if (blocked) continue;
     }
-    const glm::vec3 e = light.intensity / dist2;
+    glm::vec3 e = light.intensity / dist2;
+    if (settings_.media) e *= settings_.media->transmittance(Ray(offset_ray_origin(sp, l), l), dist);
     color += e * albedo * cos_l;
     if (m.specular > 0.0f) {
       const glm::vec3 half = glm::normalize(l + to_eye);
@@ -154,6 +157,14 @@ glm::vec3 TileRenderer::local_light(const Ray& ray, const Hit& hit, const Surfac
 
 glm::vec3 TileRenderer::shade(const Ray& ray, const Hit& hit, int depth, const Pencil* reflection_pencil,
                               const Pencil* refraction_pencil, TraceCounters& counters) {
+  const glm::vec3 surface = shade_surface(ray, hit, depth, reflection_pencil, refraction_pencil, counters);
+  if (!settings_.media) return surface;
+  return settings_.media->along(ray, hit.valid() ? hit.t : kInfinity, surface, pixel_rng_, counters);
+}
+
+// The radiance leaving the hit point towards the ray's origin (the background when it hit nothing).
+glm::vec3 TileRenderer::shade_surface(const Ray& ray, const Hit& hit, int depth, const Pencil* reflection_pencil,
+                                      const Pencil* refraction_pencil, TraceCounters& counters) {
   if (!hit.valid()) return scene_.background;
   ++counters.shades;
   const SurfacePoint sp = scene_.surface_point(ray, hit.prim, hit.t, hit.b1, hit.b2);

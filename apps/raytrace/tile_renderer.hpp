@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "apps/common/geometry/bvh.hpp"
+#include "apps/common/rng.hpp"
 #include "apps/raytrace/geometry_names.hpp"
 #include "apps/raytrace/camera.hpp"
 #include "apps/raytrace/counters.hpp"
@@ -33,6 +34,8 @@ class TileRenderer {
   struct SecondaryRay { Ray ray; float weight; bool valid = false; };
   glm::vec3 shade(const Ray& ray, const Hit& hit, int depth, const Pencil* reflection_pencil,
                   const Pencil* refraction_pencil, TraceCounters& counters);
+  glm::vec3 shade_surface(const Ray& ray, const Hit& hit, int depth, const Pencil* reflection_pencil,
+                          const Pencil* refraction_pencil, TraceCounters& counters);
   glm::vec3 local_light(const Ray& ray, const Hit& hit, const SurfacePoint& sp, bool shadows, TraceCounters& counters);
   Hit trace_secondary(const Ray& ray, const Pencil* pencil, TraceCounters& counters);
   SecondaryRay secondary_ray(const Ray& ray, const Hit& hit, Bounce kind) const;
@@ -45,6 +48,7 @@ class TileRenderer {
   Camera camera_;
   PrimaryTracer primary_;
   std::vector<Hit> hits_;
+  apps::Rng pixel_rng_;  // the current pixel's stream for the media's samples (settings_.media)
 };
 
 }  // namespace gcsim::raytrace

@@ -8,6 +8,7 @@
 #include <fmt/ranges.h>
 
 #include "apps/common/scene/description_to_world.hpp"
+#include "apps/render/medium_region.hpp"
 #include "apps/render/light_paths.hpp"
 
 namespace gcsim::render {
@@ -198,7 +199,7 @@ PassPlan plan_shadows(const Analysis& a, bool radiosity_on) {
 }
 
 void count_meshes(const SceneDescription& d, SceneFacts& f) {
-  const scene::World w = scene::to_world(d);
+  const scene::World w = scene::to_world(without_invisible_boundaries(d));  // a medium's bound is no surface
   f.objects = int(w.entities.size());
   for (const scene::Entity& e : w.entities) f.patches += int(e.patches.size()), f.elements += int(e.elements.size());
   for (const scene::Shape& s : d.shapes) {

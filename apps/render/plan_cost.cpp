@@ -60,8 +60,10 @@ PassCost media(const Ops& op, const SceneFacts& f, int nodes, const CostModel& m
   const double grid_cycles = op("media_sh_project") +
                              kVoxelsPerPhoton * (op("media_sh_accumulate") + kCandidatesPerPair * op("media_range_candidate"));
   const double photon_cycles = op("media_photon_step") + (estimate ? grid_cycles : 0.0);
-  const double per_sample = op("media_march_sample") +
-                            (estimate ? op("media_sh_eval") : op("media_knn_lookup") + m.k_nearest * op("media_knn_photon"));
+  // Every sample reads Li from the photon map (k nearest); the radiance estimate also reconstructs
+  // the SH histogram along the segment (about one bin per sample).
+  const double per_sample = op("media_march_sample") + op("media_knn_lookup") + m.k_nearest * op("media_knn_photon") +
+                            (estimate ? op("media_sh_eval") : 0.0);
   const double camera_rays = double(f.pixels) * f.samples_per_pixel;
   PassCost c;
   c.seconds_per_node = (m.photons * events * photon_cycles + camera_rays * (op("media_camera_ray") + m.march_samples * per_sample)) / nodes;

@@ -15,8 +15,10 @@ struct CostModel {
   // Shots until 99.9 % of the energy is shot: CORNELL takes 254 loops of 2 shooters for 112 patches.
   double shots_per_patch = 4.5;
   int specular_depth = 4;         // upper bound: every camera ray meets mirrors or glass this deep
-  int march_samples = 32;         // distance samples per camera ray in a medium
-  int photons = 20000;            // the media application's default photon count
+  // Distance samples per camera ray in a medium: the view takes 32 (1 - T) on a segment of
+  // transmittance T; CORNELL-FOG's rays averaged 7.4 (448811 samples on 60747 segments).
+  int march_samples = 8;
+  int photons = 50000;            // `gcsim render --photons`' default (render_setup.hpp)
   int k_nearest = 50;             // photons per radiance estimate
   int max_photon_events = 64;
 };

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "apps/common/scene/description_to_world.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "apps/radiosity/scene.hpp"
+#include "apps/render/render_setup.hpp"
 #include "apps/render/unified_render.hpp"
 
 namespace gcsim::render {
@@ -14,9 +14,7 @@ RenderControls reference_controls() { return {512, 0.9999, 10}; }
 
 RenderRun render_with(const scene::SceneDescription& d, const Plan& plan, const RenderControls& c, double exposure,
                       const parix::SimulationOptions& machine) {
-  const bool radiosity_on = plan.pass(PassId::radiosity).on;
-  radiosity::Scene mesh;
-  if (radiosity_on) mesh = radiosity::flatten(scene::to_world(d));
+  const RenderSetup setup = prepare_render(d, plan, d.name);
   radiosity::ParallelOptions options;
   options.solver.hemicube.resolution = c.hemicube;
   options.solver.energy = c.energy;
@@ -28,7 +26,7 @@ RenderRun render_with(const scene::SceneDescription& d, const Plan& plan, const 
   view.exposure = exposure;
   UnifiedRender out(machine.config.nodes);
   const parix::RunResult run = parix::run_simulated(machine, [&](parix::Processor& p) {
-    unified_render_program(p, d, radiosity_on ? &mesh : nullptr, shared, view, out);
+    unified_render_program(p, setup.split.surfaces, setup.mesh_or_null(), shared, view, setup.media.get(), out);
   });
   finish(out);
   return {std::move(out.view->result.image), out.view->exposure, run.simulated_seconds(), run.wall_seconds};

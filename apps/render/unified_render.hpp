@@ -1,7 +1,7 @@
 #pragma once
 // The per-processor program of the unified renderer: the passes of the plan that run, one after
 // the other on every node. First the radiosity pass (the thesis's parallel progressive
-// refinement, the radiosity app's own program), then the view pass (view_pass.hpp), which each node
+// refinement, the radiosity app's own program), the media pass (media_pass.hpp), then the view pass (view_pass.hpp), which each node
 // starts when its own radiosity pass ends.
 #include <functional>
 #include <memory>
@@ -20,17 +20,21 @@ struct UnifiedRender {
   // radiosities bit for bit, so which node does not matter; under MPI each rank builds its own.
   std::unique_ptr<ViewPass> view;
   std::vector<double> radiosity_end_s;   // per node (its own slot): when its radiosity pass ended
+  std::vector<double> media_end_s;       // per node: when its media pass (photons, exchange, grid) ended
+  std::uint64_t photon_flights = 0, photon_surface_events = 0;  // summed over the nodes
   // Host-side progress of the view pass (tiles rendered, of all): nothing of it is simulated.
   std::function<void(int done, int total)> on_view_tile;
 
-  explicit UnifiedRender(int nodes) : radiosity_end_s(std::size_t(nodes), 0.0) {}
+  explicit UnifiedRender(int nodes) : radiosity_end_s(std::size_t(nodes), 0.0), media_end_s(std::size_t(nodes), 0.0) {}
   double radiosity_seconds() const;      // the last node's end of the radiosity pass
+  double media_seconds() const;          // the last node's end of the media pass
 };
 
 // mesh: radiosity::flatten(to_world(description)), or nullptr when the plan skips radiosity.
+// description: without the media's bounding shapes (split_media); media: null without media.
 void unified_render_program(parix::Processor& p, const scene::SceneDescription& description,
                             const radiosity::Scene* mesh, const radiosity::ParallelOptions& options, ViewSettings view,
-                            UnifiedRender& out);
+                            const MediaSetup* media, UnifiedRender& out);
 
 // After the run, on the host: merges the view pass's per-node counters and hit ids.
 void finish(UnifiedRender& out);

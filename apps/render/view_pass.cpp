@@ -7,7 +7,8 @@
 namespace gcsim::render {
 
 std::unique_ptr<ViewPass> make_view_pass(const scene::SceneDescription& d, const radiosity::Scene* mesh,
-                                         const std::vector<radiosity::Rgb>* b, ViewSettings view, int nodes) {
+                                         const std::vector<radiosity::Rgb>* b, ViewSettings view, int nodes,
+                                         const MediaSetup* media, std::vector<std::vector<media::Photon>> photons) {
   auto v = std::make_unique<ViewPass>();
   if (mesh && b) {
     radiosity::RenderOptions ro;
@@ -26,6 +27,13 @@ std::unique_ptr<ViewPass> make_view_pass(const scene::SceneDescription& d, const
   v->settings.secondary_rays = view.secondary;
   v->settings.shadow_rays = view.shadows;
   v->settings.max_depth = view.max_depth;
+  if (media) {
+    ViewMediumSettings ms = media->view;
+    ms.display_scale = 3.14159265358979323846 * v->exposure;  // the display shows exitance, pi L
+    v->medium = std::make_unique<ViewMedium>(media->regions, std::move(photons), ms);
+    v->settings.media = v->medium.get();
+    v->settings.media_seed = media->seed;
+  }
   v->job = std::make_unique<raytrace::ParallelRenderJob>(v->scene, v->bvh, v->settings, raytrace::Distribution::dynamic);
   v->result = v->job->new_result(nodes);
   return v;

@@ -10,6 +10,8 @@
 #include "apps/radiosity/scene.hpp"
 #include "apps/raytrace/parallel_render.hpp"
 #include "apps/raytrace/scene.hpp"
+#include "apps/render/media_pass.hpp"
+#include "apps/render/view_medium.hpp"
 
 namespace gcsim::render {
 
@@ -29,11 +31,16 @@ struct ViewPass {
   std::unique_ptr<raytrace::ParallelRenderJob> job;
   raytrace::ParallelRender result;  // node 0 assembles the image; per-node counters
   double exposure = 1.0;            // radiosity to displayed colour (the Gouraud display's automatic one)
+  std::unique_ptr<ViewMedium> medium;  // the media every ray crosses (settings.media), or null
 };
 
 // With a radiosity solution (mesh and one radiosity per element): its elements lit by it; without
-// (mesh == nullptr): the lowered scene lit by its point lights. Image size from the description.
+// (mesh == nullptr): the lowered scene lit by its point lights. Image size from the description,
+// which holds no medium's bounding shape (split_media). With media: their regions and the photon
+// pass's photons (empty lists without one) make the view's ViewMedium.
 std::unique_ptr<ViewPass> make_view_pass(const scene::SceneDescription& description, const radiosity::Scene* mesh,
-                                         const std::vector<radiosity::Rgb>* element_radiosity, ViewSettings view, int nodes);
+                                         const std::vector<radiosity::Rgb>* element_radiosity, ViewSettings view, int nodes,
+                                         const MediaSetup* media = nullptr,
+                                         std::vector<std::vector<media::Photon>> photons = {});
 
 }  // namespace gcsim::render

@@ -50,7 +50,7 @@ struct Rendered {
 Rendered render_on(const scene::SceneDescription& d, const radiosity::Scene* mesh, int nodes, ViewSettings view = {}) {
   Rendered r{std::make_unique<UnifiedRender>(nodes), {}};
   const radiosity::ParallelOptions o = small_solve();
-  r.run = parix::run_simulated(machine_of(nodes), [&](parix::Processor& p) { unified_render_program(p, d, mesh, o, view, *r.out); });
+  r.run = parix::run_simulated(machine_of(nodes), [&](parix::Processor& p) { unified_render_program(p, d, mesh, o, view, nullptr, *r.out); });
   finish(*r.out);
   return r;
 }

@@ -1,8 +1,9 @@
 // The render app: `gcsim plan SCENE.toml` (plan_command.cpp) and `gcsim run render --scene
 // SCENE.toml`, which runs the plan's passes that the unified renderer has so far, one after the
 // other on every node: the radiosity pass (the thesis's parallel progressive refinement on the
-// scene's polygons), then the view pass (the ray tracer's parallel render, reading the radiosity
-// at diffuse hits and following mirrors and glass: the specular pass). Media are planned only.
+// scene's polygons), the media pass (photons), then the view pass (the ray tracer's parallel render, reading the radiosity
+// at diffuse hits and following mirrors and glass: the specular pass; marching through media with
+// the media pass's photon map).
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -22,6 +23,7 @@
 #include "apps/render/error_budget.hpp"
 #include "apps/render/plan.hpp"
 #include "apps/render/render_accuracy.hpp"
+#include "apps/render/render_setup.hpp"
 #include "apps/render/unified_render.hpp"
 #include "apps/raytrace/lower_scene.hpp"
 
@@ -39,24 +41,18 @@ struct RenderOutcome : pipeline::Outcome {
 class RenderExperiment : public pipeline::Experiment {
  public:
   RenderExperiment(const std::string& scene_file, std::string image, const std::vector<std::string>& forced,
-                   double error_budget, bool progress)
+                   double error_budget, std::size_t photons, bool progress)
       : description_(scene::load_scene_file(scene_file)), plan_(make_plan(description_)), image_(std::move(image)),
         progress_(progress) {
     for (const std::string& name : forced) force(name);
     if (error_budget > 0) budget_ = {error_budget, controls_for_budget(description_, plan_, error_budget)};
     view_.secondary = runs(PassId::specular);
     view_.shadows = runs(PassId::shadows);
-    if (plan_.pass(PassId::radiosity).on) mesh_ = radiosity::flatten(scene::to_world(description_));
+    setup_ = prepare_render(description_, plan_, scene_file, runs_forced(PassId::media), photons);
     const RenderControls controls = budget_ ? budget_->choice.controls : RenderControls{};
     options_.solver.hemicube.resolution = controls.hemicube;  // `gcsim run radiosity`'s default 256
     options_.solver.energy = controls.energy;
     view_.max_depth = controls.max_depth;
-    try {  // refuses, before any run, what the view pass cannot show yet
-      raytrace::lower_scene(description_);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(fmt::format("{}: the view pass cannot render this scene yet: {}{}", scene_file, e.what(),
-                                              plan_.pass(PassId::media).on ? " (media run in `gcsim run media` only)" : ""));
-    }
   }
   std::unique_ptr<pipeline::Outcome> new_outcome(int nodes) const override {
     auto o = std::make_unique<RenderOutcome>();
@@ -65,7 +61,6 @@ class RenderExperiment : public pipeline::Experiment {
   }
   parix::Program program(pipeline::Outcome& out) const override {
     RenderOutcome& o = pipeline::outcome_as<RenderOutcome>(out);
-    const bool radiosity_on = plan_.pass(PassId::radiosity).on;
     if (progress_ && pipeline::progress_wanted()) o.progress = std::make_unique<pipeline::ProgressLine>("render", 0);
     radiosity::ParallelOptions shown = radiosity::with_shared_projections(options_);
     // As `gcsim run radiosity`'s line: unshot energy falls about geometrically per loop.
@@ -75,13 +70,13 @@ class RenderExperiment : public pipeline::Experiment {
       const double fraction = goal < 0 ? std::clamp(std::log(std::max(1 - shot, 1e-300)) / goal, 0.0, 1.0) : 1.0;
       o.progress->update_fraction(fraction, fmt::format("radiosity pass: loop {}, {:.4f}% of the energy shot", loop, 100 * shot));
     };
-    const radiosity::Scene* mesh = radiosity_on ? &mesh_ : nullptr;
+    const radiosity::Scene* mesh = setup_.mesh_or_null();
     UnifiedRender* render = o.render.get();
     render->on_view_tile = [&o](int done, int total) {
       if (o.progress) o.progress->update_fraction(double(done) / total, fmt::format("view pass: tile {} of {}", done, total));
     };
     return [this, render, mesh, shown](parix::Processor& p) {
-      unified_render_program(p, description_, mesh, shown, view_, *render);
+      unified_render_program(p, setup_.split.surfaces, mesh, shown, view_, setup_.media.get(), *render);
     };
   }
   void after_run(pipeline::Outcome& out) const override {
@@ -100,8 +95,7 @@ class RenderExperiment : public pipeline::Experiment {
       const bool forced = std::ranges::find(forced_, p.id) != forced_.end();
       fmt::print("pass      {:<10} {}\n", pass_name(p.id),
                  !runs(p.id) ? "off (gcsim plan says why)"
-                 : p.id == PassId::media ? "planned, not yet run"
-                                         : fmt::format("runs on {} nodes{}", nodes, forced ? " (forced on: the plan has it off)" : ""));
+                             : fmt::format("runs on {} nodes{}", nodes, forced ? " (forced on: the plan has it off)" : ""));
     }
   }
   void report(const pipeline::Outcome& out, nlohmann::json& extra) const override {
@@ -121,17 +115,22 @@ class RenderExperiment : public pipeline::Experiment {
                             {"elements", r.element_radiosity.size()}, {"simulated_end_s", radiosity_s}};
     }
     if (!u.view) return;
+    const double media_s = report_media(u, real, extra);
     const raytrace::ParallelRender& v = u.view->result;
     const double total_s = o.run.simulated_seconds();
     fmt::print("view      {} x {} pixels, {} primitives, {} shading rays; {:.6f} s {}{}\n", u.view->settings.width,
-               u.view->settings.height, u.view->scene.prim_count(), v.counters.shades, total_s - radiosity_s,
-               real ? "of wall time" : "simulated", plan_.pass(PassId::radiosity).on ? " after the radiosity pass" : "");
+               u.view->settings.height, u.view->scene.prim_count(), v.counters.shades, total_s - media_s,
+               real ? "of wall time" : "simulated", media_s > 0 ? " after the passes before it" : "");
+    if (v.counters.media_segments > 0)
+      fmt::print("          {} ray segments through media, {} distance samples ({} nearest photons each)\n",
+                 v.counters.media_segments, v.counters.media_samples, setup_.media->view.k_nearest);
     std::vector<std::string> forced_names;
     for (PassId id : forced_) forced_names.emplace_back(pass_name(id));
     extra["forced_passes"] = forced_names;
     extra["view"] = {{"secondary_rays", view_.secondary}, {"shadow_rays", view_.shadows}, {"width", u.view->settings.width}, {"height", u.view->settings.height},
                      {"primitives", u.view->scene.prim_count()}, {"shades", v.counters.shades},
-                     {"exposure", u.view->exposure}, {"simulated_s", total_s - radiosity_s}};
+                     {"exposure", u.view->exposure}, {"simulated_s", total_s - media_s},
+                     {"media_segments", v.counters.media_segments}, {"media_samples", v.counters.media_samples}};
     if (budget_) report_budget(o, extra);
     if (image_.empty()) return;
     apps::write_png(image_, v.image);
@@ -139,9 +138,31 @@ class RenderExperiment : public pipeline::Experiment {
   }
 
  private:
+  // The media pass's line; returns when the last node ended it (the radiosity pass's end without one).
+  double report_media(const UnifiedRender& u, bool real, nlohmann::json& extra) const {
+    const double end_s = u.media_seconds();
+    const PassPlan& plan = plan_.pass(PassId::media);
+    if (!setup_.media || !setup_.media->photon_pass) {
+      if (plan.reason.starts_with("no participating")) return end_s;
+      fmt::print("media     photons skipped: {}{}\n", plan.reason,
+                 setup_.media ? " (the view applies the media's transmittance)" : "");
+      extra["media"] = {{"ran", false}, {"transmittance_applied", setup_.media != nullptr}};
+      return end_s;
+    }
+    const std::size_t stored = u.view->medium ? u.view->medium->photons() : 0;
+    fmt::print("media     {} photons emitted, {} stored in the media ({} surface bounces{}), {}; the pass ended at {:.6f} s {}\n",
+               setup_.media->photons, stored, u.photon_surface_events, real ? " on this rank" : "",
+               setup_.media->view.radiance_estimate ? "SH grid for the radiance estimate" : "transmittance sampling",
+               end_s, real ? "of wall time (this rank)" : "simulated (last node)");
+    extra["media"] = {{"ran", true}, {"photons_emitted", setup_.media->photons}, {"photons_stored", stored},
+                      {"surface_bounces", u.photon_surface_events}, {"radiance_estimate", setup_.media->view.radiance_estimate},
+                      {"simulated_end_s", end_s}};
+    return end_s;
+  }
+
   scene::SceneDescription description_;
   Plan plan_;
-  radiosity::Scene mesh_;
+  RenderSetup setup_;  // surfaces without the media's bounds, radiosity mesh, media
   radiosity::ParallelOptions options_;
   std::string image_;
   bool progress_;  // gcsim run: a line per loop on a terminal
@@ -169,25 +190,26 @@ class RenderExperiment : public pipeline::Experiment {
                              {"simulated_s", s}, {"relative_rmse_against_full_plan", error}};
   }
 
-  bool runs(PassId id) const { return plan_.pass(id).on || std::ranges::find(forced_, id) != forced_.end(); }
+  bool runs_forced(PassId id) const { return std::ranges::find(forced_, id) != forced_.end(); }
+  bool runs(PassId id) const { return plan_.pass(id).on || runs_forced(id); }
   // --force-pass NAME: only passes whose zero contribution the view can run and add as it is.
   void force(const std::string& name) {
-    for (PassId id : {PassId::specular, PassId::shadows})
+    for (PassId id : {PassId::specular, PassId::shadows, PassId::media})
       if (name == pass_name(id)) {
         if (!plan_.pass(id).on) forced_.push_back(id);
         return;
       }
-    if (name == "radiosity" || name == "media" || name == "view")
+    if (name == "radiosity" || name == "view")
       throw std::invalid_argument(fmt::format(
-          "--force-pass {}: not supported yet; the passes that can be forced are specular and shadows", name));
-    throw std::invalid_argument(fmt::format("--force-pass {}: no such pass; expected specular or shadows", name));
+          "--force-pass {}: not supported yet; the passes that can be forced are specular, shadows and media", name));
+    throw std::invalid_argument(fmt::format("--force-pass {}: no such pass; expected specular, shadows or media", name));
   }
 };
 
 pipeline::AppSpec spec() {
   pipeline::AppSpec s;
   s.name = "render";
-  s.summary = "Render a TOML scene file with the passes its plan needs (radiosity, then the ray-traced view; media not yet).";
+  s.summary = "Render a TOML scene file with the passes its plan needs (radiosity, the media's photons, then the ray-traced view).";
   s.examples = {"gcsim plan scenes/cornell.toml --nodes 8  which passes a scene needs, and why",
                 "gcsim render scenes/cornell-mirror-glass.toml --nodes 8 --image out.png  radiosity, then the ray-traced view"};
   s.run_footer = "Example:\n  gcsim plan scenes/cornell.toml --nodes 8\n  gcsim render scenes/cornell-mirror-glass.toml --nodes 8 --image out.png --json out.json\n"
@@ -197,10 +219,12 @@ pipeline::AppSpec spec() {
     auto image = std::make_shared<std::string>();
     auto forced = std::make_shared<std::vector<std::string>>();
     auto budget = std::make_shared<double>(0.0);
+    auto photons = std::make_shared<std::size_t>(kDefaultPhotons);
     cmd.add_option("scene,--scene", *scene, "a TOML scene file (scenes/*.toml)")->required();
     cmd.add_option("--image", *image, "write the view pass's image (PNG, the scene's [image] size)");
     cmd.add_option("--force-pass", *forced,
-                   "run a pass the plan has off (specular: reflected and refracted rays; shadows: shadow rays);\n"
+                   "run a pass the plan has off (specular: reflected and refracted rays; shadows: shadow rays;\n"
+                   "media: the photon pass and every medium, even one with sigma_s = sigma_a = 0);\n"
                    "what it adds is exactly nothing, so the image is the same bit for bit, at its cost in time")
         ->delimiter(',');
     cmd.add_option("--error-budget", *budget,
@@ -208,9 +232,13 @@ pipeline::AppSpec spec() {
                    "energy, reflection depth), then render the full plan too and report the time saved and the error\n"
                    "measured against it")
         ->check(CLI::Range(1e-9, 0.999999));
+    cmd.add_option("--photons", *photons,
+                   "photons the media pass emits, over all nodes (more: less noise in the media's glow, a longer pass)")
+        ->capture_default_str()
+        ->check(CLI::Range(std::size_t(1), std::size_t(100000000)));
     const bool progress = verb == pipeline::Verb::run;
-    return [scene, image, forced, budget, progress] {
-      return std::make_unique<RenderExperiment>(*scene, *image, *forced, *budget, progress);
+    return [scene, image, forced, budget, photons, progress] {
+      return std::make_unique<RenderExperiment>(*scene, *image, *forced, *budget, *photons, progress);
     };
   };
   // `gcsim render SCENE.toml ...` is `gcsim run render --scene SCENE.toml ...`, top-level as the

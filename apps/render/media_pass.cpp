@@ -1,0 +1,67 @@
+#include "apps/render/media_pass.hpp"
+
+#include <span>
+
+#include "apps/media/frame.hpp"
+#include "apps/raytrace/lower_scene.hpp"
+#include "parix/collectives.hpp"
+
+namespace gcsim::render {
+namespace {
+
+std::size_t share_begin(std::size_t total, int node, int nodes) {
+  return total * std::size_t(node) / std::size_t(nodes);
+}
+
+std::uint64_t share(std::uint64_t total, int node, int nodes) {
+  return share_begin(total, node + 1, nodes) - share_begin(total, node, nodes);
+}
+
+}  // namespace
+
+std::unique_ptr<MediaSetup> make_media_setup(const SplitScene& split, std::vector<MediumRegion> regions, bool photon_pass,
+                                             bool radiance_estimate, std::size_t photons) {
+  auto s = std::make_unique<MediaSetup>();
+  s->regions = std::move(regions);
+  s->photon_pass = photon_pass;
+  s->photons = photons;
+  s->view.radiance_estimate = radiance_estimate;
+  if (!photon_pass) return s;
+  s->surfaces = raytrace::lower_scene(split.surfaces);
+  s->bvh = geometry::build_bvh_by_clustering(s->surfaces);
+  s->lights = photon_lights(split.surfaces);
+  s->view.light_chroma = s->lights.chroma;
+  return s;
+}
+
+GatheredPhotons photon_pass(parix::Processor& p, const MediaSetup& s) {
+  GatheredPhotons out;
+  out.per_region.resize(s.regions.size());
+  if (!s.photon_pass) return out;
+  const VolumePhotons mine = trace_volume_photons(s.surfaces, s.bvh, s.lights, s.regions, share_begin(s.photons, p.id(), p.count()),
+                                                  share_begin(s.photons, p.id() + 1, p.count()), s.photons, s.seed);
+  out.flights = mine.flights, out.surface_events = mine.surface_events;
+  const parix::OpCount ops[] = {{"media_photon_step", std::int64_t(mine.flights + mine.surface_events)},
+                                {"ray_box", mine.tests.boxes},
+                                {"ray_triangle", mine.tests.triangles},
+                                {"ray_sphere", mine.tests.spheres}};
+  p.compute(std::span<const parix::OpCount>(ops));
+  for (std::size_t r = 0; r < s.regions.size(); ++r) {
+    for (auto& part : parix::allgather_vectors<media::Photon>(p, std::span<const media::Photon>(mine.per_region[r])))
+      out.per_region[r].insert(out.per_region[r].end(), part.begin(), part.end());
+    out.held.push_back(p.reserve_memory(std::int64_t(out.per_region[r].size() * sizeof(media::Photon)), "photon map"));
+  }
+  return out;
+}
+
+void charge_grid_share(parix::Processor& p, const media::GridBuildCounts& all) {
+  const int id = p.id(), n = p.count();
+  media::GridBuildCounts mine;
+  mine.knn_queries = share(all.knn_queries, id, n), mine.knn_photons = share(all.knn_photons, id, n);
+  mine.range_queries = share(all.range_queries, id, n), mine.range_candidates = share(all.range_candidates, id, n);
+  mine.projections = share(all.projections, id, n), mine.photon_adds = share(all.photon_adds, id, n);
+  const auto ops = media::grid_build_ops(mine);
+  p.compute(std::span<const parix::OpCount>(ops));
+}
+
+}  // namespace gcsim::render

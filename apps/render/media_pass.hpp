@@ -1,0 +1,50 @@
+#pragma once
+// The media pass of the unified renderer on the simulated nodes: each node traces its share of the
+// photons through the scene's surfaces and media (volume_photons.hpp), charged at the machine's
+// `[ops]` cycles, then all nodes exchange them (parix all-gather), so every node holds the whole
+// photon map for its tiles of the view. Its SH grids (anisotropic media) are built once on the
+// host and each node is charged its slice of that work, as the media app's nodes build theirs.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "apps/common/geometry/bvh.hpp"
+#include "apps/media/photon_map.hpp"
+#include "apps/media/radiance_grid.hpp"
+#include "apps/raytrace/scene.hpp"
+#include "apps/render/medium_region.hpp"
+#include "apps/render/view_medium.hpp"
+#include "apps/render/volume_photons.hpp"
+#include "parix/processor.hpp"
+
+namespace gcsim::render {
+
+// What the media pass and the view's media need, built once before the run.
+struct MediaSetup {
+  std::vector<MediumRegion> regions;
+  bool photon_pass = false;       // the plan's media pass (or --force-pass media)
+  std::size_t photons = 20000;    // emitted, over all nodes
+  std::uint64_t seed = 1;
+  raytrace::Scene surfaces;       // what photons bounce off: the lowered scene without the media's bounds
+  geometry::Bvh bvh;
+  PhotonLights lights;
+  ViewMediumSettings view;        // display_scale is set by the view pass (it knows the exposure)
+};
+
+// regions: the media the view applies; photon_pass: whether photons are traced.
+std::unique_ptr<MediaSetup> make_media_setup(const SplitScene& split, std::vector<MediumRegion> regions, bool photon_pass,
+                                             bool radiance_estimate, std::size_t photons);
+
+struct GatheredPhotons {
+  std::vector<std::vector<media::Photon>> per_region;  // everybody's, in node order
+  std::uint64_t flights = 0, surface_events = 0;       // this node's
+  std::vector<parix::MemoryReservation> held;          // the photon map's node memory
+};
+
+// On every node: its share of the photons, charged, then the all-gather.
+GatheredPhotons photon_pass(parix::Processor& p, const MediaSetup& s);
+
+// This node's slice of the SH grids' construction (all: the whole grids' counts).
+void charge_grid_share(parix::Processor& p, const media::GridBuildCounts& all);
+
+}  // namespace gcsim::render

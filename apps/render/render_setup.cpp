@@ -1,0 +1,35 @@
+#include "apps/render/render_setup.hpp"
+
+#include <stdexcept>
+
+#include "apps/common/scene/description_to_world.hpp"
+#include "apps/raytrace/lower_scene.hpp"
+
+namespace gcsim::render {
+
+RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, const std::string& file, bool force_media,
+                           std::size_t photons) {
+  RenderSetup s;
+  s.split = split_media(d, file);
+  try {  // refuses, before any run, what the view pass cannot show
+    raytrace::lower_scene(s.split.surfaces);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(file + ": the view pass cannot render this scene: " + e.what());
+  }
+  s.radiosity = plan.pass(PassId::radiosity).on;
+  if (s.radiosity) s.mesh = radiosity::flatten(scene::to_world(s.split.surfaces));
+  std::vector<MediumRegion> regions;
+  for (const MediumRegion& r : s.split.media)
+    if (force_media || !r.changes_nothing()) regions.push_back(r);
+  const bool photon_pass = force_media || plan.pass(PassId::media).on;
+  if (regions.empty() && !photon_pass) return s;
+  try {
+    s.media = make_media_setup(s.split, std::move(regions), photon_pass,
+                               plan.facts.media_sampling == MediaSampling::radiance_estimate, photons);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(file + ": " + e.what());
+  }
+  return s;
+}
+
+}  // namespace gcsim::render

@@ -1,0 +1,33 @@
+#pragma once
+// What a render builds from a scene and its plan before the run: the surfaces (the description
+// without the media's bounding shapes), the radiosity mesh when the plan has that pass, and the
+// media the view applies with the photon pass's inputs. Shared by `gcsim render`, its error budget
+// and `gcsim accuracy render`.
+#include <memory>
+#include <string>
+
+#include "apps/radiosity/scene.hpp"
+#include "apps/render/media_pass.hpp"
+#include "apps/render/medium_region.hpp"
+#include "apps/render/plan.hpp"
+
+namespace gcsim::render {
+
+struct RenderSetup {
+  SplitScene split;
+  bool radiosity = false;
+  radiosity::Scene mesh;               // radiosity::flatten(to_world(split.surfaces)) when radiosity
+  std::unique_ptr<MediaSetup> media;   // null: no medium changes the image (and none forced)
+  const radiosity::Scene* mesh_or_null() const { return radiosity ? &mesh : nullptr; }
+};
+
+// CORNELL-FOG: 20000 photons left a relative RMS of 0.029 between two seeds' images, 100000 0.023,
+// for 0.6 and 3.1 s of the 8-node pass (of 86 s in all).
+inline constexpr std::size_t kDefaultPhotons = 50000;
+
+// file: for messages. force_media: --force-pass media (the photon pass and every medium, even those
+// that change nothing). Throws std::invalid_argument "FILE: ..." for what the view cannot show.
+RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, const std::string& file, bool force_media = false,
+                           std::size_t photons = kDefaultPhotons);
+
+}  // namespace gcsim::render

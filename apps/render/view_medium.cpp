@@ -1,0 +1,120 @@
+#include "apps/render/view_medium.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "apps/media/scene_caches.hpp"
+#include "apps/render/volume_photons.hpp"
+
+namespace gcsim::render {
+
+struct ViewMedium::Region {
+  MediumRegion shape;
+  media::HomogeneousMedium lum;      // what the photon map and the march read
+  glm::dvec3 sigma_t_rgb{0.0};       // the transmittance's, per channel
+  glm::dvec3 in_scatter_colour{0.0}; // displayed colour per unit of in-scattered luminance
+  std::unique_ptr<media::PhotonMap> map;
+  std::unique_ptr<media::RadianceGrid> grid;
+};
+
+ViewMedium::ViewMedium(std::vector<MediumRegion> regions, std::vector<std::vector<media::Photon>> photons,
+                       ViewMediumSettings s)
+    : settings_(s) {
+  for (std::size_t i = 0; i < regions.size(); ++i) {
+    Region r;
+    r.shape = regions[i];
+    r.lum = luminance_medium(r.shape.medium);
+    r.sigma_t_rgb = r.shape.medium.sigma_s + r.shape.medium.sigma_a;
+    if (r.lum.sigma_s > 0) r.in_scatter_colour = s.display_scale * s.light_chroma * r.shape.medium.sigma_s / r.lum.sigma_s;
+    if (i < photons.size() && !photons[i].empty() && r.lum.sigma_s > 0) {
+      const media::UniformGrid grid = media::grid_for_photons(photons[i], s.k_nearest);
+      r.map = std::make_unique<media::PhotonMap>(std::move(photons[i]));
+      if (s.radiance_estimate) r.grid = std::make_unique<media::RadianceGrid>(grid, *r.map, r.lum, s.k_nearest);
+    }
+    regions_.push_back(std::move(r));
+  }
+}
+
+ViewMedium::~ViewMedium() = default;
+
+std::size_t ViewMedium::photons() const {
+  std::size_t n = 0;
+  for (const Region& r : regions_) n += r.map ? r.map->photons().size() : 0;
+  return n;
+}
+
+media::GridBuildCounts ViewMedium::grid_build() const {
+  media::GridBuildCounts c;
+  for (const Region& r : regions_)
+    if (r.grid) c.add(r.grid->build_counts());
+  return c;
+}
+
+namespace {
+
+struct Interval {
+  std::size_t region;
+  double t0, t1;  // along the unit direction
+};
+
+// The regions' parts of [0, t_end) in order along the ray.
+template <class Regions>
+std::vector<Interval> intervals(const Regions& regions, const glm::dvec3& o, const glm::dvec3& u, double t_end) {
+  std::vector<Interval> out;
+  for (std::size_t i = 0; i < regions.size(); ++i) {
+    double t0, t1;
+    if (regions[i].shape.clip(o, u, 0.0, t_end, t0, t1)) out.push_back({i, t0, t1});
+  }
+  std::sort(out.begin(), out.end(), [](const Interval& a, const Interval& b) { return a.t0 < b.t0; });
+  return out;
+}
+
+glm::dvec3 channel_transmittance(const glm::dvec3& sigma_t, double length) {
+  return {std::exp(-sigma_t.r * length), std::exp(-sigma_t.g * length), std::exp(-sigma_t.b * length)};
+}
+
+}  // namespace
+
+glm::vec3 ViewMedium::along(const geometry::Ray& ray, float t_end, glm::vec3 behind, apps::Rng& rng,
+                            raytrace::TraceCounters& counters) const {
+  const glm::dvec3 d(ray.direction);
+  const double scale = glm::length(d);
+  const glm::dvec3 o(ray.origin), u = d / scale;
+  const std::vector<Interval> parts = intervals(regions_, o, u, double(t_end) * scale);
+  if (parts.empty()) return behind;
+  glm::dvec3 radiance(0.0), through(1.0);
+  for (const Interval& part : parts) {
+    const Region& r = regions_[part.region];
+    const double length = part.t1 - part.t0;
+    if (r.map) {
+      media::MarchSettings march;
+      march.estimator = r.grid ? media::Estimator::radiance : media::Estimator::transmittance;
+      march.defensive_alpha = settings_.defensive_alpha;
+      march.b = settings_.samples_per_free_path * r.lum.sigma_t;  // M = b S = samples (1 - T)
+      const media::SegmentQuery q{o + part.t0 * u, u, length, &r.lum, r.grid.get(), std::nullopt};
+      auto li = [&](const glm::dvec3& p) { return r.map->in_scattered(p, -u, r.lum, settings_.k_nearest); };
+      media::MarchCounters mc;
+      const double in = media::march_segment_in_scatter(q, march, li, rng, mc);
+      radiance += through * r.in_scatter_colour * in;
+      ++counters.media_segments;
+      counters.media_samples += std::int64_t(mc.samples);
+      counters.media_knn_photons += std::int64_t(mc.samples * settings_.k_nearest);
+      counters.media_sh_evals += std::int64_t(mc.sh_evals);
+    }
+    through *= channel_transmittance(r.sigma_t_rgb, length);
+  }
+  return glm::vec3(radiance + through * glm::dvec3(behind));
+}
+
+glm::vec3 ViewMedium::transmittance(const geometry::Ray& ray, float t_end) const {
+  const glm::dvec3 d(ray.direction);
+  const double scale = glm::length(d);
+  glm::dvec3 through(1.0);
+  for (const Interval& part : intervals(regions_, glm::dvec3(ray.origin), d / scale, double(t_end) * scale))
+    through *= channel_transmittance(regions_[part.region].sigma_t_rgb, part.t1 - part.t0);
+  return glm::vec3(through);
+}
+
+}  // namespace gcsim::render

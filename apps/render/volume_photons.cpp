@@ -1,0 +1,204 @@
+#include "apps/render/volume_photons.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+
+#include "apps/common/geometry/ray_offset.hpp"
+#include "apps/common/geometry/traversal.hpp"
+#include "apps/common/rng.hpp"
+#include "apps/media/sampling.hpp"
+#include "apps/raytrace/optics.hpp"
+
+namespace gcsim::render {
+
+using geometry::Hit;
+using geometry::Ray;
+using geometry::SurfacePoint;
+
+namespace {
+
+constexpr int kMaxPhotonEvents = 64;  // scatterings plus surface events, as the media app
+
+void add_emitter(PhotonLights& l, const PhotonLights::Emitter& e, const scene::Rgb& rgb_flux) {
+  if (e.flux <= 0.0) return;
+  l.emitters.push_back(e);
+  l.total_flux += e.flux;
+  l.cumulative.push_back(l.total_flux);
+  l.chroma += rgb_flux;
+}
+
+// A polygon's triangles (a fan), each emitting to the side `normal`.
+void add_polygon(PhotonLights& l, const scene::Polygon& poly, const scene::Rgb& exitance, glm::dvec3 normal) {
+  for (int k = 1; k + 1 < poly.count; ++k) {
+    const glm::dvec3 a = poly.vertex[0], b = poly.vertex[std::size_t(k)], c = poly.vertex[std::size_t(k) + 1];
+    const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
+    add_emitter(l, {PhotonLights::Emitter::Kind::triangle, a, b, c, normal, -1.0, luminance(exitance) * area},
+                exitance * area);
+  }
+}
+
+}  // namespace
+
+media::HomogeneousMedium luminance_medium(const scene::Medium& m) {
+  media::HomogeneousMedium out;
+  out.sigma_s = luminance(m.sigma_s);
+  out.sigma_t = luminance(m.sigma_s + m.sigma_a);
+  out.phase = m.phase == scene::PhaseKind::isotropic ? media::Phase::isotropic()
+              : m.phase == scene::PhaseKind::schlick ? media::Phase::schlick(m.phase_g)
+                                                      : media::Phase::henyey_greenstein(m.phase_g);
+  return out;
+}
+
+PhotonLights photon_lights(const scene::SceneDescription& d) {
+  PhotonLights l;
+  l.chroma = glm::dvec3(0.0);
+  for (std::size_t i = 0; i < d.shapes.size(); ++i) {
+    const scene::Shape& s = d.shapes[i];
+    const scene::Rgb front = d.materials.at(std::size_t(s.material)).emission;
+    const scene::Rgb back = s.back_material >= 0 ? d.materials.at(std::size_t(s.back_material)).emission : scene::Rgb(0.0);
+    if (front == scene::Rgb(0.0) && back == scene::Rgb(0.0)) continue;
+    const auto* poly = std::get_if<scene::Polygon>(&s.geometry);
+    if (!poly)
+      throw std::invalid_argument(fmt::format("shape {} emits light but is not a polygon: the photon pass emits from "
+                                              "polygons, point and spot lights only", i + 1));
+    glm::dvec3 n = glm::normalize(glm::cross(poly->vertex[1] - poly->vertex[0], poly->vertex[2] - poly->vertex[0]));
+    if (poly->facing && glm::dot(n, *poly->facing) < 0.0) n = -n;  // the front looks along `facing`
+    add_polygon(l, *poly, front, n);
+    add_polygon(l, *poly, back, -n);
+  }
+  for (const scene::Light& light : d.lights) {
+    if (const auto* p = std::get_if<scene::PointLight>(&light)) {
+      add_emitter(l, {PhotonLights::Emitter::Kind::point, p->position, {}, {}, {}, -1.0, 4 * media::kPi * luminance(p->intensity)},
+                  4 * media::kPi * p->intensity);
+    } else {
+      const auto& s = std::get<scene::SpotLight>(light);
+      const double cos_cone = std::cos(s.cone_degrees * media::kPi / 180.0);
+      const double solid_angle = 2 * media::kPi * (1 - cos_cone);
+      add_emitter(l, {PhotonLights::Emitter::Kind::spot, s.position, {}, {}, glm::normalize(s.direction), cos_cone,
+                      solid_angle * luminance(s.intensity)},
+                  solid_angle * s.intensity);
+    }
+  }
+  l.chroma = l.total_flux > 0 ? l.chroma / l.total_flux : glm::dvec3(1.0);
+  return l;
+}
+
+namespace {
+
+struct PhotonRay {
+  glm::dvec3 origin, direction;
+};
+
+PhotonRay emit(const PhotonLights& l, apps::Rng& rng) {
+  const double pick = rng.uniform_double() * l.total_flux;
+  const std::size_t i = std::min<std::size_t>(
+      std::size_t(std::upper_bound(l.cumulative.begin(), l.cumulative.end(), pick) - l.cumulative.begin()), l.emitters.size() - 1);
+  const PhotonLights::Emitter& e = l.emitters[i];
+  const double u1 = rng.uniform_double(), u2 = rng.uniform_double();
+  switch (e.kind) {
+    case PhotonLights::Emitter::Kind::triangle: {
+      const double su = std::sqrt(rng.uniform_double()), v = rng.uniform_double();
+      const glm::dvec3 at = e.a + su * (1 - v) * (e.b - e.a) + su * v * (e.c - e.a);
+      return {at, media::direction_around(e.axis, std::sqrt(u1), u2)};  // cosine-weighted: Lambertian
+    }
+    case PhotonLights::Emitter::Kind::point: return {e.a, media::uniform_sphere(u1, u2)};
+    case PhotonLights::Emitter::Kind::spot: return {e.a, media::direction_around(e.axis, 1 - u1 * (1 - e.cos_cone), u2)};
+  }
+  return {e.a, e.axis};
+}
+
+// A point's distance to the nearest medium interaction along the ray up to t_max: the region it is
+// in and where, or nullopt when the photon reaches t_max.
+struct Interaction {
+  std::size_t region;
+  double t;
+};
+std::optional<Interaction> free_flight(const std::vector<MediumRegion>& media,
+                                       const std::vector<media::HomogeneousMedium>& lum, const PhotonRay& r,
+                                       double t_max, apps::Rng& rng) {
+  std::optional<Interaction> nearest;
+  // Regions are disjoint: each one's interval is sampled on its own, and the first interaction wins
+  // (an interval beyond an earlier interaction is never reached; its draw is made anyway so that the
+  // random stream does not depend on the order of the regions' intervals).
+  for (std::size_t i = 0; i < media.size(); ++i) {
+    double t0, t1;
+    if (!media[i].clip(r.origin, r.direction, 0.0, t_max, t0, t1)) continue;
+    const double xi = rng.uniform_double();
+    if (lum[i].sigma_t <= 0.0) continue;
+    const double t = t0 - std::log1p(-xi) / lum[i].sigma_t;
+    if (t < t1 && (!nearest || t < nearest->t)) nearest = Interaction{i, t};
+  }
+  return nearest;
+}
+
+// Russian roulette at a surface: the continuing direction, or nullopt (absorbed).
+std::optional<glm::dvec3> bounce(const raytrace::Scene& scene, const Ray& ray, const Hit& hit, apps::Rng& rng,
+                                 glm::dvec3& origin) {
+  const raytrace::Material& m = scene.material_of(hit.prim);
+  const SurfacePoint sp = scene.surface_point(ray, hit.prim, hit.t, hit.b1, hit.b2);
+  const glm::vec3 d = glm::normalize(ray.direction), n = sp.shading_normal;
+  const double xi = rng.uniform_double();
+  std::optional<glm::vec3> out;
+  if (m.transmittance > 0.0f) {
+    const float eta = sp.entering ? 1.0f / m.ior : m.ior;
+    const auto refracted = raytrace::refract_direction(d, n, eta);
+    const float f = refracted ? raytrace::fresnel_dielectric(-glm::dot(d, n), eta) : 1.0f;
+    if (xi < f * m.reflectance) out = raytrace::reflect_direction(d, n);
+    else if (refracted && xi < f * m.reflectance + (1 - f) * m.transmittance) out = *refracted;
+  } else if (xi < m.reflectance) {
+    out = raytrace::reflect_direction(d, n);
+  } else {
+    const double diffuse = 0.2126 * m.diffuse.r + 0.7152 * m.diffuse.g + 0.0722 * m.diffuse.b;
+    if (xi < m.reflectance + (1 - m.reflectance) * diffuse)
+      out = glm::vec3(media::direction_around(glm::dvec3(sp.geometric_normal), std::sqrt(rng.uniform_double()), rng.uniform_double()));
+  }
+  if (!out) return std::nullopt;
+  origin = glm::dvec3(offset_ray_origin(sp, *out));
+  return glm::normalize(glm::dvec3(*out));
+}
+
+}  // namespace
+
+VolumePhotons trace_volume_photons(const raytrace::Scene& surfaces, const geometry::Bvh& bvh, const PhotonLights& lights,
+                                   const std::vector<MediumRegion>& media, std::size_t first, std::size_t last,
+                                   std::size_t total, std::uint64_t seed) {
+  VolumePhotons out;
+  out.per_region.resize(media.size());
+  if (lights.emitters.empty() || total == 0) return out;
+  std::vector<media::HomogeneousMedium> lum;
+  for (const MediumRegion& r : media) lum.push_back(luminance_medium(r.medium));
+  const float power = float(lights.total_flux / double(total));
+  for (std::size_t i = first; i < last; ++i) {
+    apps::Rng rng(seed, 0x70686f746f6eULL + i);
+    PhotonRay r = emit(lights, rng);
+    for (int event = 0; event < kMaxPhotonEvents; ++event) {
+      // Leaving an emitter or a surface, the first hit beyond a small distance is the next surface.
+      const Ray ray(glm::vec3(r.origin), glm::vec3(r.direction), 1e-5f * (1.0f + glm::length(glm::vec3(r.origin))));
+      Hit hit;
+      traverse_ordered(surfaces, bvh.packed, ray, hit, out.tests);
+      const double t_hit = hit.valid() ? double(hit.t) : std::numeric_limits<double>::infinity();
+      if (const auto at = free_flight(media, lum, r, t_hit, rng)) {
+        ++out.flights;
+        const glm::dvec3 x = r.origin + at->t * r.direction;
+        out.per_region[at->region].push_back({glm::vec3(x), glm::vec3(r.direction), power});
+        const media::HomogeneousMedium& m = lum[at->region];
+        if (rng.uniform_double() >= m.albedo()) break;  // absorbed
+        r = {x, media::direction_around(r.direction, m.phase.sample_cos(rng.uniform_double()), rng.uniform_double())};
+        continue;
+      }
+      if (!hit.valid()) break;  // left the scene
+      ++out.surface_events;
+      const auto next = bounce(surfaces, ray, hit, rng, r.origin);
+      if (!next) break;
+      r.direction = *next;
+    }
+  }
+  return out;
+}
+
+}  // namespace gcsim::render

@@ -1,0 +1,57 @@
+#pragma once
+// The photon pass of the unified renderer (the media paper's section 2, in a scene with surfaces):
+// photons leave the scene's lights in proportion to their flux, fly through the media by
+// transmittance sampling, are stored at every medium interaction before the albedo roulette (the
+// media app's reading [A4]) and scatter by the medium's phase; at surfaces they are reflected
+// diffusely, by a mirror, or reflected or refracted by glass, by Russian roulette on the surface's
+// (luminance) weights, so light that walls reflect into the fog is in the map too.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "apps/common/geometry/bvh.hpp"
+#include "apps/common/geometry/primitive_test.hpp"
+#include "apps/common/scene/scene_description.hpp"
+#include "apps/media/medium.hpp"
+#include "apps/media/photon_map.hpp"
+#include "apps/raytrace/scene.hpp"
+#include "apps/render/medium_region.hpp"
+
+namespace gcsim::render {
+
+// Where photons start: emissive polygons (front, and back with an emitting back material), point and
+// spot lights, chosen in proportion to their luminance flux.
+struct PhotonLights {
+  struct Emitter {
+    enum class Kind { triangle, point, spot } kind;
+    glm::dvec3 a{0.0}, b{0.0}, c{0.0};  // triangle corners; a: a point or spot light's position
+    glm::dvec3 axis{0.0};               // a triangle's emitting side, a spot's direction
+    double cos_cone = -1.0;             // spot
+    double flux = 0.0;                  // luminance
+  };
+  std::vector<Emitter> emitters;
+  std::vector<double> cumulative;  // running sums of flux, for the choice
+  double total_flux = 0.0;         // luminance
+  glm::dvec3 chroma{1.0};          // the lights' colour: RGB flux over luminance flux (luminance 1)
+};
+
+// Throws std::invalid_argument naming the shape for emitting spheres, boxes or meshes.
+PhotonLights photon_lights(const scene::SceneDescription& surfaces);
+
+// One medium as the photon map reads it: luminance coefficients [A8] and the phase.
+media::HomogeneousMedium luminance_medium(const scene::Medium& m);
+
+struct VolumePhotons {
+  std::vector<std::vector<media::Photon>> per_region;  // one list per MediumRegion
+  std::uint64_t flights = 0, surface_events = 0;
+  geometry::TestTally tests;  // the surface hits' box and triangle tests
+};
+
+// Photons [first, last) of `total`; photon i draws from its own stream (seed, i), so any split of the
+// range over nodes gives the same photons. Each carries total_flux / total.
+VolumePhotons trace_volume_photons(const raytrace::Scene& surfaces, const geometry::Bvh& bvh, const PhotonLights& lights,
+                                   const std::vector<MediumRegion>& media, std::size_t first, std::size_t last,
+                                   std::size_t total, std::uint64_t seed);
+
+}  // namespace gcsim::render

@@ -1,0 +1,198 @@
+// The media in the unified renderer: the photon pass's interactions follow the transmittance, an
+// absorbing medium dims every pixel by exactly its transmittance, a medium that changes nothing
+// changes no pixel even when its pass is forced on, the image is the same on any node count, and
+// media the view cannot show are refused with the scene file named.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "apps/common/scene/scene_file.hpp"
+#include "apps/raytrace/pixel_encoding.hpp"
+#include "apps/render/plan.hpp"
+#include "apps/render/render_setup.hpp"
+#include "apps/render/unified_render.hpp"
+#include "apps/render/view_medium.hpp"
+#include "apps/render/volume_photons.hpp"
+#include "parix/simulated_runtime.hpp"
+
+namespace gcsim::render {
+namespace {
+
+scene::SceneDescription scene_file(const char* name) {
+  return scene::load_scene_file(std::filesystem::path(GCSIM_SOURCE_DIR) / "scenes" / name);
+}
+
+scene::SceneDescription small_image(scene::SceneDescription d) {
+  d.image.width = d.image.height = 48;
+  return d;
+}
+
+// A medium's material: bounds the medium only (no reflectance, index 1).
+int add_medium(scene::SceneDescription& d, scene::Rgb sigma_s, scene::Rgb sigma_a, const scene::Shape& bound) {
+  scene::Material m;
+  m.name = "medium";
+  m.diffuse = scene::Rgb(0.0);
+  m.medium = scene::Medium{sigma_s, sigma_a, scene::PhaseKind::henyey_greenstein, 0.5, 1.0};
+  scene::Shape s = bound;
+  s.material = d.add_material(m);
+  d.shapes.push_back(s);
+  return s.material;
+}
+
+scene::Shape box_shape(glm::dvec3 lo, glm::dvec3 hi) { return {scene::Box{lo, hi}}; }
+
+struct Rendered {
+  apps::Image image;
+  std::unique_ptr<UnifiedRender> out;
+  double simulated_s = 0;
+};
+
+Rendered render(const scene::SceneDescription& d, int nodes, bool force_media = false, std::size_t photons = 4000) {
+  const Plan plan = make_plan(d);
+  const RenderSetup setup = prepare_render(d, plan, "test.toml", force_media, photons);
+  radiosity::ParallelOptions o;
+  o.solver.hemicube.resolution = 32;
+  o.solver.energy = 0.9;
+  ViewSettings view;
+  view.secondary = plan.pass(PassId::specular).on;
+  view.shadows = plan.pass(PassId::shadows).on;
+  Rendered r{{}, std::make_unique<UnifiedRender>(nodes)};
+  parix::SimulationOptions sim;
+  sim.config = machine::with_nodes(machine::default_machine_config(), nodes);
+  const parix::RunResult run = parix::run_simulated(sim, [&](parix::Processor& p) {
+    unified_render_program(p, setup.split.surfaces, setup.mesh_or_null(), radiosity::with_shared_projections(o), view,
+                           setup.media.get(), *r.out);
+  });
+  finish(*r.out);
+  r.image = r.out->view->result.image;
+  r.simulated_s = run.simulated_seconds();
+  return r;
+}
+
+void expect_same_pixels(const apps::Image& a, const apps::Image& b) {
+  ASSERT_EQ(a.pixels().size(), b.pixels().size());
+  int differing = 0;
+  for (std::size_t i = 0; i < a.pixels().size(); ++i) differing += a.pixels()[i] != b.pixels()[i];
+  EXPECT_EQ(differing, 0);
+}
+
+TEST(MediaPass, AMediumThatChangesNothingChangesNoPixelEvenForced) {
+  const scene::SceneDescription plain = small_image(scene_file("cornell.toml"));
+  scene::SceneDescription with_medium = plain;
+  add_medium(with_medium, scene::Rgb(0.0), scene::Rgb(0.0), box_shape({1, 1, 1}, {550, 540, 550}));
+  EXPECT_FALSE(make_plan(with_medium).pass(PassId::media).on);
+  const Rendered reference = render(plain, 2);
+  expect_same_pixels(render(with_medium, 2).image, reference.image);
+  const Rendered forced = render(with_medium, 2, true);
+  EXPECT_GT(forced.out->photon_surface_events, 0u);  // the photon pass ran: photons bounced off the walls
+  EXPECT_EQ(forced.out->photon_flights, 0u);         // and never met the empty medium
+  EXPECT_GT(forced.simulated_s, reference.simulated_s);
+  expect_same_pixels(forced.image, reference.image);
+}
+
+TEST(MediaPass, AnAbsorbingMediumDimsEveryPixelByItsTransmittance) {
+  // A unit sphere of absorbing medium around the eye: every camera ray crosses exactly 1 unit of it,
+  // and no light's path does, so each pixel is the plain one times exp(-sigma_a) per channel.
+  const scene::SceneDescription plain = small_image(scene_file("direct-light.toml"));
+  scene::SceneDescription fogged = plain;
+  const scene::Rgb sigma_a(0.5, 1.0, 2.0);
+  add_medium(fogged, scene::Rgb(0.0), sigma_a, {scene::Sphere{plain.camera->eye, 1.0}});
+  const Plan plan = make_plan(fogged);
+  EXPECT_FALSE(plan.pass(PassId::media).on);  // no photons: the view applies the transmittance
+  // Pixels reach node 0 as 8-bit sRGB: within one code of the plain pixel's attenuated value
+  // (the encoding of a and b: one code each).
+  const apps::Image a = render(plain, 2).image, b = render(fogged, 2).image;
+  int dimmed = 0;
+  for (std::size_t i = 0; i < a.pixels().size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      if (raytrace::encode_srgb8(a.pixels()[i][c]) == 255) continue;  // saturated: the value is not known
+      const int expected = raytrace::encode_srgb8(float(a.pixels()[i][c] * std::exp(-sigma_a[c])));
+      ASSERT_NEAR(raytrace::encode_srgb8(b.pixels()[i][c]), expected, 1) << "pixel " << i << " channel " << c;
+      dimmed += b.pixels()[i][c] < a.pixels()[i][c];
+    }
+  EXPECT_GT(dimmed, int(a.pixels().size()));  // most channels of most pixels
+}
+
+TEST(MediaPass, TheViewsTransmittanceIsExpOfTheChordTimesSigma) {
+  // In floats, on the ray itself: a sphere of radius 2 at the origin, sigma_t = (0.5, 1, 2).
+  const scene::Rgb sigma_a(0.5, 1.0, 2.0);
+  const MediumRegion region{"m", scene::Sphere{{0, 0, 0}, 2.0}, scene::Medium{scene::Rgb(0.0), sigma_a}};
+  const ViewMedium medium({region}, {}, ViewMediumSettings{});
+  apps::Rng rng;
+  raytrace::TraceCounters counters;
+  auto expect_through = [&](glm::vec3 origin, glm::vec3 direction, float t_end, double chord) {
+    const geometry::Ray ray(origin, direction);
+    const glm::vec3 along = medium.along(ray, t_end, glm::vec3(1.0f), rng, counters);
+    const glm::vec3 through = medium.transmittance(ray, t_end);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(along[c], std::exp(-sigma_a[c] * chord), 1e-6) << c;
+      EXPECT_NEAR(through[c], std::exp(-sigma_a[c] * chord), 1e-6) << c;
+    }
+  };
+  expect_through({0, 0, 0}, {0, 0, 1}, geometry::kInfinity, 2.0);        // from the centre out
+  expect_through({0, 0, 0}, {0, 0, 3}, 0.25f, 0.75);                      // unnormalized: t in its units
+  expect_through({0, 1, -5}, {0, 0, 1}, geometry::kInfinity, 2 * std::sqrt(3.0));  // a chord at distance 1
+  expect_through({0, 3, -5}, {0, 0, 1}, geometry::kInfinity, 0.0);        // passes by
+  expect_through({0, 0, -5}, {0, 0, 1}, 4.0f, 1.0);                       // ends inside, at z = -1
+  EXPECT_EQ(counters.media_samples, 0);  // no photons, no in-scattering: transmittance only
+}
+
+TEST(MediaPass, InteractionsAroundAPointLightFollowTheTransmittance) {
+  // A point light at the centre of a sphere of purely absorbing medium, radius R: a photon interacts
+  // (and is stored, then absorbed) with probability 1 - exp(-sigma R), at a distance r whose mean is
+  // that of the exponential law truncated at R.
+  raytrace::Scene far;  // one far-away triangle: photons leave the scene
+  far.add_material(raytrace::Material{});
+  far.add_triangle({{100, 100, 100}, {101, 100, 100}, {100, 101, 100}}, 0);
+  const geometry::Bvh bvh = geometry::build_bvh_by_clustering(far);
+  scene::SceneDescription d;
+  d.lights.push_back(scene::PointLight{{0, 0, 0}, scene::Rgb(1.0)});
+  const double sigma = 0.7, radius = 2.0;
+  const MediumRegion region{"m", scene::Sphere{{0, 0, 0}, radius}, scene::Medium{scene::Rgb(0.0), scene::Rgb(sigma)}};
+  const std::size_t n = 20000;
+  const VolumePhotons v = trace_volume_photons(far, bvh, photon_lights(d), {region}, 0, n, n, 7);
+  const double p = 1 - std::exp(-sigma * radius);
+  const double sd = std::sqrt(n * p * (1 - p));
+  EXPECT_NEAR(double(v.per_region[0].size()), n * p, 4 * sd);
+  double mean_r = 0;
+  for (const media::Photon& ph : v.per_region[0]) mean_r += glm::length(glm::dvec3(ph.position));
+  mean_r /= double(v.per_region[0].size());
+  const double expected = 1 / sigma - radius * std::exp(-sigma * radius) / p;  // E[r | r < R]
+  const double sd_r = 0.6 / std::sqrt(double(v.per_region[0].size()));        // r's spread is below 0.6
+  EXPECT_NEAR(mean_r, expected, 4 * sd_r);
+  // Power: every photon carries the light's luminance flux 4 pi I over n.
+  EXPECT_FLOAT_EQ(v.per_region[0].front().power, float(4 * media::kPi / double(n)));
+}
+
+TEST(MediaPass, FogImageIsTheSameOnAnyNodeCount) {
+  const scene::SceneDescription d = small_image(scene_file("cornell-fog.toml"));
+  ASSERT_TRUE(make_plan(d).pass(PassId::media).on);
+  const Rendered one = render(d, 1), three = render(d, 3);
+  expect_same_pixels(one.image, three.image);
+  EXPECT_GT(one.out->view->medium->photons(), 1000u);
+  // The fog is in the image: it differs from CORNELL's (same walls, same radiosity settings).
+  const apps::Image clear = render(small_image(scene_file("cornell.toml")), 1).image;
+  double change = 0;
+  for (std::size_t i = 0; i < clear.pixels().size(); ++i) change += std::abs(one.image.pixels()[i].g - clear.pixels()[i].g);
+  EXPECT_GT(change / double(clear.pixels().size()), 0.01);
+}
+
+TEST(MediaPass, MediaTheViewCannotShowAreRefusedNamingTheFile) {
+  const scene::SceneDescription exp1 = scene_file("media-exp1.toml");
+  try {
+    prepare_render(exp1, make_plan(exp1), "media-exp1.toml");
+    FAIL() << "a refracting medium boundary was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("media-exp1.toml: shape"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("gcsim run media"), std::string::npos) << e.what();
+  }
+  scene::SceneDescription overlapping = small_image(scene_file("cornell.toml"));
+  add_medium(overlapping, scene::Rgb(0.001), scene::Rgb(0.0), box_shape({1, 1, 1}, {300, 300, 300}));
+  add_medium(overlapping, scene::Rgb(0.001), scene::Rgb(0.0), {scene::Sphere{{250, 250, 250}, 100}});
+  EXPECT_THROW(prepare_render(overlapping, make_plan(overlapping), "x.toml"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace gcsim::render
