@@ -49,7 +49,63 @@ bool MediumRegion::clip(const glm::dvec3& o, const glm::dvec3& d, double t_min, 
   return t0 < t1;
 }
 
+bool MediumRegion::contains(const MediumRegion& inner) const {
+  glm::dvec3 lo, hi;
+  if (const auto* box = std::get_if<scene::Box>(&inner.shape)) {
+    lo = box->lo, hi = box->hi;
+    if (const auto* s = std::get_if<scene::Sphere>(&shape)) {  // every corner inside the sphere
+      for (int k = 0; k < 8; ++k)
+        if (!contains(glm::dvec3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z))) return false;
+      return true;
+    }
+  } else {
+    const auto& s = std::get<scene::Sphere>(inner.shape);
+    if (const auto* outer = std::get_if<scene::Sphere>(&shape))
+      return glm::length(s.center - outer->center) + s.radius <= outer->radius;
+    lo = s.center - s.radius, hi = s.center + s.radius;
+  }
+  return contains(lo) && contains(hi);  // inside a box: its two extreme corners are
+}
+
+double MediumRegion::volume() const {
+  if (const auto* box = std::get_if<scene::Box>(&shape)) {
+    const glm::dvec3 e = box->hi - box->lo;
+    return e.x * e.y * e.z;
+  }
+  const double r = std::get<scene::Sphere>(shape).radius;
+  return 4.0 / 3.0 * 3.14159265358979323846 * r * r * r;
+}
+
+std::vector<MediumInterval> medium_intervals(const std::vector<MediumRegion>& regions, const glm::dvec3& o,
+                                             const glm::dvec3& d, double t_max) {
+  std::vector<MediumInterval> whole;
+  std::vector<double> ends;
+  for (std::size_t i = 0; i < regions.size(); ++i) {
+    double t0, t1;
+    if (!regions[i].clip(o, d, 0.0, t_max, t0, t1)) continue;
+    whole.push_back({i, t0, t1});
+    ends.push_back(t0), ends.push_back(t1);
+  }
+  if (whole.size() <= 1) return whole;
+  // Nested media: cut at every bound and give each piece to the smallest medium holding its middle.
+  std::sort(ends.begin(), ends.end());
+  std::vector<MediumInterval> out;
+  for (std::size_t k = 0; k + 1 < ends.size(); ++k) {
+    const double a = ends[k], b = ends[k + 1], middle = 0.5 * (a + b);
+    if (!(b > a)) continue;
+    const MediumInterval* best = nullptr;
+    for (const MediumInterval& w : whole)
+      if (w.t0 <= middle && middle <= w.t1 && (!best || regions[w.region].volume() < regions[best->region].volume())) best = &w;
+    if (!best) continue;
+    if (!out.empty() && out.back().region == best->region && out.back().t1 == a) out.back().t1 = b;
+    else out.push_back({best->region, a, b});
+  }
+  return out;
+}
+
 namespace {
+
+double largest(const scene::Rgb& c) { return std::max({c.r, c.g, c.b}); }
 
 bool boxes_overlap(const MediumRegion& a, const MediumRegion& b) {
   auto bounds = [](const MediumRegion& r, glm::dvec3& lo, glm::dvec3& hi) {
@@ -63,6 +119,22 @@ bool boxes_overlap(const MediumRegion& a, const MediumRegion& b) {
   glm::dvec3 alo, ahi, blo, bhi;
   bounds(a, alo, ahi), bounds(b, blo, bhi);
   return glm::all(glm::lessThan(alo, bhi)) && glm::all(glm::lessThan(blo, ahi));
+}
+
+bool refracting_boundary(const scene::Material& m) {
+  return m.medium && m.medium->boundary_ior != 1.0 && largest(m.diffuse) == 0.0 && largest(m.emission) == 0.0 &&
+         m.mirror == 0.0 && m.transmittance == 0.0 && m.specular == 0.0;
+}
+
+// Fresnel glass of the medium's index, all of it reflected or refracted (the paper's object).
+scene::Material dielectric_of(const scene::Material& m) {
+  scene::Material glass;
+  glass.name = m.name + " (boundary)";
+  glass.diffuse = scene::Rgb(0.0);
+  glass.transmittance = 1.0;
+  glass.ior = m.medium->boundary_ior;
+  glass.fresnel = true;
+  return glass;
 }
 
 }  // namespace
@@ -85,21 +157,26 @@ SplitScene split_media(const scene::SceneDescription& d, const std::string& file
       continue;
     }
     const std::string what = fmt::format("{}: shape {} (material '{}') bounds a participating medium", file, i + 1, m.name);
-    if (!invisible_boundary(m))
-      throw std::invalid_argument(what + " and reflects, emits or refracts light (index " + fmt::format("{}", m.medium->boundary_ior) +
-                                  "): `gcsim render` shows media bounded by invisible shapes (index 1, no reflectance) only; "
-                                  "`gcsim run media` renders refracting objects filled with a medium");
+    if (!invisible_boundary(m)) {
+      if (!refracting_boundary(m))
+        throw std::invalid_argument(what + " and also reflects or emits light: `gcsim render` takes a medium's bound that "
+                                           "is invisible (index 1) or a plain dielectric (index != 1, nothing else)");
+      scene::Shape glass = shape;  // the bound stays, as Fresnel glass of the medium's index
+      glass.material = out.surfaces.add_material(dielectric_of(m));
+      out.surfaces.shapes.push_back(glass);
+    }
     MediumRegion r{m.name, {}, *m.medium};
     if (const auto* box = std::get_if<scene::Box>(&shape.geometry)) r.shape = *box;
     else if (const auto* sphere = std::get_if<scene::Sphere>(&shape.geometry)) r.shape = *sphere;
     else throw std::invalid_argument(what + " with a polygon or mesh: `gcsim render` takes a box or a sphere as a medium's bound");
     out.media.push_back(r);
   }
-  // The view's segments and the photon pass take a point to be in one medium at most.
+  // A point is in one medium, or in nested ones (the smallest holds it); partial overlaps are refused.
   for (std::size_t a = 0; a < out.media.size(); ++a)
     for (std::size_t b = a + 1; b < out.media.size(); ++b)
-      if (boxes_overlap(out.media[a], out.media[b]))
-        throw std::invalid_argument(fmt::format("{}: the media of '{}' and '{}' may overlap: `gcsim render` takes disjoint media only",
+      if (boxes_overlap(out.media[a], out.media[b]) && !out.media[a].contains(out.media[b]) && !out.media[b].contains(out.media[a]))
+        throw std::invalid_argument(fmt::format("{}: the media of '{}' and '{}' overlap without one holding the other: "
+                                                "`gcsim render` takes disjoint or nested media only",
                                                 file, out.media[a].material, out.media[b].material));
   return out;
 }

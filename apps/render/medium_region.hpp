@@ -1,9 +1,11 @@
 #pragma once
 // The participating media of a scene as the unified renderer holds them: each medium is the inside
-// of a box or a sphere whose material only bounds it (index 1, nothing reflected or emitted:
-// `invisible_boundary`), so the bounding shape is no surface and is taken out of what radiosity and
-// the view see. What the renderer cannot show yet (a refracting boundary, a polygon or mesh boundary,
-// overlapping media) is refused with the reason, naming the scene file.
+// of a box or a sphere. A bound whose material only bounds it (index 1, nothing reflected or
+// emitted: `invisible_boundary`) is no surface and is taken out of what radiosity and the view see;
+// a refracting bound (index != 1, nothing else) stays as a dielectric (Fresnel glass of that index),
+// as the media paper's objects. Media may nest (the paper's object in its fog): a point belongs to
+// the smallest medium that holds it. What the renderer cannot show yet (a bound that also reflects
+// or emits, a polygon or mesh bound, partly overlapping media) is refused, naming the scene file.
 #include <optional>
 #include <string>
 #include <variant>
@@ -24,7 +26,18 @@ struct MediumRegion {
   bool clip(const glm::dvec3& origin, const glm::dvec3& direction, double t_min, double t_max, double& t0,
             double& t1) const;
   bool contains(const glm::dvec3& p) const;
+  bool contains(const MediumRegion& inner) const;  // inner's whole bound lies inside this one's
+  double volume() const;
 };
+
+// The media along the ray origin + t direction, t in [0, t_max): consecutive intervals, each in the
+// one medium that holds it (the smallest where they nest), in order along the ray.
+struct MediumInterval {
+  std::size_t region;
+  double t0, t1;
+};
+std::vector<MediumInterval> medium_intervals(const std::vector<MediumRegion>& regions, const glm::dvec3& origin,
+                                             const glm::dvec3& direction, double t_max);
 
 struct SplitScene {
   scene::SceneDescription surfaces;  // the description without the media's bounding shapes

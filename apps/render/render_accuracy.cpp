@@ -10,11 +10,12 @@
 
 namespace gcsim::render {
 
-RenderControls reference_controls() { return {512, 0.9999, 10}; }
+RenderControls reference_controls() { return {512, 0.9999, 10, 200000, 128}; }
 
 RenderRun render_with(const scene::SceneDescription& d, const Plan& plan, const RenderControls& c, double exposure,
                       const parix::SimulationOptions& machine) {
-  const RenderSetup setup = prepare_render(d, plan, d.name);
+  RenderSetup setup = prepare_render(d, plan, d.name, false, c.photons);
+  if (setup.media) setup.media->view.samples_per_free_path = c.march;
   radiosity::ParallelOptions options;
   options.solver.hemicube.resolution = c.hemicube;
   options.solver.energy = c.energy;
@@ -54,6 +55,10 @@ std::vector<ControlSweep> control_sweeps(const Plan& plan, bool quick) {
   }
   if (plan.pass(PassId::specular).on)
     sweeps.push_back({PassId::specular, "depth", quick ? std::vector<double>{1, 3} : std::vector<double>{1, 2, 3, 5}});
+  if (plan.pass(PassId::media).on) {
+    sweeps.push_back({PassId::media, "photons", quick ? std::vector<double>{10000, 50000} : std::vector<double>{10000, 20000, 50000}});
+    sweeps.push_back({PassId::media, "march", quick ? std::vector<double>{8, 32} : std::vector<double>{8, 16, 32}});
+  }
   return sweeps;
 }
 
@@ -61,6 +66,8 @@ RenderControls with_control(RenderControls c, const std::string& control, double
   if (control == "hemicube") c.hemicube = int(value);
   else if (control == "energy") c.energy = value;
   else if (control == "depth") c.max_depth = int(value);
+  else if (control == "photons") c.photons = std::size_t(value);
+  else if (control == "march") c.march = value;
   else throw std::invalid_argument("unknown render control '" + control + "'");
   return c;
 }

@@ -8,6 +8,7 @@
 #include "apps/common/image.hpp"
 #include "apps/common/scene/scene_description.hpp"
 #include "apps/render/plan.hpp"
+#include "apps/render/render_setup.hpp"
 #include "parix/simulated_runtime.hpp"
 
 namespace gcsim::render {
@@ -17,8 +18,10 @@ struct RenderControls {
   int hemicube = 256;     // radiosity: hemicube resolution
   double energy = 0.999;  // radiosity: fraction of the energy shot
   int max_depth = 5;      // specular: reflection and refraction levels
+  std::size_t photons = kDefaultPhotons;  // media: photons emitted
+  double march = 32;      // media: distance samples per free path (M = march (1 - T) on a segment)
 };
-RenderControls reference_controls();  // hemicube 512, energy 0.9999, depth 10
+RenderControls reference_controls();  // hemicube 512, energy 0.9999, depth 10, 200000 photons, march 128
 
 struct RenderRun {
   apps::Image image;  // as node 0 assembled it (8-bit sRGB decoded to linear)

@@ -21,7 +21,7 @@ struct ViewMedium::Region {
 
 ViewMedium::ViewMedium(std::vector<MediumRegion> regions, std::vector<std::vector<media::Photon>> photons,
                        ViewMediumSettings s)
-    : settings_(s) {
+    : bounds_(regions), settings_(s) {
   for (std::size_t i = 0; i < regions.size(); ++i) {
     Region r;
     r.shape = regions[i];
@@ -54,23 +54,6 @@ media::GridBuildCounts ViewMedium::grid_build() const {
 
 namespace {
 
-struct Interval {
-  std::size_t region;
-  double t0, t1;  // along the unit direction
-};
-
-// The regions' parts of [0, t_end) in order along the ray.
-template <class Regions>
-std::vector<Interval> intervals(const Regions& regions, const glm::dvec3& o, const glm::dvec3& u, double t_end) {
-  std::vector<Interval> out;
-  for (std::size_t i = 0; i < regions.size(); ++i) {
-    double t0, t1;
-    if (regions[i].shape.clip(o, u, 0.0, t_end, t0, t1)) out.push_back({i, t0, t1});
-  }
-  std::sort(out.begin(), out.end(), [](const Interval& a, const Interval& b) { return a.t0 < b.t0; });
-  return out;
-}
-
 glm::dvec3 channel_transmittance(const glm::dvec3& sigma_t, double length) {
   return {std::exp(-sigma_t.r * length), std::exp(-sigma_t.g * length), std::exp(-sigma_t.b * length)};
 }
@@ -82,10 +65,10 @@ glm::vec3 ViewMedium::along(const geometry::Ray& ray, float t_end, glm::vec3 beh
   const glm::dvec3 d(ray.direction);
   const double scale = glm::length(d);
   const glm::dvec3 o(ray.origin), u = d / scale;
-  const std::vector<Interval> parts = intervals(regions_, o, u, double(t_end) * scale);
+  const std::vector<MediumInterval> parts = medium_intervals(bounds_, o, u, double(t_end) * scale);
   if (parts.empty()) return behind;
   glm::dvec3 radiance(0.0), through(1.0);
-  for (const Interval& part : parts) {
+  for (const MediumInterval& part : parts) {
     const Region& r = regions_[part.region];
     const double length = part.t1 - part.t0;
     if (r.map) {
@@ -112,7 +95,7 @@ glm::vec3 ViewMedium::transmittance(const geometry::Ray& ray, float t_end) const
   const glm::dvec3 d(ray.direction);
   const double scale = glm::length(d);
   glm::dvec3 through(1.0);
-  for (const Interval& part : intervals(regions_, glm::dvec3(ray.origin), d / scale, double(t_end) * scale))
+  for (const MediumInterval& part : medium_intervals(bounds_, glm::dvec3(ray.origin), d / scale, double(t_end) * scale))
     through *= channel_transmittance(regions_[part.region].sigma_t_rgb, part.t1 - part.t0);
   return glm::vec3(through);
 }

@@ -45,6 +45,7 @@ class ViewMedium : public raytrace::RayMedia {
 
  private:
   struct Region;
+  std::vector<MediumRegion> bounds_;  // regions_[i]'s bound
   std::vector<Region> regions_;
   ViewMediumSettings settings_;
 };

@@ -112,8 +112,8 @@ PhotonRay emit(const PhotonLights& l, apps::Rng& rng) {
   return {e.a, e.axis};
 }
 
-// A point's distance to the nearest medium interaction along the ray up to t_max: the region it is
-// in and where, or nullopt when the photon reaches t_max.
+// The photon's next medium interaction along the ray before t_max: the region it is in and where,
+// or nullopt when the photon reaches t_max.
 struct Interaction {
   std::size_t region;
   double t;
@@ -121,19 +121,14 @@ struct Interaction {
 std::optional<Interaction> free_flight(const std::vector<MediumRegion>& media,
                                        const std::vector<media::HomogeneousMedium>& lum, const PhotonRay& r,
                                        double t_max, apps::Rng& rng) {
-  std::optional<Interaction> nearest;
-  // Regions are disjoint: each one's interval is sampled on its own, and the first interaction wins
-  // (an interval beyond an earlier interaction is never reached; its draw is made anyway so that the
-  // random stream does not depend on the order of the regions' intervals).
-  for (std::size_t i = 0; i < media.size(); ++i) {
-    double t0, t1;
-    if (!media[i].clip(r.origin, r.direction, 0.0, t_max, t0, t1)) continue;
-    const double xi = rng.uniform_double();
-    if (lum[i].sigma_t <= 0.0) continue;
-    const double t = t0 - std::log1p(-xi) / lum[i].sigma_t;
-    if (t < t1 && (!nearest || t < nearest->t)) nearest = Interaction{i, t};
+  // Each interval is in one medium; the free flight is memoryless, so each is sampled afresh in turn.
+  for (const MediumInterval& part : medium_intervals(media, r.origin, r.direction, t_max)) {
+    const double sigma_t = lum[part.region].sigma_t;
+    if (sigma_t <= 0.0) continue;
+    const double t = part.t0 - std::log1p(-rng.uniform_double()) / sigma_t;
+    if (t < part.t1) return Interaction{part.region, t};
   }
-  return nearest;
+  return std::nullopt;
 }
 
 // Russian roulette at a surface: the continuing direction, or nullopt (absorbed).

@@ -44,16 +44,16 @@ void write_csv(const std::string& path, const std::vector<Row>& rows) {
 void run(const AccuracyFlags& f) {
   const scene::SceneDescription d = scene::load_scene_file(f.scene);
   const Plan plan = make_plan(d);
-  if (plan.pass(PassId::media).on)
-    throw std::invalid_argument(f.scene + ": the view pass cannot render media yet (gcsim accuracy media measures them)");
   const parix::SimulationOptions machine = pipeline::simulation_options(f.machine, 8);
   const std::vector<ControlSweep> sweeps = control_sweeps(plan, f.quick);
   if (sweeps.empty())
-    fmt::print("{}: no pass with a control runs (no radiosity, no specular): only the reference is rendered\n", f.scene);
+    fmt::print("{}: no pass with a control runs (no radiosity, specular or media): only the reference is rendered\n", f.scene);
   RenderControls reference = reference_controls();
-  if (f.quick) reference.hemicube = 256;
-  fmt::print("reference: hemicube {}, energy {}, depth {} on {} nodes ...\n", reference.hemicube, reference.energy,
-             reference.max_depth, machine.config.nodes);
+  if (f.quick) reference.hemicube = 256, reference.photons = 100000;
+  fmt::print("reference: hemicube {}, energy {}, depth {}{} on {} nodes ...\n", reference.hemicube, reference.energy,
+             reference.max_depth,
+             plan.pass(PassId::media).on ? fmt::format(", {} photons, march {}", reference.photons, reference.march) : "",
+             machine.config.nodes);
   const RenderRun ref = render_with(d, plan, reference, 0, machine);
   fmt::print("reference: {:.3f} s simulated, {:.2f} s wall; every render below shows at its exposure {:.4g}\n\n",
              ref.simulated_s, ref.wall_s, ref.exposure);
@@ -67,7 +67,9 @@ void run(const AccuracyFlags& f) {
       print_row(rows.back());
     }
   fmt::print("\nrel. RMSE: root mean square over pixels and channels of (render - reference), over the\n"
-             "reference's mean; defaults: hemicube 256, energy 0.999, depth 5.\n");
+             "reference's mean; defaults: hemicube 256, energy 0.999, depth 5, {} photons, march 32\n"
+             "(media: distance samples per free path); photons and march samples also vary the noise.\n",
+             kDefaultPhotons);
   if (!f.csv.empty()) {
     write_csv(f.csv, rows);
     fmt::print("csv       {} (gcsim plot --accuracy {} draws error against simulated time)\n", f.csv, f.csv);
@@ -81,10 +83,11 @@ void add_render_accuracy_command(pipeline::CommandGroups& g) {
   CLI::App* cmd = g.accuracy->add_subcommand(
       "render",
       "What accuracy costs across a whole render: each pass's main control (radiosity: hemicube resolution,\n"
-      "energy fraction; specular: reflection depth) varied from the default with the others held, each render\n"
-      "run on the simulated machine, its image's error against a reference (hemicube 512, energy 0.9999,\n"
-      "depth 10) next to its simulated and wall time.");
-  cmd->add_option("scene", f->scene, "a TOML scene file (scenes/*.toml) without media")->required()->check(CLI::ExistingFile);
+      "energy fraction; specular: reflection depth; media: photons, march samples per free path) varied from\n"
+      "the default with the others held, each render run on the simulated machine, its image's error against\n"
+      "a reference (hemicube 512, energy 0.9999, depth 10, 200000 photons, march 128) next to its simulated\n"
+      "and wall time.");
+  cmd->add_option("scene", f->scene, "a TOML scene file (scenes/*.toml)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--nodes", f->machine.nodes, "nodes of the machine (default 8)")->check(CLI::PositiveNumber);
   cmd->add_option("--config", f->machine.config, "machine file (default: the built-in GC-PowerPlus)");
   cmd->add_option("--csv", f->csv, "write pass,control,value,relative_rmse,simulated_s,wall_s");

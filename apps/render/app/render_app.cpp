@@ -211,8 +211,10 @@ pipeline::AppSpec spec() {
   s.name = "render";
   s.summary = "Render a TOML scene file with the passes its plan needs (radiosity, the media's photons, then the ray-traced view).";
   s.examples = {"gcsim plan scenes/cornell.toml --nodes 8  which passes a scene needs, and why",
-                "gcsim render scenes/cornell-mirror-glass.toml --nodes 8 --image out.png  radiosity, then the ray-traced view"};
+                "gcsim render scenes/cornell-mirror-glass.toml --nodes 8 --image out.png  radiosity, then the ray-traced view",
+                "gcsim render scenes/cornell-fog.toml --nodes 8 --image fog.png  radiosity, photons, view through the fog"};
   s.run_footer = "Example:\n  gcsim plan scenes/cornell.toml --nodes 8\n  gcsim render scenes/cornell-mirror-glass.toml --nodes 8 --image out.png --json out.json\n"
+                 "  gcsim render scenes/cornell-fog.toml --nodes 8 --photons 100000 --image fog.png\n"
                  "  (gcsim run render --scene FILE ... is the same command)";
   s.options = [](CLI::App& cmd, pipeline::Verb verb) -> pipeline::ExperimentFactory {
     auto scene = std::make_shared<std::string>();
