@@ -15,8 +15,10 @@ struct Material {
   float transmittance = 0.0f;      // > 0: a dielectric that refracts with index ior
   float ior = 1.5f;
   // The surface's outgoing radiance is given per triangle vertex (Scene::triangle_radiance), as the
-  // unified renderer's radiosity pass supplies it: no ambient term and no point-light shading.
+  // unified renderer's radiosity pass supplies it: no ambient term; point and spot lights add
+  // their direct light with `diffuse` on the front and `back_diffuse` on the back.
   bool given_radiance = false;
+  glm::vec3 back_diffuse{0.0f};
 
   bool spawns_secondary() const { return reflectance > 0.0f || transmittance > 0.0f; }
   bool operator==(const Material&) const = default;  // (memcmp would read the padding after the bool)

@@ -112,8 +112,13 @@ Hit TileRenderer::trace_secondary(const Ray& ray, const Pencil* pencil, TraceCou
 glm::vec3 TileRenderer::local_light(const Ray& ray, const Hit& hit, const SurfacePoint& sp, bool shadows,
                                     TraceCounters& counters) {
   const Material& m = scene_.material_of(hit.prim);
-  if (m.given_radiance) return scene_.given_radiance(ray, hit.prim, hit.b1, hit.b2);
   glm::vec3 albedo = m.diffuse;
+  glm::vec3 color(0.0f);
+  if (m.given_radiance) {  // radiosity's light, then the point and spot lights' direct light
+    color = scene_.given_radiance(ray, hit.prim, hit.b1, hit.b2);
+    albedo = sp.entering ? m.diffuse : m.back_diffuse;
+    if (scene_.lights.empty() || albedo == glm::vec3(0.0f)) return color;
+  }
   if (m.checker_other.x >= 0.0f) {
     // Squares in the two axes closest to the surface's plane (x and y on a floor facing z).
     const glm::vec3 an = glm::abs(sp.geometric_normal);
@@ -122,7 +127,7 @@ glm::vec3 TileRenderer::local_light(const Ray& ray, const Hit& hit, const Surfac
     const int parity = int(std::floor(u / m.checker_size)) + int(std::floor(v / m.checker_size));
     if (parity & 1) albedo = m.checker_other;
   }
-  glm::vec3 color = scene_.ambient * albedo;
+  if (!m.given_radiance) color = scene_.ambient * albedo;
   const glm::vec3 n = sp.shading_normal;
   const glm::vec3 to_eye = -glm::normalize(ray.direction);
   for (const PointLight& light : scene_.lights) {

@@ -47,6 +47,7 @@ struct Analysis {
   std::vector<glm::dvec3> light_positions;  // point and spot lights that emit
   bool emits = false;
   std::vector<bool> lit;                      // per side: emitted light reaches it directly
+  std::vector<bool> lit_by_area;              // per side: an emissive surface's light reaches it directly
   std::set<int> used_materials;
 
   const Material& material(const SurfaceSide& s) const { return d.materials[s.material]; }
@@ -55,7 +56,7 @@ struct Analysis {
 };
 
 Analysis analyse(const SceneDescription& d) {
-  Analysis a{d, visible_sides(d), {}, false, {}, {}};
+  Analysis a{d, visible_sides(d), {}, false, {}, {}, {}};
   for (const auto& light : d.lights)
     std::visit([&](const auto& l) { if (largest(l.intensity) > 0.0) a.light_positions.push_back(l.position); }, light);
   for (const auto& s : d.shapes) {
@@ -64,24 +65,27 @@ Analysis analyse(const SceneDescription& d) {
   }
   a.emits = !a.light_positions.empty() || std::any_of(a.sides.begin(), a.sides.end(), [&](auto& s) { return a.emitter(s); });
   for (const SurfaceSide& b : a.sides) {
-    bool reached = std::any_of(a.light_positions.begin(), a.light_positions.end(),
-                               [&](const glm::dvec3& p) { return faces_point(d, b, p); });
+    const bool by_point = std::any_of(a.light_positions.begin(), a.light_positions.end(),
+                                      [&](const glm::dvec3& p) { return faces_point(d, b, p); });
+    bool by_area = false;
     for (const SurfaceSide& e : a.sides)
-      if (!reached && a.emitter(e) && !(e.shape == b.shape && e.back == b.back) && exchange(d, e, b)) reached = true;
-    a.lit.push_back(reached);
+      if (!by_area && a.emitter(e) && !(e.shape == b.shape && e.back == b.back) && exchange(d, e, b)) by_area = true;
+    a.lit.push_back(by_point || by_area);
+    a.lit_by_area.push_back(by_area);
   }
   return a;
 }
 
 PassPlan plan_radiosity(const Analysis& a) {
   PassPlan p{PassId::radiosity};
-  int diffuse = 0, lit_diffuse = 0;
+  int diffuse = 0, lit_diffuse = 0, area_lit = 0;
   bool interreflection = false;
   for (std::size_t i = 0; i < a.sides.size(); ++i) {
     if (!a.diffuse(a.sides[i])) continue;
     ++diffuse;
     if (!a.lit[i]) continue;
     ++lit_diffuse;
+    area_lit += a.lit_by_area[i];
     for (const SurfaceSide& c : a.sides)
       if (a.diffuse(c) && exchange(a.d, a.sides[i], c)) interreflection = true;
   }
@@ -91,10 +95,22 @@ PassPlan plan_radiosity(const Analysis& a) {
     p.reason = "nothing emits light (no emissive surface, point or spot light): radiosity skipped";
   } else if (lit_diffuse == 0) {
     p.reason = "no emitted light reaches a surface with a reflectance above 0: radiosity skipped";
-  } else if (!interreflection) {
-    p.reason = fmt::format("light reaches {} diffuse surface(s) directly, but no two diffuse surfaces face each "
-                           "other: the view's direct lighting is exact, radiosity skipped",
+  } else if (area_lit == 0 && !interreflection) {
+    p.reason = fmt::format("point or spot light reaches {} diffuse surface(s) directly, but no two diffuse surfaces "
+                           "face each other: the view's direct lighting is exact, radiosity skipped",
                            lit_diffuse);
+  } else if (area_lit == 0) {
+    // The thesis's radiosity shoots from emissive patches: it has nothing to shoot here.
+    p.reason = fmt::format("only point or spot lights reach the {} diffuse surface(s): the view lights them directly "
+                           "and their interreflection is not computed (radiosity shoots from emissive surfaces only), "
+                           "radiosity skipped",
+                           lit_diffuse);
+  } else if (!interreflection) {
+    // The view has no area-light sampling: the radiosity solution is how area light reaches it.
+    p.on = true;
+    p.reason = fmt::format("area light reaches {} diffuse surface side(s), none of which faces another: radiosity "
+                           "gives their direct lighting (the view samples no area light)",
+                           area_lit);
   } else {
     p.on = true;
     p.reason = fmt::format("{} surface side(s) reflect diffusely, {} receive emitted light and pass it on to "
@@ -192,8 +208,9 @@ PassPlan plan_shadows(const Analysis& a, bool radiosity_on) {
                            "shadow rays skipped",
                            area);
   } else {
-    p.on = true;
-    p.reason = fmt::format("{} area light(s) without radiosity and surfaces that may occlude them: shadow rays", area);
+    p.reason = fmt::format("the {} area light(s) light no diffuse surface (so no radiosity), and the view casts shadow "
+                           "rays towards point and spot lights only: shadow rays skipped",
+                           area);
   }
   return p;
 }

@@ -5,6 +5,29 @@
 #include "apps/render/view_scene.hpp"
 
 namespace gcsim::render {
+namespace {
+
+// What the view will show on each element with the point and spot lights' direct light added
+// (unshadowed, at the element's centre), so the automatic exposure accounts for them too.
+std::vector<radiosity::Rgb> with_point_lights(const scene::SceneDescription& d, const radiosity::Scene& mesh,
+                                              const std::vector<radiosity::Rgb>& b) {
+  const raytrace::Scene lowered = raytrace::lower_scene(d);
+  if (lowered.lights.empty()) return b;
+  std::vector<radiosity::Rgb> shown = b;
+  for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
+    const radiosity::SceneElement& el = mesh.elements[e];
+    const radiosity::Rgb rho = mesh.surface_of_element(int(e)).reflectance;
+    for (const raytrace::PointLight& light : lowered.lights) {
+      const glm::dvec3 to = glm::dvec3(light.position) - glm::dvec3(el.center);
+      const double d2 = glm::dot(to, to), cos = glm::dot(glm::dvec3(el.normal), to) / std::sqrt(d2);
+      if (cos <= 0 || !light.lights_direction(glm::vec3(-to / std::sqrt(d2)))) continue;
+      shown[e] += rho * glm::dvec3(light.intensity) * (cos / d2);
+    }
+  }
+  return shown;
+}
+
+}  // namespace
 
 std::unique_ptr<ViewPass> make_view_pass(const scene::SceneDescription& d, const radiosity::Scene* mesh,
                                          const std::vector<radiosity::Rgb>* b, ViewSettings view, int nodes,
@@ -15,7 +38,7 @@ std::unique_ptr<ViewPass> make_view_pass(const scene::SceneDescription& d, const
     ro.width = d.image.width;
     ro.height = d.image.height;
     const radiosity::Camera camera = mesh->camera ? *mesh->camera : radiosity::default_camera(*mesh);
-    v->exposure = view.exposure > 0 ? view.exposure : radiosity::auto_exposure(*mesh, *b, camera, ro);
+    v->exposure = view.exposure > 0 ? view.exposure : radiosity::auto_exposure(*mesh, with_point_lights(d, *mesh, *b), camera, ro);
     v->scene = make_view_scene(d, *mesh, *b, v->exposure);
   } else {
     v->scene = raytrace::lower_scene(d);

@@ -75,15 +75,28 @@ void add_radiosity_elements(const scene::SceneDescription& d, const radiosity::S
       if (el.vertex[std::size_t(k)] == v) return display(corners[std::size_t(e)][std::size_t(k)], exposure);
     return glm::vec3(0.0f);
   };
-  raytrace::Material lit;
-  lit.diffuse = glm::vec3(0.0f);
-  lit.given_radiance = true;
-  const int material = view.add_material(lit);
+  // One material per front and back reflectance: point and spot lights shade the elements with it.
+  std::map<std::pair<std::array<float, 3>, std::array<float, 3>>, int> materials;
+  auto material_of = [&](int e, int back) {
+    auto rho = [&](int x) {
+      if (x < 0) return glm::vec3(0.0f);
+      return glm::vec3(mesh.surface_of_element(x).reflectance);
+    };
+    const glm::vec3 f = rho(e), r = rho(back);
+    const auto key = std::make_pair(std::array<float, 3>{f.r, f.g, f.b}, std::array<float, 3>{r.r, r.g, r.b});
+    if (const auto it = materials.find(key); it != materials.end()) return it->second;
+    raytrace::Material lit;
+    lit.diffuse = f;
+    lit.back_diffuse = r;
+    lit.given_radiance = true;
+    return materials[key] = view.add_material(lit);
+  };
   view.triangle_radiance.resize(view.triangles.size(), {});  // the specular triangles: unused
   for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
     if (!shown(e) || (twin[e] >= 0 && twin[e] < int(e) && shown(std::size_t(twin[e])))) continue;
     const radiosity::SceneElement& el = mesh.elements[e];
     const int back = twin[e] >= 0 && shown(std::size_t(twin[e])) ? twin[e] : -1;
+    const int material = material_of(int(e), back);
     auto vertex = [&](int k) { return el.vertex[std::size_t(k)]; };
     auto position = [&](int k) { return glm::vec3(mesh.vertices[std::size_t(vertex(k))]); };
     for (int k = 1; k + 1 < el.count; ++k) {
@@ -108,6 +121,11 @@ raytrace::Scene make_view_scene(const scene::SceneDescription& description, cons
   view.ambient = lowered.ambient;
   add_specular_primitives(lowered, view);
   add_radiosity_elements(description, mesh, element_radiosity, exposure, view);
+  // Point and spot lights add their direct light to what radiosity shows, at the same exposure.
+  for (raytrace::PointLight light : lowered.lights) {
+    light.intensity *= float(exposure);
+    view.lights.push_back(light);
+  }
   view.validate();
   return view;
 }

@@ -94,11 +94,27 @@ TEST(PlanRules, TwoFacingDiffuseSurfacesAndALampNeedRadiosity) {
   EXPECT_TRUE(plan_of_text(kBox).pass(PassId::radiosity).on);
 }
 
-TEST(PlanRules, FloorAndCeilingTurnedAwayFromEachOtherNeedNoRadiosity) {
+TEST(PlanRules, AreaLightWithoutInterreflectionStillNeedsRadiosity) {
+  // Floor and ceiling turned away from each other: no interreflection, but the lamp's light reaches
+  // the floor, and only the radiosity solution brings area light to the view (it samples none).
   std::string away = kBox;
   away.replace(away.find("[[0, 1, 0], [1, 1, 0], [1, 1, 1], [0, 1, 1]]"), 44, "[[0, 1, 0], [0, 1, 1], [1, 1, 1], [1, 1, 0]]");
   const Plan p = plan_of_text(away);
-  EXPECT_FALSE(p.pass(PassId::radiosity).on) << p.pass(PassId::radiosity).reason;
+  EXPECT_TRUE(p.pass(PassId::radiosity).on) << p.pass(PassId::radiosity).reason;
+  EXPECT_TRUE(has(p.pass(PassId::radiosity).reason, "the view samples no area light")) << p.pass(PassId::radiosity).reason;
+}
+
+TEST(PlanRules, PointLightsAloneSkipRadiosityAndSayWhatIsLost) {
+  // The box lit by a point light instead of the lamp: the thesis's radiosity shoots from emissive
+  // surfaces, so it has nothing to shoot; the view lights the walls directly.
+  std::string point = kBox;
+  point.replace(point.find("emission = 5"), 12, "emission = 0");
+  point += "[[point_light]]\nposition = [0.5, 0.5, 0.5]\nintensity = 1\n";
+  const Plan p = plan_of_text(point);
+  EXPECT_FALSE(p.pass(PassId::radiosity).on);
+  EXPECT_TRUE(has(p.pass(PassId::radiosity).reason, "only point or spot lights reach the 2 diffuse surface(s)"))
+      << p.pass(PassId::radiosity).reason;
+  EXPECT_TRUE(has(p.pass(PassId::radiosity).reason, "interreflection is not computed"));
 }
 
 TEST(PlanRules, BlackSurfacesOrNoLightSkipRadiosity) {

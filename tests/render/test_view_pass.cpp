@@ -212,3 +212,57 @@ TEST(ViewPass, APolygonsBackIsNotASecondCoincidentSurface) {
 
 }  // namespace
 }  // namespace gcsim::render
+
+namespace gcsim::render {
+namespace {
+
+// A point light inside CORNELL: on the radiosity-lit walls it adds its direct light (times the
+// same exposure), exactly rho I cos / d^2 on a triangle in the open, nothing where it is shadowed.
+TEST(ViewPass, PointLightsAddTheirDirectLightToRadiositySurfaces) {
+  raytrace::Scene s;
+  raytrace::Material lit;
+  lit.given_radiance = true;
+  lit.diffuse = glm::vec3(0.5f, 0.25f, 1.0f);
+  s.add_triangle(raytrace::Triangle{{-10, -10, 0}, {10, -10, 0}, {-10, 10, 0}}, s.add_material(lit));  // faces +z
+  const glm::vec3 given(0.1f, 0.2f, 0.3f);
+  s.triangle_radiance.push_back({{given, given, given}, {given, given, given}});
+  s.lights.push_back({{0, 0, 2}, glm::vec3(8.0f)});
+  s.camera = scene::Camera{{0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 10.0};
+  s.validate();
+  const geometry::Bvh bvh = geometry::build_bvh_by_clustering(s);
+  raytrace::RenderSettings settings;
+  settings.width = settings.height = 9;
+  settings.shading = raytrace::Shading::whitted;
+  const raytrace::RenderOutput out = raytrace::render_image(s, bvh, settings);
+  // The centre pixel sees (0, 0, 0) under the light: 0.1 + 0.5 * 8 / 4 in red, and so on.
+  const glm::vec3 centre = out.image.at(4, 4);
+  EXPECT_NEAR(centre.r, 0.1f + 0.5f * 2.0f, 1e-4f);
+  EXPECT_NEAR(centre.g, 0.2f + 0.25f * 2.0f, 1e-4f);
+  EXPECT_NEAR(centre.b, 0.3f + 1.0f * 2.0f, 1e-4f);
+  // Seen from behind (back_diffuse 0): only the given radiance, no light.
+  s.camera = scene::Camera{{0, 0, -5}, {0, 0, 0}, {0, 1, 0}, 10.0};
+  const raytrace::RenderOutput back = raytrace::render_image(s, bvh, settings);
+  EXPECT_EQ(back.image.at(4, 4), given);
+}
+
+TEST(ViewPass, CornellWithAPointLightIsBrighterNowhereDarker) {
+  auto d = small_image(scene_file("cornell.toml"));
+  const radiosity::Scene mesh = radiosity::flatten(scene::to_world(d));
+  const Rendered plain = render_on(d, &mesh, 2);
+  scene::SceneDescription lamp = d;
+  lamp.lights.push_back(scene::PointLight{{278, 300, 150}, scene::Rgb(2e5)});
+  ViewSettings same;
+  same.exposure = plain.out->view->exposure;  // the plain render's, so pixels compare
+  const Rendered lit = render_on(lamp, &mesh, 2, same);
+  int brighter = 0;
+  for (std::size_t i = 0; i < plain.out->view->result.image.pixels().size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const float a = plain.out->view->result.image.pixels()[i][c], b = lit.out->view->result.image.pixels()[i][c];
+      ASSERT_GE(b, a) << "pixel " << i;
+      brighter += b > a;
+    }
+  EXPECT_GT(brighter, int(plain.out->view->result.image.pixels().size()));
+}
+
+}  // namespace
+}  // namespace gcsim::render
