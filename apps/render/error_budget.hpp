@@ -5,6 +5,8 @@
 //    between 0.5 and the default 0.999): the unshot energy bounds the light still missing;
 //  - specular: rays stop at the depth where the largest mirror or glass weight w leaves w^depth
 //    below E (never deeper than the default 5).
+//  - media: left out when the thickest one's optical depth tau along its longest chord gives
+//    1 - e^-tau below half the budget; the rest of the budget goes to the other controls.
 // The hemicube resolution has no such estimate and stays.
 #include <string>
 #include <vector>

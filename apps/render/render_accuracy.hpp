@@ -20,6 +20,7 @@ struct RenderControls {
   int max_depth = 5;      // specular: reflection and refraction levels
   std::size_t photons = kDefaultPhotons;  // media: photons emitted
   double march = 32;      // media: distance samples per free path (M = march (1 - T) on a segment)
+  bool media = true;      // false: the media are left out (an error budget may drop them)
 };
 RenderControls reference_controls();  // hemicube 512, energy 0.9999, depth 10, 200000 photons, march 128
 

@@ -8,7 +8,7 @@
 namespace gcsim::render {
 
 RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, const std::string& file, bool force_media,
-                           std::size_t photons) {
+                           std::size_t photons, bool with_media) {
   RenderSetup s;
   s.split = split_media(d, file);
   try {  // refuses, before any run, what the view pass cannot show
@@ -18,6 +18,7 @@ RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, c
   }
   s.radiosity = plan.pass(PassId::radiosity).on;
   if (s.radiosity) s.mesh = radiosity::flatten(scene::to_world(s.split.surfaces));
+  if (!with_media) return s;
   std::vector<MediumRegion> regions;
   for (const MediumRegion& r : s.split.media)
     if (force_media || !r.changes_nothing()) regions.push_back(r);

@@ -26,8 +26,9 @@ struct RenderSetup {
 inline constexpr std::size_t kDefaultPhotons = 50000;
 
 // file: for messages. force_media: --force-pass media (the photon pass and every medium, even those
-// that change nothing). Throws std::invalid_argument "FILE: ..." for what the view cannot show.
+// that change nothing). with_media false: no medium at all (an error budget dropped them; refracting
+// bounds stay as glass). Throws std::invalid_argument "FILE: ..." for what the view cannot show.
 RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, const std::string& file, bool force_media = false,
-                           std::size_t photons = kDefaultPhotons);
+                           std::size_t photons = kDefaultPhotons, bool with_media = true);
 
 }  // namespace gcsim::render
