@@ -142,6 +142,45 @@ PassPlan plan_specular(const Analysis& a) {
   return p;
 }
 
+// "medium 'a'" or "media 'a', 'b'".
+std::string media_named(const std::set<std::string>& names) {
+  return (names.size() > 1 ? "media " : "medium ") + quoted_list(names);
+}
+
+// The fraction of the image a ball covers (1 with the eye inside it or no camera): its solid angle
+// pi r^2 / d^2 over the view's, 4 tan(fov_x / 2) tan(fov_y / 2).
+double coverage(const SceneDescription& d, const glm::dvec3& centre, double radius) {
+  if (!d.camera) return 1.0;
+  const double dist2 = glm::dot(centre - d.camera->eye, centre - d.camera->eye);
+  if (dist2 <= radius * radius) return 1.0;
+  const double tan_y = std::tan(d.camera->fov_y_degrees * 3.14159265358979323846 / 360.0);
+  const double tan_x = tan_y * double(d.image.width) / double(std::max(1, d.image.height));
+  return std::min(1.0, 3.14159265358979323846 * radius * radius / dist2 / (4 * tan_x * tan_y));
+}
+
+// 1 - e^-tau over the mean chord of the shapes material m fills (4 V / S; a box's or a sphere's),
+// times the fraction of the image each covers.
+double opacity(const SceneDescription& d, int m) {
+  const scene::Medium& md = *d.materials[std::size_t(m)].medium;
+  const scene::Rgb t = md.sigma_s + md.sigma_a;
+  const double sigma_t = 0.2126 * t.r + 0.7152 * t.g + 0.0722 * t.b;
+  double sum = 0;
+  for (const scene::Shape& s : d.shapes) {
+    if (s.material != m) continue;
+    double chord = 0, covered = 1;
+    if (const auto* box = std::get_if<scene::Box>(&s.geometry)) {
+      const glm::dvec3 e = box->hi - box->lo;
+      chord = 4 * e.x * e.y * e.z / (2 * (e.x * e.y + e.y * e.z + e.z * e.x));
+      covered = coverage(d, 0.5 * (box->lo + box->hi), 0.5 * glm::length(e));
+    } else if (const auto* sphere = std::get_if<scene::Sphere>(&s.geometry)) {
+      chord = 4 * sphere->radius / 3;
+      covered = coverage(d, sphere->center, sphere->radius);
+    }
+    sum += -std::expm1(-sigma_t * chord) * covered;
+  }
+  return sum;
+}
+
 PassPlan plan_media(const Analysis& a, SceneFacts& facts) {
   PassPlan p{PassId::media};
   std::set<std::string> scattering, absorbing, empty, anisotropic;
@@ -151,6 +190,7 @@ PassPlan plan_media(const Analysis& a, SceneFacts& facts) {
     const scene::Medium& md = *mat.medium;
     if (largest(md.sigma_s) > 0) {
       scattering.insert(mat.name);
+      facts.media_opacity += opacity(a.d, m);
       const scene::Rgb sigma_t = md.sigma_s + md.sigma_a;
       for (int c = 0; c < 3; ++c)
         if (sigma_t[c] > 0) facts.largest_albedo = std::max(facts.largest_albedo, md.sigma_s[c] / sigma_t[c]);
@@ -175,11 +215,12 @@ PassPlan plan_media(const Analysis& a, SceneFacts& facts) {
                            quoted_list(absorbing));
     p.detail += " (transmittance only)";
   } else if (!a.emits) {
-    p.reason = fmt::format("medium {} scatters but nothing emits light: media pass skipped", quoted_list(scattering));
+    p.reason = fmt::format("{} {} but nothing emits light: media pass skipped", media_named(scattering),
+                           scattering.size() > 1 ? "scatter" : "scatters");
   } else {
     p.on = true;
-    p.reason = fmt::format("medium {} scatters (sigma_s > 0): photon pass, then ray marching along camera rays",
-                           quoted_list(scattering));
+    p.reason = fmt::format("{} {} (sigma_s > 0): photon pass, then ray marching along camera rays",
+                           media_named(scattering), scattering.size() > 1 ? "scatter" : "scatters");
     p.detail += anisotropic.empty() ? " (phase g = 0)" : fmt::format(" (anisotropic phase in {})", quoted_list(anisotropic));
   }
   return p;

@@ -41,6 +41,10 @@ struct SceneFacts {
   int samples_per_pixel = 1;
   MediaSampling media_sampling = MediaSampling::none;
   double largest_albedo = 0.0;        // of the scattering media
+  // Sum over the media of 1 - e^-tau, tau = sigma_t (luminance) times the bound's mean chord (Cauchy:
+  // 4 V / S), times the fraction of the image the bound covers: the fraction of a full march (32
+  // samples per free path) a camera ray takes in each, on average.
+  double media_opacity = 0.0;
 };
 
 struct Plan {

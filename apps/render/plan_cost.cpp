@@ -66,7 +66,7 @@ PassCost media(const Ops& op, const SceneFacts& f, int nodes, const CostModel& m
                             (estimate ? op("media_sh_eval") : 0.0);
   const double camera_rays = double(f.pixels) * f.samples_per_pixel;
   PassCost c;
-  c.seconds_per_node = (m.photons * events * photon_cycles + camera_rays * (op("media_camera_ray") + m.march_samples * per_sample)) / nodes;
+  c.seconds_per_node = (m.photons * events * photon_cycles + camera_rays * (op("media_camera_ray") + m.march_samples * f.media_opacity * per_sample)) / nodes;
   c.bytes_per_node = std::int64_t(m.photons * events) * 32;  // the photon map, replicated
   return c;
 }

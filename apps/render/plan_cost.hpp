@@ -15,9 +15,11 @@ struct CostModel {
   // Shots until 99.9 % of the energy is shot: CORNELL takes 254 loops of 2 shooters for 112 patches.
   double shots_per_patch = 4.5;
   int specular_depth = 4;         // upper bound: every camera ray meets mirrors or glass this deep
-  // Distance samples per camera ray in a medium: the view takes 32 (1 - T) on a segment of
-  // transmittance T; CORNELL-FOG's rays averaged 7.4 (448811 samples on 60747 segments).
-  int march_samples = 8;
+  // Distance samples per free path: the view takes 32 (1 - T) on a segment of transmittance T, so
+  // a camera ray takes about 32 x SceneFacts::media_opacity (per pixel, CORNELL-FOG: 10 predicted,
+  // 6.8 measured; MEDIA-EXP1: 63 predicted, 105 measured: the sphere's reflected and refracted
+  // rays march too).
+  int march_samples = 32;
   int photons = 50000;            // `gcsim render --photons`' default (render_setup.hpp)
   int k_nearest = 50;             // photons per radiance estimate
   int max_photon_events = 64;
