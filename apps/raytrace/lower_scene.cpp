@@ -94,17 +94,7 @@ Scene lower_scene(const scene::SceneDescription& d) {
                                   std::to_string(d.materials.size()) + " materials");
     add_shape(out, d.shapes[i]);
   }
-  for (std::size_t i = 0; i < d.lights.size(); ++i) {
-    if (const auto* p = std::get_if<scene::PointLight>(&d.lights[i])) {
-      out.lights.push_back({glm::vec3(p->position), glm::vec3(p->intensity)});
-      continue;
-    }
-    const auto& spot = std::get<scene::SpotLight>(d.lights[i]);
-    PointLight l{glm::vec3(spot.position), glm::vec3(spot.intensity)};
-    l.spot_direction = glm::vec3(glm::normalize(spot.direction));
-    l.spot_cos = float(std::cos(spot.cone_degrees * std::numbers::pi / 180.0));
-    out.lights.push_back(l);
-  }
+  out.lights = lower_lights(d);
   out.background = glm::vec3(d.image.background);
   out.ambient = glm::vec3(d.image.ambient);
   if (d.camera) {
@@ -114,6 +104,22 @@ Scene lower_scene(const scene::SceneDescription& d) {
   }
   out.validate();
   return out;
+}
+
+std::vector<PointLight> lower_lights(const scene::SceneDescription& d) {
+  std::vector<PointLight> lights;
+  for (const scene::Light& light : d.lights) {
+    if (const auto* p = std::get_if<scene::PointLight>(&light)) {
+      lights.push_back({glm::vec3(p->position), glm::vec3(p->intensity)});
+      continue;
+    }
+    const auto& spot = std::get<scene::SpotLight>(light);
+    PointLight l{glm::vec3(spot.position), glm::vec3(spot.intensity)};
+    l.spot_direction = glm::vec3(glm::normalize(spot.direction));
+    l.spot_cos = float(std::cos(spot.cone_degrees * std::numbers::pi / 180.0));
+    lights.push_back(l);
+  }
+  return lights;
 }
 
 Bounds3 lowered_bounds(const scene::SceneDescription& d) {

@@ -1,7 +1,8 @@
 #pragma once
 // The ray tracer's primitives from the shared scene description: spheres and triangles in float,
 // polygons and boxes split into triangles, materials and point lights carried over. What Whitted
-// ray tracing cannot show (spot lights, participating media) is refused by name, never dropped.
+// ray tracing cannot show (participating media, glass it has no dielectric for) is refused by name,
+// never dropped.
 #include "apps/common/scene/scene_description.hpp"
 #include "apps/raytrace/scene.hpp"
 
@@ -12,6 +13,9 @@ namespace gcsim::raytrace {
 // (Fresnel splits g between the reflected and refracted rays); glass without Fresnel, or glass
 // with a mirror weight besides, has no ray-tracer counterpart and is refused.
 Scene lower_scene(const scene::SceneDescription& description);
+
+// The description's point and spot lights as the ray tracer's lights (what lower_scene gives them).
+std::vector<PointLight> lower_lights(const scene::SceneDescription& description);
 
 // The bounds of the float primitives the shapes lower to, exactly Scene::bounds() of the lowered
 // scene: builders frame their camera and place their lights with it before the scene is complete.

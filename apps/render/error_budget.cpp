@@ -27,8 +27,7 @@ double mean_reflectance(const radiosity::Scene& mesh) {
 
 // How much brighter the brightest emitter is than the mean surface, whose exitance is about the
 // emitted flux over the area times 1 / (1 - rho); 1 without emissive surfaces (point lights).
-double light_contrast(const scene::SceneDescription& d) {
-  const radiosity::Scene mesh = radiosity::flatten(scene::to_world(without_invisible_boundaries(d)));
+double light_contrast(const radiosity::Scene& mesh) {
   double flux = 0, area = 0, brightest = 0;
   for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
     const double exitance = luminance(mesh.surface_of_element(int(e)).exitance);
@@ -75,6 +74,12 @@ BudgetChoice controls_for_budget(const scene::SceneDescription& d, const Plan& p
     throw std::invalid_argument(fmt::format("--error-budget {}: expected a relative error between 0 and 1 (e.g. 0.02)", budget));
   BudgetChoice c;
   const RenderControls full;
+  // The scene's surfaces as radiosity meshes them (without the media's bounds), made once.
+  std::optional<radiosity::Scene> mesh;
+  auto surfaces = [&]() -> const radiosity::Scene& {
+    if (!mesh) mesh = radiosity::flatten(scene::to_world(without_invisible_boundaries(d)));
+    return *mesh;
+  };
   // Media first: a medium of optical depth tau along its longest chord dims what lies behind it by
   // at most 1 - e^-tau; the light it scatters in is that times its albedo times how much brighter
   // the lights are than the mean surface (near a lamp the glow outshines the walls: CORNELL with a
@@ -82,20 +87,21 @@ BudgetChoice controls_for_budget(const scene::SceneDescription& d, const Plan& p
   // media pass and the view's media are left out, and what they took of the budget is not left to
   // the other controls (the errors may add).
   if (const auto tau = thickest_medium(d)) {
-    const double effect = -std::expm1(-tau->depth) * (1 + tau->albedo * light_contrast(d));
+    const double contrast = light_contrast(surfaces());
+    const double effect = -std::expm1(-tau->depth) * (1 + tau->albedo * contrast);
     c.controls.media = !(effect < 0.5 * budget);
     if (!c.controls.media) budget -= effect;
     c.reasons.push_back(fmt::format("media: {} (the thickest medium's optical depth along its longest chord is {:.3g}, "
                                     "albedo {:.3g}, lights {:.3g} times the mean surface: it changes a pixel by about "
                                     "{:.3g}, {} half the budget){}",
-                                    c.controls.media ? "stay" : "dropped", tau->depth, tau->albedo, light_contrast(d), effect,
+                                    c.controls.media ? "stay" : "dropped", tau->depth, tau->albedo, contrast, effect,
                                     c.controls.media ? "not below" : "below",
                                     c.controls.media ? "" : fmt::format("; {:.3g} of the budget is left", budget)));
   }
   if (plan.pass(PassId::radiosity).on) {
     // Unshot energy U would still reach the surfaces as U (1 + rho + rho^2 + ...) = U / (1 - rho)
     // with rho the area-weighted mean reflectance: stop when that is below the budget.
-    const double rho = mean_reflectance(radiosity::flatten(scene::to_world(without_invisible_boundaries(d))));
+    const double rho = mean_reflectance(surfaces());
     c.controls.energy = std::clamp(1.0 - budget * (1.0 - rho), 0.5, full.energy);
     c.reasons.push_back(fmt::format("radiosity: shoots {:.4g} % of the energy instead of {:g} % (unshot energy U still "
                                     "brings U / (1 - {:.3f}) with the mean reflectance {:.3f})",

@@ -48,10 +48,12 @@ bool in_front(const scene::SceneDescription& d, const Plane& plane, const Surfac
 
 }  // namespace
 
-bool invisible_boundary(const scene::Material& m) {
-  return m.medium && m.medium->boundary_ior == 1.0 && largest(m.diffuse) == 0.0 && largest(m.emission) == 0.0 &&
-         m.mirror == 0.0 && m.transmittance == 0.0 && m.specular == 0.0;
+bool only_bounds_medium(const scene::Material& m) {
+  return m.medium && largest(m.diffuse) == 0.0 && largest(m.emission) == 0.0 && m.mirror == 0.0 &&
+         m.transmittance == 0.0 && m.specular == 0.0;
 }
+
+bool invisible_boundary(const scene::Material& m) { return only_bounds_medium(m) && m.medium->boundary_ior == 1.0; }
 
 std::vector<SurfaceSide> visible_sides(const scene::SceneDescription& d) {
   std::vector<SurfaceSide> sides;

@@ -28,5 +28,7 @@ bool exchange(const scene::SceneDescription& d, const SurfaceSide& a, const Surf
 
 // The material only bounds a medium: nothing reflected, emitted or refracted at its surface.
 bool invisible_boundary(const scene::Material& m);
+// The material bounds a medium and does nothing else of its own (its index may refract).
+bool only_bounds_medium(const scene::Material& m);
 
 }  // namespace gcsim::render

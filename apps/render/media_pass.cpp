@@ -3,7 +3,6 @@
 #include <span>
 
 #include "apps/media/frame.hpp"
-#include "apps/raytrace/lower_scene.hpp"
 #include "parix/collectives.hpp"
 
 namespace gcsim::render {
@@ -19,15 +18,15 @@ std::uint64_t share(std::uint64_t total, int node, int nodes) {
 
 }  // namespace
 
-std::unique_ptr<MediaSetup> make_media_setup(const SplitScene& split, std::vector<MediumRegion> regions, bool photon_pass,
-                                             bool radiance_estimate, std::size_t photons) {
+std::unique_ptr<MediaSetup> make_media_setup(const SplitScene& split, raytrace::Scene lowered, std::vector<MediumRegion> regions,
+                                             bool photon_pass, bool radiance_estimate, std::size_t photons) {
   auto s = std::make_unique<MediaSetup>();
   s->regions = std::move(regions);
   s->photon_pass = photon_pass;
   s->photons = photons;
   s->view.radiance_estimate = radiance_estimate;
   if (!photon_pass) return s;
-  s->surfaces = raytrace::lower_scene(split.surfaces);
+  s->surfaces = std::move(lowered);
   s->bvh = geometry::build_bvh_by_clustering(s->surfaces);
   s->lights = photon_lights(split.surfaces);
   s->view.light_chroma = s->lights.chroma;

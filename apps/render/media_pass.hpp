@@ -31,9 +31,10 @@ struct MediaSetup {
   ViewMediumSettings view;        // display_scale is set by the view pass (it knows the exposure)
 };
 
-// regions: the media the view applies; photon_pass: whether photons are traced.
-std::unique_ptr<MediaSetup> make_media_setup(const SplitScene& split, std::vector<MediumRegion> regions, bool photon_pass,
-                                             bool radiance_estimate, std::size_t photons);
+// lowered: raytrace::lower_scene(split.surfaces); regions: the media the view applies; photon_pass:
+// whether photons are traced.
+std::unique_ptr<MediaSetup> make_media_setup(const SplitScene& split, raytrace::Scene lowered, std::vector<MediumRegion> regions,
+                                             bool photon_pass, bool radiance_estimate, std::size_t photons);
 
 struct GatheredPhotons {
   std::vector<std::vector<media::Photon>> per_region;  // everybody's, in node order

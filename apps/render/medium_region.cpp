@@ -53,7 +53,7 @@ bool MediumRegion::contains(const MediumRegion& inner) const {
   glm::dvec3 lo, hi;
   if (const auto* box = std::get_if<scene::Box>(&inner.shape)) {
     lo = box->lo, hi = box->hi;
-    if (const auto* s = std::get_if<scene::Sphere>(&shape)) {  // every corner inside the sphere
+    if (std::holds_alternative<scene::Sphere>(shape)) {  // every corner inside the sphere
       for (int k = 0; k < 8; ++k)
         if (!contains(glm::dvec3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z))) return false;
       return true;
@@ -105,8 +105,6 @@ std::vector<MediumInterval> medium_intervals(const std::vector<MediumRegion>& re
 
 namespace {
 
-double largest(const scene::Rgb& c) { return std::max({c.r, c.g, c.b}); }
-
 bool boxes_overlap(const MediumRegion& a, const MediumRegion& b) {
   auto bounds = [](const MediumRegion& r, glm::dvec3& lo, glm::dvec3& hi) {
     if (const auto* box = std::get_if<scene::Box>(&r.shape)) {
@@ -119,11 +117,6 @@ bool boxes_overlap(const MediumRegion& a, const MediumRegion& b) {
   glm::dvec3 alo, ahi, blo, bhi;
   bounds(a, alo, ahi), bounds(b, blo, bhi);
   return glm::all(glm::lessThan(alo, bhi)) && glm::all(glm::lessThan(blo, ahi));
-}
-
-bool refracting_boundary(const scene::Material& m) {
-  return m.medium && m.medium->boundary_ior != 1.0 && largest(m.diffuse) == 0.0 && largest(m.emission) == 0.0 &&
-         m.mirror == 0.0 && m.transmittance == 0.0 && m.specular == 0.0;
 }
 
 // Fresnel glass of the medium's index, all of it reflected or refracted (the paper's object).
@@ -158,7 +151,7 @@ SplitScene split_media(const scene::SceneDescription& d, const std::string& file
     }
     const std::string what = fmt::format("{}: shape {} (material '{}') bounds a participating medium", file, i + 1, m.name);
     if (!invisible_boundary(m)) {
-      if (!refracting_boundary(m))
+      if (!only_bounds_medium(m))
         throw std::invalid_argument(what + " and also reflects or emits light: `gcsim render` takes a medium's bound that "
                                            "is invisible (index 1) or a plain dielectric (index != 1, nothing else)");
       scene::Shape glass = shape;  // the bound stays, as Fresnel glass of the medium's index

@@ -162,8 +162,7 @@ double coverage(const SceneDescription& d, const glm::dvec3& centre, double radi
 // times the fraction of the image each covers.
 double opacity(const SceneDescription& d, int m) {
   const scene::Medium& md = *d.materials[std::size_t(m)].medium;
-  const scene::Rgb t = md.sigma_s + md.sigma_a;
-  const double sigma_t = 0.2126 * t.r + 0.7152 * t.g + 0.0722 * t.b;
+  const double sigma_t = luminance(md.sigma_s + md.sigma_a);
   double sum = 0;
   for (const scene::Shape& s : d.shapes) {
     if (s.material != m) continue;

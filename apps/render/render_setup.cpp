@@ -11,8 +11,9 @@ RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, c
                            std::size_t photons, bool with_media) {
   RenderSetup s;
   s.split = split_media(d, file);
+  raytrace::Scene lowered;
   try {  // refuses, before any run, what the view pass cannot show
-    raytrace::lower_scene(s.split.surfaces);
+    lowered = raytrace::lower_scene(s.split.surfaces);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(file + ": the view pass cannot render this scene: " + e.what());
   }
@@ -25,7 +26,7 @@ RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, c
   const bool photon_pass = force_media || plan.pass(PassId::media).on;
   if (regions.empty() && !photon_pass) return s;
   try {
-    s.media = make_media_setup(s.split, std::move(regions), photon_pass,
+    s.media = make_media_setup(s.split, std::move(lowered), std::move(regions), photon_pass,
                                plan.facts.media_sampling == MediaSampling::radiance_estimate, photons);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(file + ": " + e.what());

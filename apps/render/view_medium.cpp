@@ -11,7 +11,6 @@
 namespace gcsim::render {
 
 struct ViewMedium::Region {
-  MediumRegion shape;
   media::HomogeneousMedium lum;      // what the photon map and the march read
   glm::dvec3 sigma_t_rgb{0.0};       // the transmittance's, per channel
   glm::dvec3 in_scatter_colour{0.0}; // displayed colour per unit of in-scattered luminance
@@ -23,11 +22,11 @@ ViewMedium::ViewMedium(std::vector<MediumRegion> regions, std::vector<std::vecto
                        ViewMediumSettings s)
     : bounds_(regions), settings_(s) {
   for (std::size_t i = 0; i < regions.size(); ++i) {
+    const scene::Medium& medium = regions[i].medium;
     Region r;
-    r.shape = regions[i];
-    r.lum = luminance_medium(r.shape.medium);
-    r.sigma_t_rgb = r.shape.medium.sigma_s + r.shape.medium.sigma_a;
-    if (r.lum.sigma_s > 0) r.in_scatter_colour = s.display_scale * s.light_chroma * r.shape.medium.sigma_s / r.lum.sigma_s;
+    r.lum = luminance_medium(medium);
+    r.sigma_t_rgb = medium.sigma_s + medium.sigma_a;
+    if (r.lum.sigma_s > 0) r.in_scatter_colour = s.display_scale * s.light_chroma * medium.sigma_s / r.lum.sigma_s;
     if (i < photons.size() && !photons[i].empty() && r.lum.sigma_s > 0) {
       const media::UniformGrid grid = media::grid_for_photons(photons[i], s.k_nearest);
       r.map = std::make_unique<media::PhotonMap>(std::move(photons[i]));

@@ -45,7 +45,7 @@ class ViewMedium : public raytrace::RayMedia {
 
  private:
   struct Region;
-  std::vector<MediumRegion> bounds_;  // regions_[i]'s bound
+  std::vector<MediumRegion> bounds_;  // what regions_[i] is built from: its bound and medium
   std::vector<Region> regions_;
   ViewMediumSettings settings_;
 };

@@ -11,13 +11,13 @@ namespace {
 // (unshadowed, at the element's centre), so the automatic exposure accounts for them too.
 std::vector<radiosity::Rgb> with_point_lights(const scene::SceneDescription& d, const radiosity::Scene& mesh,
                                               const std::vector<radiosity::Rgb>& b) {
-  const raytrace::Scene lowered = raytrace::lower_scene(d);
-  if (lowered.lights.empty()) return b;
+  const std::vector<raytrace::PointLight> lights = raytrace::lower_lights(d);
+  if (lights.empty()) return b;
   std::vector<radiosity::Rgb> shown = b;
   for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
     const radiosity::SceneElement& el = mesh.elements[e];
     const radiosity::Rgb rho = mesh.surface_of_element(int(e)).reflectance;
-    for (const raytrace::PointLight& light : lowered.lights) {
+    for (const raytrace::PointLight& light : lights) {
       const glm::dvec3 to = glm::dvec3(light.position) - glm::dvec3(el.center);
       const double d2 = glm::dot(to, to), cos = glm::dot(glm::dvec3(el.normal), to) / std::sqrt(d2);
       if (cos <= 0 || !light.lights_direction(glm::vec3(-to / std::sqrt(d2)))) continue;

@@ -148,7 +148,7 @@ std::optional<glm::dvec3> bounce(const raytrace::Scene& scene, const Ray& ray, c
   } else if (xi < m.reflectance) {
     out = raytrace::reflect_direction(d, n);
   } else {
-    const double diffuse = 0.2126 * m.diffuse.r + 0.7152 * m.diffuse.g + 0.0722 * m.diffuse.b;
+    const double diffuse = luminance(glm::dvec3(m.diffuse));
     if (xi < m.reflectance + (1 - m.reflectance) * diffuse)
       out = glm::vec3(media::direction_around(glm::dvec3(sp.geometric_normal), std::sqrt(rng.uniform_double()), rng.uniform_double()));
   }

@@ -149,7 +149,7 @@ class RenderExperiment : public pipeline::Experiment {
       return end_s;
     }
     if (!setup_.media || !setup_.media->photon_pass) {
-      if (plan.reason.starts_with("no participating")) return end_s;
+      if (setup_.split.media.empty()) return end_s;  // no medium at all: nothing to say
       fmt::print("media     photons skipped: {}{}\n", plan.reason,
                  setup_.media ? " (the view applies the media's transmittance)" : "");
       extra["media"] = {{"ran", false}, {"transmittance_applied", setup_.media != nullptr}};
