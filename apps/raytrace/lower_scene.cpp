@@ -25,6 +25,7 @@ Material lower_material(const scene::Material& m, std::size_t index) {
   out.reflectance = static_cast<float>(m.mirror);
   out.transmittance = static_cast<float>(m.transmittance);
   out.ior = static_cast<float>(m.ior);
+  out.emission = glm::vec3(m.emission);
   // The dielectric weighs its reflected ray F * reflectance and its refracted one
   // (1 - F) * transmittance: reflectance = transmittance gives glass of weight g.
   if (m.transmittance > 0.0) out.reflectance = out.transmittance;

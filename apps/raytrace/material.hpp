@@ -14,6 +14,9 @@ struct Material {
   float reflectance = 0.0f;        // mirror weight (for dielectrics the Fresnel term replaces it)
   float transmittance = 0.0f;      // > 0: a dielectric that refracts with index ior
   float ior = 1.5f;
+  // Exitance the front side emits (an area light of a scene file), shown as it is: what radiosity
+  // shows on an emitter that reflects nothing. Not sampled as a light.
+  glm::vec3 emission{0.0f};
   // The surface's outgoing radiance is given per triangle vertex (Scene::triangle_radiance), as the
   // unified renderer's radiosity pass supplies it: no ambient term; point and spot lights add
   // their direct light with `diffuse` on the front and `back_diffuse` on the back.

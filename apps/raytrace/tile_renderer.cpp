@@ -127,7 +127,10 @@ glm::vec3 TileRenderer::local_light(const Ray& ray, const Hit& hit, const Surfac
     const int parity = int(std::floor(u / m.checker_size)) + int(std::floor(v / m.checker_size));
     if (parity & 1) albedo = m.checker_other;
   }
-  if (!m.given_radiance) color = scene_.ambient * albedo;
+  if (!m.given_radiance) {
+    color = scene_.ambient * albedo;
+    if (sp.entering) color += m.emission;
+  }
   const glm::vec3 n = sp.shading_normal;
   const glm::vec3 to_eye = -glm::normalize(ray.direction);
   for (const PointLight& light : scene_.lights) {

@@ -7,8 +7,8 @@
 
 namespace gcsim::render {
 
-RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, const std::string& file, bool force_media,
-                           std::size_t photons, bool with_media) {
+RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, const std::string& file,
+                           ForcedPasses forced, std::size_t photons, bool with_media) {
   RenderSetup s;
   s.split = split_media(d, file);
   raytrace::Scene lowered;
@@ -17,13 +17,13 @@ RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, c
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(file + ": the view pass cannot render this scene: " + e.what());
   }
-  s.radiosity = plan.pass(PassId::radiosity).on;
+  s.radiosity = plan.pass(PassId::radiosity).on || forced.radiosity;
   if (s.radiosity) s.mesh = radiosity::flatten(scene::to_world(s.split.surfaces));
   if (!with_media) return s;
   std::vector<MediumRegion> regions;
   for (const MediumRegion& r : s.split.media)
-    if (force_media || !r.changes_nothing()) regions.push_back(r);
-  const bool photon_pass = force_media || plan.pass(PassId::media).on;
+    if (forced.media || !r.changes_nothing()) regions.push_back(r);
+  const bool photon_pass = forced.media || plan.pass(PassId::media).on;
   if (regions.empty() && !photon_pass) return s;
   try {
     s.media = make_media_setup(s.split, std::move(lowered), std::move(regions), photon_pass,

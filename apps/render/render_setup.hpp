@@ -15,7 +15,7 @@ namespace gcsim::render {
 
 struct RenderSetup {
   SplitScene split;
-  bool radiosity = false;
+  bool radiosity = false;              // the radiosity pass runs (the plan's, or forced)
   radiosity::Scene mesh;               // radiosity::flatten(to_world(split.surfaces)) when radiosity
   std::unique_ptr<MediaSetup> media;   // null: no medium changes the image (and none forced)
   const radiosity::Scene* mesh_or_null() const { return radiosity ? &mesh : nullptr; }
@@ -25,10 +25,15 @@ struct RenderSetup {
 // for 0.6 and 3.1 s of the 8-node pass (of 86 s in all).
 inline constexpr std::size_t kDefaultPhotons = 50000;
 
-// file: for messages. force_media: --force-pass media (the photon pass and every medium, even those
-// that change nothing). with_media false: no medium at all (an error budget dropped them; refracting
+// Passes the plan has off that --force-pass runs anyway.
+struct ForcedPasses {
+  bool media = false;      // the photon pass and every medium, even those that change nothing
+  bool radiosity = false;  // the radiosity mesh is built and solved; the view does not read it
+};
+
+// file: for messages. with_media false: no medium at all (an error budget dropped them; refracting
 // bounds stay as glass). Throws std::invalid_argument "FILE: ..." for what the view cannot show.
-RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, const std::string& file, bool force_media = false,
-                           std::size_t photons = kDefaultPhotons, bool with_media = true);
+RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, const std::string& file,
+                           ForcedPasses forced = {}, std::size_t photons = kDefaultPhotons, bool with_media = true);
 
 }  // namespace gcsim::render

@@ -1,6 +1,7 @@
 #include "apps/render/unified_render.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace gcsim::render {
 
@@ -24,7 +25,8 @@ void unified_render_program(parix::Processor& p, const scene::SceneDescription& 
     out.photon_flights += photons.flights, out.photon_surface_events += photons.surface_events;
   }
   if (!out.view) {  // every node gathered the same photons: the first to get here builds the view
-    out.view = make_view_pass(description, mesh, mesh ? &mine.element_radiosity : nullptr, view, p.count(), media,
+    const radiosity::Scene* shown = view.shows_radiosity ? mesh : nullptr;
+    out.view = make_view_pass(description, shown, shown ? &mine.element_radiosity : nullptr, view, p.count(), media,
                               std::move(photons.per_region));
     out.view->result.on_tile = out.on_view_tile;
   }
@@ -36,6 +38,20 @@ void unified_render_program(parix::Processor& p, const scene::SceneDescription& 
 
 void finish(UnifiedRender& out) {
   if (out.view) out.view->job->finish(out.view->result);
+}
+
+ReflectedLight reflected_light(const radiosity::Scene& mesh, const std::vector<radiosity::Rgb>& element_radiosity) {
+  ReflectedLight r;
+  for (std::size_t e = 0; e < element_radiosity.size(); ++e) {
+    const radiosity::Rgb reflected = element_radiosity[e] - mesh.surface_of_element(int(e)).exitance;
+    const double largest = std::max({std::abs(reflected.r), std::abs(reflected.g), std::abs(reflected.b)});
+    if (largest > r.largest || (largest != 0.0 && r.element < 0)) {
+      r.largest = largest;
+      r.element = int(e);
+      r.material = mesh.surface_of_element(int(e)).material;
+    }
+  }
+  return r;
 }
 
 }  // namespace gcsim::render

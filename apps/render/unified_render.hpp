@@ -39,4 +39,14 @@ void unified_render_program(parix::Processor& p, const scene::SceneDescription& 
 // After the run, on the host: merges the view pass's per-node counters and hit ids.
 void finish(UnifiedRender& out);
 
+// The light a radiosity solution adds to what a view without it shows: B - E, the reflected part of
+// each element's radiosity (the lowered scene shows the emission E itself). Where the plan skips
+// radiosity, a forced pass must find exactly zero everywhere.
+struct ReflectedLight {
+  double largest = 0.0;  // the largest channel of B - E over the elements
+  int element = -1;      // where (-1: every element reflects exactly nothing)
+  int material = -1;     // that element's material in the scene description (-1: none)
+};
+ReflectedLight reflected_light(const radiosity::Scene& mesh, const std::vector<radiosity::Rgb>& element_radiosity);
+
 }  // namespace gcsim::render

@@ -22,6 +22,9 @@ struct ViewSettings {
   bool shadows = true;    // towards point and spot lights
   int max_depth = 5;      // reflection and refraction levels
   double exposure = 0;    // radiosity to displayed colour; 0: the Gouraud display's automatic one
+  // false: the radiosity pass was forced on (--force-pass radiosity) where the plan skips it, so the
+  // view shows the plan's scene without it (the run checks that the pass found no reflected light).
+  bool shows_radiosity = true;
 };
 
 struct ViewPass {

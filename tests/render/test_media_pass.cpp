@@ -57,7 +57,7 @@ struct Rendered {
 
 Rendered render(const scene::SceneDescription& d, int nodes, bool force_media = false, std::size_t photons = 4000) {
   const Plan plan = make_plan(d);
-  const RenderSetup setup = prepare_render(d, plan, "test.toml", force_media, photons);
+  const RenderSetup setup = prepare_render(d, plan, "test.toml", {.media = force_media}, photons);
   radiosity::ParallelOptions o;
   o.solver.hemicube.resolution = 32;
   o.solver.energy = 0.9;

@@ -12,8 +12,11 @@
 #include <string>
 #include <tuple>
 
+#include <fmt/format.h>
+
 #include "apps/common/scene/description_to_world.hpp"
 #include "apps/common/scene/scene_file.hpp"
+#include "apps/render/plan.hpp"
 #include "apps/radiosity/gouraud_renderer.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "apps/raytrace/pixel_encoding.hpp"
@@ -262,6 +265,98 @@ TEST(ViewPass, CornellWithAPointLightIsBrighterNowhereDarker) {
       brighter += b > a;
     }
   EXPECT_GT(brighter, int(plain.out->view->result.image.pixels().size()));
+}
+
+}  // namespace
+}  // namespace gcsim::render
+
+namespace gcsim::render {
+namespace {
+
+// A lamp (an emissive square facing down) over a floor, with a point light so the floor shows.
+scene::SceneDescription lamp_scene(double floor_reflectance, bool lamp_faces_down) {
+  const std::string lamp = lamp_faces_down ? "[[-1, 3, -1], [1, 3, -1], [1, 3, 1], [-1, 3, 1]]"
+                                           : "[[-1, 3, -1], [-1, 3, 1], [1, 3, 1], [1, 3, -1]]";
+  const std::string text = fmt::format(R"(
+name = "LAMP"
+[camera]
+eye = [0, 1, -7]
+target = [0, 1.5, 0]
+fov = 50
+[image]
+width = 48
+height = 48
+background = 0
+ambient = 0
+[materials.lamp]
+reflectance = 0
+emission = [0.6, 0.5, 0.4]
+[materials.floor]
+reflectance = {}
+[[polygon]]
+material = "lamp"
+vertices = {}
+[[polygon]]
+material = "floor"
+vertices = [[-4, 0, -4], [-4, 0, 4], [4, 0, 4], [4, 0, -4]]
+[[point_light]]
+position = [2, 4, -3]
+intensity = 20
+)",
+                                       floor_reflectance, lamp);
+  return scene::parse_scene_file(text, "lamp.toml", ".");
+}
+
+// --force-pass radiosity where the plan skips it: nothing emits (direct-light.toml), nothing
+// reflects (a black floor under the lamp), or the lamp's light reaches no diffuse surface (it faces
+// up, away from the floor). The pass runs on every node, finds no reflected light (B - E = 0 on
+// every element) and leaves every pixel as it was; where a lamp shoots, it costs simulated time.
+TEST(ViewPass, ForcingRadiosityWhereThePlanSkipsItChangesNoPixel) {
+  struct Case {
+    const char* name;
+    scene::SceneDescription d;
+  };
+  const Case cases[] = {{"nothing emits", small_image(scene_file("direct-light.toml"))},
+                        {"nothing reflects", lamp_scene(0.0, true)},
+                        {"the lamp faces away", lamp_scene(0.7, false)}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    ASSERT_FALSE(make_plan(c.d).pass(PassId::radiosity).on);
+    const radiosity::Scene mesh = radiosity::flatten(scene::to_world(c.d));
+    ViewSettings forced_view;
+    forced_view.shows_radiosity = false;
+    const Rendered planned = render_on(c.d, nullptr, 2);
+    const Rendered forced = render_on(c.d, &mesh, 2, forced_view);
+    EXPECT_EQ(planned.out->view->result.image.pixels(), forced.out->view->result.image.pixels());
+    EXPECT_EQ(reflected_light(mesh, forced.out->radiosity.element_radiosity).element, -1);
+    ASSERT_EQ(forced.out->radiosity.element_radiosity.size(), mesh.elements.size());
+    if (std::string(c.name) != "nothing emits") {
+      EXPECT_GT(forced.out->radiosity.steps.size(), 0u);
+      EXPECT_GT(forced.run.makespan, planned.run.makespan);
+    }
+  }
+}
+
+// Where the plan skips radiosity, an emitter still shows its emission (what radiosity would show on
+// a surface that reflects nothing), on its front only: before, it was black.
+TEST(ViewPass, AnEmitterWithoutARadiosityPassShowsItsEmission) {
+  const auto d = lamp_scene(0.0, true);
+  ASSERT_FALSE(make_plan(d).pass(PassId::radiosity).on);
+  const Rendered r = render_on(d, nullptr, 1);
+  const auto& image = r.out->view->result.image;
+  int lamp = 0;  // pixels showing the emission, to the image's 8-bit encoding (the floor and background are black)
+  for (const glm::vec3& c : image.pixels())
+    lamp += glm::all(glm::lessThan(glm::abs(c - glm::vec3(0.6f, 0.5f, 0.4f)), glm::vec3(0.005f)));
+  EXPECT_GT(lamp, 40);  // the underside spans about 20 x 4 of the 48 x 48 pixels
+  int lit = 0;
+  for (const glm::vec3& c : image.pixels()) lit += c != glm::vec3(0.0f);
+  EXPECT_EQ(lit, lamp);
+  // Seen from above, the lamp's back is black.
+  auto from_above = d;
+  from_above.camera->eye = glm::dvec3(0, 8, -0.5);
+  from_above.camera->look_at = glm::dvec3(0, 3, 0);
+  const Rendered above = render_on(from_above, nullptr, 1);
+  for (const glm::vec3& c : above.out->view->result.image.pixels()) ASSERT_EQ(c, glm::vec3(0.0f));
 }
 
 }  // namespace
