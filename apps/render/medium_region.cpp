@@ -138,6 +138,17 @@ scene::SceneDescription without_invisible_boundaries(const scene::SceneDescripti
   return out;
 }
 
+namespace {
+
+// "FILE:LINE: [[sphere]]" for a shape read from a scene file, "FILE: shape N" for one built in code.
+std::string place_of(const scene::Shape& shape, std::size_t index, const std::string& file) {
+  if (shape.source_line <= 0) return fmt::format("{}: shape {}", file, index + 1);
+  static constexpr const char* kTable[] = {"[[polygon]]", "[[sphere]]", "[[box]]", "[[mesh]]"};
+  return fmt::format("{}:{}: {}", file, shape.source_line, kTable[shape.geometry.index()]);
+}
+
+}  // namespace
+
 SplitScene split_media(const scene::SceneDescription& d, const std::string& file) {
   SplitScene out;
   out.surfaces = d;
@@ -149,7 +160,8 @@ SplitScene split_media(const scene::SceneDescription& d, const std::string& file
       out.surfaces.shapes.push_back(shape);
       continue;
     }
-    const std::string what = fmt::format("{}: shape {} (material '{}') bounds a participating medium", file, i + 1, m.name);
+    const std::string where = place_of(shape, i, file);
+    const std::string what = fmt::format("{} (material '{}') bounds a participating medium", where, m.name);
     if (!invisible_boundary(m)) {
       if (!only_bounds_medium(m))
         throw std::invalid_argument(what + " and also reflects or emits light: `gcsim render` takes a medium's bound that "
@@ -158,7 +170,7 @@ SplitScene split_media(const scene::SceneDescription& d, const std::string& file
       glass.material = out.surfaces.add_material(dielectric_of(m));
       out.surfaces.shapes.push_back(glass);
     }
-    MediumRegion r{m.name, {}, *m.medium};
+    MediumRegion r{m.name, {}, *m.medium, where};
     if (const auto* box = std::get_if<scene::Box>(&shape.geometry)) r.shape = *box;
     else if (const auto* sphere = std::get_if<scene::Sphere>(&shape.geometry)) r.shape = *sphere;
     else throw std::invalid_argument(what + " with a polygon or mesh: `gcsim render` takes a box or a sphere as a medium's bound");
@@ -168,9 +180,10 @@ SplitScene split_media(const scene::SceneDescription& d, const std::string& file
   for (std::size_t a = 0; a < out.media.size(); ++a)
     for (std::size_t b = a + 1; b < out.media.size(); ++b)
       if (boxes_overlap(out.media[a], out.media[b]) && !out.media[a].contains(out.media[b]) && !out.media[b].contains(out.media[a]))
-        throw std::invalid_argument(fmt::format("{}: the media of '{}' and '{}' overlap without one holding the other: "
-                                                "`gcsim render` takes disjoint or nested media only",
-                                                file, out.media[a].material, out.media[b].material));
+        throw std::invalid_argument(fmt::format("{} (material '{}') and {} (material '{}'): their media overlap without "
+                                                "one holding the other; `gcsim render` takes disjoint or nested media only",
+                                                out.media[a].where, out.media[a].material, out.media[b].where,
+                                                out.media[b].material));
   return out;
 }
 

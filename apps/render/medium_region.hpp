@@ -21,6 +21,7 @@ struct MediumRegion {
   std::string material;  // the bounding material's name, for messages
   std::variant<scene::Box, scene::Sphere> shape;
   scene::Medium medium;
+  std::string where{};   // "FILE:LINE: [[sphere]]" (or "FILE: shape N"): the bound's place, for messages
   bool changes_nothing() const;  // sigma_s = sigma_a = 0 in every channel
   // The part [t0, t1] of the ray origin + t direction, t in [t_min, t_max], inside the region.
   bool clip(const glm::dvec3& origin, const glm::dvec3& direction, double t_min, double t_max, double& t0,

@@ -322,7 +322,7 @@ TEST(MediaPass, MediaTheViewCannotShowAreRefusedNamingTheFile) {
     prepare_render(reflecting, make_plan(reflecting), "reflecting_medium_bound.toml");
     FAIL() << "a medium's bound that reflects was accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("reflecting_medium_bound.toml: shape 2 (material 'milky') bounds a participating "
+    EXPECT_NE(std::string(e.what()).find("reflecting_medium_bound.toml:12: [[sphere]] (material 'milky') bounds a participating "
                                          "medium and also reflects or emits light"),
               std::string::npos)
         << e.what();

@@ -91,6 +91,7 @@ struct Shape {
   // The object (the thesis's ENTITY) the shape belongs to; shapes of one object share its vertices'
   // numbering and one surface per material. Empty: an object of its own.
   std::string object{};
+  int source_line = 0;  // the line of the shape's [[table]] in its scene file (0: not from a file)
 };
 
 // How an object becomes the thesis's ENTITY where the defaults (surfaces in order of first use, each

@@ -36,6 +36,7 @@ Shape shape_base(const Reader& r, const toml::table& t, const std::string& where
   s.material = material_of(r, t, "material", where, materials);
   const std::string none;
   s.object = r.string(t, "object", where, &none);
+  s.source_line = r.line_of(&t);  // for errors found after parsing (e.g. what the renderer refuses)
   return s;
 }
 
