@@ -36,7 +36,8 @@ void append_packet(Bytes& out, int id, std::span<const std::byte> data) {
   out.insert(out.end(), data.begin(), data.end());
 }
 
-void unpack(std::span<const std::byte> in, std::vector<Bytes>& out) {
+// Each processor's part of a packed gather, as a view into the packet (empty where none came).
+void unpack_views(std::span<const std::byte> in, std::vector<std::span<const std::byte>>& out) {
   std::size_t at = 0;
   while (at < in.size()) {
     std::int32_t i;
@@ -48,9 +49,15 @@ void unpack(std::span<const std::byte> in, std::vector<Bytes>& out) {
     if (n < 0 || static_cast<std::size_t>(n) > in.size() - at || i < 0 || static_cast<std::size_t>(i) >= out.size()) {
       throw ParixError("gather: corrupt packet");
     }
-    out[i].assign(in.begin() + at, in.begin() + at + n);
+    out[i] = in.subspan(at, std::size_t(n));
     at += n;
   }
+}
+
+void unpack(std::span<const std::byte> in, std::vector<Bytes>& out) {
+  std::vector<std::span<const std::byte>> views(out.size());
+  unpack_views(in, views);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i].assign(views[i].begin(), views[i].end());
 }
 
 }  // namespace
@@ -132,6 +139,14 @@ std::vector<Bytes> allgather(Processor& p, std::span<const std::byte> mine, cons
   std::vector<Bytes> all(p.count());
   unpack(packed, all);
   return all;
+}
+
+GatheredBytes allgather_views(Processor& p, std::span<const std::byte> mine, const CollectiveOptions& o) {
+  GatheredBytes g;
+  g.packed = broadcast(p, 0, gather_packed(p, 0, mine, o), o);
+  g.parts.resize(std::size_t(p.count()));
+  unpack_views(g.packed, g.parts);
+  return g;
 }
 
 Bytes reduce(Processor& p, int root, Bytes mine, const CombineOp& op, const CollectiveOptions& o) {

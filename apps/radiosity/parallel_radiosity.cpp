@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "apps/radiosity/convergence.hpp"
+#include "apps/radiosity/received_form_factors.hpp"
 
 namespace gcsim::radiosity {
 
@@ -28,55 +29,10 @@ const char* to_string(ParallelAlgorithm a) {
 
 namespace {
 
-// Byte packing of plain values.
-struct Writer {
-  parix::Bytes bytes;
-  template <class T>
-  void put(const T& v) {
-    std::size_t at = bytes.size();
-    bytes.resize(at + sizeof(T));
-    std::memcpy(bytes.data() + at, &v, sizeof(T));
-  }
-};
-struct Reader {
-  const parix::Bytes& bytes;
-  std::size_t at = 0;
-  template <class T>
-  T get() {
-    if (at + sizeof(T) > bytes.size()) throw std::runtime_error("radiosity: truncated message");
-    T v;
-    std::memcpy(&v, bytes.data() + at, sizeof(T));
-    at += sizeof(T);
-    return v;
-  }
-};
-
 struct Proposal {
   double energy;
   std::int32_t patch;
 };
-
-// Per shooter, per cell: the cell's sparse form factor sums.
-void put_cell(Writer& w, const CellFormFactors& c) {
-  w.put<std::int32_t>(c.cell);
-  w.put<std::int32_t>(std::int32_t(c.element.size()));
-  for (std::size_t k = 0; k < c.element.size(); ++k) {
-    w.put<std::int32_t>(c.element[k]);
-    w.put<double>(c.value[k]);
-  }
-}
-CellFormFactors get_cell(Reader& r) {
-  CellFormFactors c;
-  c.cell = r.get<std::int32_t>();
-  int n = r.get<std::int32_t>();
-  c.element.resize(n);
-  c.value.resize(n);
-  for (int k = 0; k < n; ++k) {
-    c.element[k] = r.get<std::int32_t>();
-    c.value[k] = r.get<double>();
-  }
-  return c;
-}
 
 }  // namespace
 
@@ -116,7 +72,8 @@ class RadiosityNode {
     while (state_.shot_fraction() < o_.solver.energy && state_.steps() < o_.solver.max_steps) {
       const std::vector<int> shooters = choose_shooters();
       if (shooters.empty()) break;
-      shoot(shooters, exchange_form_factors(shooters));
+      exchange_form_factors(shooters);
+      shoot(shooters);
     }
     ops_.charge(p_);
   }
@@ -132,8 +89,6 @@ class RadiosityNode {
   ParallelOutcome* snapshots_to = nullptr;  // node 0's outcome, for --snapshot loops
 
  private:
-  using FormFactorsByCell = std::vector<std::vector<CellFormFactors>>;  // [shooter][cell]
-
   // 1. The shooters of this loop, identical on every node.
   std::vector<int> choose_shooters() {
     const int k = o_.solver.shooters;
@@ -166,10 +121,8 @@ class RadiosityNode {
     std::vector<Proposal> mine;
     for (int i = 0; i < m; ++i) mine.push_back({state_.unshot_energy(own[i]), own[i]});
     ops_.charge(p_);
-    auto all = parix::allgather_vectors<Proposal>(p_, std::span<const Proposal>(mine), coll_);
+    std::vector<Proposal> merged = parix::allgather_concatenated<Proposal>(p_, std::span<const Proposal>(mine), coll_);
     exchanged_ += std::int64_t(mine.size() * sizeof(Proposal));
-    std::vector<Proposal> merged;
-    for (auto& v : all) merged.insert(merged.end(), v.begin(), v.end());
     std::sort(merged.begin(), merged.end(), [](const Proposal& a, const Proposal& b) {
       return a.energy != b.energy ? a.energy > b.energy : a.patch < b.patch;
     });
@@ -182,65 +135,47 @@ class RadiosityNode {
   // 2. This node's share of the form factors, and 3. the all-node exchange. Unaggregated, as in
   // the thesis, every shooter's delta form factors are exchanged on their own; aggregated, one
   // exchange carries every shooter's.
-  FormFactorsByCell exchange_form_factors(const std::vector<int>& shooters) {
-    FormFactorsByCell by_cell(shooters.size(), std::vector<CellFormFactors>(cells_));
+  void exchange_form_factors(const std::vector<int>& shooters) {
+    received_.reset(int(shooters.size()), cells_);
     const bool patch_mode = o_.algorithm == ParallelAlgorithm::patch;
     if (o_.aggregate) {
-      Writer w;
+      parix::Bytes w;
       for (std::size_t k = 0; k < shooters.size(); ++k) compute_share(shooters, k, w);
-      exchange(w, -1, by_cell);
+      exchange(w, -1);
     } else {
       for (std::size_t k = 0; k < shooters.size(); ++k) {
-        Writer w;
+        parix::Bytes w;
         compute_share(shooters, k, w);
-        exchange(w, patch_mode ? shooters[k] % n_ : -1, by_cell);
+        exchange(w, patch_mode ? shooters[k] % n_ : -1);
       }
     }
-    return by_cell;
   }
 
-  void compute_share(const std::vector<int>& shooters, std::size_t k, Writer& w) {
+  void compute_share(const std::vector<int>& shooters, std::size_t k, parix::Bytes& w) {
     const int s = shooters[k];
     const bool patch_mode = o_.algorithm == ParallelAlgorithm::patch;
     if (patch_mode && s % n_ != id_) return;
     if (o_.shared_projections) o_.shared_projections->project(renderer_, state_.steps(), s, ops_);
     else renderer_.project(s, ops_);
-    for (int c = patch_mode ? 0 : id_; c < cells_; c += patch_mode ? 1 : n_) {
-      w.put<std::int32_t>(std::int32_t(k));
-      put_cell(w, renderer_.cell_form_factors(c, ops_));
-    }
+    for (int c = patch_mode ? 0 : id_; c < cells_; c += patch_mode ? 1 : n_)
+      put_cell_form_factors(w, std::int32_t(k), renderer_.cell_form_factors(c, ops_));
   }
 
   // owner >= 0 (patch partition): the shooter's owner has the whole row and broadcasts it.
-  void exchange(Writer& w, int owner, FormFactorsByCell& by_cell) {
-    exchanged_ += std::int64_t(w.bytes.size());
+  void exchange(parix::Bytes& w, int owner) {
+    exchanged_ += std::int64_t(w.size());
     ops_.charge(p_);
-    if (owner >= 0) absorb({parix::broadcast(p_, owner, owner == id_ ? std::move(w.bytes) : parix::Bytes{}, coll_)}, by_cell);
-    else absorb(parix::allgather(p_, w.bytes, coll_), by_cell);
-  }
-
-  void absorb(const std::vector<parix::Bytes>& all, FormFactorsByCell& by_cell) const {
-    for (const parix::Bytes& b : all) {
-      Reader r{b};
-      while (r.at < b.size()) {
-        int k = r.get<std::int32_t>();
-        CellFormFactors c = get_cell(r);
-        if (k < 0 || k >= int(by_cell.size()) || c.cell < 0 || c.cell >= cells_)
-          throw std::runtime_error("radiosity: malformed form factor message");
-        by_cell[k][c.cell] = std::move(c);
-      }
+    if (owner >= 0) {
+      received_.absorb(parix::broadcast(p_, owner, owner == id_ ? std::move(w) : parix::Bytes{}, coll_));
+    } else {
+      received_.absorb(parix::allgather_views(p_, w, coll_));
     }
   }
 
   // 4. Every node assembles the rows, adding cells in the fixed cell order, and shoots.
-  void shoot(const std::vector<int>& shooters, const FormFactorsByCell& by_cell) {
+  void shoot(const std::vector<int>& shooters) {
     std::vector<std::vector<double>> rows(shooters.size(), std::vector<double>(ne_, 0.0));
-    for (std::size_t k = 0; k < shooters.size(); ++k)
-      for (int c = 0; c < cells_; ++c) {
-        const CellFormFactors& cf = by_cell[k][c];
-        ops_.form_factor_sum += std::int64_t(cf.element.size());
-        for (std::size_t i = 0; i < cf.element.size(); ++i) rows[k][cf.element[i]] += cf.value[i];
-      }
+    ops_.form_factor_sum += received_.add_rows(rows);
     state_.shoot(shooters, rows, ops_);
     ops_.charge(p_);
     if (id_ != 0) return;
@@ -258,6 +193,7 @@ class RadiosityNode {
   parix::CollectiveOptions coll_;
   ProgressiveState state_;
   OpCounts ops_;
+  ReceivedFormFactors received_;  // this loop's form factors, from every node
   std::vector<StepRecord> steps_;
   std::int64_t exchanged_ = 0;
 };

@@ -97,6 +97,25 @@ TEST(Collectives, AllgatherGivesEveryoneEverything) {
   }
 }
 
+// The views variant makes the same exchange (same simulated time) and shows the same parts.
+TEST(Collectives, AllgatherViewsAreTheAllgathersParts) {
+  for (const Case& c : all_cases()) {
+    SimTime copied = 0, viewed = 0;
+    run_simulated(on_nodes(c.nodes), [&](Processor& p) {
+      auto all = allgather(p, tagged(p.id(), 2 * p.id()), {c.algo, c.per_message});
+      if (p.id() == 0) copied = p.now();
+    });
+    run_simulated(on_nodes(c.nodes), [&](Processor& p) {
+      const GatheredBytes g = allgather_views(p, tagged(p.id(), 2 * p.id()), {c.algo, c.per_message});
+      ASSERT_EQ(static_cast<int>(g.parts.size()), c.nodes);
+      for (int q = 0; q < c.nodes; ++q)
+        EXPECT_EQ(Bytes(g.parts[q].begin(), g.parts[q].end()), tagged(q, 2 * q)) << name(c);
+      if (p.id() == 0) viewed = p.now();
+    });
+    EXPECT_EQ(copied, viewed) << name(c);
+  }
+}
+
 TEST(Collectives, ReduceAndAllreduceSum) {
   for (const Case& c : all_cases()) {
     run_simulated(on_nodes(c.nodes), [&](Processor& p) {
@@ -112,6 +131,15 @@ TEST(Collectives, TypedAllgather) {
     const std::vector<float> mine(static_cast<std::size_t>(p.id()), float(p.id()));
     auto all = allgather_vectors<float>(p, mine);
     for (int q = 0; q < 5; ++q) EXPECT_EQ(all[q], std::vector<float>(static_cast<std::size_t>(q), float(q)));
+  });
+}
+
+TEST(Collectives, ConcatenatedAllgatherIsThePartsInProcessorOrder) {
+  run_simulated(on_nodes(5), [](Processor& p) {
+    const std::vector<float> mine(static_cast<std::size_t>(p.id()), float(p.id()));
+    std::vector<float> expected;
+    for (int q = 0; q < 5; ++q) expected.insert(expected.end(), std::size_t(q), float(q));
+    EXPECT_EQ(allgather_concatenated<float>(p, mine), expected);
   });
 }
 
