@@ -73,6 +73,11 @@ PassCost media(const Ops& op, const SceneFacts& f, int nodes, const CostModel& m
 
 }  // namespace
 
+double expected_loops(const SceneFacts& f, const CostModel& m) {
+  if (m.radiosity_loops > 0) return m.radiosity_loops;
+  return std::ceil(m.shots_per_patch * f.patches / std::max(m.shooters_per_loop, 1));
+}
+
 PassCost estimate_pass(const PassPlan& pass, const SceneFacts& f, const machine::MachineConfig& machine, int nodes,
                        const CostModel& m) {
   if (!pass.on) return {};
@@ -85,7 +90,13 @@ PassCost estimate_pass(const PassPlan& pass, const SceneFacts& f, const machine:
     case PassId::view:
       c = rays(camera_rays, op("rt_camera_ray") + trace + op("rt_shade"), f, nodes, f.pixels * 12 / nodes);
       break;
-    case PassId::radiosity: c = radiosity(op, f, nodes, m); break;
+    case PassId::radiosity:
+      c = radiosity(op, f, nodes, m);
+      if (m.radiosity_seconds_per_loop > 0) {  // measured: no cycles to convert
+        c.seconds_per_node = m.radiosity_seconds_per_loop * expected_loops(f, m);
+        return c;
+      }
+      break;
     case PassId::specular:
       c = rays(camera_rays * m.specular_depth, op("rt_secondary_ray") + trace + op("rt_shade"), f, nodes, 0);
       break;

@@ -2,7 +2,9 @@
 // A deliberately simple estimate of each pass's simulated time and memory per node, from the plan's
 // counts and the machine file's [ops] table (cycles per operation) and clock. It is an estimate: work
 // is taken to split evenly over the nodes, communication is not counted, and the unknowns (shots per
-// patch, specular depth, march samples, photons) are the constants below.
+// patch, specular depth, march samples, photons) are the constants below. The radiosity pass can
+// instead be measured by sampling its first loops (radiosity_seconds_per_loop), which counts its
+// communication and waiting too.
 #include <cstdint>
 
 #include "apps/render/plan.hpp"
@@ -14,6 +16,11 @@ struct CostModel {
   int hemicube_resolution = 256;  // radiosity's default (--hemicube)
   // Shots until 99.9 % of the energy is shot: CORNELL takes 254 loops of 2 shooters for 112 patches.
   double shots_per_patch = 4.5;
+  int shooters_per_loop = 2;      // the render's radiosity pass shoots two patches per loop
+  // > 0: the radiosity pass's simulated seconds per loop measured on the machine by running its
+  // first loops (radiosity_sample.hpp); the estimate is then this times the expected loops.
+  double radiosity_seconds_per_loop = 0;
+  double radiosity_loops = 0;     // > 0: the loops to convergence extrapolated from that sample
   int specular_depth = 4;         // upper bound: every camera ray meets mirrors or glass this deep
   // Distance samples per free path: the view takes 32 (1 - T) on a segment of transmittance T, so
   // a camera ray takes about 32 x SceneFacts::media_opacity (per pixel, CORNELL-FOG: 10 predicted,
@@ -34,5 +41,7 @@ struct PassCost {
 // the machine file's [ops] table lacks.
 PassCost estimate_pass(const PassPlan& pass, const SceneFacts& facts, const machine::MachineConfig& machine,
                        int nodes, const CostModel& model = {});
+// The radiosity loops the estimate assumes: shots_per_patch x patches / shooters_per_loop.
+double expected_loops(const SceneFacts& f, const CostModel& m);
 
 }  // namespace gcsim::render

@@ -38,8 +38,16 @@ std::string format_plan(const Plan& plan, const machine::MachineConfig& machine,
   }
   out += fmt::format("\ntotal     ~{:.3g} s per node (largest pass ~{} per node)\n", total, mib(peak));
   out += "estimate: work split evenly over the nodes from the counts above and the machine's [ops] cycles;\n"
-         "communication not counted; radiosity assumes " +
-         fmt::format("{:g} shots per patch and a {} hemicube.\n", model.shots_per_patch, model.hemicube_resolution);
+         "communication not counted";
+  if (model.radiosity_seconds_per_loop > 0)
+    out += fmt::format(", except for radiosity: its first loops ran on the simulated machine, {:.4g} s\n"
+                       "each (communication and waiting included), times ~{:.0f} loops from the decline of the "
+                       "unshot energy over them.\n",
+                       model.radiosity_seconds_per_loop, expected_loops(f, model));
+  else
+    out += fmt::format("; radiosity assumes {:g} shots per patch (~{:.0f} loops of {}) and a {} hemicube.\n",
+                       model.shots_per_patch, expected_loops(f, model), model.shooters_per_loop,
+                       model.hemicube_resolution);
   return out;
 }
 

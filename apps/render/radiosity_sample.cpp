@@ -1,0 +1,48 @@
+#include "apps/render/radiosity_sample.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include "apps/common/scene/description_to_world.hpp"
+#include "apps/radiosity/parallel_radiosity.hpp"
+#include "apps/render/medium_region.hpp"
+
+namespace gcsim::render {
+
+double extrapolate_loops(const std::vector<radiosity::StepRecord>& steps, double energy) {
+  const std::size_t n = steps.size();
+  if (n < 4) return 0;
+  const double unshot_mid = 1 - steps[n / 2 - 1].shot_fraction, unshot_end = 1 - steps[n - 1].shot_fraction;
+  if (!(unshot_end > 0 && unshot_end < unshot_mid)) return 0;
+  const double per_loop = std::log(unshot_end / unshot_mid) / double(n - n / 2);  // < 0
+  return double(n) + std::max(0.0, std::log((1 - energy) / unshot_end) / per_loop);
+}
+
+RadiositySample sample_radiosity_loops(const scene::SceneDescription& d, const std::string& file,
+                                       const parix::SimulationOptions& machine, int loops) {
+  const auto start = std::chrono::steady_clock::now();
+  // The mesh and options of `gcsim render`'s radiosity pass (render_app.cpp, render_setup.cpp).
+  const radiosity::Scene mesh = radiosity::flatten(scene::to_world(split_media(d, file).surfaces));
+  radiosity::ParallelOptions options;
+  options.solver.hemicube.resolution = 256;
+  options.solver.energy = 0.999;
+  options.solver.max_steps = loops;
+  options = radiosity::with_shared_projections(options);
+  std::vector<radiosity::StepRecord> steps;
+  bool converged = false;
+  const parix::RunResult run = parix::run_simulated(machine, [&](parix::Processor& p) {
+    radiosity::ParallelOutcome out = radiosity::solve_replica(p, mesh, options);
+    if (p.id() == 0) steps = std::move(out.steps), converged = out.converged;
+  });
+  RadiositySample s;
+  s.loops = int(steps.size());
+  if (converged) s.expected_loops = s.loops;
+  else s.expected_loops = extrapolate_loops(steps, options.solver.energy);
+  s.seconds_per_loop = s.loops > 0 ? run.simulated_seconds() / s.loops : 0.0;
+  s.host_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return s;
+}
+
+}  // namespace gcsim::render

@@ -1,0 +1,34 @@
+#pragma once
+// The radiosity pass's cost measured rather than counted: its first loops run on the simulated
+// machine (the radiosity app's own program, stopped after a few loops), so the time per loop
+// includes what an operation count misses, the repeated work, the communication and the waiting,
+// as SMPI predicts a run from a sample of it. `gcsim plan` multiplies it by the expected loops.
+#include <string>
+#include <vector>
+
+#include "apps/common/scene/scene_description.hpp"
+#include "apps/radiosity/progressive_solver.hpp"
+#include "parix/simulated_runtime.hpp"
+
+namespace gcsim::render {
+
+struct RadiositySample {
+  int loops = 0;                 // loops run (fewer if the solve converged sooner)
+  double seconds_per_loop = 0;   // simulated, the last node's end over the loops run
+  double host_seconds = 0;       // wall time the sample took
+  // Loops to shoot the energy fraction, extrapolated from the sample: the unshot energy taken to
+  // keep falling by the factor per loop it fell by over the sample's second half (0: converged in
+  // the sample, or no decline to extrapolate).
+  double expected_loops = 0;
+};
+
+// The loops a progressive solve needs to shoot `energy`, from the steps it made so far: the unshot
+// energy taken to keep falling by the factor per loop it fell by over their second half (0 with
+// fewer than 4 steps or no decline).
+double extrapolate_loops(const std::vector<radiosity::StepRecord>& steps, double energy);
+
+// machine: the machine already cut to the nodes of the estimate. file: for messages.
+RadiositySample sample_radiosity_loops(const scene::SceneDescription& d, const std::string& file,
+                                       const parix::SimulationOptions& machine, int loops = 16);
+
+}  // namespace gcsim::render
