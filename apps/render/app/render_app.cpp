@@ -16,6 +16,7 @@
 #include "apps/pipeline/progress.hpp"
 #include "apps/pipeline/run_command.hpp"
 #include "apps/common/image.hpp"
+#include "apps/media/tone_map.hpp"
 #include "apps/radiosity/gouraud_renderer.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "apps/radiosity/scene.hpp"
@@ -31,6 +32,12 @@ namespace gcsim::render::app {
 
 namespace {
 
+// --image and --tone-map.
+struct ImageOutput {
+  std::string path;
+  bool tone_map = false;  // the media app's auto exposure and extended Reinhard curve on the PNG only
+};
+
 struct RenderOutcome : pipeline::Outcome {
   std::unique_ptr<pipeline::ProgressLine> progress;
   int loops_done = 0;          // the radiosity pass as processor 0 reported it: what an
@@ -40,7 +47,7 @@ struct RenderOutcome : pipeline::Outcome {
 
 class RenderExperiment : public pipeline::Experiment {
  public:
-  RenderExperiment(const std::string& scene_file, std::string image, const std::vector<std::string>& forced,
+  RenderExperiment(const std::string& scene_file, ImageOutput image, const std::vector<std::string>& forced,
                    double error_budget, std::size_t photons, bool progress)
       : description_(scene::load_scene_file(scene_file)), plan_(make_plan(description_)), image_(std::move(image)),
         progress_(progress) {
@@ -137,9 +144,17 @@ class RenderExperiment : public pipeline::Experiment {
                      {"exposure", u.view->exposure}, {"simulated_s", total_s - media_s},
                      {"media_segments", v.counters.media_segments}, {"media_samples", v.counters.media_samples}};
     if (budget_) report_budget(o, extra);
-    if (image_.empty()) return;
-    apps::write_png(image_, v.image);
-    fmt::print("image     {} (view pass, assembled on node 0)\n", image_);
+    if (image_.path.empty()) return;
+    if (image_.tone_map) {
+      const double exposure = media::auto_exposure(v.image);
+      apps::write_png(image_.path, media::tone_mapped(v.image, exposure));
+      fmt::print("image     {} (view pass, assembled on node 0; tone-mapped: exposure {:.4g}, extended Reinhard)\n",
+                 image_.path, exposure);
+      extra["image_tone_map_exposure"] = exposure;
+      return;
+    }
+    apps::write_png(image_.path, v.image);
+    fmt::print("image     {} (view pass, assembled on node 0)\n", image_.path);
   }
 
  private:
@@ -175,7 +190,7 @@ class RenderExperiment : public pipeline::Experiment {
   RenderSetup setup_;  // surfaces without the media's bounds, radiosity mesh, media
   std::size_t photons_ = kDefaultPhotons;
   radiosity::ParallelOptions options_;
-  std::string image_;
+  ImageOutput image_;
   bool progress_;  // gcsim run: a line per loop on a terminal
   std::vector<PassId> forced_;  // --force-pass: off in the plan, run anyway
   ViewSettings view_;
@@ -250,12 +265,16 @@ pipeline::AppSpec spec() {
                  "  (gcsim run render --scene FILE ... is the same command)";
   s.options = [](CLI::App& cmd, pipeline::Verb verb) -> pipeline::ExperimentFactory {
     auto scene = std::make_shared<std::string>();
-    auto image = std::make_shared<std::string>();
+    auto image = std::make_shared<ImageOutput>();
     auto forced = std::make_shared<std::vector<std::string>>();
     auto budget = std::make_shared<double>(0.0);
     auto photons = std::make_shared<std::size_t>(kDefaultPhotons);
     cmd.add_option("scene,--scene", *scene, "a TOML scene file (scenes/*.toml)")->required();
-    cmd.add_option("--image", *image, "write the view pass's image (PNG, the scene's [image] size)");
+    cmd.add_option("--image", image->path, "write the view pass's image (PNG, the scene's [image] size)");
+    cmd.add_flag("--tone-map", image->tone_map,
+                 "tone-map the PNG: an automatic exposure (the 99th percentile of the lit pixels to white) and\n"
+                 "the extended Reinhard curve, as `gcsim run media` does; without it the PNG shows the radiance as\n"
+                 "it is (exposed by the radiosity pass when there is one), clipped at 1");
     cmd.add_option("--force-pass", *forced,
                    "run a pass the plan has off (radiosity: the solve on every node, checked to find no reflected\n"
                    "light; specular: reflected and refracted rays; shadows: shadow rays; media: the photon pass and\n"
