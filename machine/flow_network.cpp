@@ -19,7 +19,7 @@ void FlowNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action 
     channel_visited_.assign(channels, 0);
     left_.assign(channels, 0.0);
     unassigned_.assign(channels, 0);
-    candidate_round_.assign(channels, 0);
+    queued_.assign(channels, 0.0);
   }
   const std::uint64_t id = next_id_++;
   Flow& f = flows_[id];
@@ -85,19 +85,30 @@ void FlowNetwork::collect_component(const std::vector<int>& seed) {
 
 // Max-min fair rates by progressive filling: repeatedly saturate the channel that offers the
 // smallest equal share to the flows still unassigned (the lowest-numbered one on a tie), and fix
-// those flows at that share. The candidates heap holds every channel's current share (and stale
-// ones, skipped when popped), so the choice and every floating-point operation are those of a
-// scan over all the component's channels in channel order.
+// those flows at that share. The choice and every floating-point operation are those of a scan over
+// all the component's channels in channel order, but the heap is updated lazily: a channel's share
+// only grows as flows are fixed (their share is the smallest), so a channel is queued again only
+// when its share falls below its queued key (by rounding), and a popped key that has grown since is
+// re-queued at its current value. Every channel with unassigned flows keeps one live entry whose key
+// is at most its share, so a live top entry whose key is still its share is the smallest share.
 void FlowNetwork::fill_progressively() {
   const double capacity = ctx_.config.channel_bandwidth();
   auto later = [](const Candidate& a, const Candidate& b) {
     return a.share != b.share ? a.share > b.share : a.channel > b.channel;
   };
+  auto queue = [&](double share, int ch) {
+    queued_[ch] = share;
+    candidates_.push_back({share, ch});
+    std::push_heap(candidates_.begin(), candidates_.end(), later);
+  };
   candidates_.clear();
   for (int ch : component_channels_) {
     left_[ch] = capacity;
     unassigned_[ch] = static_cast<int>(on_channel_[ch].size());
-    if (unassigned_[ch] > 0) candidates_.push_back({left_[ch] / unassigned_[ch], ch});
+    if (unassigned_[ch] > 1) {  // a channel of one flow can only offer the whole capacity (below)
+      queued_[ch] = left_[ch] / unassigned_[ch];
+      candidates_.push_back({queued_[ch], ch});
+    }
   }
   std::make_heap(candidates_.begin(), candidates_.end(), later);
   std::size_t to_assign = component_flows_.size();
@@ -106,7 +117,12 @@ void FlowNetwork::fill_progressively() {
     const Candidate c = candidates_.back();
     candidates_.pop_back();
     const int n = unassigned_[c.channel];
-    if (n == 0 || left_[c.channel] / n != c.share) continue;  // stale
+    if (n == 0 || c.share != queued_[c.channel]) continue;  // saturated, or a superseded entry
+    const double current = left_[c.channel] / n;
+    if (current != c.share) {  // grew since it was queued
+      queue(current, c.channel);
+      continue;
+    }
     const double share = c.share;
     just_assigned_.clear();
     for (Flow* f : on_channel_[c.channel]) {
@@ -120,17 +136,19 @@ void FlowNetwork::fill_progressively() {
       }
     }
     to_assign -= just_assigned_.size();
-    // The channels whose share changed get a fresh candidate.
-    ++fill_round_;
+    // A channel whose share fell below its queued key (rounding) is queued again at once.
     for (Flow* f : just_assigned_) {
       for (int ch : f->route) {
-        if (unassigned_[ch] == 0 || candidate_round_[ch] == fill_round_) continue;
-        candidate_round_[ch] = fill_round_;
-        candidates_.push_back({left_[ch] / unassigned_[ch], ch});
-        std::push_heap(candidates_.begin(), candidates_.end(), later);
+        if (unassigned_[ch] == 0) continue;
+        const double now_share = left_[ch] / unassigned_[ch];
+        if (now_share < queued_[ch]) queue(now_share, ch);
       }
     }
   }
+  // Flows on channels of their own only: every shared channel offered less, so the scan would fix
+  // them last, each at its channel's whole capacity (left / 1 with nothing taken from it yet).
+  for (Flow* f : component_flows_)
+    if (!f->assigned) f->assigned = true, f->new_rate = capacity;
 }
 
 void FlowNetwork::reshare(const std::vector<int>& seed) {

@@ -56,8 +56,7 @@ class FlowNetwork final : public NetworkModel {
   std::vector<std::uint64_t> channel_visited_;  // per channel: the solve that last visited it
   std::vector<double> left_;                   // per channel: capacity not yet given out
   std::vector<int> unassigned_;                // per channel: flows without a rate yet
-  std::vector<std::uint64_t> candidate_round_;  // per channel: the filling round that last queued it
-  std::uint64_t fill_round_ = 0;
+  std::vector<double> queued_;                 // per channel: the key of its live heap entry
   std::vector<int> component_channels_;
   std::vector<Flow*> component_flows_;
   std::vector<Flow*> just_assigned_;

@@ -98,6 +98,26 @@ TEST(Network, TwoEqualFlowsOnOneChannelFinishTogetherAtTwiceTheTime) {
   EXPECT_NEAR(static_cast<double>(t2), static_cast<double>(t1), 2.0);
 }
 
+// Two bottleneck levels: channel 1->2 carries A1, A2 and B (a third of the capacity each), channel
+// 2->3 carries B and C; progressive filling fixes the first channel's three flows at c/3, which
+// leaves C two thirds. With T the time of one message alone, C finishes at 1.5 T and the other three
+// together at 3 T (C's end frees nothing on their bottleneck).
+TEST(Network, FlowFillsTheTighterChannelFirst) {
+  Fixture f("flow");
+  const std::int64_t bytes = 87500;  // 10 ms alone
+  const int n1 = f.mesh.node_at(1, 0), n2 = f.mesh.node_at(2, 0), n3 = f.mesh.node_at(3, 0);
+  SimTime a1 = -1, a2 = -1, b = -1, c = -1;
+  f.net->transfer(n1, n2, bytes, [&] { a1 = f.kernel.now(); });
+  f.net->transfer(n1, n2, bytes, [&] { a2 = f.kernel.now(); });
+  f.net->transfer(n1, n3, bytes, [&] { b = f.kernel.now(); });
+  f.net->transfer(n2, n3, bytes, [&] { c = f.kernel.now(); });
+  f.kernel.run();
+  const double t = static_cast<double>(f.net->serialization(bytes));
+  const double slack = static_cast<double>(f.net->latency(2)) + 100.0;  // start times differ by latencies
+  EXPECT_NEAR(static_cast<double>(c), 1.5 * t, slack);
+  for (SimTime end : {a1, a2, b}) EXPECT_NEAR(static_cast<double>(end), 3.0 * t, slack);
+}
+
 TEST(Network, CountsBytesPerChannel) {
   Fixture f("analytic");
   f.net->transfer(0, 2, 100, [] {});
