@@ -4,10 +4,14 @@
 // media the view cannot show are refused with the scene file named.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "apps/common/scene/scene_file.hpp"
 #include "apps/media/media_render.hpp"
@@ -225,11 +229,9 @@ TEST(MediaPass, InScatteredLightIsSingleScatteringPlusALittle) {
   }
 }
 
-TEST(MediaPass, AgreesWithTheMediaApplicationOnItsSmallScene) {
-  // The media app's "small" scene (a glass sphere of Schlick medium in isotropic fog, one point
-  // light) as a scene description, seen by the unified renderer's view, against the media app's own
-  // camera paths: the images' means agree (the view shows pi L).
-  const media::MediaScene app = media::small_scene();
+// The media app's "small" scene (a glass sphere of Schlick medium in isotropic fog, one point light)
+// as a scene description.
+scene::SceneDescription small_scene_description(const media::MediaScene& app) {
   scene::SceneDescription d;
   d.name = "small";
   d.camera = app.camera;
@@ -249,9 +251,17 @@ TEST(MediaPass, AgreesWithTheMediaApplicationOnItsSmallScene) {
   inside.medium = medium(app.inside, app.ior);
   d.shapes.push_back({scene::Box{app.fog_box.lo, app.fog_box.hi}, d.add_material(fog)});
   const auto* sphere = dynamic_cast<const media::SphereBoundary*>(app.object.get());
-  ASSERT_NE(sphere, nullptr);
+  if (sphere == nullptr) throw std::logic_error("the small scene's object is no longer a sphere");
   d.shapes.push_back({scene::Sphere{sphere->centre(), sphere->radius()}, d.add_material(inside)});
   d.lights.push_back(scene::PointLight{app.light.position, scene::Rgb(app.light.intensity)});
+  return d;
+}
+
+TEST(MediaPass, AgreesWithTheMediaApplicationOnItsSmallScene) {
+  // The small scene seen by the unified renderer's view, against the media app's own camera paths:
+  // the images' means agree (the view shows pi L).
+  const media::MediaScene app = media::small_scene();
+  const scene::SceneDescription d = small_scene_description(app);
 
   // The media app's photons, through the unified view and through the app's own camera paths: the
   // same map, so only the distance samples differ (at 200000 photons of each tracer on its own the
@@ -279,6 +289,40 @@ TEST(MediaPass, AgreesWithTheMediaApplicationOnItsSmallScene) {
   const double ratio = ours / (kPi_test * theirs);  // the view shows pi L
   std::printf("mean of the unified render / (pi x the media app's): %.4f\n", ratio);
   EXPECT_NEAR(ratio, 1.0, 0.01);
+}
+
+// The two photon tracers on the same scene: over independent seeds, the photons each stores in the
+// fog and in the sphere agree within 4 standard errors of the difference (per-seed totals are the
+// samples: one emitted photon stores several interactions, so single counts are clustered).
+TEST(MediaPass, ThePhotonTracersStoreAlikeOverSeeds) {
+  media::MediaScene app = media::small_scene();
+  const RenderSetup setup = prepare_render(small_scene_description(app), make_plan(small_scene_description(app)), "small.toml");
+  ASSERT_EQ(setup.media->regions.size(), 2u);  // the fog, then the sphere
+  const std::size_t n = 20000;
+  constexpr int kSeeds = 32;
+  std::array<std::vector<double>, 2> ours, theirs;  // [fog, sphere][seed]
+  for (int seed = 1; seed <= kSeeds; ++seed) {
+    app.seed = std::uint64_t(seed);
+    const media::PhotonPassResult a = media::trace_photons(app, 0, n);
+    theirs[0].push_back(double(a.outside.size())), theirs[1].push_back(double(a.inside.size()));
+    const MediaSetup& m = *setup.media;
+    const VolumePhotons v = trace_volume_photons(m.surfaces, m.bvh, m.lights, m.regions, 0, n, n, std::uint64_t(100 + seed));
+    ours[0].push_back(double(v.per_region[0].size())), ours[1].push_back(double(v.per_region[1].size()));
+  }
+  auto mean_and_variance_of_mean = [](const std::vector<double>& x) {
+    double mean = 0, var = 0;
+    for (double v : x) mean += v / double(x.size());
+    for (double v : x) var += (v - mean) * (v - mean) / double(x.size() - 1);
+    return std::pair{mean, var / double(x.size())};
+  };
+  for (int r = 0; r < 2; ++r) {
+    const auto [m_ours, v_ours] = mean_and_variance_of_mean(ours[std::size_t(r)]);
+    const auto [m_theirs, v_theirs] = mean_and_variance_of_mean(theirs[std::size_t(r)]);
+    std::printf("%s: unified %.1f, media app %.1f photons stored (means of %d seeds)\n", r == 0 ? "fog" : "sphere",
+                m_ours, m_theirs, kSeeds);
+    EXPECT_GT(m_theirs, 0.0);
+    EXPECT_NEAR(m_ours, m_theirs, 4 * std::sqrt(v_ours + v_theirs)) << (r == 0 ? "fog" : "sphere");
+  }
 }
 
 TEST(MediaPass, FogImageIsTheSameOnAnyNodeCount) {
