@@ -10,19 +10,25 @@
 namespace gcsim::machine {
 namespace {
 
-// Keys that say the same thing in different ways: a file that sets one replaces the whole group.
-const std::vector<std::vector<std::string_view>> kAlternativeKeys = {
-    {"connect_model", "connect_serialized", "connect_server_block"},
+// Keys that say the same thing in different ways, with the keys that only refine them: a file
+// that sets one of the alternatives replaces the whole group, while a file that sets only a
+// refinement (the server block of a "servers" base) keeps its base's choice.
+struct AlternativeKeys {
+  std::vector<std::string_view> alternatives;
+  std::vector<std::string_view> refinements;
+};
+const std::vector<AlternativeKeys> kAlternativeKeys = {
+    {{"connect_model", "connect_serialized"}, {"connect_server_block"}},
 };
 
 void drop_replaced_alternatives(toml::table& base, const toml::table& overlay) {
   for (const auto& group : kAlternativeKeys) {
     bool overlay_sets_one = false;
-    for (auto key : group) overlay_sets_one = overlay_sets_one || overlay.contains(key);
+    for (auto key : group.alternatives) overlay_sets_one = overlay_sets_one || overlay.contains(key);
     if (!overlay_sets_one) continue;
-    for (auto key : group) {
-      if (!overlay.contains(key)) base.erase(key);
-    }
+    for (const auto* keys : {&group.alternatives, &group.refinements})
+      for (auto key : *keys)
+        if (!overlay.contains(key)) base.erase(key);
   }
 }
 

@@ -171,6 +171,25 @@ TEST_F(Inheritance, ChildMaySwitchTheConnectModelOfItsBase) {
   EXPECT_EQ(c.connect_model, ConnectModel::serialized);
 }
 
+// A child that only resizes its base's connection-server blocks keeps the base's "servers" model
+// (it used to drop it and fail with "'connect_server_block' needs connect_model = \"servers\"").
+TEST_F(Inheritance, ChildMayResizeTheServerBlocksOfItsBase) {
+  std::string text(default_machine_config_text());
+  text.replace(text.find("connect_model = \"parallel\""), 26, "connect_model = \"servers\"\nconnect_server_block = [4, 4]");
+  write("servers.toml", text);
+  const auto c = load_machine_config(write("c.toml", "base = \"servers.toml\"\n[network]\nconnect_server_block = [4, 2]\n"));
+  EXPECT_EQ(c.connect_model, ConnectModel::servers);
+  EXPECT_EQ(c.connect_block_width, 4);
+  EXPECT_EQ(c.connect_block_height, 2);
+  // Switching the model still drops the base's block: a parallel child has none to complain about.
+  const auto p = load_machine_config(write("p.toml", "base = \"servers.toml\"\n[network]\nconnect_model = \"parallel\"\n"));
+  EXPECT_EQ(p.connect_model, ConnectModel::parallel);
+  // A block under a base whose model is not "servers" is still refused, naming the child's line.
+  const std::string e = error_loading(write("bad.toml", "base = \"builtin:gc-powerplus\"\n[network]\nconnect_server_block = [2, 2]\n"));
+  EXPECT_NE(e.find("bad.toml:3:"), std::string::npos) << e;
+  EXPECT_NE(e.find("needs connect_model"), std::string::npos) << e;
+}
+
 TEST_F(Inheritance, CalibratedFileAsGcsimCalibrateWritesItLoads) {
   write("gc.toml", std::string(default_machine_config_text()));
   const auto fitted = write("fitted.toml",
