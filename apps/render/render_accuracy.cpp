@@ -14,7 +14,7 @@ RenderControls reference_controls() { return {512, 0.9999, 10, 200000, 128}; }
 
 RenderRun render_with(const scene::SceneDescription& d, const Plan& plan, const RenderControls& c, double exposure,
                       const parix::SimulationOptions& machine) {
-  RenderSetup setup = prepare_render(d, plan, d.name, {}, c.photons, c.media);
+  RenderSetup setup = prepare_render(d, plan, d.name, {}, c.photons, c.media, c.seed);
   if (setup.media) setup.media->view.samples_per_free_path = c.march;
   radiosity::ParallelOptions options;
   options.solver.hemicube.resolution = c.hemicube;

@@ -2,6 +2,7 @@
 // What accuracy costs across a whole render (`gcsim accuracy render`): each pass's main control
 // varied from the default with the others held, every render on the simulated machine at the
 // reference's exposure, its image compared with a high-quality reference render.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@ struct RenderControls {
   std::size_t photons = kDefaultPhotons;  // media: photons emitted
   double march = 32;      // media: distance samples per free path (M = march (1 - T) on a segment)
   bool media = true;      // false: the media are left out (an error budget may drop them)
+  std::uint64_t seed = 1;  // media: the photons' and the distance samples' random streams
 };
 RenderControls reference_controls();  // hemicube 512, energy 0.9999, depth 10, 200000 photons, march 128
 

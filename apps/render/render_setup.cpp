@@ -8,7 +8,8 @@
 namespace gcsim::render {
 
 RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, const std::string& file,
-                           ForcedPasses forced, std::size_t photons, bool with_media) {
+                           ForcedPasses forced, std::size_t photons, bool with_media,
+                           std::uint64_t seed) {
   RenderSetup s;
   s.split = split_media(d, file);
   raytrace::Scene lowered;
@@ -28,6 +29,7 @@ RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, c
   try {
     s.media = make_media_setup(s.split, std::move(lowered), std::move(regions), photon_pass,
                                plan.facts.media_sampling == MediaSampling::radiance_estimate, photons);
+    s.media->seed = seed;
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(file + ": " + e.what());
   }

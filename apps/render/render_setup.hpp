@@ -3,6 +3,7 @@
 // without the media's bounding shapes), the radiosity mesh when the plan has that pass, and the
 // media the view applies with the photon pass's inputs. Shared by `gcsim render`, its error budget
 // and `gcsim accuracy render`.
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -32,8 +33,10 @@ struct ForcedPasses {
 };
 
 // file: for messages. with_media false: no medium at all (an error budget dropped them; refracting
-// bounds stay as glass). Throws std::invalid_argument "FILE: ..." for what the view cannot show.
+// bounds stay as glass). seed: the photons' and the view's distance samples' random streams.
+// Throws std::invalid_argument "FILE: ..." for what the view cannot show.
 RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, const std::string& file,
-                           ForcedPasses forced = {}, std::size_t photons = kDefaultPhotons, bool with_media = true);
+                           ForcedPasses forced = {}, std::size_t photons = kDefaultPhotons, bool with_media = true,
+                           std::uint64_t seed = 1);
 
 }  // namespace gcsim::render

@@ -48,7 +48,7 @@ struct RenderOutcome : pipeline::Outcome {
 class RenderExperiment : public pipeline::Experiment {
  public:
   RenderExperiment(const std::string& scene_file, ImageOutput image, const std::vector<std::string>& forced,
-                   double error_budget, std::size_t photons, bool progress)
+                   double error_budget, std::size_t photons, std::uint64_t seed, bool progress)
       : description_(scene::load_scene_file(scene_file)), plan_(make_plan(description_)), image_(std::move(image)),
         progress_(progress) {
     for (const std::string& name : forced) force(name);
@@ -58,9 +58,10 @@ class RenderExperiment : public pipeline::Experiment {
     view_.shows_radiosity = !runs_forced(PassId::radiosity);
     const RenderControls controls = budget_ ? budget_->choice.controls : RenderControls{};
     photons_ = photons;
+    seed_ = seed;
     setup_ = prepare_render(description_, plan_, scene_file,
                             {.media = runs_forced(PassId::media), .radiosity = runs_forced(PassId::radiosity)}, photons,
-                            controls.media);
+                            controls.media, seed);
     options_.solver.hemicube.resolution = controls.hemicube;  // `gcsim run radiosity`'s default 256
     options_.solver.energy = controls.energy;
     view_.max_depth = controls.max_depth;
@@ -175,11 +176,11 @@ class RenderExperiment : public pipeline::Experiment {
       return end_s;
     }
     const std::size_t stored = u.view->medium ? u.view->medium->photons() : 0;
-    fmt::print("media     {} photons emitted, {} stored in the media ({} surface bounces{}), {}; the pass ended at {:.6f} s {}\n",
-               setup_.media->photons, stored, u.photon_surface_events, real ? " on this rank" : "",
+    fmt::print("media     {} photons emitted (seed {}), {} stored in the media ({} surface bounces{}), {}; the pass ended at {:.6f} s {}\n",
+               setup_.media->photons, setup_.media->seed, stored, u.photon_surface_events, real ? " on this rank" : "",
                setup_.media->view.radiance_estimate ? "SH grid for the radiance estimate" : "transmittance sampling",
                end_s, real ? "of wall time (this rank)" : "simulated (last node)");
-    extra["media"] = {{"ran", true}, {"photons_emitted", setup_.media->photons}, {"photons_stored", stored},
+    extra["media"] = {{"ran", true}, {"photons_emitted", setup_.media->photons}, {"seed", setup_.media->seed}, {"photons_stored", stored},
                       {"surface_bounces", u.photon_surface_events}, {"radiance_estimate", setup_.media->view.radiance_estimate},
                       {"simulated_end_s", end_s}};
     return end_s;
@@ -189,6 +190,7 @@ class RenderExperiment : public pipeline::Experiment {
   Plan plan_;
   RenderSetup setup_;  // surfaces without the media's bounds, radiosity mesh, media
   std::size_t photons_ = kDefaultPhotons;
+  std::uint64_t seed_ = 1;
   radiosity::ParallelOptions options_;
   ImageOutput image_;
   bool progress_;  // gcsim run: a line per loop on a terminal
@@ -209,6 +211,7 @@ class RenderExperiment : public pipeline::Experiment {
     }
     RenderControls full_plan;
     full_plan.photons = photons_;
+    full_plan.seed = seed_;
     const RenderRun full = render_with(description_, plan_, full_plan, o.render->view->exposure, o.options.simulation);
     const double error = relative_rmse(o.render->view->result.image, full.image), s = o.run.simulated_seconds();
     fmt::print("budget    {:.6f} s simulated against the full plan's {:.6f} s ({:.1f} % saved); relative RMSE {:.4f} "
@@ -269,6 +272,7 @@ pipeline::AppSpec spec() {
     auto forced = std::make_shared<std::vector<std::string>>();
     auto budget = std::make_shared<double>(0.0);
     auto photons = std::make_shared<std::size_t>(kDefaultPhotons);
+    auto seed = std::make_shared<std::uint64_t>(1);
     cmd.add_option("scene,--scene", *scene, "a TOML scene file (scenes/*.toml)")->required();
     cmd.add_option("--image", image->path, "write the view pass's image (PNG, the scene's [image] size)");
     cmd.add_flag("--tone-map", image->tone_map,
@@ -290,9 +294,14 @@ pipeline::AppSpec spec() {
                    "photons the media pass emits, over all nodes (more: less noise in the media's glow, a longer pass)")
         ->capture_default_str()
         ->check(CLI::Range(std::size_t(1), std::size_t(100000000)));
+    cmd.add_option("--seed", *seed,
+                   "the random streams of the media: the photons each node emits and the view's distance samples.\n"
+                   "The same seed gives the same image bit for bit on any node count; another seed shows the\n"
+                   "photon noise. Scenes without a medium draw no random numbers")
+        ->capture_default_str();
     const bool progress = verb == pipeline::Verb::run;
-    return [scene, image, forced, budget, photons, progress] {
-      return std::make_unique<RenderExperiment>(*scene, *image, *forced, *budget, *photons, progress);
+    return [scene, image, forced, budget, photons, seed, progress] {
+      return std::make_unique<RenderExperiment>(*scene, *image, *forced, *budget, *photons, *seed, progress);
     };
   };
   // `gcsim render SCENE.toml ...` is `gcsim run render --scene SCENE.toml ...`, top-level as the
