@@ -19,6 +19,10 @@ using Program = std::function<void(Processor&)>;
 struct RunOptions {
   std::string backend = "simulated";  // a name from backend_names()
   SimulationOptions simulation;       // machine, node count, network model, trace
+  // Host threads an application may use beside the simulation's own for work it can compute ahead
+  // (a pure function of its inputs, e.g. the radiosity's hemicube cells): 1, none. The kernel and the
+  // processors stay on one thread, so results, simulated times and traces are the same for any count.
+  int host_threads = 1;
 };
 
 // A backend runs program on every processor of options and returns when all have returned.

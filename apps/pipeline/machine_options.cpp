@@ -67,7 +67,14 @@ void add_machine_options(CLI::App* cmd, MachineOptions& o) {
       ->check(CLI::IsMember({"summary", "messages", "full"}))
       ->capture_default_str();
   cmd->add_option("--json", o.json, "Write the run's simulated and wall times and counters as JSON");
-  group_as_machine_options(cmd, {"--nodes", "--shape", "--trace", "--trace-level", "--json"});
+  cmd->add_option("--host-threads", o.host_threads,
+                  "Host threads for one simulated run: the simulation keeps one, the others compute ahead the work an "
+                  "application can (radiosity and render's radiosity pass: each loop's hemicube cells; raytrace and "
+                  "render's view: the tiles, except with --algo B1; media: none yet). Results, simulated times and "
+                  "traces are the same for any count; only the wall time changes")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
+  group_as_machine_options(cmd, {"--nodes", "--shape", "--trace", "--trace-level", "--json", "--host-threads"});
 }
 
 parix::SimulationOptions simulation_options(const MachineOptions& o, int default_nodes) {
@@ -91,6 +98,7 @@ parix::RunOptions run_options(const MachineOptions& o, int default_nodes) {
   parix::RunOptions r;
   r.backend = o.backend;
   r.simulation = simulation_options(o, default_nodes);
+  r.host_threads = o.host_threads;
   return r;
 }
 

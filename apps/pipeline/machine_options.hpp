@@ -20,6 +20,7 @@ struct MachineOptions {
   std::string trace_level = "full";
   std::string json;                   // where to write the run's JSON summary
   std::string memory_limit = "enforce";  // a node's memory exceeded: enforce (fail) or warn
+  int host_threads = 1;                  // parix::RunOptions::host_threads
 };
 
 // Adds --config, --model, --nodes, --trace, --trace-level and --json to cmd.

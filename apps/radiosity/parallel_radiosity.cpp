@@ -43,7 +43,13 @@ std::int64_t replica_bytes(const Scene& scene) {
 
 ParallelOptions with_shared_projections(ParallelOptions o) {
   o.shared_projections = o.share_projections ? std::make_shared<ProjectionCache>() : nullptr;
+  o.cell_prefetch = o.host_threads > 1 ? std::make_shared<CellPrefetch>(o.host_threads - 1) : nullptr;
   return o;
+}
+
+ParallelOptions with_shared_projections(ParallelOptions o, const parix::RunOptions& run) {
+  if (run.backend == "simulated") o.host_threads = run.host_threads;
+  return with_shared_projections(std::move(o));
 }
 
 HemicubeOptions hemicube_of(const ParallelOptions& o) {
@@ -61,7 +67,7 @@ namespace {
 class RadiosityNode {
  public:
   RadiosityNode(parix::Processor& p, const Scene& scene, const ParallelOptions& o)
-      : p_(p), o_(o), id_(p.id()), n_(p.count()), np_(int(scene.patches.size())), ne_(int(scene.elements.size())),
+      : p_(p), o_(o), scene_(scene), id_(p.id()), n_(p.count()), np_(int(scene.patches.size())), ne_(int(scene.elements.size())),
         renderer_(scene, hemicube_of(o)), cells_(renderer_.cell_count()), state_(scene) {
     coll_.algo = o.bcast;
     coll_.connect_per_message = !o.keep_links;
@@ -158,7 +164,12 @@ class RadiosityNode {
     if (o_.shared_projections) o_.shared_projections->project(renderer_, state_.steps(), s, ops_);
     else renderer_.project(s, ops_);
     for (int c = patch_mode ? 0 : id_; c < cells_; c += patch_mode ? 1 : n_)
-      put_cell_form_factors(w, std::int32_t(k), renderer_.cell_form_factors(c, ops_));
+      put_cell_form_factors(w, std::int32_t(k), cell(c, patch_mode));
+  }
+
+  CellFormFactors cell(int c, bool patch_mode) {
+    if (!o_.cell_prefetch || patch_mode) return renderer_.cell_form_factors(c, ops_);
+    return o_.cell_prefetch->take(renderer_, scene_, state_.steps(), c, n_, ops_);
   }
 
   // owner >= 0 (patch partition): the shooter's owner has the whole row and broadcasts it.
@@ -187,6 +198,7 @@ class RadiosityNode {
 
   parix::Processor& p_;
   const ParallelOptions& o_;
+  const Scene& scene_;
   const int id_, n_, np_, ne_;
   HemicubeRenderer renderer_;
   const int cells_;

@@ -22,8 +22,10 @@
 #include <utility>
 #include <vector>
 
+#include "apps/radiosity/cell_prefetch.hpp"
 #include "apps/radiosity/progressive_solver.hpp"
 #include "apps/radiosity/projection_cache.hpp"
+#include "parix/backend.hpp"
 #include "parix/collectives.hpp"
 #include "parix/processor.hpp"
 
@@ -47,6 +49,11 @@ struct ParallelOptions {
   // and simulated times either way; give each run its own cache (with_shared_projections).
   bool share_projections = true;  // what the user asked; a run's program makes the cache
   std::shared_ptr<ProjectionCache> shared_projections;
+  // Host threads (cell_prefetch.hpp): above 1, workers compute the hemicube cells ahead of the
+  // replicas. Identical results, simulated times and traces for any count; the simulated backend
+  // only (with_shared_projections makes the workers of one run).
+  int host_threads = 1;
+  std::shared_ptr<CellPrefetch> cell_prefetch;
 };
 
 // What processor 0 reports at the end of a run.
@@ -64,8 +71,12 @@ std::int64_t replica_bytes(const Scene& scene);
 // The hemicube options a run of `options` renders with (the hierarchical algorithm's levels set).
 HemicubeOptions hemicube_of(const ParallelOptions& options);
 
-// `options` for one simulated run: a fresh projection cache if options.share_projections.
+// `options` for one simulated run: a fresh projection cache if options.share_projections, and
+// host_threads - 1 cell workers if host_threads > 1.
 ParallelOptions with_shared_projections(ParallelOptions options);
+// The same for one run of a command: with the run's host threads on the simulated backend (under
+// MPI each rank computes its own cells).
+ParallelOptions with_shared_projections(ParallelOptions options, const parix::RunOptions& run);
 
 // The SPMD program: run it on every processor; processor 0 fills *outcome.
 void radiosity_program(parix::Processor& p, const Scene& scene, const ParallelOptions& options,

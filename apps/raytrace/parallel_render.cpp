@@ -8,6 +8,7 @@
 #include "apps/raytrace/pixel_encoding.hpp"
 #include "apps/raytrace/render.hpp"
 #include "apps/raytrace/scene.hpp"
+#include "apps/raytrace/tile_prefetch.hpp"
 #include "apps/raytrace/tile_renderer.hpp"
 #include "parix/backend.hpp"
 #include "parix/collectives.hpp"
@@ -54,6 +55,26 @@ struct NodeWork {
   Tiling tiling;
   ParallelRender& out;     // node 0: the image; every node: its own check slot (counters, hit ids)
   TileRenderer& renderer;  // this processor's own (state: row planes, classifier)
+  TilePrefetch* prefetch = nullptr;  // --host-threads: tiles rendered ahead on the host
+  int row_y0 = -1, row_y1 = -1;      // with prefetch: the row this node's tracer last filtered
+
+  // The tile's pixels and counts, as this node's tracer gives them: rendered now, or taken from
+  // the prefetch with its row's planes counted only if the row is new to this node (as the
+  // tracer's own row state decides).
+  void render_tile(const Tiling::Rect& rect, int tile, std::vector<glm::vec3>& colors, std::vector<std::int32_t>& prims,
+                   TraceCounters& c) {
+    if (!prefetch) {
+      renderer.render_tile(rect.x0, rect.y0, rect.x1, rect.y1, colors, prims, c);
+      return;
+    }
+    RenderedTile r = prefetch->take(tile, renderer);
+    colors = std::move(r.colors);
+    prims = std::move(r.prims);
+    c = r.counters;
+    if (rect.y0 != row_y0 || rect.y1 != row_y1) c += r.row_counters;
+    row_y0 = rect.y0;
+    row_y1 = rect.y1;
+  }
 
   parix::Bytes render(parix::Processor& p, int tile) {
     const auto rect = tiling.rect(tile);
@@ -61,7 +82,7 @@ struct NodeWork {
     std::vector<glm::vec3> colors(rect.pixels());
     std::vector<std::int32_t> prims(rect.pixels());
     TraceCounters c;
-    renderer.render_tile(rect.x0, rect.y0, rect.x1, rect.y1, colors, prims, c);
+    render_tile(rect, tile, colors, prims, c);
     std::vector<parix::OpCount> ops;
     for (const auto& [name, count] : c.ops())
       if (count > 0) ops.push_back({name, count});
@@ -273,13 +294,31 @@ ParallelRender ParallelRenderJob::new_result(int nodes) const {
   return out;
 }
 
-void ParallelRenderJob::program(parix::Processor& p, ParallelRender& out) const {
+std::unique_ptr<TilePrefetch> ParallelRenderJob::make_prefetch(int nodes, int host_threads) const {
+  if (host_threads <= 1 || !TilePrefetch::usable(settings_.algorithm)) return nullptr;
+  const Tiling tiling{settings_.width, settings_.height, settings_.tile};
+  // The order tiles are handed out in: by index, except static blocks, which the nodes render side by side.
+  std::vector<int> order;
+  const int tiles = tiling.count();
+  if (distribution_ == Distribution::static_blocks) {
+    for (int i = 0; int(order.size()) < tiles; ++i)
+      for (int n = 0; n < nodes; ++n) {
+        const int begin = int(std::int64_t(tiles) * n / nodes), end = int(std::int64_t(tiles) * (n + 1) / nodes);
+        if (begin + i < end) order.push_back(begin + i);
+      }
+  } else {
+    for (int t = 0; t < tiles; ++t) order.push_back(t);
+  }
+  return std::make_unique<TilePrefetch>(scene_, bvh_, settings_, tiling, std::move(order), host_threads - 1);
+}
+
+void ParallelRenderJob::program(parix::Processor& p, ParallelRender& out, TilePrefetch* prefetch) const {
   // What each node holds: the scene and the tree; node 0 the image.
   const parix::MemoryReservation scene = p.reserve_memory(scene_bytes(), "scene");
   const parix::MemoryReservation image = p.reserve_memory(p.id() == 0 ? image_bytes() : 0, "image");
   // Built here, by the processor that uses it (on the heap: fiber stacks are small).
   const auto renderer = std::make_unique<TileRenderer>(scene_, bvh_, settings_);
-  NodeWork work{scene_, bvh_, settings_, Tiling{settings_.width, settings_.height, settings_.tile}, out, *renderer};
+  NodeWork work{scene_, bvh_, settings_, Tiling{settings_.width, settings_.height, settings_.tile}, out, *renderer, prefetch};
   if (distribution_ == Distribution::dynamic) run_dynamic(p, work);
   else run_static(p, work, distribution_);
 }
@@ -310,10 +349,12 @@ void ParallelRenderJob::finish(ParallelRender& out) const {
 }
 
 ParallelRender render_parallel(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Distribution distribution,
-                               const parix::SimulationOptions& options) {
+                               const parix::SimulationOptions& options, int host_threads) {
   const ParallelRenderJob job(scene, bvh, settings, distribution);
   ParallelRender out = job.new_result(options.config.nodes);
-  out.run = parix::run({"simulated", options}, [&](parix::Processor& p) { job.program(p, out); });
+  const std::unique_ptr<TilePrefetch> prefetch = job.make_prefetch(options.config.nodes, host_threads);
+  out.run = parix::run({"simulated", options}, [&](parix::Processor& p) { job.program(p, out, prefetch.get()); });
+  if (prefetch) out.tiles_by_workers = prefetch->tiles_by_workers();
   job.finish(out);
   return out;
 }

@@ -11,6 +11,7 @@
 //                worker thread on node 0's second CPU takes runs from the same pool
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -24,6 +25,8 @@
 #include "parix/simulated_runtime.hpp"
 
 namespace gcsim::raytrace {
+
+class TilePrefetch;
 
 class Scene;
 
@@ -55,6 +58,7 @@ struct ParallelRender {
   // simulated or sent.
   std::function<void(int done, int total)> on_tile;
   int tiles_rendered = 0, tiles_total = 0;
+  std::int64_t tiles_by_workers = 0;  // render_parallel with host threads: tiles a worker rendered ahead
 };
 
 // The per-processor program of a parallel render, run by whichever backend the caller chooses.
@@ -62,7 +66,10 @@ class ParallelRenderJob {
  public:
   ParallelRenderJob(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Distribution distribution);
   ParallelRender new_result(int nodes) const;  // image and per-node slots sized for `nodes`
-  void program(parix::Processor& p, ParallelRender& out) const;
+  // prefetch: tiles rendered ahead on host threads (make_prefetch), or null.
+  void program(parix::Processor& p, ParallelRender& out, TilePrefetch* prefetch = nullptr) const;
+  // For one simulated run on `nodes` with `host_threads` (--host-threads): null if 1, or for B1.
+  std::unique_ptr<TilePrefetch> make_prefetch(int nodes, int host_threads) const;
   void finish(ParallelRender& out) const;      // sums the counters, merges the hit ids
 
   // Node memory, declared before the host allocates it: every node's scene and tree, the 8-bit
@@ -78,8 +85,9 @@ class ParallelRenderJob {
   Distribution distribution_;
 };
 
-// Runs the job on the simulated machine (for tests and callers without a pipeline).
+// Runs the job on the simulated machine (for tests and callers without a pipeline), with
+// host_threads - 1 workers rendering tiles ahead (make_prefetch).
 ParallelRender render_parallel(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Distribution distribution,
-                               const parix::SimulationOptions& options);
+                               const parix::SimulationOptions& options, int host_threads = 1);
 
 }  // namespace gcsim::raytrace

@@ -40,16 +40,20 @@ void PrimaryTracer::trace_pixel(int x, int y, Hit& hit, TestTally& tally, TraceC
   }
 }
 
-void PrimaryTracer::trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>& hits, TraceCounters& counters) {
+void PrimaryTracer::trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>& hits, TraceCounters& counters,
+                               TraceCounters* row_counters) {
   const int w = x1 - x0, h = y1 - y0;
   hits.assign(std::size_t(w) * h, Hit{});
   TestTally tally;
   if (uses_subtree(algorithm_)) {
     if (y0 != row_y0_ || y1 != row_y1_) {  // a new row of subregions: its two shared planes
-      filter_by_two_planes(bvh_, camera_.row_plane(y0), flipped(camera_.row_plane(y1)), row_, counters);
+      row_cost_ = TraceCounters{};
+      filter_by_two_planes(bvh_, camera_.row_plane(y0), flipped(camera_.row_plane(y1)), row_, row_cost_);
       row_y0_ = y0;
       row_y1_ = y1;
+      if (!row_counters) counters += row_cost_;
     }
+    if (row_counters) *row_counters = row_cost_;
     subtree_from_filtered(bvh_, row_, camera_.column_plane(x0), flipped(camera_.column_plane(x1)), subtree_, counters);
   }
   if (algorithm_ == Algorithm::A4 && !subtree_.empty) {

@@ -20,8 +20,12 @@ class PrimaryTracer {
  public:
   PrimaryTracer(const Scene& scene, const Bvh& bvh, const Camera& camera, Algorithm algorithm);
 
-  // Hits of the pixels of [x0, x1) x [y0, y1), row-major in `hits`.
-  void trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>& hits, TraceCounters& counters);
+  // Hits of the pixels of [x0, x1) x [y0, y1), row-major in `hits`. The row's two planes are
+  // counted in `counters` when the tile starts a new row; with `row_counters`, they are counted
+  // there instead, for every tile (what its row costs), and the caller decides whether the row
+  // is new to it (tile_prefetch.hpp: a tile rendered ahead does not know its node's last row).
+  void trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>& hits, TraceCounters& counters,
+                  TraceCounters* row_counters = nullptr);
 
   Algorithm algorithm() const { return algorithm_; }
 
@@ -37,6 +41,7 @@ class PrimaryTracer {
   const Camera& camera_;
   Algorithm algorithm_;
   int row_y0_ = -1, row_y1_ = -1;
+  TraceCounters row_cost_;  // what filtering the current row by its two planes counted
   PlaneFilteredTree row_;
   Subtree subtree_;
   std::unique_ptr<RayClassifier> classifier_;

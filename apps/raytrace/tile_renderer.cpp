@@ -15,8 +15,8 @@ TileRenderer::TileRenderer(const Scene& scene, const Bvh& bvh, const RenderSetti
       primary_(scene, bvh, camera_, settings.algorithm) {}
 
 void TileRenderer::render_tile(int x0, int y0, int x1, int y1, std::span<glm::vec3> colors, std::span<std::int32_t> prims,
-                               TraceCounters& counters) {
-  primary_.trace_tile(x0, y0, x1, y1, hits_, counters);
+                               TraceCounters& counters, TraceCounters* row_counters) {
+  primary_.trace_tile(x0, y0, x1, y1, hits_, counters, row_counters);
   const int w = x1 - x0, h = y1 - y0;
   const bool whitted = settings_.shading == Shading::whitted;
 

@@ -25,8 +25,9 @@ class TileRenderer {
   TileRenderer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings);
 
   // Colours (linear RGB) and primary hit ids (-1: background) of [x0, x1) x [y0, y1), row-major.
+  // row_counters: see PrimaryTracer::trace_tile.
   void render_tile(int x0, int y0, int x1, int y1, std::span<glm::vec3> colors, std::span<std::int32_t> prims,
-                   TraceCounters& counters);
+                   TraceCounters& counters, TraceCounters* row_counters = nullptr);
   const Camera& camera() const { return camera_; }
 
  private:

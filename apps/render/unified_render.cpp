@@ -33,7 +33,7 @@ void unified_render_program(parix::Processor& p, const scene::SceneDescription& 
   if (out.view->medium) charge_grid_share(p, out.view->medium->grid_build());
   out.media_end_s[std::size_t(p.id())] = p.now_seconds();
   if (p.id() == 0) out.radiosity = std::move(mine);
-  out.view->job->program(p, out.view->result);
+  out.view->job->program(p, out.view->result, out.view->prefetch.get());
 }
 
 void finish(UnifiedRender& out) {

@@ -59,6 +59,7 @@ std::unique_ptr<ViewPass> make_view_pass(const scene::SceneDescription& d, const
   }
   v->job = std::make_unique<raytrace::ParallelRenderJob>(v->scene, v->bvh, v->settings, raytrace::Distribution::dynamic);
   v->result = v->job->new_result(nodes);
+  v->prefetch = v->job->make_prefetch(nodes, view.host_threads);
   return v;
 }
 

@@ -10,6 +10,7 @@
 #include "apps/radiosity/scene.hpp"
 #include "apps/raytrace/parallel_render.hpp"
 #include "apps/raytrace/scene.hpp"
+#include "apps/raytrace/tile_prefetch.hpp"
 #include "apps/render/media_pass.hpp"
 #include "apps/render/view_medium.hpp"
 
@@ -25,6 +26,7 @@ struct ViewSettings {
   // false: the radiosity pass was forced on (--force-pass radiosity) where the plan skips it, so the
   // view shows the plan's scene without it (the run checks that the pass found no reflected light).
   bool shows_radiosity = true;
+  int host_threads = 1;  // above 1: workers render the view's tiles ahead (raytrace/tile_prefetch.hpp)
 };
 
 struct ViewPass {
@@ -35,6 +37,7 @@ struct ViewPass {
   raytrace::ParallelRender result;  // node 0 assembles the image; per-node counters
   double exposure = 1.0;            // radiosity to displayed colour (the Gouraud display's automatic one)
   std::unique_ptr<ViewMedium> medium;  // the media every ray crosses (settings.media), or null
+  std::unique_ptr<raytrace::TilePrefetch> prefetch;  // view.host_threads > 1: tiles rendered ahead
 };
 
 // With a radiosity solution (mesh and one radiosity per element): its elements lit by it; without

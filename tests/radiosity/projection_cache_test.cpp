@@ -1,8 +1,15 @@
-// Computation sampling (projection_cache.hpp): replicas that share each shooter's projection on the
-// host give the same radiosities, the same simulated times and the same per-processor counters as
-// replicas that each project for themselves, for every parallel variant; and the host projects
-// each shooter once per loop instead of once per node.
+// Host work that changes nothing but the host's wall time. Computation sampling
+// (projection_cache.hpp): replicas that share each shooter's projection on the host give the same
+// radiosities, the same simulated times and the same per-processor counters as replicas that each
+// project for themselves, for every parallel variant; and the host projects each shooter once per
+// loop instead of once per node. Host threads (cell_prefetch.hpp): the same again, and the same
+// trace files byte for byte, with 2 or 4 host threads computing the hemicube cells ahead.
 #include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
 
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "machine/machine_config.hpp"
@@ -18,8 +25,9 @@ struct Outcome {
   parix::RunResult result;
 };
 
-Outcome run(const Scene& scene, const ParallelOptions& o, int nodes) {
-  const parix::SimulationOptions sim = test_support::published_machine(nodes);
+Outcome run(const Scene& scene, const ParallelOptions& o, int nodes, const std::string& trace = "") {
+  parix::SimulationOptions sim = test_support::published_machine(nodes);
+  sim.trace.path = trace;
   Outcome r;
   r.result = parix::run({"simulated", sim}, [&](parix::Processor& p) { radiosity_program(p, scene, o, &r.outcome); });
   return r;
@@ -42,19 +50,30 @@ void expect_same(const Outcome& a, const Outcome& b) {
   }
 }
 
+struct Variant {
+  ParallelAlgorithm algorithm;
+  bool aggregate;
+  int near_samples;
+};
+const Variant kVariants[] = {{ParallelAlgorithm::hemicube_fixed, false, 2}, {ParallelAlgorithm::hemicube_fixed, true, 1},
+                             {ParallelAlgorithm::hemicube_hierarchical, false, 2}, {ParallelAlgorithm::patch, false, 2}};
+
+ParallelOptions small_options(const Variant& v) {
+  ParallelOptions o;
+  o.solver.hemicube.resolution = 64;
+  o.solver.hemicube.cells_per_side = 4;
+  o.solver.hemicube.max_shooter_samples = v.near_samples;
+  o.solver.energy = 0.95;
+  o.algorithm = v.algorithm;
+  o.aggregate = v.aggregate;
+  o.hierarchical_levels = 2;
+  return o;
+}
+
 TEST(ProjectionCache, SharedProjectionsChangeNothingButHostWork) {
   const Scene scene = testing::lit_room();
-  struct Variant { ParallelAlgorithm algorithm; bool aggregate; int near_samples; };
-  for (const Variant v : {Variant{ParallelAlgorithm::hemicube_fixed, false, 2}, Variant{ParallelAlgorithm::hemicube_fixed, true, 1},
-                          Variant{ParallelAlgorithm::hemicube_hierarchical, false, 2}, Variant{ParallelAlgorithm::patch, false, 2}}) {
-    ParallelOptions o;
-    o.solver.hemicube.resolution = 64;
-    o.solver.hemicube.cells_per_side = 4;
-    o.solver.hemicube.max_shooter_samples = v.near_samples;
-    o.solver.energy = 0.95;
-    o.algorithm = v.algorithm;
-    o.aggregate = v.aggregate;
-    o.hierarchical_levels = 2;
+  for (const Variant& v : kVariants) {
+    ParallelOptions o = small_options(v);
     for (int nodes : {1, 3, 8}) {
       SCOPED_TRACE(::testing::Message() << to_string(v.algorithm) << (v.aggregate ? " aggregated" : "") << ", " << nodes
                                       << " nodes");
@@ -75,6 +94,53 @@ TEST(ProjectionCache, SharedProjectionsChangeNothingButHostWork) {
       EXPECT_LE(cache.entries(), std::size_t(o.solver.shooters));  // earlier loops were dropped
     }
   }
+}
+
+TEST(HostThreads, WorkersComputingTheCellsChangeNothingButWallTime) {
+  const Scene scene = testing::lit_room();
+  std::int64_t by_workers = 0;
+  for (const Variant& v : kVariants) {
+    ParallelOptions o = small_options(v);
+    for (int nodes : {1, 3, 8}) {
+      o.host_threads = 1;
+      const Outcome one = run(scene, with_shared_projections(o), nodes);
+      for (int threads : {2, 4}) {
+        SCOPED_TRACE(::testing::Message() << to_string(v.algorithm) << (v.aggregate ? " aggregated" : "") << ", " << nodes
+                                        << " nodes, " << threads << " host threads");
+        o.host_threads = threads;
+        const ParallelOptions with_workers = with_shared_projections(o);
+        ASSERT_NE(with_workers.cell_prefetch, nullptr);
+        expect_same(one, run(scene, with_workers, nodes));
+        by_workers += with_workers.cell_prefetch->cells_by_workers();
+      }
+    }
+  }
+  // The workers did compute cells (thousands are offered); which ones depends on the host's timing.
+  EXPECT_GT(by_workers, 0);
+}
+
+std::string file_bytes(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(HostThreads, TracesAreTheSameByteForByte) {
+  const Scene scene = testing::lit_room();
+  ParallelOptions o = small_options(kVariants[0]);
+  const auto dir = std::filesystem::temp_directory_path() / "gcsim_host_threads_trace";
+  std::filesystem::create_directories(dir);
+  for (int threads : {1, 4}) {
+    o.host_threads = threads;
+    run(scene, with_shared_projections(o), 8, (dir / ("t" + std::to_string(threads) + ".json")).string());
+  }
+  for (const char* ext : {".json", ".csv", ".paje"}) {
+    const std::string one = file_bytes(dir / (std::string("t1") + ext)), four = file_bytes(dir / (std::string("t4") + ext));
+    EXPECT_GT(one.size(), 1000u) << ext;
+    EXPECT_TRUE(one == four) << ext << " differs between 1 and 4 host threads";
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(ProjectionCache, RefusesAProjectionOfAnotherScene) {

@@ -58,7 +58,7 @@ parix::Program RadiosityExperiment::program(pipeline::Outcome& out) const {
   RadiosityOutcome& o = pipeline::outcome_as<RadiosityOutcome>(out);
   ParallelOutcome* result = &o.result;
   if (outputs_.progress && pipeline::progress_wanted()) o.progress = std::make_unique<pipeline::ProgressLine>("radiosity", 0);
-  ParallelOptions shown = with_shared_projections(options_);
+  ParallelOptions shown = with_shared_projections(options_, o.options);
   // Unshot energy falls about geometrically per loop, so the loops done are log(unshot) over
   // log(unshot at the threshold): a fraction that grows about linearly with the loops.
   shown.on_loop = [&o, goal = std::log(1 - options_.solver.energy)](int loop, double shot) {

@@ -9,6 +9,7 @@
 #include "apps/pipeline/sweep_table.hpp"
 #include "apps/raytrace/algorithm.hpp"
 #include "apps/raytrace/render.hpp"
+#include "apps/raytrace/tile_prefetch.hpp"
 
 namespace gcsim::raytrace::app {
 
@@ -35,7 +36,10 @@ parix::Program RaytraceExperiment::program(pipeline::Outcome& out) const {
       line->update_fraction(double(done) / total, fmt::format("{} of {} tiles rendered", done, total));
     };
   }
-  return [this, render](parix::Processor& p) { job_.program(p, *render); };
+  // --host-threads: the tiles rendered ahead on the host (simulated backend; under MPI each rank renders its own).
+  const std::shared_ptr<TilePrefetch> prefetch =
+      o.options.backend == "simulated" ? job_.make_prefetch(o.options.simulation.config.nodes, o.options.host_threads) : nullptr;
+  return [this, render, prefetch](parix::Processor& p) { job_.program(p, *render, prefetch.get()); };
 }
 
 void RaytraceExperiment::after_run(pipeline::Outcome& out) const {

@@ -74,7 +74,7 @@ class RenderExperiment : public pipeline::Experiment {
   parix::Program program(pipeline::Outcome& out) const override {
     RenderOutcome& o = pipeline::outcome_as<RenderOutcome>(out);
     if (progress_ && pipeline::progress_wanted()) o.progress = std::make_unique<pipeline::ProgressLine>("render", 0);
-    radiosity::ParallelOptions shown = radiosity::with_shared_projections(options_);
+    radiosity::ParallelOptions shown = radiosity::with_shared_projections(options_, o.options);
     // As `gcsim run radiosity`'s line: unshot energy falls about geometrically per loop.
     shown.on_loop = [&o, goal = std::log(1 - options_.solver.energy)](int loop, double shot) {
       o.loops_done = loop, o.shot_fraction = shot;
@@ -87,8 +87,10 @@ class RenderExperiment : public pipeline::Experiment {
     render->on_view_tile = [&o](int done, int total) {
       if (o.progress) o.progress->update_fraction(double(done) / total, fmt::format("view pass: tile {} of {}", done, total));
     };
-    return [this, render, mesh, shown](parix::Processor& p) {
-      unified_render_program(p, setup_.split.surfaces, mesh, shown, view_, setup_.media.get(), *render);
+    ViewSettings view = view_;
+    view.host_threads = shown.host_threads;  // the run's, on the simulated backend
+    return [this, render, mesh, shown, view](parix::Processor& p) {
+      unified_render_program(p, setup_.split.surfaces, mesh, shown, view, setup_.media.get(), *render);
     };
   }
   void after_run(pipeline::Outcome& out) const override {
