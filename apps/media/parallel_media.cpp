@@ -86,22 +86,52 @@ double charge_render(parix::Processor& p, const RenderCounters& c, std::size_t k
   return p.now_seconds() - start;
 }
 
+// Tile t of the image: its pixels' luminance and what they counted.
+PixelTile render_pixel_tile(const MediaScene& scene, const SceneCaches& caches, const MarchSettings& settings,
+                            std::uint64_t seed, int t) {
+  const Tiling tiling{scene.image.width, scene.image.height};
+  PixelTile out;
+  for (int y = tiling.y0(t); y < tiling.y1(t); ++y)
+    for (int x = tiling.x0(t); x < tiling.x1(t); ++x)
+      out.pixels.push_back(static_cast<float>(render_pixel(scene, caches, settings, seed, x, y, out.counters)));
+  return out;
+}
+
 // Tiles handed out dynamically (tile_farm.hpp); a tile's record is its pixels' luminance as floats.
+// Node 0, with host threads: workers that render the tiles ahead from node 0's caches, in the
+// order the farm hands them out.
+void start_workers(MediaHostThreads& host, const MediaScene& scene, const SceneCaches& caches,
+                   const MarchSettings& settings, std::uint64_t seed, int tiles) {
+  std::vector<apps::WorkAhead<PixelTile>::Compute> computes(std::size_t(host.workers), [&, tiles](int t) {
+    return render_pixel_tile(scene, caches, settings, seed, t);
+  });
+  std::vector<int> order(static_cast<std::size_t>(tiles));
+  for (int t = 0; t < tiles; ++t) order[std::size_t(t)] = t;
+  host.ahead = std::make_unique<apps::WorkAhead<PixelTile>>(tiles, std::move(order), std::move(computes));
+}
+
 TileFarmStats render_tiles(parix::Processor& p, const MediaScene& scene, const SceneCaches& caches,
                            const MarchSettings& settings, std::uint64_t seed, apps::Image& image,
-                           std::vector<RenderCounters>& per_node) {
+                           std::vector<RenderCounters>& per_node, MediaHostThreads* host) {
   const Tiling tiling{scene.image.width, scene.image.height};
   TileFarm farm;
   farm.tiles = tiling.count();
+  // Node 0's workers read its caches: they stop when this returns, even on a cancelled run.
+  struct StopWorkers {
+    MediaHostThreads* host;
+    ~StopWorkers() {
+      if (!host || !host->ahead) return;
+      host->tiles_by_workers = host->ahead->by_workers();
+      host->ahead.reset();
+    }
+  } stop{p.id() == 0 ? host : nullptr};
+  if (host && host->workers > 0 && p.id() == 0) start_workers(*host, scene, caches, settings, seed, farm.tiles);
   farm.render = [&](parix::Processor& q, int t) {
-    RenderCounters counters;
-    std::vector<float> pixels;
-    for (int y = tiling.y0(t); y < tiling.y1(t); ++y)
-      for (int x = tiling.x0(t); x < tiling.x1(t); ++x)
-        pixels.push_back(static_cast<float>(render_pixel(scene, caches, settings, seed, x, y, counters)));
-    counters.tile_seconds = charge_render(q, counters, scene.k_nearest);
-    per_node[static_cast<std::size_t>(q.id())].add(counters);
-    const auto bytes = std::as_bytes(std::span<const float>(pixels));
+    const auto here = [&](int tile) { return render_pixel_tile(scene, caches, settings, seed, tile); };
+    PixelTile r = host && host->ahead ? host->ahead->take(t, here) : here(t);
+    r.counters.tile_seconds = charge_render(q, r.counters, scene.k_nearest);
+    per_node[static_cast<std::size_t>(q.id())].add(r.counters);
+    const auto bytes = std::as_bytes(std::span<const float>(r.pixels));
     return parix::Bytes(bytes.begin(), bytes.end());
   };
   farm.assemble = [&](parix::Processor& q, int t, std::span<const std::byte> record) {
@@ -117,13 +147,13 @@ TileFarmStats render_tiles(parix::Processor& p, const MediaScene& scene, const S
       }
     q.compute("memcpy_byte", static_cast<std::int64_t>(record.size()));
   };
-  return run_tile_farm(p, farm);
+  return run_tile_farm(p, farm);  // on node 0: every tile is assembled, nothing is left to take
 }
 
 }  // namespace
 
 void media_program(parix::Processor& p, const MediaScene& scene, const MarchSettings& settings, std::uint64_t seed,
-                   ParallelMediaResult& result, std::vector<RenderCounters>& per_node) {
+                   ParallelMediaResult& result, std::vector<RenderCounters>& per_node, MediaHostThreads* host) {
   const int width = scene.image.width, height = scene.image.height;
   const int id = p.id(), nodes = p.count();
   PhotonPassResult photons = trace_photons(scene, share_begin(scene.photons_emitted, id, nodes),
@@ -140,7 +170,7 @@ void media_program(parix::Processor& p, const MediaScene& scene, const MarchSett
   // Node 0 assembles the whole image; the others hold a tile at a time.
   const std::int64_t image_bytes = id == 0 ? std::int64_t(width) * height * std::int64_t(sizeof(glm::vec3)) : 0;
   const parix::MemoryReservation image_held = p.reserve_memory(image_bytes, "image");
-  const TileFarmStats farm = render_tiles(p, scene, caches, settings, seed, result.image, per_node);
+  const TileFarmStats farm = render_tiles(p, scene, caches, settings, seed, result.image, per_node, host);
   if (id != 0) return;
   result.tiles = static_cast<std::size_t>(Tiling{width, height}.count());
   result.tile_messages = farm.assignments;
@@ -155,12 +185,14 @@ void media_program(parix::Processor& p, const MediaScene& scene, const MarchSett
 }
 
 ParallelMediaResult render_media_parallel(const MediaScene& scene, const MarchSettings& settings, std::uint64_t seed,
-                                          const parix::SimulationOptions& sim) {
+                                          const parix::SimulationOptions& sim, int host_threads) {
   ParallelMediaResult result;
   result.image = apps::Image(scene.image.width, scene.image.height);
   std::vector<RenderCounters> per_node(static_cast<std::size_t>(sim.config.nodes));
+  MediaHostThreads host{host_threads - 1, nullptr, 0};
   result.run = parix::run_simulated(
-      sim, [&](parix::Processor& p) { media_program(p, scene, settings, seed, result, per_node); });
+      sim, [&](parix::Processor& p) { media_program(p, scene, settings, seed, result, per_node, &host); });
+  result.tiles_by_workers = host.tiles_by_workers;
   for (const RenderCounters& c : per_node) result.counters.add(c);
   return result;
 }

@@ -4,9 +4,11 @@
 // SH grids built voxel-slice by voxel-slice and all-gathered, image tiles handed out dynamically by
 // node 0 (tile_farm.hpp). Compute is charged from counted operations ([ops] media_* in the machine file).
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "apps/common/image.hpp"
+#include "apps/common/work_ahead.hpp"
 #include "apps/media/media_render.hpp"
 #include "parix/run_result.hpp"
 #include "parix/simulated_runtime.hpp"
@@ -25,17 +27,34 @@ struct ParallelMediaResult {
   std::size_t tiles = 0;                // kTileSize² tiles of the image
   std::uint64_t tile_messages = 0;      // assignments the master sent
   std::uint64_t tile_result_bytes = 0;  // tile records the master received
+  std::int64_t tiles_by_workers = 0;    // render_media_parallel with host threads: tiles rendered ahead
 };
 
 inline constexpr int kTileSize = 16;
 
+// One tile's pixels (luminance) and what rendering them counted: a function of the tile alone.
+struct PixelTile {
+  std::vector<float> pixels;
+  RenderCounters counters;
+};
+
+// --host-threads: `workers` threads render the tiles ahead (apps/common/work_ahead.hpp) from node
+// 0's photon maps and grids, which every node holds alike; node 0 starts them when its own are
+// built and stops them when the image is assembled. Nodes charge each tile's counts as they take it.
+struct MediaHostThreads {
+  int workers = 0;
+  std::unique_ptr<apps::WorkAhead<PixelTile>> ahead;  // while node 0 farms out the tiles
+  std::int64_t tiles_by_workers = 0;                  // after the run
+};
+
 // The SPMD program: every processor runs it; result.image (sized by the caller) and the byte and
 // photon figures are filled by processor 0, per_node[id] (one slot per processor, never sent) by
 // each processor for the host-side sum of counters after the run.
+// host: null, or the run's host threads (one object for all processors).
 void media_program(parix::Processor& p, const MediaScene& scene, const MarchSettings& settings, std::uint64_t seed,
-                   ParallelMediaResult& result, std::vector<RenderCounters>& per_node);
+                   ParallelMediaResult& result, std::vector<RenderCounters>& per_node, MediaHostThreads* host = nullptr);
 
 ParallelMediaResult render_media_parallel(const MediaScene& scene, const MarchSettings& settings, std::uint64_t seed,
-                                          const parix::SimulationOptions& sim);
+                                          const parix::SimulationOptions& sim, int host_threads = 1);
 
 }  // namespace gcsim::media

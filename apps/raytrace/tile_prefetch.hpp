@@ -10,15 +10,13 @@
 // The kernel and the nodes' fibers stay on one host thread. Not for B1, whose beams grow with the
 // rays a node traced (ray_classification.hpp). One per simulated run; under MPI every rank renders
 // its own tiles.
-#include <condition_variable>
 #include <cstdint>
 #include <memory>
-#include <mutex>
-#include <thread>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "apps/common/work_ahead.hpp"
 #include "apps/raytrace/render.hpp"
 #include "apps/raytrace/tile_renderer.hpp"
 
@@ -36,40 +34,19 @@ class TilePrefetch {
   // order: the tiles in the order nodes are expected to render them.
   TilePrefetch(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const Tiling& tiling,
                std::vector<int> order, int workers);
-  ~TilePrefetch();  // the workers finish the tile in hand and stop
-  TilePrefetch(const TilePrefetch&) = delete;
-  TilePrefetch& operator=(const TilePrefetch&) = delete;
 
   // Tile `tile`, rendered ahead or now with `own` (the taking node's renderer); each tile once.
   RenderedTile take(int tile, TileRenderer& own);
-  std::int64_t tiles_by_workers() const;
+  std::int64_t tiles_by_workers() const { return ahead_->by_workers(); }
 
   static bool usable(Algorithm a) { return a != Algorithm::B1; }
 
  private:
-  enum class State { pending, running, done };
-  struct Slot {
-    State state = State::pending;
-    RenderedTile tile;
-    std::exception_ptr failure;
-  };
   RenderedTile render(int tile, TileRenderer& r) const;
-  int claim();  // the next pending tile in order, marked running, or -1
-  void work(TileRenderer& renderer);
 
-  const Scene& scene_;
-  const Bvh& bvh_;
-  RenderSettings settings_;
   Tiling tiling_;
-  std::vector<int> order_;
-  std::size_t next_ = 0;
-  std::vector<Slot> slots_;
-  mutable std::mutex lock_;
-  std::condition_variable tile_done_;
-  bool stopping_ = false;
-  std::int64_t by_workers_ = 0;
   std::vector<std::unique_ptr<TileRenderer>> renderers_;  // one per worker, made on the simulation's thread
-  std::vector<std::jthread> threads_;
+  std::unique_ptr<apps::WorkAhead<RenderedTile>> ahead_;  // last: its workers stop before the renderers go
 };
 
 }  // namespace gcsim::raytrace

@@ -48,5 +48,30 @@ TEST(ParallelMedia, DynamicTilesGiveADeterministicMakespan) {
   for (std::size_t i = 0; i < a.image.pixels().size(); ++i) ASSERT_EQ(a.image.pixels()[i].x, b.image.pixels()[i].x);
 }
 
+// --host-threads: tiles rendered ahead from node 0's caches (parallel_media.hpp) change no pixel,
+// no count and no simulated time; some tiles were rendered by the workers.
+TEST(ParallelMedia, HostThreadsChangeNothingButWallTime) {
+  MediaScene s = small_scene();
+  s.photons_emitted = 2000, s.k_nearest = 20, s.image.width = 96, s.image.height = 64;
+  const MarchSettings settings{Estimator::radiance, 4.0};
+  std::int64_t by_workers = 0;
+  for (int nodes : {1, 4}) {
+    const ParallelMediaResult one = render_media_parallel(s, settings, 7, test_support::published_machine(nodes));
+    for (int threads : {2, 4}) {
+      SCOPED_TRACE(::testing::Message() << nodes << " nodes, " << threads << " host threads");
+      const ParallelMediaResult more = render_media_parallel(s, settings, 7, test_support::published_machine(nodes), threads);
+      EXPECT_EQ(more.run.makespan, one.run.makespan);
+      EXPECT_EQ(more.run.events, one.run.events);
+      EXPECT_EQ(more.counters.march.samples, one.counters.march.samples);
+      EXPECT_EQ(more.counters.pixels, one.counters.pixels);
+      ASSERT_EQ(more.run.processors.size(), one.run.processors.size());
+      for (std::size_t i = 0; i < one.run.processors.size(); ++i) EXPECT_EQ(more.run.processors[i].ops, one.run.processors[i].ops);
+      EXPECT_TRUE(more.image.pixels() == one.image.pixels());
+      by_workers += more.tiles_by_workers;
+    }
+  }
+  EXPECT_GT(by_workers, 0);  // 24 tiles each time; which ones depends on the host's timing
+}
+
 }  // namespace
 }  // namespace gcsim::media

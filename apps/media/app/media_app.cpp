@@ -35,6 +35,7 @@ struct MediaFlags {
 struct MediaOutcome : pipeline::Outcome {
   ParallelMediaResult result;
   std::vector<RenderCounters> per_node;  // one slot per processor, never sent; summed after the run
+  MediaHostThreads host;                 // --host-threads
 };
 
 class MediaExperiment final : public pipeline::Experiment {
@@ -57,7 +58,9 @@ class MediaExperiment final : public pipeline::Experiment {
   }
   parix::Program program(pipeline::Outcome& out) const override {
     auto& o = pipeline::outcome_as<MediaOutcome>(out);
-    return [this, &o](parix::Processor& p) { media_program(p, scene_, settings_, flags_.seed, o.result, o.per_node); };
+    // --host-threads: tiles rendered ahead on the host (simulated backend; under MPI each rank renders its own).
+    o.host.workers = o.options.backend == "simulated" ? o.options.host_threads - 1 : 0;
+    return [this, &o](parix::Processor& p) { media_program(p, scene_, settings_, flags_.seed, o.result, o.per_node, &o.host); };
   }
   void after_run(pipeline::Outcome& out) const override {
     auto& o = pipeline::outcome_as<MediaOutcome>(out);
