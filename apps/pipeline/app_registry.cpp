@@ -64,12 +64,15 @@ std::string app_examples(std::size_t width) {
 }
 
 void add_app_commands(CommandGroups& g) {
-  CLI::App* threads = g.bench->add_subcommand("threads", "What --host-threads buys: an application's run on 1 host thread and on T");
-  threads->require_subcommand(1);
+  CLI::App* threads = nullptr;
+  if (g.bench) {
+    threads = g.bench->add_subcommand("threads", "What --host-threads buys: an application's run on 1 host thread and on T");
+    threads->require_subcommand(1);
+  }
   for (const AppSpec* app : registered_apps()) {
     add_run_command(*g.run, *app);
     add_sweep_command(*g.sweep, *app);
-    add_bench_threads_command(*threads, *app);
+    if (threads) add_bench_threads_command(*threads, *app);
   }
   for (const AppSpec* app : registered_apps())
     if (app->commands) app->commands(g);

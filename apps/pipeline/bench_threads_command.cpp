@@ -36,13 +36,14 @@ void add_bench_threads_command(CLI::App& threads, const AppSpec& app) {
   add_machine_choice_options(cmd, f->machine);
   cmd->add_option("--nodes", f->machine.nodes, "Simulated nodes of every run (default: the application's)")
       ->check(CLI::Range(1, 1 << 20));
-  cmd->add_option("--threads", f->threads, "Host threads compared with one")->check(CLI::Range(2, 256))->capture_default_str();
-  cmd->add_option("--rounds", f->rounds, "Rounds of one run on 1 thread, then one on --threads")
+  // Named apart from any application's own options (a test app has --rounds).
+  cmd->add_option("--host-threads", f->threads, "Host threads compared with one")->check(CLI::Range(2, 256))->capture_default_str();
+  cmd->add_option("--bench-rounds", f->rounds, "Rounds of one run on 1 host thread, then one on --host-threads")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();
-  for (const char* name : {"--nodes", "--threads", "--rounds"}) cmd->get_option(name)->group("Benchmark");
+  for (const char* name : {"--nodes", "--host-threads", "--bench-rounds"}) cmd->get_option(name)->group("Benchmark");
   ExperimentFactory prepare = app.options(*cmd, Verb::sweep);
-  cmd->footer("Example:\n  gcsim bench threads " + app.name + " --nodes 64 --threads 2 --rounds 3");
+  cmd->footer("Example:\n  gcsim bench threads " + app.name + " --nodes 64 --host-threads 2 --bench-rounds 3");
   const int default_nodes = app.default_nodes;
   cmd->callback([f, prepare, default_nodes] {
     if (f->machine.backend != "simulated") throw std::invalid_argument("bench threads: --host-threads is for the simulated backend");

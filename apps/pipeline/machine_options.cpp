@@ -98,6 +98,10 @@ parix::RunOptions run_options(const MachineOptions& o, int default_nodes) {
   parix::RunOptions r;
   r.backend = o.backend;
   r.simulation = simulation_options(o, default_nodes);
+  if (o.host_threads > 1 && o.backend != "simulated")
+    throw std::invalid_argument(fmt::format("--host-threads {}: for the simulated backend only; under --backend {} every "
+                                            "rank is a process of its own (start more ranks instead)",
+                                            o.host_threads, o.backend));
   r.host_threads = o.host_threads;
   return r;
 }
@@ -147,7 +151,8 @@ void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohma
   const bool real = r.model.rfind("mpi", 0) == 0;
   fmt::print("{} {:12.6f} s   (compute {:.6f} s, communication {:.6f} s mean per processor)\n", real ? "measured " : "simulated",
              r.simulated_seconds(), r.mean_compute_seconds(), r.mean_comm_seconds());
-  fmt::print("wall      {:12.6f} s   ({} events, {} messages)\n", r.wall_seconds, r.events, r.total_messages());
+  fmt::print("wall      {:12.6f} s   ({} events, {} messages{})\n", r.wall_seconds, r.events, r.total_messages(),
+             o.host_threads > 1 ? fmt::format(", {} host threads", o.host_threads) : "");
   if (!r.memory_warning.empty()) {
     fmt::print("memory    over the node's memory (--memory-limit warn): peak {} on processor {}'s node of {}; first: {}\n",
                machine::format_bytes(r.memory_peak), r.memory_peak_processor, machine::format_bytes(r.memory_capacity),
@@ -156,6 +161,7 @@ void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohma
   if (!o.trace.empty()) fmt::print("trace     {} (and .csv, .paje beside it)\n", o.trace);
   if (!o.json.empty()) {
     nlohmann::json j = r.to_json();
+    j["wall"]["host_threads"] = o.host_threads;  // beside the wall time: the host's side of the run
     if (!o.trace.empty()) {
       j["trace"] = o.trace;  // lets `gcsim report RUN.json` find the trace to plot
       j["trace_level"] = o.trace_level;
