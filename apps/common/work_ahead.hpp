@@ -62,17 +62,15 @@ class WorkAhead {
         break;
       }
       held.unlock();
-      Result r = here(other);
+      finish(other, here);  // another taker's item: a failure goes to that taker
       held.lock();
-      slots_[std::size_t(other)].result = std::move(r);
-      slots_[std::size_t(other)].state = State::done;
     }
     s.state = State::taken;
     if (s.failure) std::rethrow_exception(s.failure);
     return std::move(s.result);
   }
 
-  std::int64_t by_workers() const {  // items a worker computed so far
+  std::int64_t by_workers() const {  // items the workers took on so far
     std::lock_guard<std::mutex> held(lock_);
     return by_workers_;
   }
@@ -96,27 +94,33 @@ class WorkAhead {
     return -1;
   }
 
+  // Computes a claimed item (lock not held) and stores its result, or its failure for its taker.
+  void finish(int item, const Compute& compute) {
+    Result r{};
+    std::exception_ptr failure;
+    try {
+      r = compute(item);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    std::lock_guard<std::mutex> held(lock_);
+    Slot& s = slots_[std::size_t(item)];
+    s.result = std::move(r);
+    s.failure = failure;
+    s.state = State::done;
+    item_done_.notify_all();
+  }
+
   void work(const Compute& compute) {
     std::unique_lock<std::mutex> held(lock_);
     for (;;) {
       if (stopping_) return;
       const int item = claim();
       if (item < 0) return;  // every item is handed out
-      held.unlock();
-      Result r{};
-      std::exception_ptr failure;
-      try {
-        r = compute(item);
-      } catch (...) {
-        failure = std::current_exception();
-      }
-      held.lock();
-      Slot& s = slots_[std::size_t(item)];
-      s.result = std::move(r);
-      s.failure = failure;
-      s.state = State::done;
       ++by_workers_;
-      item_done_.notify_all();
+      held.unlock();
+      finish(item, compute);
+      held.lock();
     }
   }
 

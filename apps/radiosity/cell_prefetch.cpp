@@ -84,11 +84,19 @@ void CellPrefetch::help_while_running(HemicubeRenderer& renderer, Batch& b, Cell
     other->state = State::running;
     held.unlock();
     OpCounts ops;
-    CellFormFactors ff = renderer.cell_form_factors(cell, ops);
+    CellFormFactors ff;
+    std::exception_ptr failure;  // another replica's cell: a failure goes to that replica
+    try {
+      ff = renderer.cell_form_factors(cell, ops);
+    } catch (...) {
+      failure = std::current_exception();
+    }
     held.lock();
     other->ff = std::move(ff);
     other->ops = ops;
+    other->failure = failure;
     other->state = State::done;
+    cell_done_.notify_all();
   }
 }
 
