@@ -11,14 +11,9 @@ namespace gcsim::radiosity {
 
 namespace {
 machine::SimTime simulated_time(const OpCounts& ops, const machine::MachineConfig& m) {
-  const std::pair<const char*, std::int64_t> counts[] = {
-      {"polygon_project", ops.polygon_project}, {"hemicube_pixel", ops.hemicube_pixel},
-      {"hemicube_sample", ops.hemicube_sample}, {"hemicube_cull", ops.hemicube_cull},
-      {"form_factor_sum", ops.form_factor_sum},
-      {"element_update", ops.element_update},   {"patch_select", ops.patch_select}};
   machine::SimTime t = 0;
-  for (const auto& [op, n] : counts)
-    if (n > 0) t += machine::op_time(m, op, n);
+  for (const auto& o : ops.named())
+    if (o.count > 0) t += machine::op_time(m, o.op, o.count);
   return t;
 }
 }  // namespace

@@ -8,7 +8,8 @@
 
 namespace gcsim::radiosity {
 
-ProgressiveState::ProgressiveState(const Scene& scene) : scene_(&scene) {
+ProgressiveState::ProgressiveState(const Scene& scene, const PathTransmittance* media)
+    : scene_(&scene), media_(media) {
   element_b_.resize(scene.elements.size());
   unshot_.resize(scene.patches.size());
   for (std::size_t e = 0; e < scene.elements.size(); ++e) element_b_[e] = scene.surface_of_element(int(e)).exitance;
@@ -82,7 +83,13 @@ void ProgressiveState::shoot(std::span<const int> shooters, std::span<const std:
       ++ops.element_update;
       const SceneElement& el = scene_->elements[e];
       const Rgb rho = scene_->surfaces[scene_->patches[el.patch].surface].reflectance;
-      const Rgb received = shot * f[e];                 // energy reaching element e
+      Rgb received = shot * f[e];                       // energy reaching element e
+      if (media_) {
+        ++ops.path_transmittance;
+        const Rgb through = media_->between(sp.center, el.center);
+        energy_.in_media += received * (Rgb(1.0) - through);
+        received *= through;
+      }
       const Rgb rad = rho * received / el.area;         // delta Rad = rho dB_i F_ie A_i / A_e
       element_b_[e] += rad;
       unshot_[el.patch] += rad * (el.area / scene_->patches[el.patch].area);
@@ -115,7 +122,7 @@ SolveResult solve_progressive(const Scene& scene, const SolverOptions& o, OpCoun
                               const std::function<void(const StepRecord&, const ProgressiveState&)>& on_step) {
   if (o.shooters < 1) throw std::invalid_argument("shooters per step must be at least 1");
   check_energy_can_be_absorbed(scene, o.hemicube);
-  SolveResult r{ProgressiveState(scene), {}, false};
+  SolveResult r{ProgressiveState(scene, o.media), {}, false};
   HemicubeRenderer hemicube(scene, o.hemicube);
   OpCounts local;
   OpCounts& ops = ops_out ? *ops_out : local;

@@ -12,6 +12,7 @@
 
 #include "apps/radiosity/hemicube.hpp"
 #include "apps/radiosity/op_counts.hpp"
+#include "apps/radiosity/path_transmittance.hpp"
 #include "apps/radiosity/scene.hpp"
 
 namespace gcsim::radiosity {
@@ -21,11 +22,13 @@ struct EnergyBalance {
   Rgb unshot{0.0};    // sum of delta B * A still to shoot
   Rgb absorbed{0.0};  // (1 - rho) of what elements received
   Rgb escaped{0.0};   // shot energy no element caught (open scenes)
+  Rgb in_media{0.0};  // caught energy that a participating medium took on the way (PathTransmittance)
 };
 
 class ProgressiveState {
  public:
-  explicit ProgressiveState(const Scene& scene);
+  // media: what lies between patches and elements (null: nothing, the thesis's radiosity).
+  explicit ProgressiveState(const Scene& scene, const PathTransmittance* media = nullptr);
 
   // The K patches with the largest unshot energy, largest first (ties: lower index); only patches
   // with unshot energy > 0.
@@ -49,6 +52,7 @@ class ProgressiveState {
 
  private:
   const Scene* scene_;
+  const PathTransmittance* media_;
   std::vector<Rgb> element_b_;
   std::vector<Rgb> unshot_;  // per patch
   EnergyBalance energy_;
@@ -73,6 +77,8 @@ struct SolverOptions {
   int max_steps = 1000000;   // safety net for reflectances near 1
   ShootingOrder order = ShootingOrder::energy;
   double sort_until = 0.9;   // energy_then_index: sort while the shot fraction is below this
+  // Participating media between the surfaces (apps/render supplies them); null: none. Not owned.
+  const PathTransmittance* media = nullptr;
 };
 
 // Whether this step sorts by energy (true) or takes the index order.

@@ -188,3 +188,21 @@ SplitScene split_media(const scene::SceneDescription& d, const std::string& file
 }
 
 }  // namespace gcsim::render
+
+namespace gcsim::render {
+
+glm::dvec3 channel_transmittance(const glm::dvec3& sigma_t, double length) {
+  return {std::exp(-sigma_t.r * length), std::exp(-sigma_t.g * length), std::exp(-sigma_t.b * length)};
+}
+
+glm::dvec3 segment_transmittance(const std::vector<MediumRegion>& regions, const glm::dvec3& origin,
+                                 const glm::dvec3& direction, double length) {
+  glm::dvec3 through(1.0);
+  for (const MediumInterval& part : medium_intervals(regions, origin, direction, length)) {
+    const scene::Medium& m = regions[part.region].medium;
+    through *= channel_transmittance(m.sigma_s + m.sigma_a, part.t1 - part.t0);
+  }
+  return through;
+}
+
+}  // namespace gcsim::render

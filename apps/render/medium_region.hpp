@@ -40,6 +40,12 @@ struct MediumInterval {
 std::vector<MediumInterval> medium_intervals(const std::vector<MediumRegion>& regions, const glm::dvec3& origin,
                                              const glm::dvec3& direction, double t_max);
 
+// exp(-sigma_t length) per channel: what one medium of extinction sigma_t lets through.
+glm::dvec3 channel_transmittance(const glm::dvec3& sigma_t, double length);
+// The transmittance of the segment origin + t direction (unit), t in [0, length), through the media.
+glm::dvec3 segment_transmittance(const std::vector<MediumRegion>& regions, const glm::dvec3& origin,
+                                 const glm::dvec3& direction, double length);
+
 struct SplitScene {
   scene::SceneDescription surfaces;  // the description without the media's bounding shapes
   std::vector<MediumRegion> media;

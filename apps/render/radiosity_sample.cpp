@@ -8,6 +8,7 @@
 #include "apps/common/scene/description_to_world.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "apps/render/medium_region.hpp"
+#include "apps/render/radiosity_media.hpp"
 
 namespace gcsim::render {
 
@@ -24,8 +25,11 @@ RadiositySample sample_radiosity_loops(const scene::SceneDescription& d, const s
                                        const parix::SimulationOptions& machine, int loops) {
   const auto start = std::chrono::steady_clock::now();
   // The mesh and options of `gcsim render`'s radiosity pass (render_app.cpp, render_setup.cpp).
-  const radiosity::Scene mesh = radiosity::flatten(scene::to_world(split_media(d, file).surfaces));
+  const SplitScene split = split_media(d, file);
+  const radiosity::Scene mesh = radiosity::flatten(scene::to_world(split.surfaces));
+  const RadiosityMedia media(split.media);
   radiosity::ParallelOptions options;
+  options.solver.media = media.empty() ? nullptr : &media;
   options.solver.hemicube.resolution = 256;
   options.solver.energy = 0.999;
   options.solver.max_steps = loops;

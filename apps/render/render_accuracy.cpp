@@ -19,6 +19,7 @@ RenderRun render_with(const scene::SceneDescription& d, const Plan& plan, const 
   radiosity::ParallelOptions options;
   options.solver.hemicube.resolution = c.hemicube;
   options.solver.energy = c.energy;
+  options.solver.media = setup.radiosity_media_or_null();
   const radiosity::ParallelOptions shared = radiosity::with_shared_projections(options);
   ViewSettings view;
   view.secondary = plan.pass(PassId::specular).on;

@@ -51,14 +51,6 @@ media::GridBuildCounts ViewMedium::grid_build() const {
   return c;
 }
 
-namespace {
-
-glm::dvec3 channel_transmittance(const glm::dvec3& sigma_t, double length) {
-  return {std::exp(-sigma_t.r * length), std::exp(-sigma_t.g * length), std::exp(-sigma_t.b * length)};
-}
-
-}  // namespace
-
 glm::vec3 ViewMedium::along(const geometry::Ray& ray, float t_end, glm::vec3 behind, apps::Rng& rng,
                             raytrace::TraceCounters& counters) const {
   const glm::dvec3 d(ray.direction);
@@ -93,10 +85,7 @@ glm::vec3 ViewMedium::along(const geometry::Ray& ray, float t_end, glm::vec3 beh
 glm::vec3 ViewMedium::transmittance(const geometry::Ray& ray, float t_end) const {
   const glm::dvec3 d(ray.direction);
   const double scale = glm::length(d);
-  glm::dvec3 through(1.0);
-  for (const MediumInterval& part : medium_intervals(bounds_, glm::dvec3(ray.origin), d / scale, double(t_end) * scale))
-    through *= channel_transmittance(regions_[part.region].sigma_t_rgb, part.t1 - part.t0);
-  return glm::vec3(through);
+  return glm::vec3(segment_transmittance(bounds_, glm::dvec3(ray.origin), d / scale, double(t_end) * scale));
 }
 
 }  // namespace gcsim::render

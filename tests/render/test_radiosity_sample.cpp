@@ -53,6 +53,7 @@ TEST(RadiositySample, ASampleThatConvergesPredictsThePassExactly) {
     radiosity::ParallelOptions o;
     o.solver.hemicube.resolution = 256;
     o.solver.energy = 0.999;
+    o.solver.media = setup.radiosity_media_or_null();  // example.toml's fog, as the render's pass
     o = radiosity::with_shared_projections(o);
     const parix::RunResult run = parix::run_simulated(machine_of(nodes), [&](parix::Processor& p) {
       radiosity::solve_replica(p, setup.mesh, o);

@@ -64,6 +64,7 @@ class RenderExperiment : public pipeline::Experiment {
                             controls.media, seed);
     options_.solver.hemicube.resolution = controls.hemicube;  // `gcsim run radiosity`'s default 256
     options_.solver.energy = controls.energy;
+    options_.solver.media = setup_.radiosity_media_or_null();
     view_.max_depth = controls.max_depth;
   }
   std::unique_ptr<pipeline::Outcome> new_outcome(int nodes) const override {
@@ -127,6 +128,16 @@ class RenderExperiment : public pipeline::Experiment {
                  r.converged ? "" : "not ", radiosity_s, real ? "of wall time (this rank)" : "simulated (last node)");
       extra["radiosity"] = {{"ran", true}, {"steps", r.steps.size()}, {"converged", r.converged},
                             {"elements", r.element_radiosity.size()}, {"simulated_end_s", radiosity_s}};
+      if (setup_.radiosity_media_or_null()) {
+        // The share of the emitted light that the media took between surfaces (absorbed or scattered
+        // out of the path; the photon pass carries what they scatter), against the surfaces' share.
+        const double emitted = radiosity::channel_sum(r.energy.emitted);
+        const double share = emitted > 0 ? radiosity::channel_sum(r.energy.in_media) / emitted : 0.0;
+        const double walls = emitted > 0 ? radiosity::channel_sum(r.energy.absorbed) / emitted : 0.0;
+        fmt::print("          the media took {:.1f} % of the emitted light between surfaces, the surfaces absorbed {:.1f} %\n",
+                   100 * share, 100 * walls);
+        extra["radiosity"]["media_share"] = share;
+      }
       if (runs_forced(PassId::radiosity)) report_forced_radiosity(u, extra["radiosity"]);
     }
     if (!u.view) return;
