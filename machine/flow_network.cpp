@@ -19,7 +19,6 @@ void FlowNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action 
     channel_visited_.assign(channels, 0);
     left_.assign(channels, 0.0);
     unassigned_.assign(channels, 0);
-    queued_.assign(channels, 0.0);
   }
   const std::uint64_t id = next_id_++;
   Flow& f = flows_[id];
@@ -84,64 +83,45 @@ void FlowNetwork::collect_component(const std::vector<int>& seed) {
 }
 
 // Max-min fair rates by progressive filling: repeatedly saturate the channel that offers the
-// smallest equal share to the flows still unassigned (the lowest-numbered one on a tie), and fix
-// those flows at that share. The choice and every floating-point operation are those of a scan over
-// all the component's channels in channel order, but the heap is updated lazily: a channel's share
-// only grows as flows are fixed (their share is the smallest), so a channel is queued again only
-// when its share falls below its queued key (by rounding), and a popped key that has grown since is
-// re-queued at its current value. Every channel with unassigned flows keeps one live entry whose key
-// is at most its share, so a live top entry whose key is still its share is the smallest share.
+// smallest equal share left / unassigned to the flows still without a rate (the lowest-numbered one
+// on a tie), and fix those flows at that share. Each level scans the channels that still have such
+// flows, dropping the others as it goes: a tree broadcast's components fill in a few dozen levels
+// over about a thousand channels, where a heap of channels cost more in its unpredictable sifting
+// than the scans do (and needed re-queuing as shares grew). Channels that begin with one flow are
+// left out: they can only offer the whole capacity, which every shared channel offers less than.
 void FlowNetwork::fill_progressively() {
   const double capacity = ctx_.config.channel_bandwidth();
-  auto later = [](const Candidate& a, const Candidate& b) {
-    return a.share != b.share ? a.share > b.share : a.channel > b.channel;
-  };
-  auto queue = [&](double share, int ch) {
-    queued_[ch] = share;
-    candidates_.push_back({share, ch});
-    std::push_heap(candidates_.begin(), candidates_.end(), later);
-  };
-  candidates_.clear();
+  live_.clear();
   for (int ch : component_channels_) {
     left_[ch] = capacity;
     unassigned_[ch] = static_cast<int>(on_channel_[ch].size());
-    if (unassigned_[ch] > 1) {  // a channel of one flow can only offer the whole capacity (below)
-      queued_[ch] = left_[ch] / unassigned_[ch];
-      candidates_.push_back({queued_[ch], ch});
-    }
+    if (unassigned_[ch] > 1) live_.push_back(ch);
   }
-  std::make_heap(candidates_.begin(), candidates_.end(), later);
   std::size_t to_assign = component_flows_.size();
-  while (to_assign > 0 && !candidates_.empty()) {
-    std::pop_heap(candidates_.begin(), candidates_.end(), later);
-    const Candidate c = candidates_.back();
-    candidates_.pop_back();
-    const int n = unassigned_[c.channel];
-    if (n == 0 || c.share != queued_[c.channel]) continue;  // saturated, or a superseded entry
-    const double current = left_[c.channel] / n;
-    if (current != c.share) {  // grew since it was queued
-      queue(current, c.channel);
-      continue;
+  while (to_assign > 0) {
+    int best = -1;
+    double best_share = 0;
+    std::size_t kept = 0;
+    for (const int ch : live_) {
+      const int n = unassigned_[ch];
+      if (n == 0) continue;  // saturated, or all its flows fixed elsewhere
+      live_[kept++] = ch;
+      // Most channels offer clearly more than the best so far: a multiplication tells, and the
+      // division (whose rounding decides near ties) is left to the few that may not.
+      if (best >= 0 && left_[ch] > best_share * n * (1 + 1e-9)) continue;
+      const double share = left_[ch] / n;
+      if (best < 0 || share < best_share || (share == best_share && ch < best)) best = ch, best_share = share;
     }
-    const double share = c.share;
-    just_assigned_.clear();
-    for (Flow* f : on_channel_[c.channel]) {
+    live_.resize(kept);
+    if (best < 0) break;
+    for (Flow* f : on_channel_[best]) {
       if (f->assigned) continue;
       f->assigned = true;
-      f->new_rate = share;
-      just_assigned_.push_back(f);
+      f->new_rate = best_share;
+      --to_assign;
       for (int ch : f->route) {
-        left_[ch] -= share;
+        left_[ch] -= best_share;
         --unassigned_[ch];
-      }
-    }
-    to_assign -= just_assigned_.size();
-    // A channel whose share fell below its queued key (rounding) is queued again at once.
-    for (Flow* f : just_assigned_) {
-      for (int ch : f->route) {
-        if (unassigned_[ch] == 0) continue;
-        const double now_share = left_[ch] / unassigned_[ch];
-        if (now_share < queued_[ch]) queue(now_share, ch);
       }
     }
   }

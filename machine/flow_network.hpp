@@ -56,16 +56,10 @@ class FlowNetwork final : public NetworkModel {
   std::vector<std::uint64_t> channel_visited_;  // per channel: the solve that last visited it
   std::vector<double> left_;                   // per channel: capacity not yet given out
   std::vector<int> unassigned_;                // per channel: flows without a rate yet
-  std::vector<double> queued_;                 // per channel: the key of its live heap entry
   std::vector<int> component_channels_;
   std::vector<Flow*> component_flows_;
-  std::vector<Flow*> just_assigned_;
   std::vector<int> frontier_;
-  struct Candidate {
-    double share;
-    int channel;
-  };
-  std::vector<Candidate> candidates_;  // min-heap on (share, channel)
+  std::vector<int> live_;                      // shared channels with flows still to fix
 };
 
 }  // namespace gcsim::machine
