@@ -63,21 +63,26 @@ void FlowNetwork::collect_component(const std::vector<int>& seed) {
   ++solve_;
   component_channels_.clear();
   component_flows_.clear();
-  frontier_.assign(seed.begin(), seed.end());
+  // A channel is marked when it is first queued, so that each is queued once however many of the
+  // component's flows cross it (about 37 channels per route at 4096 nodes). The order of the visit
+  // changes no rate: the filling breaks ties by channel number and reschedules in flow order.
+  frontier_.clear();
+  auto enqueue = [&](int ch) {
+    if (channel_visited_[ch] == solve_) return;
+    channel_visited_[ch] = solve_;
+    frontier_.push_back(ch);
+  };
+  for (int ch : seed) enqueue(ch);
   while (!frontier_.empty()) {
     const int ch = frontier_.back();
     frontier_.pop_back();
-    if (channel_visited_[ch] == solve_) continue;
-    channel_visited_[ch] = solve_;
     component_channels_.push_back(ch);
     for (Flow* f : on_channel_[ch]) {
       if (f->visited == solve_) continue;
       f->visited = solve_;
       f->assigned = false;
       component_flows_.push_back(f);
-      for (int c : f->route) {
-        if (channel_visited_[c] != solve_) frontier_.push_back(c);
-      }
+      for (int c : f->route) enqueue(c);
     }
   }
 }
