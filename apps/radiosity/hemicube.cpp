@@ -70,7 +70,7 @@ void check_hemicube_options(const HemicubeOptions& o) {
   make_cells(o, o.resolution);  // the partition's own checks; cells are small, unlike the pixel tables
 }
 
-HemicubeRenderer::HemicubeRenderer(const Scene& scene, const HemicubeOptions& o)
+HemicubeRenderer::HemicubeRenderer(const Scene& scene, const HemicubeOptions& o, SamplesPerSideMemo* memo)
     : scene_(scene), options_(o), near_(1e-9 * scene.extent()) {
   check_hemicube_options(o);
   grids_.push_back({o.resolution, shared_delta_form_factors(o.resolution), make_cells(o, o.resolution)});
@@ -79,13 +79,15 @@ HemicubeRenderer::HemicubeRenderer(const Scene& scene, const HemicubeOptions& o)
     if (!usable_sample_resolution(o, r)) break;
     grids_.push_back({r, shared_delta_form_factors(r), make_cells(o, r)});
   }
-  per_side_ = shooter_samples_per_side(scene, o.near_field_ratio, 1 << (grids_.size() - 1));
+  const int max_per_side = 1 << (grids_.size() - 1);
+  per_side_ = memo ? memo->get(scene, o.near_field_ratio, max_per_side)
+                   : std::make_shared<const std::vector<int>>(shooter_samples_per_side(scene, o.near_field_ratio, max_per_side));
   acc_.assign(scene.elements.size(), 0.0);
 }
 
 void HemicubeRenderer::project(int shooter, OpCounts& ops) {
   shooter_ = shooter;
-  const int n = per_side_[shooter];
+  const int n = (*per_side_)[shooter];
   grid_ = &grids_[std::countr_zero(unsigned(n))];
   // Reuse our buffers unless a cache still hands them to other replicas.
   if (!own_ || own_.use_count() > 1) own_ = std::make_shared<HemicubeProjection>();
@@ -102,8 +104,8 @@ void HemicubeRenderer::project(int shooter, OpCounts& ops) {
 }
 
 void HemicubeRenderer::use_projection(std::shared_ptr<const HemicubeProjection> projection, OpCounts& ops) {
-  if (!projection || projection->shooter < 0 || projection->shooter >= int(per_side_.size()) ||
-      projection->samples_per_side != per_side_[projection->shooter])
+  if (!projection || projection->shooter < 0 || projection->shooter >= int(per_side_->size()) ||
+      projection->samples_per_side != (*per_side_)[projection->shooter])
     throw std::logic_error("HemicubeRenderer: a projection from a renderer of another scene or options");
   shooter_ = projection->shooter;
   grid_ = &grids_[std::countr_zero(unsigned(projection->samples_per_side))];

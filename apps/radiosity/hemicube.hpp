@@ -89,11 +89,12 @@ void check_hemicube_options(const HemicubeOptions& o);
 
 class HemicubeRenderer {
  public:
-  HemicubeRenderer(const Scene& scene, const HemicubeOptions& options);
+  // memo: where replicas of one run share the samples-per-side table (null: compute it here).
+  HemicubeRenderer(const Scene& scene, const HemicubeOptions& options, SamplesPerSideMemo* memo = nullptr);
 
   int cell_count() const { return int(grids_[0].cells.size()); }
   // Samples per side the shooter `patch` shoots from (1: its centre).
-  int samples_per_side(int patch) const { return per_side_[patch]; }
+  int samples_per_side(int patch) const { return (*per_side_)[patch]; }
   const HemicubeOptions& options() const { return options_; }
 
   // Transforms, clips and projects every element for the hemicube on patch `shooter`.
@@ -131,7 +132,7 @@ class HemicubeRenderer {
   const Scene& scene_;
   HemicubeOptions options_;
   std::vector<Grid> grids_;     // [k]: 2^k samples per side
-  std::vector<int> per_side_;   // per patch
+  std::shared_ptr<const std::vector<int>> per_side_;  // per patch
   const Grid* grid_ = nullptr;  // the current shooter's
   int shooter_ = -1;
   double near_;

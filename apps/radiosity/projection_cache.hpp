@@ -22,6 +22,9 @@ class ProjectionCache {
   // asks for loop `step` every replica is done with earlier loops and their entries are dropped.
   void project(HemicubeRenderer& renderer, int step, int shooter, OpCounts& ops);
 
+  // The replicas' shared samples-per-side table (HemicubeRenderer's memo).
+  SamplesPerSideMemo& samples_per_side() { return samples_per_side_; }
+
   std::size_t entries() const { return entries_.size(); }
   std::int64_t computed() const { return computed_; }
   std::int64_t shared() const { return shared_; }
@@ -29,6 +32,7 @@ class ProjectionCache {
  private:
   std::map<std::pair<int, int>, std::shared_ptr<const HemicubeProjection>> entries_;  // (step, shooter)
   std::int64_t computed_ = 0, shared_ = 0;
+  SamplesPerSideMemo samples_per_side_;
 };
 
 }  // namespace gcsim::radiosity

@@ -68,6 +68,19 @@ std::vector<int> shooter_samples_per_side(const Scene& scene, double ratio, int 
   return per_side;
 }
 
+std::shared_ptr<const std::vector<int>> SamplesPerSideMemo::get(const Scene& scene, double ratio, int max_per_side) {
+  const bool same = table_ && scene_ == &scene && patches_ == scene.patches.size() &&
+                    elements_ == scene.elements.size() && extent_ == scene.extent() && ratio_ == ratio &&
+                    max_per_side_ == max_per_side;
+  if (!same) {
+    table_ = std::make_shared<const std::vector<int>>(shooter_samples_per_side(scene, ratio, max_per_side));
+    scene_ = &scene, patches_ = scene.patches.size(), elements_ = scene.elements.size(), extent_ = scene.extent();
+    ratio_ = ratio, max_per_side_ = max_per_side;
+    ++computed_;
+  }
+  return table_;
+}
+
 std::vector<ShooterSample> shooter_samples(const ScenePatch& patch, int n) {
   if (n <= 1) return {{patch.center, 1.0}};
   std::vector<ShooterSample> out;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "apps/radiosity/parallel_radiosity.hpp"
+#include "apps/radiosity/projection_cache.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/backend.hpp"
 #include "tests/support/published_machine.hpp"
@@ -152,6 +153,33 @@ TEST(ProjectionCache, RefusesAProjectionOfAnotherScene) {
   OpCounts ops;
   ra.project(int(a.patches.size()) - 1, ops);
   EXPECT_THROW(rb.use_projection(ra.projection(), ops), std::logic_error);
+}
+
+TEST(ProjectionCache, ReplicasShareOneSamplesPerSideTable) {
+  const Scene room = testing::lit_room(), box = testing::closed_box(1.0, 2, 2, 0.5, 1.0);
+  HemicubeOptions o;
+  o.resolution = 32;
+  o.cells_per_side = 4;
+  o.max_shooter_samples = 2;
+  ProjectionCache cache;
+  const HemicubeRenderer alone(room, o), first(room, o, &cache.samples_per_side()),
+      second(room, o, &cache.samples_per_side());
+  EXPECT_EQ(cache.samples_per_side().computed(), 1);
+  int near = 0;
+  for (int p = 0; p < int(room.patches.size()); ++p) {
+    EXPECT_EQ(first.samples_per_side(p), alone.samples_per_side(p)) << "patch " << p;
+    EXPECT_EQ(second.samples_per_side(p), alone.samples_per_side(p)) << "patch " << p;
+    near += alone.samples_per_side(p) > 1;
+  }
+  EXPECT_GT(near, 0);  // the table is not trivially all ones
+  // Another scene or setting gets its own table.
+  const HemicubeRenderer other(box, o, &cache.samples_per_side());
+  EXPECT_EQ(cache.samples_per_side().computed(), 2);
+  for (int p = 0; p < int(box.patches.size()); ++p)
+    EXPECT_EQ(other.samples_per_side(p), HemicubeRenderer(box, o).samples_per_side(p)) << "box patch " << p;
+  o.near_field_ratio = 0.25;
+  const HemicubeRenderer coarser(box, o, &cache.samples_per_side());
+  EXPECT_EQ(cache.samples_per_side().computed(), 3);
 }
 
 }  // namespace
