@@ -328,7 +328,7 @@ bool SimProcess::cancel(Request& r) {
     // Not yet matched, so still queued on its link: the link's next message goes to the next one.
     LinkEnd& e = sim_.links.at(s.link);
     if (e.owner != id_) throw ParixError(fmt::format("processor {}: cancel of a receive of processor {}", id_, e.owner));
-    std::erase_if(e.receives, [&s](const std::shared_ptr<RequestState>& q) { return q.get() == &s; });
+    e.receives.erase_if([&s](const std::shared_ptr<RequestState>& q) { return q.get() == &s; });
   }
   // A send: its message is still in the network (or held for in-order delivery); accept drops it.
   s.cancel();

@@ -19,6 +19,7 @@
 #include "parix/activity.hpp"
 #include "parix/connection_matcher.hpp"
 #include "parix/fiber_processes.hpp"
+#include "parix/fifo.hpp"
 #include "parix/in_order_delivery.hpp"
 #include "parix/request_pool.hpp"
 #include "parix/simulated_runtime.hpp"
@@ -56,8 +57,8 @@ struct LinkEnd {
   bool open = true;
   std::int64_t sent = 0;                                 // messages sent from this end
   InOrderDelivery<Message> order;                        // holds messages that overtook a predecessor
-  std::deque<Message> arrived;                           // delivered, not yet received
-  std::deque<std::shared_ptr<RequestState>> receives;    // posted, waiting for a message
+  Fifo<Message> arrived;                                 // delivered, not yet received
+  Fifo<std::shared_ptr<RequestState>> receives;          // posted, waiting for a message
 };
 
 class SimProcess final : public Processor {

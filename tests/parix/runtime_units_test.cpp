@@ -9,6 +9,7 @@
 #include "parix/activity.hpp"
 #include "parix/connection_matcher.hpp"
 #include "parix/deadlock_report.hpp"
+#include "parix/fifo.hpp"
 #include "parix/in_order_delivery.hpp"
 #include "parix/processor.hpp"
 
@@ -63,6 +64,59 @@ TEST(InOrderDelivery, AnyArrivalOrderDeliversInSendingOrder) {
   std::vector<int> got;
   for (int seq : arrival) link.arrive(seq, int(seq), [&](int&& m) { got.push_back(m); });
   for (int i = 0; i < 8; ++i) EXPECT_EQ(got.at(i), i);
+}
+
+TEST(Fifo, KeepsOrderAndHoldsNothingUntilUsed) {
+  Fifo<int> q;
+  EXPECT_TRUE(q.empty());
+  EXPECT_EQ(q.slots(), 0u);
+  int next_in = 0, next_out = 0;
+  for (int round = 0; round < 50; ++round) {  // interleaved pushes and pops, never more than 5 held
+    for (int k = 0; k < 3; ++k) q.push_back(next_in++);
+    for (int k = 0; k < 2; ++k) {
+      ASSERT_EQ(q.front(), next_out++);
+      q.pop_front();
+    }
+    while (q.size() > 4) {
+      ASSERT_EQ(q.front(), next_out++);
+      q.pop_front();
+    }
+  }
+  while (!q.empty()) {
+    ASSERT_EQ(q.front(), next_out++);
+    q.pop_front();
+  }
+  EXPECT_EQ(next_out, next_in);
+  EXPECT_EQ(q.slots(), 0u);
+}
+
+TEST(Fifo, AQueueThatNeverEmptiesStaysBounded) {
+  Fifo<std::unique_ptr<int>> q;
+  q.push_back(std::make_unique<int>(0));
+  for (int i = 1; i < 100000; ++i) {
+    q.push_back(std::make_unique<int>(i));
+    ASSERT_EQ(*q.front(), i - 1);
+    q.pop_front();
+    ASSERT_EQ(q.size(), 1u);
+    ASSERT_LE(q.slots(), 4u);
+  }
+}
+
+TEST(Fifo, EraseIfKeepsTheOthersInOrder) {
+  Fifo<int> q;
+  for (int i = 0; i < 10; ++i) q.push_back(i);
+  q.pop_front();                                  // 1..9
+  q.erase_if([](int v) { return v % 3 == 0; });  // drops 3, 6, 9
+  std::vector<int> left;
+  while (!q.empty()) {
+    left.push_back(q.front());
+    q.pop_front();
+  }
+  EXPECT_EQ(left, (std::vector<int>{1, 2, 4, 5, 7, 8}));
+  q.push_back(1);
+  q.erase_if([](int) { return true; });
+  EXPECT_TRUE(q.empty());
+  EXPECT_EQ(q.slots(), 0u);
 }
 
 TEST(DeadlockReport, NamesEachBlockedProcessCallAndPeer) {
