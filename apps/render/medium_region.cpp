@@ -187,10 +187,6 @@ SplitScene split_media(const scene::SceneDescription& d, const std::string& file
   return out;
 }
 
-}  // namespace gcsim::render
-
-namespace gcsim::render {
-
 glm::dvec3 channel_transmittance(const glm::dvec3& sigma_t, double length) {
   return {std::exp(-sigma_t.r * length), std::exp(-sigma_t.g * length), std::exp(-sigma_t.b * length)};
 }

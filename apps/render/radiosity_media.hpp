@@ -3,6 +3,7 @@
 // by the transmittance of the segment between their centres through every medium that changes
 // something (radiosity::PathTransmittance). What the media scatter back onto surfaces is not added
 // here: the photon pass carries it into the view's in-scattering, not into the walls' radiosity.
+#include <memory>
 #include <vector>
 
 #include "apps/radiosity/path_transmittance.hpp"
@@ -14,6 +15,8 @@ class RadiosityMedia final : public radiosity::PathTransmittance {
  public:
   // Keeps the regions that change something; empty() when none does.
   explicit RadiosityMedia(const std::vector<MediumRegion>& regions);
+  // What the radiosity pass should see of `regions`: null when none changes anything.
+  static std::unique_ptr<RadiosityMedia> of(const std::vector<MediumRegion>& regions);
   bool empty() const { return regions_.empty(); }
   radiosity::Rgb between(const radiosity::Vec3& from, const radiosity::Vec3& to) const override;
 

@@ -27,9 +27,9 @@ RadiositySample sample_radiosity_loops(const scene::SceneDescription& d, const s
   // The mesh and options of `gcsim render`'s radiosity pass (render_app.cpp, render_setup.cpp).
   const SplitScene split = split_media(d, file);
   const radiosity::Scene mesh = radiosity::flatten(scene::to_world(split.surfaces));
-  const RadiosityMedia media(split.media);
+  const std::unique_ptr<RadiosityMedia> media = RadiosityMedia::of(split.media);  // as prepare_render's
   radiosity::ParallelOptions options;
-  options.solver.media = media.empty() ? nullptr : &media;
+  options.solver.media = media.get();
   options.solver.hemicube.resolution = 256;
   options.solver.energy = 0.999;
   options.solver.max_steps = loops;

@@ -21,10 +21,7 @@ RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, c
   s.radiosity = plan.pass(PassId::radiosity).on || forced.radiosity;
   if (s.radiosity) s.mesh = radiosity::flatten(scene::to_world(s.split.surfaces));
   if (!with_media) return s;
-  if (s.radiosity) {
-    auto attenuating = std::make_unique<RadiosityMedia>(s.split.media);
-    if (!attenuating->empty()) s.radiosity_media = std::move(attenuating);
-  }
+  if (s.radiosity) s.radiosity_media = RadiosityMedia::of(s.split.media);
   std::vector<MediumRegion> regions;
   for (const MediumRegion& r : s.split.media)
     if (forced.media || !r.changes_nothing()) regions.push_back(r);
