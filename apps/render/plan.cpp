@@ -77,7 +77,8 @@ Analysis analyse(const SceneDescription& d) {
 }
 
 PassPlan plan_radiosity(const Analysis& a) {
-  PassPlan p{PassId::radiosity};
+  PassPlan p;
+  p.id = PassId::radiosity;
   int diffuse = 0, lit_diffuse = 0, area_lit = 0;
   bool interreflection = false;
   for (std::size_t i = 0; i < a.sides.size(); ++i) {
@@ -121,7 +122,8 @@ PassPlan plan_radiosity(const Analysis& a) {
 }
 
 PassPlan plan_specular(const Analysis& a) {
-  PassPlan p{PassId::specular};
+  PassPlan p;
+  p.id = PassId::specular;
   std::set<std::string> mirrors, glass, boundaries;
   for (int m : a.used_materials) {
     const Material& mat = a.d.materials[m];
@@ -181,7 +183,8 @@ double opacity(const SceneDescription& d, int m) {
 }
 
 PassPlan plan_media(const Analysis& a, SceneFacts& facts) {
-  PassPlan p{PassId::media};
+  PassPlan p;
+  p.id = PassId::media;
   std::set<std::string> scattering, absorbing, empty, anisotropic;
   for (int m : a.used_materials) {
     const Material& mat = a.d.materials[m];
@@ -226,7 +229,8 @@ PassPlan plan_media(const Analysis& a, SceneFacts& facts) {
 }
 
 PassPlan plan_shadows(const Analysis& a, bool radiosity_on) {
-  PassPlan p{PassId::shadows};
+  PassPlan p;
+  p.id = PassId::shadows;
   const int area = int(std::count_if(a.sides.begin(), a.sides.end(), [&](auto& s) { return a.emitter(s); }));
   std::set<int> shapes;
   bool mesh = false;
@@ -284,7 +288,9 @@ Plan make_plan(const SceneDescription& d) {
   f.point_lights = int(a.light_positions.size());
   for (const SurfaceSide& s : a.sides) f.emitters += a.emitter(s), f.diffuse_surfaces += a.diffuse(s);
 
-  PassPlan view{PassId::view, true};
+  PassPlan view;
+  view.id = PassId::view;
+  view.on = true;
   view.reason = fmt::format("the camera sees the scene: {} x {} pixels x {} sample(s) of primary rays with direct "
                             "lighting{}",
                             d.image.width, d.image.height, d.image.samples_per_pixel,
