@@ -29,6 +29,7 @@ struct RunResult {
   machine::SimTime makespan = 0;  // simulated time of the whole run
   double wall_seconds = 0;        // host time the simulation took
   std::uint64_t events = 0;       // discrete events processed by the kernel
+  std::int64_t link_end_slots = 0;  // host: link ends stored at most (simulated backend; not in the JSON)
   std::vector<ProcessorStats> processors;
   // Node memory (simulated backend): the highest any node held, on which processor's node, and
   // the node's memory. memory_warning: set when a node went over it (only a run that warns).

@@ -115,11 +115,11 @@ Link SimProcess::connect(int peer, int tag) {
   Activity set_up;  // completed by the set-up event, whichever side schedules it
   if (auto paired = sim_.connect_matcher.match_or_wait(id_, peer, tag, {this, &mine, &set_up, start})) {
     const Simulation::PendingConnect other = *paired;
-    const std::int64_t a = sim_.new_link_end(), b = sim_.new_link_end();
-    LinkEnd& ea = sim_.links[a];
-    LinkEnd& eb = sim_.links[b];
-    ea.owner = id_, ea.peer = peer, ea.peer_end = b;
-    eb.owner = peer, eb.peer = id_, eb.peer_end = a;
+    const auto [a, b] = sim_.links.open_pair();
+    LinkEnd& ea = sim_.links.at(a);
+    LinkEnd& eb = sim_.links.at(b);
+    ea.owner = id_, ea.peer = peer;
+    eb.owner = peer, eb.peer = id_;
     const machine::SimTime up = sim_.connections.set_up(sim_.node_of[id_], sim_.node_of[peer], start);
     std::int64_t* theirs = other.result;
     SimProcess* them = other.who;
@@ -148,13 +148,13 @@ Link SimProcess::connect(int peer, int tag) {
   return Link(this, peer, tag, mine);
 }
 
-void SimProcess::close_link(std::int64_t handle) {
-  if (handle >= 0 && handle < static_cast<std::int64_t>(sim_.links.size())) sim_.links[handle].open = false;
-}
+void SimProcess::close_link(std::int64_t handle) { sim_.links.close(handle); }
 
 LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
   if (!link.valid()) throw ParixError(fmt::format("processor {}: {} on a link that is not open", id_, call));
-  LinkEnd& e = sim_.links.at(link.handle());
+  LinkEnd* found = sim_.links.find(link.handle());
+  if (!found) throw ParixError(fmt::format("processor {}: {} on a link that is not open", id_, call));
+  LinkEnd& e = *found;
   if (e.owner != id_) throw ParixError(fmt::format("processor {}: {} on a link owned by processor {}", id_, call, e.owner));
   return e;
 }
@@ -199,9 +199,11 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
 
 void Simulation::deliver(Message&& m) {
   if (!m.data.empty()) use_memory(m.src, -static_cast<std::int64_t>(m.data.size()), kMessagesInFlight);
-  LinkEnd& e = links[m.dst_end];
+  const std::int64_t end = m.dst_end;  // its pair is not reused while a message travels to it
+  LinkEnd& e = links.at(end);
   const std::int64_t seq = m.link_seq;
   e.order.arrive(seq, std::move(m), [this, &e](Message&& next) { accept(e, std::move(next)); });
+  links.release_if_done(end);  // the last message to a closed link may free it
 }
 
 void Simulation::accept(LinkEnd& e, Message&& m) {
@@ -326,9 +328,11 @@ bool SimProcess::cancel(Request& r) {
   if (!s.running()) return s.cancelled();
   if (s.is_receive) {
     // Not yet matched, so still queued on its link: the link's next message goes to the next one.
+    // Its link is still there: a queued receive keeps the link's slots from reuse.
     LinkEnd& e = sim_.links.at(s.link);
     if (e.owner != id_) throw ParixError(fmt::format("processor {}: cancel of a receive of processor {}", id_, e.owner));
     e.receives.erase_if([&s](const std::shared_ptr<RequestState>& q) { return q.get() == &s; });
+    sim_.links.release_if_done(s.link);
   }
   // A send: its message is still in the network (or held for in-order delivery); accept drops it.
   s.cancel();

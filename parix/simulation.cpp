@@ -93,6 +93,7 @@ RunResult Simulation::result(std::chrono::steady_clock::time_point wall_start, b
   r.config_name = config.name;
   r.nodes = config.nodes;
   r.events = kernel.events_processed();
+  r.link_end_slots = static_cast<std::int64_t>(links.slots());
   r.processors = stats;
   if (interrupted) r.makespan = kernel.now();  // the simulated time reached
   for (int i = 0; i < config.nodes; ++i) {

@@ -21,6 +21,7 @@
 #include "parix/fiber_processes.hpp"
 #include "parix/fifo.hpp"
 #include "parix/in_order_delivery.hpp"
+#include "parix/link_table.hpp"
 #include "parix/request_pool.hpp"
 #include "parix/simulated_runtime.hpp"
 
@@ -59,6 +60,10 @@ struct LinkEnd {
   InOrderDelivery<Message> order;                        // holds messages that overtook a predecessor
   Fifo<Message> arrived;                                 // delivered, not yet received
   Fifo<std::shared_ptr<RequestState>> receives;          // posted, waiting for a message
+  // Nothing the peer sent is still travelling or held, and nothing waits here: the slot may go.
+  bool idle(const LinkEnd& peer) const {
+    return peer.sent == order.delivered() && arrived.empty() && receives.empty();
+  }
 };
 
 class SimProcess final : public Processor {
@@ -164,11 +169,6 @@ class Simulation {
     --live;
   }
 
-  std::int64_t new_link_end() {
-    links.emplace_back();
-    return static_cast<std::int64_t>(links.size()) - 1;
-  }
-
   void deliver(Message&& m);
   // Messages in the network wait in a slab, so callbacks can refer to them by index.
   std::int64_t park(Message&& m) {
@@ -206,7 +206,7 @@ class Simulation {
   machine::ConnectionService connections;
   std::deque<machine::Node> nodes;
   std::vector<ProcessorStats> stats;
-  std::deque<LinkEnd> links;
+  LinkTable<LinkEnd> links;
   std::vector<Message> in_flight;
   std::vector<std::int64_t> free_slots;
   std::vector<std::unique_ptr<SimProcess>> processes;
