@@ -1,7 +1,7 @@
 // The render app: `gcsim plan SCENE.toml` (plan_command.cpp) and `gcsim run render --scene
 // SCENE.toml`, which runs the plan's passes that the unified renderer has so far, one after the
-// other on every node: the radiosity pass (the thesis's parallel progressive refinement on the
-// scene's polygons), the media pass (photons), then the view pass (the ray tracer's parallel render, reading the radiosity
+// other on every node: the media pass (photons, and what the media scatter onto the walls), the
+// radiosity pass (the thesis's parallel progressive refinement on the scene's polygons), then the view pass (the ray tracer's parallel render, reading the radiosity
 // at diffuse hits and following mirrors and glass: the specular pass; marching through media with
 // the media pass's photon map).
 #include <algorithm>
