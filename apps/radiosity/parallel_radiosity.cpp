@@ -69,7 +69,7 @@ class RadiosityNode {
   RadiosityNode(parix::Processor& p, const Scene& scene, const ParallelOptions& o)
       : p_(p), o_(o), scene_(scene), id_(p.id()), n_(p.count()), np_(int(scene.patches.size())), ne_(int(scene.elements.size())),
         renderer_(scene, hemicube_of(o), o.shared_projections ? &o.shared_projections->samples_per_side() : nullptr),
-        cells_(renderer_.cell_count()), state_(scene, o.solver.media) {
+        cells_(renderer_.cell_count()), state_(scene, o.solver.media, o.solver.received) {
     coll_.algo = o.bcast;
     coll_.connect_per_message = !o.keep_links;
     if (o.solver.shooters < 1) throw std::invalid_argument("shooters per step must be at least 1");

@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 
 #include "apps/radiosity/convergence.hpp"
 
 namespace gcsim::radiosity {
 
-ProgressiveState::ProgressiveState(const Scene& scene, const PathTransmittance* media)
+ProgressiveState::ProgressiveState(const Scene& scene, const PathTransmittance* media, const std::vector<Rgb>* received)
     : scene_(&scene), media_(media) {
   element_b_.resize(scene.elements.size());
   unshot_.resize(scene.patches.size());
@@ -19,7 +20,26 @@ ProgressiveState::ProgressiveState(const Scene& scene, const PathTransmittance* 
     energy_.emitted += unshot_[p] * sp.area;
   }
   energy_.unshot = energy_.emitted;
-  emitted_sum_ = channel_sum(energy_.emitted);
+  if (received) receive(*received);
+  emitted_sum_ = channel_sum(energy_.unshot);
+}
+
+void ProgressiveState::receive(const std::vector<Rgb>& received) {
+  if (received.size() != scene_->elements.size())
+    throw std::invalid_argument("received power: one value per element expected, got " + std::to_string(received.size()) +
+                                " for " + std::to_string(scene_->elements.size()) + " elements");
+  // None at all changes no bit: the unshot sum is not recomputed in another order.
+  if (std::ranges::all_of(received, [](const Rgb& r) { return r == Rgb(0.0); })) return;
+  for (std::size_t e = 0; e < received.size(); ++e) {
+    const SceneElement& el = scene_->elements[e];
+    const Rgb rho = scene_->surfaces[scene_->patches[el.patch].surface].reflectance;
+    const Rgb rad = rho * received[e] / el.area;
+    element_b_[e] += rad;
+    unshot_[el.patch] += rad * (el.area / scene_->patches[el.patch].area);
+    energy_.injected += received[e];
+    energy_.absorbed += (Rgb(1.0) - rho) * received[e];
+  }
+  energy_.unshot = total_unshot();
 }
 
 std::vector<int> ProgressiveState::select_shooters(int k, OpCounts& ops) const {
@@ -98,10 +118,14 @@ void ProgressiveState::shoot(std::span<const int> shooters, std::span<const std:
     }
     energy_.escaped += shot * std::max(0.0, 1.0 - caught);
   }
+  energy_.unshot = total_unshot();
+  ++steps_;
+}
+
+Rgb ProgressiveState::total_unshot() const {
   Rgb u(0.0);
   for (std::size_t p = 0; p < unshot_.size(); ++p) u += unshot_[p] * scene_->patches[p].area;
-  energy_.unshot = u;
-  ++steps_;
+  return u;
 }
 
 double ProgressiveState::shot_fraction() const {
@@ -122,7 +146,7 @@ SolveResult solve_progressive(const Scene& scene, const SolverOptions& o, OpCoun
                               const std::function<void(const StepRecord&, const ProgressiveState&)>& on_step) {
   if (o.shooters < 1) throw std::invalid_argument("shooters per step must be at least 1");
   check_energy_can_be_absorbed(scene, o.hemicube);
-  SolveResult r{ProgressiveState(scene, o.media), {}, false};
+  SolveResult r{ProgressiveState(scene, o.media, o.received), {}, false};
   HemicubeRenderer hemicube(scene, o.hemicube);
   OpCounts local;
   OpCounts& ops = ops_out ? *ops_out : local;

@@ -17,8 +17,10 @@
 
 namespace gcsim::radiosity {
 
+// emitted + injected = unshot + absorbed + escaped + in_media at every step.
 struct EnergyBalance {
   Rgb emitted{0.0};   // sum of E * A
+  Rgb injected{0.0};  // power received before the solve (SolverOptions::received)
   Rgb unshot{0.0};    // sum of delta B * A still to shoot
   Rgb absorbed{0.0};  // (1 - rho) of what elements received
   Rgb escaped{0.0};   // shot energy no element caught (open scenes)
@@ -28,7 +30,10 @@ struct EnergyBalance {
 class ProgressiveState {
  public:
   // media: what lies between patches and elements (null: nothing, the thesis's radiosity).
-  explicit ProgressiveState(const Scene& scene, const PathTransmittance* media = nullptr);
+  // received: power per element arriving before the solve (null or all zero: none); each element
+  // absorbs 1 - rho of it and starts with rho of it as radiosity and as its patch's unshot energy.
+  explicit ProgressiveState(const Scene& scene, const PathTransmittance* media = nullptr,
+                            const std::vector<Rgb>* received = nullptr);
 
   // The K patches with the largest unshot energy, largest first (ties: lower index); only patches
   // with unshot energy > 0.
@@ -42,7 +47,8 @@ class ProgressiveState {
   // rows[k][e] = F(shooters[k] -> e).
   void shoot(std::span<const int> shooters, std::span<const std::vector<double>> rows, OpCounts& ops);
 
-  // 1 - unshot / emitted (channel sums): the fraction of the energy shot so far (table 4.2).
+  // 1 - unshot / (the unshot energy at the start) (channel sums): the fraction of the energy shot so
+  // far (table 4.2); the start is the emitted energy plus what received power adds.
   double shot_fraction() const;
   const std::vector<Rgb>& element_radiosity() const { return element_b_; }
   const std::vector<Rgb>& patch_unshot() const { return unshot_; }
@@ -51,6 +57,9 @@ class ProgressiveState {
   int steps() const { return steps_; }
 
  private:
+  void receive(const std::vector<Rgb>& received);
+  Rgb total_unshot() const;  // sum of delta B * A over the patches
+
   const Scene* scene_;
   const PathTransmittance* media_;
   std::vector<Rgb> element_b_;
@@ -79,6 +88,10 @@ struct SolverOptions {
   double sort_until = 0.9;   // energy_then_index: sort while the shot fraction is below this
   // Participating media between the surfaces (apps/render supplies them); null: none. Not owned.
   const PathTransmittance* media = nullptr;
+  // Power (per channel, one per element) that reaches the elements by paths radiosity does not
+  // transport, before the solve (apps/render: light the media scatter onto the walls); the solve
+  // carries on what they reflect. Null: none. Not owned.
+  const std::vector<Rgb>* received = nullptr;
 };
 
 // Whether this step sorts by energy (true) or takes the index order.

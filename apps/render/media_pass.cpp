@@ -1,5 +1,6 @@
 #include "apps/render/media_pass.hpp"
 
+#include <optional>
 #include <span>
 
 #include "apps/media/frame.hpp"
@@ -33,22 +34,48 @@ std::unique_ptr<MediaSetup> make_media_setup(const SplitScene& split, raytrace::
   return s;
 }
 
+namespace {
+
+// This node's share of the photons, with what they deposit on the walls when there are walls.
+VolumePhotons trace_share(parix::Processor& p, const MediaSetup& s, std::optional<DepositSums>& sums,
+                          geometry::TestTally& lookups) {
+  const std::size_t first = share_begin(s.photons, p.id(), p.count()), last = share_begin(s.photons, p.id() + 1, p.count());
+  if (!s.walls) return trace_volume_photons(s.surfaces, s.bvh, s.lights, s.regions, first, last, s.photons, s.seed);
+  sums.emplace(s.walls->element_count(), s.lights.total_flux / double(s.photons));
+  DepositSums& d = *sums;
+  const WallHit on_wall = [&](const glm::dvec3& origin, const glm::dvec3& direction, const glm::dvec3& power) {
+    const int e = s.walls->find(origin, direction, lookups);
+    if (e < 0) ++d.missed;
+    else d.add(e, power);
+  };
+  return trace_volume_photons(s.surfaces, s.bvh, s.lights, s.regions, first, last, s.photons, s.seed, on_wall);
+}
+
+}  // namespace
+
 GatheredPhotons photon_pass(parix::Processor& p, const MediaSetup& s) {
   GatheredPhotons out;
   out.per_region.resize(s.regions.size());
   if (!s.photon_pass) return out;
-  const VolumePhotons mine = trace_volume_photons(s.surfaces, s.bvh, s.lights, s.regions, share_begin(s.photons, p.id(), p.count()),
-                                                  share_begin(s.photons, p.id() + 1, p.count()), s.photons, s.seed);
-  out.flights = mine.flights, out.surface_events = mine.surface_events;
+  std::optional<DepositSums> sums;
+  geometry::TestTally lookups;  // the element lookups' tests
+  const VolumePhotons mine = trace_share(p, s, sums, lookups);
+  out.flights = mine.flights, out.surface_events = mine.surface_events, out.media_absorbed = mine.media_absorbed;
   const parix::OpCount ops[] = {{"media_photon_step", std::int64_t(mine.flights + mine.surface_events)},
-                                {"ray_box", mine.tests.boxes},
-                                {"ray_triangle", mine.tests.triangles},
-                                {"ray_sphere", mine.tests.spheres}};
+                                {"ray_box", mine.tests.boxes + lookups.boxes},
+                                {"ray_triangle", mine.tests.triangles + lookups.triangles},
+                                {"ray_sphere", mine.tests.spheres},
+                                {"photon_deposit", sums ? std::int64_t(sums->deposits) : 0}};
   p.compute(std::span<const parix::OpCount>(ops));
   for (std::size_t r = 0; r < s.regions.size(); ++r) {
     for (auto& part : parix::allgather_vectors<media::Photon>(p, std::span<const media::Photon>(mine.per_region[r])))
       out.per_region[r].insert(out.per_region[r].end(), part.begin(), part.end());
     out.held.push_back(p.reserve_memory(std::int64_t(out.per_region[r].size() * sizeof(media::Photon)), "photon map"));
+  }
+  if (sums) {
+    const DepositSums all = all_reduce(p, std::move(*sums));
+    out.wall_power = all.power();
+    out.wall_deposits = all.deposits, out.wall_missed = all.missed;
   }
   return out;
 }

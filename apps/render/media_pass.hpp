@@ -4,6 +4,8 @@
 // `[ops]` cycles, then all nodes exchange them (parix all-gather), so every node holds the whole
 // photon map for its tiles of the view. Its SH grids (anisotropic media) are built once on the
 // host and each node is charged its slice of that work, as the media app's nodes build theirs.
+// With a radiosity pass, the pass also sums what the media scatter onto the walls (wall_deposits.hpp)
+// over the nodes, for radiosity to carry on: it runs before the radiosity pass.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -15,6 +17,7 @@
 #include "apps/render/medium_region.hpp"
 #include "apps/render/view_medium.hpp"
 #include "apps/render/volume_photons.hpp"
+#include "apps/render/wall_deposits.hpp"
 #include "parix/processor.hpp"
 
 namespace gcsim::render {
@@ -29,6 +32,7 @@ struct MediaSetup {
   geometry::Bvh bvh;
   PhotonLights lights;
   ViewMediumSettings view;        // display_scale is set by the view pass (it knows the exposure)
+  std::unique_ptr<ElementLookup> walls;  // the radiosity elements photons deposit on (null: no radiosity pass)
 };
 
 // lowered: raytrace::lower_scene(split.surfaces); regions: the media the view applies; photon_pass:
@@ -40,6 +44,11 @@ struct GatheredPhotons {
   std::vector<std::vector<media::Photon>> per_region;  // everybody's, in node order
   std::uint64_t flights = 0, surface_events = 0;       // this node's
   std::vector<parix::MemoryReservation> held;          // the photon map's node memory
+  // With MediaSetup::walls: the power the media scattered onto each radiosity element, summed over
+  // every node (identical on all; empty without walls), and the hits over all nodes.
+  std::vector<radiosity::Rgb> wall_power;
+  std::uint64_t wall_deposits = 0, wall_missed = 0;
+  double media_absorbed = 0.0;  // this node's photons' luminance power absorbed in the media
 };
 
 // On every node: its share of the photons, charged, then the all-gather.

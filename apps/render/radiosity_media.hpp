@@ -1,8 +1,8 @@
 #pragma once
 // The media as the radiosity pass sees them: the light a patch shoots to an element is attenuated
 // by the transmittance of the segment between their centres through every medium that changes
-// something (radiosity::PathTransmittance). What the media scatter back onto surfaces is not added
-// here: the photon pass carries it into the view's in-scattering, not into the walls' radiosity.
+// something (radiosity::PathTransmittance). What the media scatter onto surfaces is not added here:
+// the photon pass deposits it on the elements (wall_deposits.hpp), radiosity's received power.
 #include <memory>
 #include <vector>
 

@@ -31,6 +31,8 @@ RenderSetup prepare_render(const scene::SceneDescription& d, const Plan& plan, c
     s.media = make_media_setup(s.split, std::move(lowered), std::move(regions), photon_pass,
                                plan.facts.media_sampling == MediaSampling::radiance_estimate, photons);
     s.media->seed = seed;
+    // Photons deposit what the media scatter onto the radiosity pass's elements (wall_deposits.hpp).
+    if (s.radiosity && photon_pass) s.media->walls = std::make_unique<ElementLookup>(s.mesh, s.split.surfaces);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(file + ": " + e.what());
   }

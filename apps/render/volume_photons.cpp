@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
 
 #include "apps/common/geometry/ray_offset.hpp"
@@ -24,8 +25,9 @@ namespace {
 
 constexpr int kMaxPhotonEvents = 64;  // scatterings plus surface events, as the media app
 
-void add_emitter(PhotonLights& l, const PhotonLights::Emitter& e, const scene::Rgb& rgb_flux) {
+void add_emitter(PhotonLights& l, PhotonLights::Emitter e, const scene::Rgb& rgb_flux) {
   if (e.flux <= 0.0) return;
+  e.chroma = rgb_flux / e.flux;
   l.emitters.push_back(e);
   l.total_flux += e.flux;
   l.cumulative.push_back(l.total_flux);
@@ -92,6 +94,7 @@ namespace {
 
 struct PhotonRay {
   glm::dvec3 origin, direction;
+  glm::dvec3 tint{1.0};  // RGB flux over luminance flux
 };
 
 PhotonRay emit(const PhotonLights& l, apps::Rng& rng) {
@@ -104,12 +107,13 @@ PhotonRay emit(const PhotonLights& l, apps::Rng& rng) {
     case PhotonLights::Emitter::Kind::triangle: {
       const double su = std::sqrt(rng.uniform_double()), v = rng.uniform_double();
       const glm::dvec3 at = e.a + su * (1 - v) * (e.b - e.a) + su * v * (e.c - e.a);
-      return {at, media::direction_around(e.axis, std::sqrt(u1), u2)};  // cosine-weighted: Lambertian
+      return {at, media::direction_around(e.axis, std::sqrt(u1), u2), e.chroma};  // cosine-weighted: Lambertian
     }
-    case PhotonLights::Emitter::Kind::point: return {e.a, media::uniform_sphere(u1, u2)};
-    case PhotonLights::Emitter::Kind::spot: return {e.a, media::direction_around(e.axis, 1 - u1 * (1 - e.cos_cone), u2)};
+    case PhotonLights::Emitter::Kind::point: return {e.a, media::uniform_sphere(u1, u2), e.chroma};
+    case PhotonLights::Emitter::Kind::spot:
+      return {e.a, media::direction_around(e.axis, 1 - u1 * (1 - e.cos_cone), u2), e.chroma};
   }
-  return {e.a, e.axis};
+  return {e.a, e.axis, e.chroma};
 }
 
 // The photon's next medium interaction along the ray before t_max: the region it is in and where,
@@ -118,22 +122,32 @@ struct Interaction {
   std::size_t region;
   double t;
 };
-std::optional<Interaction> free_flight(const std::vector<MediumRegion>& media,
-                                       const std::vector<media::HomogeneousMedium>& lum, const PhotonRay& r,
-                                       double t_max, apps::Rng& rng) {
+// A medium as the flights sample it (luminance) and as the tint weighs it (RGB).
+struct FlightMedium {
+  media::HomogeneousMedium lum;
+  glm::dvec3 sigma_s{0.0}, sigma_t{0.0};
+};
+// tint: times exp(-(sigma_t - luminance sigma_t) d) per channel over the distance d flown in each
+// medium, the ratio of the channel's transmittance to the sampled one.
+std::optional<Interaction> free_flight(const std::vector<MediumRegion>& media, const std::vector<FlightMedium>& fm,
+                                       const PhotonRay& r, double t_max, apps::Rng& rng, glm::dvec3& tint) {
   // Each interval is in one medium; the free flight is memoryless, so each is sampled afresh in turn.
   for (const MediumInterval& part : medium_intervals(media, r.origin, r.direction, t_max)) {
-    const double sigma_t = lum[part.region].sigma_t;
+    const FlightMedium& m = fm[part.region];
+    const double sigma_t = m.lum.sigma_t;
     if (sigma_t <= 0.0) continue;
     const double t = part.t0 - std::log1p(-rng.uniform_double()) / sigma_t;
+    const double flown = std::min(t, part.t1) - part.t0;
+    tint *= glm::exp(-(m.sigma_t - sigma_t) * flown);
     if (t < part.t1) return Interaction{part.region, t};
   }
   return std::nullopt;
 }
 
-// Russian roulette at a surface: the continuing direction, or nullopt (absorbed).
+// Russian roulette at a surface: the continuing direction, or nullopt (absorbed). A diffuse
+// bounce, chosen by the luminance of the colour, multiplies the tint by colour over luminance.
 std::optional<glm::dvec3> bounce(const raytrace::Scene& scene, const Ray& ray, const Hit& hit, apps::Rng& rng,
-                                 glm::dvec3& origin) {
+                                 PhotonRay& r) {
   const raytrace::Material& m = scene.material_of(hit.prim);
   const SurfacePoint sp = scene.surface_point(ray, hit.prim, hit.t, hit.b1, hit.b2);
   const glm::vec3 d = glm::normalize(ray.direction), n = sp.shading_normal;
@@ -149,11 +163,13 @@ std::optional<glm::dvec3> bounce(const raytrace::Scene& scene, const Ray& ray, c
     out = raytrace::reflect_direction(d, n);
   } else {
     const double diffuse = luminance(glm::dvec3(m.diffuse));
-    if (xi < m.reflectance + (1 - m.reflectance) * diffuse)
+    if (xi < m.reflectance + (1 - m.reflectance) * diffuse) {
       out = glm::vec3(media::direction_around(glm::dvec3(sp.geometric_normal), std::sqrt(rng.uniform_double()), rng.uniform_double()));
+      r.tint *= glm::dvec3(m.diffuse) / diffuse;
+    }
   }
   if (!out) return std::nullopt;
-  origin = glm::dvec3(offset_ray_origin(sp, *out));
+  r.origin = glm::dvec3(offset_ray_origin(sp, *out));
   return glm::normalize(glm::dvec3(*out));
 }
 
@@ -161,34 +177,47 @@ std::optional<glm::dvec3> bounce(const raytrace::Scene& scene, const Ray& ray, c
 
 VolumePhotons trace_volume_photons(const raytrace::Scene& surfaces, const geometry::Bvh& bvh, const PhotonLights& lights,
                                    const std::vector<MediumRegion>& media, std::size_t first, std::size_t last,
-                                   std::size_t total, std::uint64_t seed) {
+                                   std::size_t total, std::uint64_t seed, const WallHit& on_wall) {
   VolumePhotons out;
   out.per_region.resize(media.size());
   if (lights.emitters.empty() || total == 0) return out;
-  std::vector<media::HomogeneousMedium> lum;
-  for (const MediumRegion& r : media) lum.push_back(luminance_medium(r.medium));
+  std::vector<FlightMedium> fm;
+  for (const MediumRegion& r : media)
+    fm.push_back({luminance_medium(r.medium), r.medium.sigma_s, r.medium.sigma_s + r.medium.sigma_a});
   const float power = float(lights.total_flux / double(total));
   for (std::size_t i = first; i < last; ++i) {
     apps::Rng rng(seed, 0x70686f746f6eULL + i);
     PhotonRay r = emit(lights, rng);
+    bool scattered = false;  // this flight began at a scattering (or at a mirror or glass after one)
     for (int event = 0; event < kMaxPhotonEvents; ++event) {
       // Leaving an emitter or a surface, the first hit beyond a small distance is the next surface.
       const Ray ray(glm::vec3(r.origin), glm::vec3(r.direction), 1e-5f * (1.0f + glm::length(glm::vec3(r.origin))));
       Hit hit;
       traverse_ordered(surfaces, bvh.packed, ray, hit, out.tests);
       const double t_hit = hit.valid() ? double(hit.t) : std::numeric_limits<double>::infinity();
-      if (const auto at = free_flight(media, lum, r, t_hit, rng)) {
+      if (const auto at = free_flight(media, fm, r, t_hit, rng, r.tint)) {
         ++out.flights;
         const glm::dvec3 x = r.origin + at->t * r.direction;
         out.per_region[at->region].push_back({glm::vec3(x), glm::vec3(r.direction), power});
-        const media::HomogeneousMedium& m = lum[at->region];
-        if (rng.uniform_double() >= m.albedo()) break;  // absorbed
-        r = {x, media::direction_around(r.direction, m.phase.sample_cos(rng.uniform_double()), rng.uniform_double())};
+        const FlightMedium& m = fm[at->region];
+        if (rng.uniform_double() >= m.lum.albedo()) {  // absorbed
+          out.media_absorbed += power;
+          break;
+        }
+        r.tint *= m.sigma_s / m.lum.sigma_s;
+        r = {x, media::direction_around(r.direction, m.lum.phase.sample_cos(rng.uniform_double()), rng.uniform_double()), r.tint};
+        scattered = true;
         continue;
       }
       if (!hit.valid()) break;  // left the scene
       ++out.surface_events;
-      const auto next = bounce(surfaces, ray, hit, rng, r.origin);
+      const bool specular = surfaces.material_of(hit.prim).spawns_secondary();
+      if (scattered && !specular) {
+        ++out.wall_hits;
+        if (on_wall) on_wall(r.origin, r.direction, double(power) * r.tint);
+      }
+      scattered = scattered && specular;
+      const auto next = bounce(surfaces, ray, hit, rng, r);
       if (!next) break;
       r.direction = *next;
     }

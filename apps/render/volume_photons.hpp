@@ -5,7 +5,12 @@
 // media app's reading [A4]) and scatter by the medium's phase; at surfaces they are reflected
 // diffusely, by a mirror, or reflected or refracted by glass, by Russian roulette on the surface's
 // (luminance) weights, so light that walls reflect into the fog is in the map too.
+// Each photon also carries an RGB tint (its RGB flux over its luminance flux: the emitter's chroma,
+// then the ratio weights of the luminance sampling at coloured walls and media), read only where a
+// flight that began at a scattering ends on a diffuse surface (WallHit): the light the media scatter
+// onto the walls, which radiosity then carries on (wall_deposits.hpp).
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -29,6 +34,7 @@ struct PhotonLights {
     glm::dvec3 axis{0.0};               // a triangle's emitting side, a spot's direction
     double cos_cone = -1.0;             // spot
     double flux = 0.0;                  // luminance
+    glm::dvec3 chroma{1.0};             // RGB flux over luminance flux
   };
   std::vector<Emitter> emitters;
   std::vector<double> cumulative;  // running sums of flux, for the choice
@@ -45,13 +51,20 @@ media::HomogeneousMedium luminance_medium(const scene::Medium& m);
 struct VolumePhotons {
   std::vector<std::vector<media::Photon>> per_region;  // one list per MediumRegion
   std::uint64_t flights = 0, surface_events = 0;
-  geometry::TestTally tests;  // the surface hits' box and triangle tests
+  std::uint64_t wall_hits = 0;   // flights from a scattering that ended on a diffuse surface (WallHit calls)
+  double media_absorbed = 0.0;   // luminance power the media absorbed (the albedo roulette's losses)
+  geometry::TestTally tests;     // the surface hits' box and triangle tests
 };
+
+// A photon's flight that began at a scattering in a medium (or at a mirror or glass such a flight
+// reached) meets a surface that is neither mirror nor glass, from `origin` along `direction`
+// (unit): power is its RGB flux (luminance power times tint). Called before the surface's roulette.
+using WallHit = std::function<void(const glm::dvec3& origin, const glm::dvec3& direction, const glm::dvec3& power)>;
 
 // Photons [first, last) of `total`; photon i draws from its own stream (seed, i), so any split of the
 // range over nodes gives the same photons. Each carries total_flux / total.
 VolumePhotons trace_volume_photons(const raytrace::Scene& surfaces, const geometry::Bvh& bvh, const PhotonLights& lights,
                                    const std::vector<MediumRegion>& media, std::size_t first, std::size_t last,
-                                   std::size_t total, std::uint64_t seed);
+                                   std::size_t total, std::uint64_t seed, const WallHit& on_wall = {});
 
 }  // namespace gcsim::render

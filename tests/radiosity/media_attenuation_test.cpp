@@ -132,5 +132,52 @@ TEST(MediaAttenuation, ParallelEqualsSequentialThroughMedia) {
   }
 }
 
+// Received power (SolverOptions::received): before any shot each element holds E + rho Phi / A, its
+// patch rho Phi more unshot energy; the books balance with it; none at all changes no bit.
+TEST(ReceivedPower, StartsAsRhoPhiOverAAndIsBooked) {
+  const Scene room = testing::lit_room();
+  std::vector<Rgb> received(room.elements.size(), Rgb(0.0));
+  received[3] = Rgb(2.0, 4.0, 8.0);
+  SolverOptions none = options(1.0, nullptr);
+  none.max_steps = 0;
+  SolverOptions given = none;
+  given.received = &received;
+  const SolveResult before = solve_progressive(room, none), after = solve_progressive(room, given);
+  const SceneElement& el = room.elements[3];
+  const Rgb rho = room.surfaces[room.patches[el.patch].surface].reflectance;
+  for (std::size_t e = 0; e < room.elements.size(); ++e) {
+    const Rgb expected = before.state.element_radiosity()[e] + (e == 3 ? rho * received[3] / el.area : Rgb(0.0));
+    EXPECT_EQ(after.state.element_radiosity()[e], expected) << "element " << e;
+  }
+  const EnergyBalance& b = after.state.energy();
+  EXPECT_EQ(b.injected, received[3]);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(b.absorbed[k], (1 - rho[k]) * received[3][k], 1e-12);
+    EXPECT_NEAR(b.unshot[k] - before.state.energy().unshot[k], rho[k] * received[3][k], 1e-9 * b.unshot[k]);
+  }
+}
+
+TEST(ReceivedPower, BalancesAtEveryStepAndNoneChangesNoBit) {
+  const Scene room = testing::lit_room();
+  const Everywhere fog(Rgb(0.3, 0.6, 1.2));
+  std::vector<Rgb> received(room.elements.size(), Rgb(0.0));
+  SolverOptions o = options(0.99, &fog);
+  o.received = &received;
+  const SolveResult plain = solve_progressive(room, options(0.99, &fog)), zero = solve_progressive(room, o);
+  EXPECT_EQ(zero.state.element_radiosity(), plain.state.element_radiosity());
+  EXPECT_EQ(zero.steps.size(), plain.steps.size());
+  for (std::size_t e = 0; e < received.size(); e += 5) received[e] = Rgb(0.5, 0.25, 1.0);
+  int steps = 0;
+  solve_progressive(room, o, nullptr, [&](const StepRecord& rec, const ProgressiveState& st) {
+    const EnergyBalance& e = st.energy();
+    for (int k = 0; k < 3; ++k)
+      ASSERT_NEAR(e.unshot[k] + e.absorbed[k] + e.escaped[k] + e.in_media[k], e.emitted[k] + e.injected[k],
+                  1e-12 * e.emitted[k])
+          << "step " << rec.step;
+    ++steps;
+  });
+  EXPECT_GT(steps, 5);
+}
+
 }  // namespace
 }  // namespace gcsim::radiosity

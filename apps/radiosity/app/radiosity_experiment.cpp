@@ -131,7 +131,7 @@ nlohmann::json run_json(const Scene& scene, const ParallelOptions& o, const std:
 void print_convergence(const ParallelOutcome& r) {
   fmt::print("loops     {} (shot fraction {:.6f}{})\n", r.steps.size(), r.steps.empty() ? 1.0 : r.steps.back().shot_fraction,
              r.converged ? "" : ", threshold NOT reached");
-  const Rgb bal = r.energy.emitted - r.energy.unshot - r.energy.absorbed - r.energy.escaped - r.energy.in_media;
+  const Rgb bal = r.energy.emitted + r.energy.injected - r.energy.unshot - r.energy.absorbed - r.energy.escaped - r.energy.in_media;
   fmt::print("energy    emitted {:.6g}, absorbed {:.6g}, unshot {:.6g}, escaped {:.6g}, imbalance {:.3g}\n",
              channel_sum(r.energy.emitted), channel_sum(r.energy.absorbed), channel_sum(r.energy.unshot),
              channel_sum(r.energy.escaped), channel_sum(bal));

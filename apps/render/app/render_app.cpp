@@ -1,7 +1,7 @@
 // The render app: `gcsim plan SCENE.toml` (plan_command.cpp) and `gcsim run render --scene
 // SCENE.toml`, which runs the plan's passes that the unified renderer has so far, one after the
-// other on every node: the radiosity pass (the thesis's parallel progressive refinement on the
-// scene's polygons), the media pass (photons), then the view pass (the ray tracer's parallel render, reading the radiosity
+// other on every node: the media pass (photons, and what the media scatter onto the walls), the
+// radiosity pass (the thesis's parallel progressive refinement on the scene's polygons), then the view pass (the ray tracer's parallel render, reading the radiosity
 // at diffuse hits and following mirrors and glass: the specular pass; marching through media with
 // the media pass's photon map).
 #include <algorithm>
@@ -119,6 +119,7 @@ class RenderExperiment : public pipeline::Experiment {
     const double radiosity_s = u.radiosity_seconds();
     // Under MPI the clocks are this rank's wall clock, and only this rank's pass end is known here.
     const bool real = o.run.model.starts_with("mpi");
+    report_media(u, real, extra);  // the photons run first: radiosity receives what they leave on the walls
     if (!runs(PassId::radiosity)) {
       fmt::print("radiosity skipped: {}\n", plan_.pass(PassId::radiosity).reason);
       extra["radiosity"] = {{"ran", false}};
@@ -128,25 +129,16 @@ class RenderExperiment : public pipeline::Experiment {
                  r.converged ? "" : "not ", radiosity_s, real ? "of wall time (this rank)" : "simulated (last node)");
       extra["radiosity"] = {{"ran", true}, {"steps", r.steps.size()}, {"converged", r.converged},
                             {"elements", r.element_radiosity.size()}, {"simulated_end_s", radiosity_s}};
-      if (setup_.radiosity_media_or_null()) {
-        // The share of the emitted light that the media took between surfaces (absorbed or scattered
-        // out of the path; the photon pass carries what they scatter), against the surfaces' share.
-        const double emitted = radiosity::channel_sum(r.energy.emitted);
-        const double share = emitted > 0 ? radiosity::channel_sum(r.energy.in_media) / emitted : 0.0;
-        const double walls = emitted > 0 ? radiosity::channel_sum(r.energy.absorbed) / emitted : 0.0;
-        fmt::print("          the media took {:.1f} % of the emitted light between surfaces, the surfaces absorbed {:.1f} %\n",
-                   100 * share, 100 * walls);
-        extra["radiosity"]["media_share"] = share;
-      }
+      if (setup_.radiosity_media_or_null()) report_radiosity_media(u, extra["radiosity"]);
       if (runs_forced(PassId::radiosity)) report_forced_radiosity(u, extra["radiosity"]);
     }
     if (!u.view) return;
-    const double media_s = report_media(u, real, extra);
+    const double view_start_s = u.view_start_seconds();
     const raytrace::ParallelRender& v = u.view->result;
     const double total_s = o.run.simulated_seconds();
     fmt::print("view      {} x {} pixels, {} primitives, {} shading rays; {:.6f} s {}{}\n", u.view->settings.width,
-               u.view->settings.height, u.view->scene.prim_count(), v.counters.shades, total_s - media_s,
-               real ? "of wall time" : "simulated", media_s > 0 ? " after the passes before it" : "");
+               u.view->settings.height, u.view->scene.prim_count(), v.counters.shades, total_s - view_start_s,
+               real ? "of wall time" : "simulated", view_start_s > 0 ? " after the passes before it" : "");
     if (v.counters.media_segments > 0)
       fmt::print("          {} ray segments through media, {} distance samples ({} nearest photons each)\n",
                  v.counters.media_segments, v.counters.media_samples, setup_.media->view.k_nearest);
@@ -155,7 +147,7 @@ class RenderExperiment : public pipeline::Experiment {
     extra["forced_passes"] = forced_names;
     extra["view"] = {{"secondary_rays", view_.secondary}, {"shadow_rays", view_.shadows}, {"width", u.view->settings.width}, {"height", u.view->settings.height},
                      {"primitives", u.view->scene.prim_count()}, {"shades", v.counters.shades},
-                     {"exposure", u.view->exposure}, {"simulated_s", total_s - media_s},
+                     {"exposure", u.view->exposure}, {"simulated_s", total_s - view_start_s},
                      {"media_segments", v.counters.media_segments}, {"media_samples", v.counters.media_samples}};
     if (budget_) report_budget(o, extra);
     if (image_.path.empty()) return;
@@ -172,23 +164,23 @@ class RenderExperiment : public pipeline::Experiment {
   }
 
  private:
-  // The media pass's line; returns when the last node ended it (the radiosity pass's end without one).
-  double report_media(const UnifiedRender& u, bool real, nlohmann::json& extra) const {
+  // The media pass's line (the photons; the SH grid's share is charged before the view).
+  void report_media(const UnifiedRender& u, bool real, nlohmann::json& extra) const {
     const double end_s = u.media_seconds();
     const PassPlan& plan = plan_.pass(PassId::media);
     if (budget_ && !budget_->choice.controls.media) {
       fmt::print("media     dropped by the error budget (below)\n");
       extra["media"] = {{"ran", false}, {"dropped_by_error_budget", true}};
-      return end_s;
+      return;
     }
     if (!setup_.media || !setup_.media->photon_pass) {
-      if (setup_.split.media.empty()) return end_s;  // no medium at all: nothing to say
+      if (setup_.split.media.empty()) return;  // no medium at all: nothing to say
       fmt::print("media     photons skipped: {}{}\n", plan.reason,
                  setup_.media ? " (the view applies the media's transmittance)" : "");
       extra["media"] = {{"ran", false}, {"transmittance_applied", setup_.media != nullptr}};
-      return end_s;
+      return;
     }
-    const std::size_t stored = u.view->medium ? u.view->medium->photons() : 0;
+    const std::size_t stored = u.view && u.view->medium ? u.view->medium->photons() : 0;
     fmt::print("media     {} photons emitted (seed {}), {} stored in the media ({} surface bounces{}), {}; the pass ended at {:.6f} s {}\n",
                setup_.media->photons, setup_.media->seed, stored, u.photon_surface_events, real ? " on this rank" : "",
                setup_.media->view.radiance_estimate ? "SH grid for the radiance estimate" : "transmittance sampling",
@@ -196,7 +188,26 @@ class RenderExperiment : public pipeline::Experiment {
     extra["media"] = {{"ran", true}, {"photons_emitted", setup_.media->photons}, {"seed", setup_.media->seed}, {"photons_stored", stored},
                       {"surface_bounces", u.photon_surface_events}, {"radiance_estimate", setup_.media->view.radiance_estimate},
                       {"simulated_end_s", end_s}};
-    return end_s;
+    if (!setup_.media->walls) return;
+    fmt::print("          {} photon flights from a scattering reached a wall ({} found no radiosity element): "
+               "their power goes to the radiosity pass\n", u.wall_deposits + u.wall_missed, u.wall_missed);
+    extra["media"]["wall_deposits"] = u.wall_deposits;
+    extra["media"]["wall_missed"] = u.wall_missed;
+  }
+
+  // What the media took between surfaces and what they scattered onto the walls, of the emitted light.
+  void report_radiosity_media(const UnifiedRender& u, nlohmann::json& extra) const {
+    const radiosity::EnergyBalance& e = u.radiosity.energy;
+    const double emitted = radiosity::channel_sum(e.emitted);
+    auto share = [&](const radiosity::Rgb& x) { return emitted > 0 ? radiosity::channel_sum(x) / emitted : 0.0; };
+    const double walls = mean_wall_radiosity(setup_.mesh, u.radiosity.element_radiosity);
+    fmt::print("          the media took {:.1f} % of the emitted light between surfaces and scattered {:.1f} % onto the "
+               "walls;\n          the surfaces absorbed {:.1f} %; the walls' mean radiosity {:.4g}\n",
+               100 * share(e.in_media), 100 * share(e.injected), 100 * share(e.absorbed), walls);
+    extra["mean_wall_radiosity"] = walls;
+    extra["media_share"] = share(e.in_media);
+    extra["scattered_onto_walls_share"] = share(e.injected);
+    extra["surfaces_absorbed_share"] = share(e.absorbed);
   }
 
   scene::SceneDescription description_;
