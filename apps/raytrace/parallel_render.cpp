@@ -4,6 +4,7 @@
 #include <cstring>
 #include <deque>
 #include <memory>
+#include <stdexcept>
 
 #include "apps/raytrace/pixel_encoding.hpp"
 #include "apps/raytrace/render.hpp"
@@ -189,17 +190,23 @@ struct Chunk {
   std::int32_t count = 0;
 };
 
-Chunk next_chunk(int& next, int tiles, int tiles_x, int nodes) {
+// next: a position in order (the tiles to hand out, whole rows of them, by index).
+Chunk next_chunk(int& next, const std::vector<int>& order, int tiles_x, int nodes) {
+  const int tiles = int(order.size());
   if (next >= tiles) return {};
-  const int left_in_row = tiles_x - next % tiles_x;
-  const int count = std::clamp((tiles - next) / (4 * nodes), 1, std::min(left_in_row, kMaxRun));
-  const Chunk c{next, count};
+  const int first = order[std::size_t(next)], left_in_row = tiles_x - first % tiles_x;
+  int consecutive = 1;  // a run is consecutive tiles of one row (a sample's order skips some)
+  while (consecutive < std::min(left_in_row, kMaxRun) && next + consecutive < tiles &&
+         order[std::size_t(next + consecutive)] == first + consecutive)
+    ++consecutive;
+  const int count = std::clamp((tiles - next) / (4 * nodes), 1, consecutive);
+  const Chunk c{first, count};
   next += count;
   return c;
 }
 
-void run_dynamic(parix::Processor& p, NodeWork& work) {
-  const int n = p.count(), me = p.id(), tiles = work.tiling.count(), tiles_x = work.tiling.tiles_x();
+void run_dynamic(parix::Processor& p, NodeWork& work, const std::vector<int>& order) {
+  const int n = p.count(), me = p.id(), tiles = int(order.size()), tiles_x = work.tiling.tiles_x();
   if (me != 0) {
     parix::Link master = p.connect(0, kTileTag);
     std::deque<Chunk> queue;
@@ -235,7 +242,7 @@ void run_dynamic(parix::Processor& p, NodeWork& work) {
   // Node 0: the master, and a worker thread on the node's second CPU sharing the tile pool.
   int next = 0;
   parix::Thread local = p.spawn([&](parix::Processor& q) {
-    for (Chunk c = next_chunk(next, tiles, tiles_x, n); c.first >= 0; c = next_chunk(next, tiles, tiles_x, n))
+    for (Chunk c = next_chunk(next, order, tiles_x, n); c.first >= 0; c = next_chunk(next, order, tiles_x, n))
       for (int t = c.first; t < c.first + c.count; ++t) work.assemble(q, work.render(q, t));
   });
   std::vector<parix::Link> links = connect_root_to_all(p);
@@ -245,7 +252,7 @@ void run_dynamic(parix::Processor& p, NodeWork& work) {
   sent.reserve(std::size_t(tiles) + std::size_t(n));
   std::vector<parix::Request> sends;
   auto assign = [&](int w) {
-    sent.push_back(next_chunk(next, tiles, tiles_x, n));
+    sent.push_back(next_chunk(next, order, tiles_x, n));
     if (sent.back().first >= 0) ++outstanding[w];
     else stop_sent[w] = true;
     sends.push_back(p.isend(links[w], std::as_bytes(std::span(&sent.back(), 1))));
@@ -319,8 +326,27 @@ void ParallelRenderJob::program(parix::Processor& p, ParallelRender& out, TilePr
   // Built here, by the processor that uses it (on the heap: fiber stacks are small).
   const auto renderer = std::make_unique<TileRenderer>(scene_, bvh_, settings_);
   NodeWork work{scene_, bvh_, settings_, Tiling{settings_.width, settings_.height, settings_.tile}, out, *renderer, prefetch};
-  if (distribution_ == Distribution::dynamic) run_dynamic(p, work);
+  if (distribution_ == Distribution::dynamic) {
+    std::vector<int> every;
+    if (order_.empty())
+      for (int t = 0; t < work.tiling.count(); ++t) every.push_back(t);
+    run_dynamic(p, work, order_.empty() ? every : order_);
+  }
   else run_static(p, work, distribution_);
+}
+
+void ParallelRenderJob::sample_tiles(int stride) {
+  if (distribution_ != Distribution::dynamic) throw std::invalid_argument("raytrace: only a dynamic render samples tiles");
+  const Tiling tiling{settings_.width, settings_.height, settings_.tile};
+  stride = std::max(stride, 1);
+  order_.clear();
+  for (int y = 0; y < tiling.tiles_y(); ++y)
+    for (int x = 0; x < tiling.tiles_x(); ++x)
+      if ((x + y) % stride == stride / 2 % stride) order_.push_back(y * tiling.tiles_x() + x);
+}
+
+int ParallelRenderJob::tiles_rendered_per_run() const {
+  return order_.empty() ? Tiling{settings_.width, settings_.height, settings_.tile}.count() : int(order_.size());
 }
 
 std::int64_t ParallelRenderJob::scene_bytes() const {

@@ -71,6 +71,11 @@ class ParallelRenderJob {
   // For one simulated run on `nodes` with `host_threads` (--host-threads): null if 1, or for B1.
   std::unique_ptr<TilePrefetch> make_prefetch(int nodes, int host_threads) const;
   void finish(ParallelRender& out) const;      // sums the counters, merges the hit ids
+  // Renders only one tile in `stride` (dynamic distribution only), on diagonals so that every row
+  // and column of tiles is sampled alike: a sample of the view whose cost `gcsim plan` scales up
+  // (a medium covering a few rows is met as often as in the whole image). Other tiles stay black.
+  void sample_tiles(int stride);
+  int tiles_rendered_per_run() const;          // the tiles one run renders (all, or the sample's)
 
   // Node memory, declared before the host allocates it: every node's scene and tree, the 8-bit
   // image node 0 assembles, the buffers of one tile being rendered.
@@ -83,6 +88,7 @@ class ParallelRenderJob {
   const Bvh& bvh_;
   RenderSettings settings_;
   Distribution distribution_;
+  std::vector<int> order_;  // the tiles handed out, in this order (empty: every tile, by index)
 };
 
 // Runs the job on the simulated machine (for tests and callers without a pipeline), with

@@ -1,5 +1,6 @@
 #include "apps/render/media_pass.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <span>
 
@@ -39,7 +40,9 @@ namespace {
 // This node's share of the photons, with what they deposit on the walls when there are walls.
 VolumePhotons trace_share(parix::Processor& p, const MediaSetup& s, std::optional<DepositSums>& sums,
                           geometry::TestTally& lookups) {
-  const std::size_t first = share_begin(s.photons, p.id(), p.count()), last = share_begin(s.photons, p.id() + 1, p.count());
+  const std::size_t first = share_begin(s.photons, p.id(), p.count());
+  const std::size_t end = share_begin(s.photons, p.id() + 1, p.count());
+  const std::size_t last = s.traced > 0 ? std::min<std::size_t>(end, first + share(s.traced, p.id(), p.count())) : end;
   if (!s.walls) return trace_volume_photons(s.surfaces, s.bvh, s.lights, s.regions, first, last, s.photons, s.seed);
   sums.emplace(s.walls->element_count(), s.lights.total_flux / double(s.photons));
   DepositSums& d = *sums;

@@ -27,6 +27,9 @@ struct MediaSetup {
   std::vector<MediumRegion> regions;
   bool photon_pass = false;       // the plan's media pass (or --force-pass media)
   std::size_t photons = 20000;    // emitted, over all nodes
+  // Photons actually traced, over all nodes (0: all): `gcsim plan`'s sample. Each node traces the
+  // first of its share, the very photons a full pass traces, at the same power each.
+  std::size_t traced = 0;
   std::uint64_t seed = 1;
   raytrace::Scene surfaces;       // what photons bounce off: the lowered scene without the media's bounds
   geometry::Bvh bvh;
