@@ -100,7 +100,10 @@ PassCost estimate_pass(const PassPlan& pass, const SceneFacts& f, const machine:
     case PassId::specular:
       c = rays(camera_rays * m.specular_depth, op("rt_secondary_ray") + trace + op("rt_shade"), f, nodes, 0);
       break;
-    case PassId::media: c = media(op, f, nodes, m); break;
+    case PassId::media:
+      if (m.media_seconds > 0) return {m.media_seconds, m.media_bytes};  // measured
+      c = media(op, f, nodes, m);
+      break;
     case PassId::shadows: {
       const int lights = f.point_lights + f.emitters;
       c = rays(camera_rays * lights, op("rt_secondary_ray") + trace, f, nodes, 0);

@@ -6,6 +6,7 @@
 // instead be measured by sampling its first loops (radiosity_seconds_per_loop), which counts its
 // communication and waiting too.
 #include <cstdint>
+#include <string>
 
 #include "apps/render/plan.hpp"
 #include "machine/machine_config.hpp"
@@ -27,6 +28,13 @@ struct CostModel {
   // 6.8 measured; MEDIA-EXP1: 63 predicted, 105 measured: the sphere's reflected and refracted
   // rays march too).
   int march_samples = 32;
+  // > 0: the media pass measured on the machine by a sample of its photons and of the view's tiles
+  // (media_sample.hpp): its simulated seconds and the photon map's bytes; the counts below then
+  // only describe the fallback.
+  double media_seconds = 0;
+  std::int64_t media_bytes = 0;
+  std::string media_measured;     // how that sample ran, for the report
+  bool radiosity_deposits = false;  // the radiosity sample started from the photons' wall deposits
   int photons = 50000;            // `gcsim render --photons`' default (render_setup.hpp)
   int k_nearest = 50;             // photons per radiance estimate
   int max_photon_events = 64;

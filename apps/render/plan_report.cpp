@@ -14,6 +14,34 @@ std::string needs(const PassPlan& p) {
   return out.empty() ? "-" : out;
 }
 
+// Which figures ran on the simulated machine and which are operation counts.
+std::string describe_estimate(const Plan& plan, const CostModel& model) {
+  const SceneFacts& f = plan.facts;
+  std::string out;
+  if (model.radiosity_seconds_per_loop > 0)
+    out += fmt::format("measured  radiosity: its first loops ran on the simulated machine{}, {:.4g} s each\n"
+                       "          (communication and waiting included), times ~{:.0f} loops from the decline of the "
+                       "unshot energy over them.\n",
+                       model.radiosity_deposits ? " from the photons' wall deposits" : "",
+                       model.radiosity_seconds_per_loop, expected_loops(f, model));
+  if (model.media_seconds > 0) out += "measured  media: " + model.media_measured + "\n";
+  std::string counted;
+  for (const PassPlan& p : plan.passes) {
+    const bool measured = (p.id == PassId::radiosity && model.radiosity_seconds_per_loop > 0) ||
+                          (p.id == PassId::media && model.media_seconds > 0);
+    if (p.on && !measured) counted += (counted.empty() ? "" : ", ") + std::string(pass_name(p.id));
+  }
+  if (counted.empty()) return out;
+  out += "modeled   " + counted + ": work split evenly over the nodes from the counts above and the machine's [ops]\n"
+         "          cycles; communication not counted";
+  if (plan.pass(PassId::radiosity).on && model.radiosity_seconds_per_loop <= 0)
+    out += fmt::format("; radiosity assumes {:g} shots per patch (~{:.0f} loops of {}) and a {} hemicube",
+                       model.shots_per_patch, expected_loops(f, model), model.shooters_per_loop, model.hemicube_resolution);
+  if (plan.pass(PassId::media).on && model.media_seconds <= 0)
+    out += fmt::format("; media assume {} photons and {} march samples per free path", model.photons, model.march_samples);
+  return out + ".\n";
+}
+
 }  // namespace
 
 std::string format_plan(const Plan& plan, const machine::MachineConfig& machine, int nodes, const CostModel& model) {
@@ -37,17 +65,7 @@ std::string format_plan(const Plan& plan, const machine::MachineConfig& machine,
     if (!p.detail.empty() && (p.on || p.id == PassId::media)) out += "           " + p.detail + "\n";
   }
   out += fmt::format("\ntotal     ~{:.3g} s per node (largest pass ~{} per node)\n", total, mib(peak));
-  out += "estimate: work split evenly over the nodes from the counts above and the machine's [ops] cycles;\n"
-         "communication not counted";
-  if (model.radiosity_seconds_per_loop > 0)
-    out += fmt::format(", except for radiosity: its first loops ran on the simulated machine, {:.4g} s\n"
-                       "each (communication and waiting included), times ~{:.0f} loops from the decline of the "
-                       "unshot energy over them.\n",
-                       model.radiosity_seconds_per_loop, expected_loops(f, model));
-  else
-    out += fmt::format("; radiosity assumes {:g} shots per patch (~{:.0f} loops of {}) and a {} hemicube.\n",
-                       model.shots_per_patch, expected_loops(f, model), model.shooters_per_loop,
-                       model.hemicube_resolution);
+  out += describe_estimate(plan, model);
   return out;
 }
 
@@ -65,7 +83,10 @@ nlohmann::json plan_json(const Plan& plan, const machine::MachineConfig& machine
     const PassCost c = estimate_pass(p, f, machine, nodes, model);
     nlohmann::json needs_list = nlohmann::json::array();
     for (PassId d : p.depends_on) needs_list.push_back(pass_name(d));
+    const bool measured = (p.id == PassId::radiosity && model.radiosity_seconds_per_loop > 0) ||
+                          (p.id == PassId::media && model.media_seconds > 0);
     j["passes"].push_back({{"name", pass_name(p.id)}, {"on", p.on}, {"reason", p.reason}, {"detail", p.detail},
+                           {"estimate", !p.on ? "none" : measured ? "measured" : "modeled"},
                            {"needs", needs_list}, {"estimated_seconds_per_node", c.seconds_per_node},
                            {"estimated_bytes_per_node", c.bytes_per_node}});
   }

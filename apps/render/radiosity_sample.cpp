@@ -22,7 +22,8 @@ double extrapolate_loops(const std::vector<radiosity::StepRecord>& steps, double
 }
 
 RadiositySample sample_radiosity_loops(const scene::SceneDescription& d, const std::string& file,
-                                       const parix::SimulationOptions& machine, int loops) {
+                                       const parix::SimulationOptions& machine, int loops,
+                                       const std::vector<radiosity::Rgb>* received) {
   const auto start = std::chrono::steady_clock::now();
   // The mesh and options of `gcsim render`'s radiosity pass (render_app.cpp, render_setup.cpp).
   const SplitScene split = split_media(d, file);
@@ -36,7 +37,10 @@ RadiositySample sample_radiosity_loops(const scene::SceneDescription& d, const s
   options = radiosity::with_shared_projections(options);
   std::vector<radiosity::StepRecord> steps;
   bool converged = false;
+  const bool deposits = received && !received->empty();
+  if (deposits) options.solver.received = received;
   const parix::RunResult run = parix::run_simulated(machine, [&](parix::Processor& p) {
+    if (deposits) p.compute("element_update", std::int64_t(received->size()));  // as unified_render.cpp
     radiosity::ParallelOutcome out = radiosity::solve_replica(p, mesh, options);
     if (p.id() == 0) steps = std::move(out.steps), converged = out.converged;
   });

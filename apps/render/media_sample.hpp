@@ -1,0 +1,55 @@
+#pragma once
+// The media pass's cost measured rather than counted, as radiosity_sample.hpp does for radiosity:
+// the render's own per-node programs run on the simulated machine on a sample, and `gcsim plan`
+// scales it up.
+//   photons  each node traces the first 1/d of its share (the photons a full pass traces), then the
+//            all-gather and the wall deposits' reduction, as the render; run at 1/(2d) too, the pass
+//            is taken as linear in the photons (tracing and gathered bytes) through the two points,
+//            which keeps a fixed part (latencies, the deposits' all-reduce) fixed.
+//   SH grid  built on the host from the sample's photons; its counts scaled to all photons (its
+//            voxels and their photons grow with the map, eq. 13), each node charged its share.
+//   marching one tile in k of the view, on diagonals (every row and column of tiles alike, so a
+//            small medium is met about as often as in the image: every k-th row of tiles put
+//            example.toml's marching at 2.9 s against 1.4 s), rendered with the media and without:
+//            the difference (the marching; the set-up cancels) times the tiles over those rendered.
+// The radiosity pass reads what the photons leave on the walls: the sample's deposits, scaled to
+// all photons, go to its sample (radiosity_sample.hpp).
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "apps/common/scene/scene_description.hpp"
+#include "apps/radiosity/progressive_solver.hpp"
+#include "apps/render/plan.hpp"
+#include "parix/simulated_runtime.hpp"
+
+namespace gcsim::render {
+
+struct MediaSampleOptions {
+  std::size_t photons = 50000;  // the render's (--photons); render_setup.hpp's kDefaultPhotons
+  int photon_divisor = 8;       // the sample traces photons / this, and half of that; 1: every photon
+  int tile_stride = 0;          // one tile in k; 0: chosen (at most 8, at least 16 tiles a node)
+};
+
+struct MediaSample {
+  double photon_seconds = 0;  // the photon pass (last node's end), extrapolated to every photon
+  double grid_seconds = 0;    // the SH grid's share (slowest node), counts scaled to every photon
+  double view_seconds = 0;    // the whole view with the media, scaled to every tile
+  double march_seconds = 0;   // of which the media's: with minus without, scaled to every tile
+  std::int64_t map_bytes = 0;  // the photon map every node holds, scaled to every photon
+  std::vector<radiosity::Rgb> wall_power;  // the deposits scaled to every photon (empty: none)
+  std::size_t traced = 0;     // photons of the larger sample
+  int tile_stride = 1, tiles_rendered = 0, tiles = 0;
+  double host_seconds = 0;    // wall time the samples took
+  double seconds() const { return photon_seconds + grid_seconds + march_seconds; }  // the plan's media pass
+};
+
+// The tile stride `gcsim plan` samples the view with: at most 8, and at least 16 tiles per node.
+int sample_tile_stride(int tiles, int nodes);
+
+// machine: cut to the nodes of the estimate. file: for messages. Throws std::invalid_argument where
+// the render would refuse the scene (the plan then keeps the operation count).
+MediaSample sample_media(const scene::SceneDescription& d, const Plan& plan, const std::string& file,
+                         const parix::SimulationOptions& machine, const MediaSampleOptions& o = {});
+
+}  // namespace gcsim::render

@@ -1,0 +1,117 @@
+// gcsim plan's media estimate by sampling: a fraction of the photons and of the view's tiles run on
+// the simulated machine (the render's own programs) and are scaled up. A sample of every photon and
+// every tile is the pass itself and predicts it exactly; a real sample lands near it; nothing the
+// sample does reaches the render.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "apps/common/scene/scene_file.hpp"
+#include "apps/render/media_sample.hpp"
+#include "apps/render/plan.hpp"
+#include "apps/render/plan_cost.hpp"
+#include "apps/render/render_setup.hpp"
+#include "apps/render/unified_render.hpp"
+#include "machine/machine_config.hpp"
+
+namespace gcsim::render {
+namespace {
+
+parix::SimulationOptions machine_of(int nodes) {
+  parix::SimulationOptions sim;
+  sim.config = machine::with_nodes(machine::default_machine_config(), nodes);
+  return sim;
+}
+
+const std::string kSmall = (std::filesystem::path(GCSIM_SOURCE_DIR) / "scenes" / "media-small.toml").string();
+
+struct Rendered {
+  double photons_end = 0, view_start = 0, end = 0;
+  apps::Image image;
+};
+
+// The render's program (no radiosity in MEDIA-SMALL), as `gcsim render` runs it.
+Rendered render(const scene::SceneDescription& d, int nodes, std::size_t photons) {
+  const Plan plan = make_plan(d);
+  const RenderSetup setup = prepare_render(d, plan, kSmall, {}, photons);
+  ViewSettings view;
+  view.secondary = plan.pass(PassId::specular).on;
+  view.shadows = plan.pass(PassId::shadows).on;
+  UnifiedRender out(nodes);
+  const parix::RunResult run = parix::run_simulated(machine_of(nodes), [&](parix::Processor& p) {
+    unified_render_program(p, setup.split.surfaces, nullptr, {}, view, setup.media.get(), out);
+  });
+  finish(out);
+  return {out.media_seconds(), out.view_start_seconds(), run.simulated_seconds(), out.view->result.image};
+}
+
+scene::SceneDescription small_scene() {
+  scene::SceneDescription d = scene::load_scene_file(kSmall);
+  d.image.width = 48, d.image.height = 32;  // 24 tiles
+  return d;
+}
+
+TEST(MediaSample, ASampleOfEveryPhotonAndTilePredictsThePassExactly) {
+  const scene::SceneDescription d = small_scene();
+  const Plan plan = make_plan(d);
+  ASSERT_TRUE(plan.pass(PassId::media).on);
+  ASSERT_FALSE(plan.pass(PassId::radiosity).on);
+  for (int nodes : {1, 3}) {
+    SCOPED_TRACE(nodes);
+    const MediaSample s = sample_media(d, plan, kSmall, machine_of(nodes), {.photons = 3000, .photon_divisor = 1, .tile_stride = 1});
+    ASSERT_EQ(s.tiles_rendered, s.tiles);
+    const Rendered r = render(d, nodes, 3000);
+    EXPECT_DOUBLE_EQ(s.photon_seconds, r.photons_end);
+    EXPECT_DOUBLE_EQ(s.photon_seconds + s.grid_seconds, r.view_start);
+    EXPECT_DOUBLE_EQ(s.view_seconds, r.end - r.view_start);
+    EXPECT_GT(s.march_seconds, 0.5 * s.view_seconds);  // the marching is most of this view
+  }
+}
+
+// A real sample (1/8 and 1/16 of the photons, one tile in 2) lands within 25 % of the render's photons,
+// SH grid and view; the render afterwards is the render without a plan, pixel for pixel.
+TEST(MediaSample, ASampleLandsNearThePassAndChangesNothingInTheRender) {
+  const scene::SceneDescription d = small_scene();
+  const Plan plan = make_plan(d);
+  const Rendered before = render(d, 2, 8000);
+  const MediaSample s = sample_media(d, plan, kSmall, machine_of(2), {.photons = 8000, .photon_divisor = 8, .tile_stride = 2});
+  EXPECT_EQ(s.traced, 1000u);
+  EXPECT_LT(s.tiles_rendered, s.tiles);
+  const Rendered after = render(d, 2, 8000);
+  const double predicted = s.photon_seconds + s.grid_seconds + s.view_seconds;
+  EXPECT_NEAR(predicted, before.end, 0.25 * before.end);
+  EXPECT_NEAR(s.photon_seconds, before.photons_end, 0.25 * before.photons_end);
+  EXPECT_EQ(after.end, before.end);
+  EXPECT_EQ(after.image.pixels(), before.image.pixels());
+}
+
+TEST(MediaSample, TheSameSampleTwiceGivesTheSameFigures) {
+  const scene::SceneDescription d = small_scene();
+  const Plan plan = make_plan(d);
+  const MediaSampleOptions o{.photons = 4000, .photon_divisor = 4, .tile_stride = 3};
+  const MediaSample a = sample_media(d, plan, kSmall, machine_of(3), o), b = sample_media(d, plan, kSmall, machine_of(3), o);
+  EXPECT_EQ(a.photon_seconds, b.photon_seconds);
+  EXPECT_EQ(a.grid_seconds, b.grid_seconds);
+  EXPECT_EQ(a.march_seconds, b.march_seconds);
+  EXPECT_EQ(a.map_bytes, b.map_bytes);
+}
+
+// CORNELL-FOG's photons leave light on the walls: the sample scales it to every photon for the
+// radiosity sample (the render's pass starts from it and takes 190 loops instead of 171).
+TEST(MediaSample, WallDepositsAreScaledToEveryPhoton) {
+  const auto file = (std::filesystem::path(GCSIM_SOURCE_DIR) / "scenes" / "cornell-fog.toml").string();
+  scene::SceneDescription d = scene::load_scene_file(file);
+  d.image.width = d.image.height = 32;
+  const Plan plan = make_plan(d);
+  const MediaSample all = sample_media(d, plan, file, machine_of(2), {.photons = 4000, .photon_divisor = 1});
+  const MediaSample part = sample_media(d, plan, file, machine_of(2), {.photons = 4000, .photon_divisor = 4});
+  ASSERT_FALSE(all.wall_power.empty());
+  ASSERT_EQ(all.wall_power.size(), part.wall_power.size());
+  double sum_all = 0, sum_part = 0;
+  for (std::size_t e = 0; e < all.wall_power.size(); ++e)
+    sum_all += radiosity::channel_sum(all.wall_power[e]), sum_part += radiosity::channel_sum(part.wall_power[e]);
+  EXPECT_NEAR(sum_part, sum_all, 0.2 * sum_all);
+}
+
+}  // namespace
+}  // namespace gcsim::render
