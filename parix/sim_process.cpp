@@ -178,7 +178,7 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   const std::int64_t bytes = static_cast<std::int64_t>(data.size());
   if (bytes > 0) use_memory(bytes, kMessagesInFlight);
   Message m;
-  m.data.assign(data.begin(), data.end());
+  m.data = sim_.payloads.copy(data);
   m.send = req;
   m.synchronous = synchronous;
   m.id = sim_.next_message++;
@@ -207,7 +207,10 @@ void Simulation::deliver(Message&& m) {
 void Simulation::accept(LinkEnd& e, Message&& m) {
   // Withdrawn by its sender (SimProcess::cancel) while it travelled: the link drops it, after the
   // network and the in-order delivery have finished with it.
-  if (m.send->cancelled()) return;
+  if (m.send->cancelled()) {
+    payloads.give(std::move(m.data));
+    return;
+  }
   if (trace.enabled()) {
     trace.record({TraceKind::message, m.src, e.owner, m.sent, kernel.now(), static_cast<std::int64_t>(m.data.size()),
                   m.id, "message"});
@@ -241,6 +244,7 @@ Request SimProcess::irecv(Link& link) {
   LinkEnd& e = end_of(link, "recv");
   auto req = new_request(sim_.request_blocks);
   req->is_receive = true;
+  req->payloads = &sim_.payloads;
   req->link = link.handle();
   req->peer = e.peer;
   if (!e.arrived.empty()) {
@@ -260,6 +264,12 @@ Bytes SimProcess::recv(Link& link) {
   Request r = irecv(link);
   wait_for(*r.state(), "recv", TraceKind::recv);
   return r.take();
+}
+
+void SimProcess::recv(Link& link, Bytes& into) {
+  Request r = irecv(link);
+  wait_for(*r.state(), "recv", TraceKind::recv);
+  r.take_into(into);
 }
 
 void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {

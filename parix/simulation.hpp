@@ -21,6 +21,7 @@
 #include "parix/fiber_processes.hpp"
 #include "parix/fifo.hpp"
 #include "parix/in_order_delivery.hpp"
+#include "parix/payload_pool.hpp"
 #include "parix/request_pool.hpp"
 #include "parix/simulated_runtime.hpp"
 
@@ -74,6 +75,7 @@ class SimProcess final : public Processor {
   Link connect(int peer, int tag) override;
   void send(Link& link, std::span<const std::byte> data) override;
   Bytes recv(Link& link) override;
+  void recv(Link& link, Bytes& into) override;
   Request isend(Link& link, std::span<const std::byte> data) override;
   Request irecv(Link& link) override;
   void wait(Request& r) override;
@@ -197,6 +199,7 @@ class Simulation {
   std::string deadlock_report() const;
 
   BlockPool request_blocks;  // first member: outlives every request the others hold
+  PayloadPool payloads;      // messages' storage, recycled (parix/payload_pool.hpp)
   machine::MachineConfig config;
   std::vector<int> node_of;  // processor -> node (SimulationOptions::placement)
   machine::Kernel kernel;
