@@ -10,6 +10,7 @@
 // could soon need is kept: at most kMaxKeptBytes in all, the rest is freed at once. The pool is
 // owned by the Simulation (never global), so runs in one host process share nothing.
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -27,19 +28,47 @@ class PayloadPool {
   PayloadPool& operator=(const PayloadPool&) = delete;
 
   // A vector holding a copy of data; its storage is recycled when some that fits is free.
-  Bytes copy(std::span<const std::byte> data);
+  // Inline, as give(): both run once per message.
+  Bytes copy(std::span<const std::byte> data) {
+    if (data.empty()) return {};
+    Bytes b = take(data.size());
+    b.assign(data.begin(), data.end());
+    return b;
+  }
   // Takes back b's storage (its contents are dropped); b is left empty.
-  void give(Bytes&& b);
+  void give(Bytes&& b) {
+    const std::size_t cap = b.capacity();
+    if (cap == 0) return;
+    if (kept_bytes_ + cap > kMaxKeptBytes) {
+      Bytes().swap(b);  // the pool is full: free it
+      return;
+    }
+    b.clear();
+    free_[capacity_class(cap)].push_back(std::move(b));
+    kept_bytes_ += cap;
+  }
 
-  std::size_t kept() const { return kept_count_; }
+  std::size_t kept() const;
   std::size_t kept_bytes() const { return kept_bytes_; }
 
  private:
   static constexpr int kClasses = 64;
-  // Storage for at least `bytes` bytes, empty, from the free lists or the heap.
-  Bytes take(std::size_t bytes);
+  static int capacity_class(std::size_t bytes) { return std::bit_width(bytes) - 1; }  // floor(log2), bytes > 0
+  // Storage for at least `bytes` bytes, empty: the last vector given back in its class when it
+  // fits (always, for equal-sized messages), else take_elsewhere.
+  Bytes take(std::size_t bytes) {
+    std::vector<Bytes>& list = free_[capacity_class(bytes)];
+    if (list.empty() || list.back().capacity() < bytes) return take_elsewhere(bytes);
+    return pop(list);
+  }
+  Bytes take_elsewhere(std::size_t bytes);
+  Bytes pop(std::vector<Bytes>& list) {
+    Bytes b = std::move(list.back());
+    list.pop_back();
+    kept_bytes_ -= b.capacity();
+    return b;
+  }
   std::array<std::vector<Bytes>, kClasses> free_;  // free_[k]: capacities in [2^k, 2^(k+1))
-  std::size_t kept_count_ = 0;
   std::size_t kept_bytes_ = 0;
 };
 
