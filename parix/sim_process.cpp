@@ -10,10 +10,6 @@ namespace gcsim::parix::detail {
 
 using machine::TraceKind;
 
-// Kinds of node memory the runtime itself holds (NodeMemory::breakdown names them).
-constexpr std::string_view kMessagesInFlight = "messages in flight";
-constexpr std::string_view kMessagesReceived = "messages received";
-
 // ---- SimProcess ------------------------------------------------------------------------------
 
 int SimProcess::id() const { return id_; }
@@ -99,10 +95,11 @@ void SimProcess::use_memory(std::int64_t bytes, std::string_view kind) {
 }
 
 std::string Simulation::use_memory(int processor, std::int64_t bytes, std::string_view kind) {
-  machine::NodeMemory& memory = nodes[node_of[processor]].memory();
-  if (!memory.use(bytes, kind)) return memory.report(processor, bytes, kind);
-  if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, kind);
-  return {};
+  return use_memory(processor, bytes, nodes[node_of[processor]].memory().kind(kind));
+}
+
+std::string Simulation::use_memory(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
+  return declare_memory(processor, bytes, kind) ? std::string() : refusal(processor, bytes, kind);
 }
 
 Link SimProcess::connect(int peer, int tag) {
@@ -176,7 +173,9 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   // The runtime's copy of the message is held by the sender's node until it is delivered, then
   // by the receiver's until received; declared before the host allocates it.
   const std::int64_t bytes = static_cast<std::int64_t>(data.size());
-  if (bytes > 0) use_memory(bytes, kMessagesInFlight);
+  if (bytes > 0) {
+    if (!sim_.declare_memory(id_, bytes, sim_.in_flight_kind)) throw OutOfMemoryError(sim_.refusal(id_, bytes, sim_.in_flight_kind));
+  }
   Message m;
   m.data = sim_.payloads.copy(data);
   m.send = req;
@@ -198,7 +197,7 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
 }
 
 void Simulation::deliver(Message&& m) {
-  if (!m.data.empty()) use_memory(m.src, -static_cast<std::int64_t>(m.data.size()), kMessagesInFlight);
+  if (!m.data.empty()) declare_memory(m.src, -static_cast<std::int64_t>(m.data.size()), in_flight_kind);  // releasing never fails
   LinkEnd& e = links[m.dst_end];
   const std::int64_t seq = m.link_seq;
   e.order.arrive(seq, std::move(m), [this, &e](Message&& next) { accept(e, std::move(next)); });
@@ -226,8 +225,10 @@ void Simulation::accept(LinkEnd& e, Message&& m) {
     // Held by the receiver's node until a receive takes it. A node out of memory here fails the
     // run as soon as this event is over (the kernel's loop stops on a failure).
     if (!m.data.empty()) {
-      std::string refused = use_memory(e.owner, static_cast<std::int64_t>(m.data.size()), kMessagesReceived);
-      if (!refused.empty() && !failure) failure = std::make_exception_ptr(OutOfMemoryError(refused));
+      const auto bytes = static_cast<std::int64_t>(m.data.size());
+      if (!declare_memory(e.owner, bytes, received_kind) && !failure) {
+        failure = std::make_exception_ptr(OutOfMemoryError(refusal(e.owner, bytes, received_kind)));
+      }
     }
     e.arrived.push_back(std::move(m));
   }
@@ -250,7 +251,7 @@ Request SimProcess::irecv(Link& link) {
   if (!e.arrived.empty()) {
     Message m = std::move(e.arrived.front());
     e.arrived.pop_front();
-    if (!m.data.empty()) sim_.use_memory(id_, -static_cast<std::int64_t>(m.data.size()), kMessagesReceived);
+    if (!m.data.empty()) sim_.declare_memory(id_, -static_cast<std::int64_t>(m.data.size()), sim_.received_kind);
     req->data = std::move(m.data);
     req->complete();
     if (m.synchronous) sim_.complete(m.send);

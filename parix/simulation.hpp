@@ -24,6 +24,7 @@
 #include "parix/payload_pool.hpp"
 #include "parix/request_pool.hpp"
 #include "parix/simulated_runtime.hpp"
+#include "parix/stable_vector.hpp"
 
 namespace gcsim::parix::detail {
 
@@ -131,7 +132,11 @@ class Simulation {
                                             {kernel, mesh, config, trace.enabled() ? &trace : nullptr})),
         connections(config, mesh),
         fibers(static_cast<std::size_t>(config.fiber_stack_bytes)) {
-    for (int n = 0; n < config.nodes; ++n) nodes.emplace_back(kernel, config.cpus_per_node, config.memory_bytes, o.memory_limit);
+    for (int n = 0; n < config.nodes; ++n) {
+      nodes.emplace_back(kernel, config.cpus_per_node, config.memory_bytes, o.memory_limit);
+      in_flight_kind = nodes.back().memory().kind(kMessagesInFlight);
+      received_kind = nodes.back().memory().kind(kMessagesReceived);
+    }
     stats.resize(config.nodes);
     node_of = checked_placement(o.placement, config.nodes);
   }
@@ -193,6 +198,19 @@ class Simulation {
   // else the out-of-memory report to raise; the first overrun of a run that only warns is kept
   // in memory_warning.
   std::string use_memory(int processor, std::int64_t bytes, std::string_view kind);
+  std::string use_memory(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind);
+  // The same by handle without building a report, the form the runtime uses on every message:
+  // true when granted; when refused, refusal() is the report. Inline: it runs twice per message.
+  bool declare_memory(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
+    machine::NodeMemory& memory = nodes[node_of[processor]].memory();
+    if (!memory.use(bytes, kind)) return false;
+    if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, memory.kind_name(kind));
+    return true;
+  }
+  std::string refusal(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) const {
+    const machine::NodeMemory& memory = nodes[node_of[processor]].memory();
+    return memory.report(processor, bytes, memory.kind_name(kind));
+  }
   void complete(const std::shared_ptr<RequestState>& r) { r->complete(); }
 
 
@@ -208,8 +226,14 @@ class Simulation {
   std::unique_ptr<machine::NetworkModel> network;
   machine::ConnectionService connections;
   std::deque<machine::Node> nodes;
+  // Node memory the runtime itself holds for messages, declared on every message. Registered first
+  // on every node, so each kind has the same handle on all of them.
+  static constexpr std::string_view kMessagesInFlight = "messages in flight";
+  static constexpr std::string_view kMessagesReceived = "messages received";
+  machine::NodeMemory::Kind in_flight_kind = 0;
+  machine::NodeMemory::Kind received_kind = 0;
   std::vector<ProcessorStats> stats;
-  std::deque<LinkEnd> links;
+  StableVector<LinkEnd> links;  // by link-end handle
   std::vector<Message> in_flight;
   std::vector<std::int64_t> free_slots;
   std::vector<std::unique_ptr<SimProcess>> processes;
