@@ -71,7 +71,7 @@ class Link {
 };
 
 // Shared state of an asynchronous send or receive, an activity (parix/activity.hpp): running, then
-// done or cancelled. Backends fill it in; on_complete is backend-private (who to wake).
+// done or cancelled. Backends fill it in; its waiter is backend-private (who to wake).
 struct RequestState : detail::Activity {
   bool is_receive = false;
   Bytes data;                  // received bytes once done (receives only)

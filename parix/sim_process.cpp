@@ -40,9 +40,9 @@ void SimProcess::wake() {
 
 bool SimProcess::wait_for_activity(Activity& a, const char* call, int peer) {
   while (a.running()) {
-    a.on_complete = [this] { wake(); };
+    a.waiter = this;
     block(call, peer);
-    a.on_complete = nullptr;
+    a.waiter = nullptr;
     if (sim_.cancelling) {
       a.cancel();
       return false;
@@ -317,9 +317,9 @@ std::size_t SimProcess::wait_any(std::span<Request* const> rs) {
   const machine::SimTime start = sim_.kernel.now();
   std::size_t i;
   while ((i = first_done(rs, id_)) == rs.size()) {
-    for (Request* r : rs) r->state()->on_complete = [this] { wake(); };
+    for (Request* r : rs) r->state()->waiter = this;
     block("wait_any", rs.size() == 1 ? rs[0]->state()->peer : -1);
-    for (Request* r : rs) r->state()->on_complete = nullptr;
+    for (Request* r : rs) r->state()->waiter = nullptr;
     if (sim_.cancelling) return 0;
   }
   const machine::SimTime end = sim_.kernel.now();

@@ -63,7 +63,7 @@ struct LinkEnd {
   Fifo<std::shared_ptr<RequestState>> receives;          // posted, waiting for a message
 };
 
-class SimProcess final : public Processor {
+class SimProcess final : public Processor, public Waiter {
  public:
   SimProcess(Simulation& sim, int id, int thread) : sim_(sim), id_(id), thread_(thread) {}
   ~SimProcess() override { drop_persistent_links(); }
@@ -86,7 +86,7 @@ class SimProcess final : public Processor {
 
   // Suspends this fiber until wake(); `call` and `peer` describe the wait for deadlock reports.
   void block(const char* call, int peer);
-  void wake();
+  void wake() override;
   // Blocks while a is running (until it is done or cancelled); false when the run was abandoned
   // meanwhile (a is then cancelled).
   bool wait_for_activity(Activity& a, const char* call, int peer);
