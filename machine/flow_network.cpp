@@ -4,7 +4,7 @@
 
 namespace gcsim::machine {
 
-void FlowNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action on_arrival) {
+void FlowNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival) {
   ++messages_;
   const int hops = ctx_.mesh.hops(src, dst);
   const SimTime lat = latency(hops);

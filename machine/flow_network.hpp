@@ -17,7 +17,7 @@ class FlowNetwork final : public NetworkModel {
  public:
   using NetworkModel::NetworkModel;
   std::string_view name() const override { return "flow"; }
-  void transfer(int src, int dst, std::int64_t bytes, Kernel::Action on_arrival) override;
+  void transfer(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival) override;
 
   std::size_t active_flows() const { return flows_.size(); }
 
