@@ -2,7 +2,7 @@
 
 namespace gcsim::machine {
 
-void AnalyticNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action on_arrival) {
+void AnalyticNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival) {
   ++messages_;
   const int hops = ctx_.mesh.hops(src, dst);
   const SimTime start = ctx_.kernel.now();

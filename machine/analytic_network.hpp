@@ -8,7 +8,7 @@ class AnalyticNetwork final : public NetworkModel {
  public:
   using NetworkModel::NetworkModel;
   std::string_view name() const override { return "analytic"; }
-  void transfer(int src, int dst, std::int64_t bytes, Kernel::Action on_arrival) override;
+  void transfer(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival) override;
 
  private:
   std::vector<int> route_;

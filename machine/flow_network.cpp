@@ -4,7 +4,7 @@
 
 namespace gcsim::machine {
 
-void FlowNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action on_arrival) {
+void FlowNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival) {
   ++messages_;
   const int hops = ctx_.mesh.hops(src, dst);
   const SimTime lat = latency(hops);
@@ -21,12 +21,8 @@ void FlowNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action 
     unassigned_.assign(channels, 0);
   }
   const std::uint64_t id = next_id_++;
-  Flow& f = flows_[id];
+  Flow& f = new_flow(id);
   f.id = id;
-  if (!spare_routes_.empty()) {
-    f.route = std::move(spare_routes_.back());
-    spare_routes_.pop_back();
-  }
   ctx_.mesh.route(src, dst, f.route);
   f.bytes = bytes;
   f.remaining = static_cast<double>(bytes);
@@ -53,9 +49,20 @@ void FlowNetwork::finish_flow(std::uint64_t id, std::uint64_t version) {
   account(f.route, f.bytes, f.started, ctx_.kernel.now());
   reshare(f.route);
   Kernel::Action on_arrival = std::move(f.on_arrival);
-  spare_routes_.push_back(std::move(f.route));
-  flows_.erase(it);
+  spare_flows_.push_back(flows_.extract(it));
   on_arrival();
+}
+
+FlowNetwork::Flow& FlowNetwork::new_flow(std::uint64_t id) {
+  // Ids only grow, so a new flow goes at the end (the hint makes the insertion constant time).
+  if (spare_flows_.empty()) return flows_.emplace_hint(flows_.end(), id, Flow{})->second;
+  Flows::node_type node = std::move(spare_flows_.back());
+  spare_flows_.pop_back();
+  std::vector<int> route = std::move(node.mapped().route);
+  node.mapped() = Flow{};
+  node.mapped().route = std::move(route);
+  node.key() = id;
+  return flows_.insert(flows_.end(), std::move(node))->second;
 }
 
 // The component of flows linked through shared channels; no other flow's rate can change.

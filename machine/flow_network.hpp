@@ -17,7 +17,7 @@ class FlowNetwork final : public NetworkModel {
  public:
   using NetworkModel::NetworkModel;
   std::string_view name() const override { return "flow"; }
-  void transfer(int src, int dst, std::int64_t bytes, Kernel::Action on_arrival) override;
+  void transfer(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival) override;
 
   std::size_t active_flows() const { return flows_.size(); }
 
@@ -46,10 +46,15 @@ class FlowNetwork final : public NetworkModel {
   void collect_component(const std::vector<int>& seed);
   void fill_progressively();
 
-  std::map<std::uint64_t, Flow> flows_;        // ordered by id: deterministic iteration
+  using Flows = std::map<std::uint64_t, Flow>;
+  // A flow for id in flows_, in the node (and route storage) of a finished flow when there is one.
+  Flow& new_flow(std::uint64_t id);
+
+  Flows flows_;                                 // ordered by id: deterministic iteration
   std::vector<std::vector<Flow*>> on_channel_;  // transmitting flows per channel
   std::uint64_t next_id_ = 0;
-  std::vector<std::vector<int>> spare_routes_;  // routes of finished flows, reused
+  // Finished flows' map nodes, their routes' storage included: reused, so a message allocates nothing.
+  std::vector<Flows::node_type> spare_flows_;
 
   // The solver's scratch, kept between solves so that a solve allocates nothing.
   std::uint64_t solve_ = 0;                    // number of the current solve

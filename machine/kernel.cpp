@@ -17,7 +17,7 @@ std::uint32_t Kernel::take_slot() {
   return slot;
 }
 
-void Kernel::at(SimTime t, Action a) {
+void Kernel::at(SimTime t, Action&& a) {
   if (t < now_) {
     throw std::logic_error("Kernel::at: event scheduled in the past (" + std::to_string(t) + " ps < now " +
                            std::to_string(now_) + " ps)");

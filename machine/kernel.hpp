@@ -23,8 +23,8 @@ class Kernel {
   std::size_t pending() const { return heap_.size(); }
 
   // Schedules action at absolute time t (t >= now()).
-  void at(SimTime t, Action action);
-  void after(SimTime delay, Action action) { at(now_ + delay, std::move(action)); }
+  void at(SimTime t, Action&& action);  // by reference: moved once, into its slot
+  void after(SimTime delay, Action&& action) { at(now_ + delay, std::move(action)); }
 
   // Runs the earliest pending action; returns false if there was none.
   bool step();

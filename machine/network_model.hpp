@@ -32,7 +32,7 @@ class NetworkModel {
   virtual std::string_view name() const = 0;
 
   // Starts moving bytes from node src to node dst now; on_arrival runs when the last byte is there.
-  virtual void transfer(int src, int dst, std::int64_t bytes, Kernel::Action on_arrival) = 0;
+  virtual void transfer(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival) = 0;
 
   // Set-up plus latency for a message over `hops` hops (zero hops: set-up only).
   SimTime latency(int hops) const;

@@ -15,22 +15,11 @@ MemoryLimit parse_memory_limit(std::string_view name) {
   throw std::invalid_argument(fmt::format("memory limit '{}': expected enforce or warn", name));
 }
 
-NodeMemory::Held& NodeMemory::held(std::string_view kind) {
-  for (Held& h : held_)
-    if (h.kind == kind) return h;
-  return held_.emplace_back(Held{std::string(kind), 0});
-}
-
-bool NodeMemory::use(std::int64_t bytes, std::string_view kind) {
-  if (bytes > 0 && limit_ == MemoryLimit::enforce && bytes > capacity_ - used_) return false;
-  Held& h = held(kind);
-  // A release never takes a kind below zero: a double release is the caller's slip, not memory
-  // the node gains.
-  const std::int64_t change = std::max(bytes, -h.bytes);
-  h.bytes += change;
-  used_ += change;
-  peak_ = std::max(peak_, used_);
-  return true;
+NodeMemory::Kind NodeMemory::kind(std::string_view name) {
+  for (Kind k = 0; k < held_.size(); ++k)
+    if (held_[k].kind == name) return k;
+  held_.push_back(Held{std::string(name), 0});  // holding nothing: breakdown() leaves it out
+  return held_.size() - 1;
 }
 
 std::string NodeMemory::breakdown() const {
@@ -57,7 +46,7 @@ std::string NodeMemory::report(int processor, std::int64_t asked, std::string_vi
 }
 
 std::string format_bytes(std::int64_t bytes) {
-  if (bytes < 0) return "-" + format_bytes(-bytes);
+  if (bytes < 0) return fmt::format("-{}", format_bytes(-bytes));
   const double b = static_cast<double>(bytes);
   if (bytes < 1024) return fmt::format("{} bytes", bytes);
   if (b < 1024.0 * 1024) return fmt::format("{:.1f} KB", b / 1024);

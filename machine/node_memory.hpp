@@ -3,6 +3,7 @@
 // they hold, by kind (scene, hemicube, message buffer, ...), before the host allocates it, so that
 // a run over the node's memory stops at once and can say what the node holds. Both backends keep
 // one per node (the simulated one in machine::Node, the MPI one per rank).
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -21,7 +22,23 @@ class NodeMemory {
 
   // Adds bytes of `kind` (negative: releases) to the memory in use. False, changing nothing, if
   // the node's memory would be exceeded under MemoryLimit::enforce; releasing always succeeds.
-  bool use(std::int64_t bytes, std::string_view kind);
+  bool use(std::int64_t bytes, std::string_view kind) { return use(bytes, this->kind(kind)); }
+  // A handle for a kind, for callers that declare it often (the runtime, on every message):
+  // use(bytes, Kind) skips the search by name. Handles number a node's kinds in first-use order.
+  using Kind = std::size_t;
+  Kind kind(std::string_view name);
+  bool use(std::int64_t bytes, Kind kind) {  // inline: the runtime calls it twice per message
+    if (bytes > 0 && limit_ == MemoryLimit::enforce && bytes > capacity_ - used_) return false;
+    Held& h = held_[kind];
+    // A release never takes a kind below zero: a double release is the caller's slip, not memory
+    // the node gains.
+    const std::int64_t change = std::max(bytes, -h.bytes);
+    h.bytes += change;
+    used_ += change;
+    peak_ = std::max(peak_, used_);
+    return true;
+  }
+  const std::string& kind_name(Kind kind) const { return held_[kind].kind; }
   std::int64_t used() const { return used_; }
   std::int64_t peak() const { return peak_; }
   std::int64_t capacity() const { return capacity_; }
@@ -43,8 +60,7 @@ class NodeMemory {
     std::string kind;
     std::int64_t bytes;
   };
-  Held& held(std::string_view kind);
-  std::vector<Held> held_;  // bytes in use by kind: a handful per node, searched on every message
+  std::vector<Held> held_;  // bytes in use by kind (a handful per node), indexed by Kind
 };
 
 // "12 bytes", "1.5 KB", "32.0 MB", "10.0 GB" (binary units, as the machine file's memory_mb).

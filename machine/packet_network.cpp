@@ -6,7 +6,7 @@ namespace gcsim::machine {
 
 PacketNetwork::PacketNetwork(NetworkContext ctx) : NetworkModel(ctx), packet_bytes_(ctx.config.packet_bytes) {}
 
-void PacketNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action on_arrival) {
+void PacketNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival) {
   ++messages_;
   const int hops = ctx_.mesh.hops(src, dst);
   const SimTime now = ctx_.kernel.now();

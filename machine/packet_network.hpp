@@ -28,7 +28,7 @@ class PacketNetwork final : public NetworkModel {
  public:
   explicit PacketNetwork(NetworkContext ctx);
   std::string_view name() const override { return "packet"; }
-  void transfer(int src, int dst, std::int64_t bytes, Kernel::Action on_arrival) override;
+  void transfer(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival) override;
 
   std::int64_t packet_bytes() const { return packet_bytes_; }
   // Packets scheduled so far (for tests and counters).

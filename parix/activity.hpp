@@ -9,16 +9,24 @@
 //  - Communications are RequestState objects (parix/processor.hpp), the activity behind a Request.
 //    The application cancels them with Processor::cancel(Request&); the backend decides whether a
 //    communication can still be withdrawn (see processor.hpp) and only then calls cancel().
-#include <functional>
-
 namespace gcsim::parix::detail {
+
+// Whoever waits for an activity (a simulated process). A plain interface rather than a
+// std::function: a process sets and clears it around every blocking call, twice per message.
+class Waiter {
+ public:
+  virtual void wake() = 0;
+
+ protected:
+  ~Waiter() = default;
+};
 
 class Activity {
  public:
   enum class State { running, done, cancelled };
 
-  // The process (or whoever) to wake when the activity ends, done or cancelled; empty: nobody waits.
-  std::function<void()> on_complete;
+  // Whom to wake when the activity ends, done or cancelled; null: nobody waits.
+  Waiter* waiter = nullptr;
 
   State state() const { return state_; }
   bool running() const { return state_ == State::running; }
@@ -27,12 +35,12 @@ class Activity {
   void complete() {
     if (state_ != State::running) return;
     state_ = State::done;
-    if (on_complete) on_complete();
+    if (waiter) waiter->wake();
   }
   void cancel() {
     if (state_ != State::running) return;
     state_ = State::cancelled;
-    if (on_complete) on_complete();  // a waiter (another thread of the process) stops waiting
+    if (waiter) waiter->wake();  // a waiter (another thread of the process) stops waiting
   }
 
  private:

@@ -22,6 +22,16 @@ Bytes recv_from(Processor& p, int peer, const CollectiveOptions& o) {
   return p.recv(p.persistent_link(peer, o.tag));
 }
 
+// The same into a vector the caller reuses across a loop: its storage goes back to the runtime.
+void recv_from(Processor& p, int peer, const CollectiveOptions& o, Bytes& into) {
+  if (o.connect_per_message) {
+    Link l = p.connect(peer, o.tag);
+    p.recv(l, into);
+    return;
+  }
+  p.recv(p.persistent_link(peer, o.tag), into);
+}
+
 int rank_of(int id, int root, int n) { return (id - root + n) % n; }
 int id_of(int rank, int root, int n) { return (rank + root) % n; }
 
@@ -104,15 +114,19 @@ Bytes gather_packed(Processor& p, int root, std::span<const std::byte> mine, con
       return packet;
     }
     append_packet(packet, me, mine);
+    Bytes in;
     for (int q = 0; q < n; ++q) {
-      if (q != root) append_packet(packet, q, recv_from(p, q, o));
+      if (q == root) continue;
+      recv_from(p, q, o, in);
+      append_packet(packet, q, in);
     }
     return packet;
   }
   // Tree: each processor forwards its own contribution and its subtree's, packed, to its parent.
   append_packet(packet, me, mine);
+  Bytes sub;
   for (int c : tree_children(me, root, n)) {
-    Bytes sub = recv_from(p, c, o);
+    recv_from(p, c, o, sub);
     packet.insert(packet.end(), sub.begin(), sub.end());
   }
   if (me != root) {
@@ -156,12 +170,19 @@ Bytes reduce(Processor& p, int root, Bytes mine, const CombineOp& op, const Coll
       send_to(p, root, mine, o);
       return {};
     }
+    Bytes in;
     for (int q = 0; q < n; ++q) {
-      if (q != root) op(mine, recv_from(p, q, o));
+      if (q == root) continue;
+      recv_from(p, q, o, in);
+      op(mine, in);
     }
     return mine;
   }
-  for (int c : tree_children(me, root, n)) op(mine, recv_from(p, c, o));
+  Bytes in;
+  for (int c : tree_children(me, root, n)) {
+    recv_from(p, c, o, in);
+    op(mine, in);
+  }
   if (me != root) {
     send_to(p, tree_parent(me, root, n), mine, o);
     return {};

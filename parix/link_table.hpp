@@ -8,9 +8,10 @@
 // A handle names a slot and the generation of its use: (generation << 32) | slot. A handle whose
 // slot has been reused since is recognised as stale, never taken for the new link.
 #include <cstdint>
-#include <deque>
 #include <utility>
 #include <vector>
+
+#include "parix/stable_vector.hpp"
 
 namespace gcsim::parix {
 
@@ -85,7 +86,7 @@ class LinkTable {
     free_.push_back(slot_of(handle));
   }
 
-  std::deque<Slot> slots_;  // a deque: ends keep their address while the table grows
+  StableVector<Slot> slots_;  // ends keep their address while the table grows
   std::vector<std::uint64_t> free_;
 };
 

@@ -196,6 +196,13 @@ Bytes MpiProcessor::recv(Link& link) {
   return r.take();
 }
 
+// No pool here: take_into frees into's old storage (MPI's own buffers dominate this backend's cost).
+void MpiProcessor::recv(Link& link, Bytes& into) {
+  Request r = irecv(link);
+  block_on(*r.state(), "recv", machine::TraceKind::recv);
+  r.take_into(into);
+}
+
 void MpiProcessor::wait(Request& r) {
   if (!r.valid()) throw ParixError(fmt::format("processor {}: wait on an empty request", id()));
   block_on(*r.state(), "wait", machine::TraceKind::wait);

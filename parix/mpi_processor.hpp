@@ -66,6 +66,7 @@ class MpiProcessor final : public Processor {
   Link connect(int peer, int tag) override;
   void send(Link& link, std::span<const std::byte> data) override;
   Bytes recv(Link& link) override;
+  void recv(Link& link, Bytes& into) override;
   Request isend(Link& link, std::span<const std::byte> data) override;
   Request irecv(Link& link) override;
   void wait(Request& r) override;

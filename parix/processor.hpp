@@ -42,6 +42,9 @@ struct OpCount {
 };
 
 class Processor;
+namespace detail {
+class PayloadPool;
+}
 
 // One end of a virtual link. Move-only; closes the link when destroyed.
 class Link {
@@ -68,13 +71,14 @@ class Link {
 };
 
 // Shared state of an asynchronous send or receive, an activity (parix/activity.hpp): running, then
-// done or cancelled. Backends fill it in; on_complete is backend-private (who to wake).
+// done or cancelled. Backends fill it in; its waiter is backend-private (who to wake).
 struct RequestState : detail::Activity {
   bool is_receive = false;
   Bytes data;                  // received bytes once done (receives only)
   std::int64_t link = -1;      // link handle
   int peer = -1;
   bool cpu_charged = false;    // backend-private: the receive's CPU cost was paid
+  detail::PayloadPool* payloads = nullptr;  // backend-private: where take_into recycles storage
 };
 
 // Handle to an asynchronous send or receive.
@@ -90,6 +94,10 @@ class Request {
   bool cancelled() const { return state_ && state_->cancelled(); }
   // The received bytes (a completed receive); moves them out. Empty for a cancelled receive.
   Bytes take() { return std::move(state_->data); }
+  // The same into a caller-owned vector, by swapping storage: into's old contents are dropped and
+  // its storage goes back to the backend for later messages (parix/payload_pool.hpp), so a loop
+  // that reuses one Bytes receives without allocating. into is left empty for a cancelled receive.
+  void take_into(Bytes& into);
   RequestState* state() const { return state_.get(); }
 
  private:
@@ -152,6 +160,8 @@ class Processor {
   virtual Link connect(int peer, int tag = 0) = 0;
   virtual void send(Link& link, std::span<const std::byte> data) = 0;
   virtual Bytes recv(Link& link) = 0;
+  // recv into a caller-owned vector (see Request::take_into): the allocation-free form for loops.
+  virtual void recv(Link& link, Bytes& into) = 0;
   virtual Request isend(Link& link, std::span<const std::byte> data) = 0;
   virtual Request irecv(Link& link) = 0;
   virtual void wait(Request& r) = 0;
@@ -195,10 +205,10 @@ class Processor {
   template <class T>
   T recv_value(Link& l) {
     static_assert(std::is_trivially_copyable_v<T>);
-    Bytes b = recv(l);
-    if (b.size() != sizeof(T)) throw ParixError("recv_value: message size does not match the type");
+    recv(l, scratch_);
+    if (scratch_.size() != sizeof(T)) throw ParixError("recv_value: message size does not match the type");
     T v;
-    std::memcpy(&v, b.data(), sizeof(T));
+    std::memcpy(&v, scratch_.data(), sizeof(T));
     return v;
   }
   template <class T>
@@ -222,6 +232,7 @@ class Processor {
 
  private:
   std::map<std::pair<int, int>, Link> persistent_;
+  Bytes scratch_;  // recv_value receives into it (one small value), so it allocates nothing per message
 };
 
 // Memory declared on this processor's node, released when destroyed. Move-only.

@@ -10,10 +10,6 @@ namespace gcsim::parix::detail {
 
 using machine::TraceKind;
 
-// Kinds of node memory the runtime itself holds (NodeMemory::breakdown names them).
-constexpr std::string_view kMessagesInFlight = "messages in flight";
-constexpr std::string_view kMessagesReceived = "messages received";
-
 // ---- SimProcess ------------------------------------------------------------------------------
 
 int SimProcess::id() const { return id_; }
@@ -44,9 +40,9 @@ void SimProcess::wake() {
 
 bool SimProcess::wait_for_activity(Activity& a, const char* call, int peer) {
   while (a.running()) {
-    a.on_complete = [this] { wake(); };
+    a.waiter = this;
     block(call, peer);
-    a.on_complete = nullptr;
+    a.waiter = nullptr;
     if (sim_.cancelling) {
       a.cancel();
       return false;
@@ -99,10 +95,11 @@ void SimProcess::use_memory(std::int64_t bytes, std::string_view kind) {
 }
 
 std::string Simulation::use_memory(int processor, std::int64_t bytes, std::string_view kind) {
-  machine::NodeMemory& memory = nodes[node_of[processor]].memory();
-  if (!memory.use(bytes, kind)) return memory.report(processor, bytes, kind);
-  if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, kind);
-  return {};
+  return use_memory(processor, bytes, nodes[node_of[processor]].memory().kind(kind));
+}
+
+std::string Simulation::use_memory(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
+  return declare_memory(processor, bytes, kind) ? std::string() : refusal(processor, bytes, kind);
 }
 
 Link SimProcess::connect(int peer, int tag) {
@@ -176,9 +173,11 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   // The runtime's copy of the message is held by the sender's node until it is delivered, then
   // by the receiver's until received; declared before the host allocates it.
   const std::int64_t bytes = static_cast<std::int64_t>(data.size());
-  if (bytes > 0) use_memory(bytes, kMessagesInFlight);
+  if (bytes > 0) {
+    if (!sim_.declare_memory(id_, bytes, sim_.in_flight_kind)) throw OutOfMemoryError(sim_.refusal(id_, bytes, sim_.in_flight_kind));
+  }
   Message m;
-  m.data.assign(data.begin(), data.end());
+  m.data = sim_.payloads.copy(data);
   m.send = req;
   m.synchronous = synchronous;
   m.id = sim_.next_message++;
@@ -198,7 +197,7 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
 }
 
 void Simulation::deliver(Message&& m) {
-  if (!m.data.empty()) use_memory(m.src, -static_cast<std::int64_t>(m.data.size()), kMessagesInFlight);
+  if (!m.data.empty()) declare_memory(m.src, -static_cast<std::int64_t>(m.data.size()), in_flight_kind);  // releasing never fails
   const std::int64_t end = m.dst_end;  // its pair is not reused while a message travels to it
   LinkEnd& e = links.at(end);
   const std::int64_t seq = m.link_seq;
@@ -209,7 +208,10 @@ void Simulation::deliver(Message&& m) {
 void Simulation::accept(LinkEnd& e, Message&& m) {
   // Withdrawn by its sender (SimProcess::cancel) while it travelled: the link drops it, after the
   // network and the in-order delivery have finished with it.
-  if (m.send->cancelled()) return;
+  if (m.send->cancelled()) {
+    payloads.give(std::move(m.data));
+    return;
+  }
   if (trace.enabled()) {
     trace.record({TraceKind::message, m.src, e.owner, m.sent, kernel.now(), static_cast<std::int64_t>(m.data.size()),
                   m.id, "message"});
@@ -225,8 +227,10 @@ void Simulation::accept(LinkEnd& e, Message&& m) {
     // Held by the receiver's node until a receive takes it. A node out of memory here fails the
     // run as soon as this event is over (the kernel's loop stops on a failure).
     if (!m.data.empty()) {
-      std::string refused = use_memory(e.owner, static_cast<std::int64_t>(m.data.size()), kMessagesReceived);
-      if (!refused.empty() && !failure) failure = std::make_exception_ptr(OutOfMemoryError(refused));
+      const auto bytes = static_cast<std::int64_t>(m.data.size());
+      if (!declare_memory(e.owner, bytes, received_kind) && !failure) {
+        failure = std::make_exception_ptr(OutOfMemoryError(refusal(e.owner, bytes, received_kind)));
+      }
     }
     e.arrived.push_back(std::move(m));
   }
@@ -243,12 +247,13 @@ Request SimProcess::irecv(Link& link) {
   LinkEnd& e = end_of(link, "recv");
   auto req = new_request(sim_.request_blocks);
   req->is_receive = true;
+  req->payloads = &sim_.payloads;
   req->link = link.handle();
   req->peer = e.peer;
   if (!e.arrived.empty()) {
     Message m = std::move(e.arrived.front());
     e.arrived.pop_front();
-    if (!m.data.empty()) sim_.use_memory(id_, -static_cast<std::int64_t>(m.data.size()), kMessagesReceived);
+    if (!m.data.empty()) sim_.declare_memory(id_, -static_cast<std::int64_t>(m.data.size()), sim_.received_kind);
     req->data = std::move(m.data);
     req->complete();
     if (m.synchronous) sim_.complete(m.send);
@@ -262,6 +267,12 @@ Bytes SimProcess::recv(Link& link) {
   Request r = irecv(link);
   wait_for(*r.state(), "recv", TraceKind::recv);
   return r.take();
+}
+
+void SimProcess::recv(Link& link, Bytes& into) {
+  Request r = irecv(link);
+  wait_for(*r.state(), "recv", TraceKind::recv);
+  r.take_into(into);
 }
 
 void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {
@@ -308,9 +319,9 @@ std::size_t SimProcess::wait_any(std::span<Request* const> rs) {
   const machine::SimTime start = sim_.kernel.now();
   std::size_t i;
   while ((i = first_done(rs, id_)) == rs.size()) {
-    for (Request* r : rs) r->state()->on_complete = [this] { wake(); };
+    for (Request* r : rs) r->state()->waiter = this;
     block("wait_any", rs.size() == 1 ? rs[0]->state()->peer : -1);
-    for (Request* r : rs) r->state()->on_complete = nullptr;
+    for (Request* r : rs) r->state()->waiter = nullptr;
     if (sim_.cancelling) return 0;
   }
   const machine::SimTime end = sim_.kernel.now();

@@ -22,6 +22,7 @@
 #include "parix/fifo.hpp"
 #include "parix/in_order_delivery.hpp"
 #include "parix/link_table.hpp"
+#include "parix/payload_pool.hpp"
 #include "parix/request_pool.hpp"
 #include "parix/simulated_runtime.hpp"
 
@@ -66,7 +67,7 @@ struct LinkEnd {
   }
 };
 
-class SimProcess final : public Processor {
+class SimProcess final : public Processor, public Waiter {
  public:
   SimProcess(Simulation& sim, int id, int thread) : sim_(sim), id_(id), thread_(thread) {}
   ~SimProcess() override { drop_persistent_links(); }
@@ -79,6 +80,7 @@ class SimProcess final : public Processor {
   Link connect(int peer, int tag) override;
   void send(Link& link, std::span<const std::byte> data) override;
   Bytes recv(Link& link) override;
+  void recv(Link& link, Bytes& into) override;
   Request isend(Link& link, std::span<const std::byte> data) override;
   Request irecv(Link& link) override;
   void wait(Request& r) override;
@@ -88,7 +90,7 @@ class SimProcess final : public Processor {
 
   // Suspends this fiber until wake(); `call` and `peer` describe the wait for deadlock reports.
   void block(const char* call, int peer);
-  void wake();
+  void wake() override;
   // Blocks while a is running (until it is done or cancelled); false when the run was abandoned
   // meanwhile (a is then cancelled).
   bool wait_for_activity(Activity& a, const char* call, int peer);
@@ -134,7 +136,11 @@ class Simulation {
                                             {kernel, mesh, config, trace.enabled() ? &trace : nullptr})),
         connections(config, mesh),
         fibers(static_cast<std::size_t>(config.fiber_stack_bytes)) {
-    for (int n = 0; n < config.nodes; ++n) nodes.emplace_back(kernel, config.cpus_per_node, config.memory_bytes, o.memory_limit);
+    for (int n = 0; n < config.nodes; ++n) {
+      nodes.emplace_back(kernel, config.cpus_per_node, config.memory_bytes, o.memory_limit);
+      in_flight_kind = nodes.back().memory().kind(kMessagesInFlight);
+      received_kind = nodes.back().memory().kind(kMessagesReceived);
+    }
     stats.resize(config.nodes);
     node_of = checked_placement(o.placement, config.nodes);
   }
@@ -191,12 +197,26 @@ class Simulation {
   // else the out-of-memory report to raise; the first overrun of a run that only warns is kept
   // in memory_warning.
   std::string use_memory(int processor, std::int64_t bytes, std::string_view kind);
+  std::string use_memory(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind);
+  // The same by handle without building a report, the form the runtime uses on every message:
+  // true when granted; when refused, refusal() is the report. Inline: it runs twice per message.
+  bool declare_memory(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
+    machine::NodeMemory& memory = nodes[node_of[processor]].memory();
+    if (!memory.use(bytes, kind)) return false;
+    if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, memory.kind_name(kind));
+    return true;
+  }
+  std::string refusal(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) const {
+    const machine::NodeMemory& memory = nodes[node_of[processor]].memory();
+    return memory.report(processor, bytes, memory.kind_name(kind));
+  }
   void complete(const std::shared_ptr<RequestState>& r) { r->complete(); }
 
 
   std::string deadlock_report() const;
 
   BlockPool request_blocks;  // first member: outlives every request the others hold
+  PayloadPool payloads;      // messages' storage, recycled (parix/payload_pool.hpp)
   machine::MachineConfig config;
   std::vector<int> node_of;  // processor -> node (SimulationOptions::placement)
   machine::Kernel kernel;
@@ -205,6 +225,12 @@ class Simulation {
   std::unique_ptr<machine::NetworkModel> network;
   machine::ConnectionService connections;
   std::deque<machine::Node> nodes;
+  // Node memory the runtime itself holds for messages, declared on every message. Registered first
+  // on every node, so each kind has the same handle on all of them.
+  static constexpr std::string_view kMessagesInFlight = "messages in flight";
+  static constexpr std::string_view kMessagesReceived = "messages received";
+  machine::NodeMemory::Kind in_flight_kind = 0;
+  machine::NodeMemory::Kind received_kind = 0;
   std::vector<ProcessorStats> stats;
   LinkTable<LinkEnd> links;
   std::vector<Message> in_flight;

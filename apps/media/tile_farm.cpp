@@ -19,10 +19,11 @@ void worker(parix::Processor& p, const TileFarm& farm) {
   std::vector<parix::Bytes> records;  // alive until their sends complete
   bool stopped = false;
   parix::Request pending = p.irecv(master);
+  parix::Bytes b;  // each assignment, received in place (take_into recycles the storage)
   for (;;) {
     while (!stopped && (pending.done() || queue.empty())) {
       p.wait(pending);
-      const parix::Bytes b = pending.take();
+      pending.take_into(b);
       std::int32_t t;
       if (b.size() != sizeof t) throw parix::ParixError("media: malformed tile assignment");
       std::memcpy(&t, b.data(), sizeof t);
@@ -84,6 +85,7 @@ TileFarmStats run_tile_farm(parix::Processor& p, const TileFarm& farm) {
   std::vector<parix::Request> recvs(static_cast<std::size_t>(n));
   for (int w = 1; w < n; ++w)
     if (outstanding[w] > 0) recvs[w] = p.irecv(links[w]);
+  parix::Bytes record;  // each tile's record, received in place (take_into recycles the storage)
   for (;;) {
     std::vector<parix::Request*> waiting;
     std::vector<int> who;
@@ -91,7 +93,7 @@ TileFarmStats run_tile_farm(parix::Processor& p, const TileFarm& farm) {
       if (outstanding[w] > 0) waiting.push_back(&recvs[w]), who.push_back(w);
     if (waiting.empty()) break;
     const int w = who[p.wait_any(waiting)];
-    const parix::Bytes record = recvs[w].take();
+    recvs[w].take_into(record);
     --outstanding[w];
     std::int32_t t;
     if (record.size() < sizeof t) throw parix::ParixError("media: truncated tile record");

@@ -213,11 +213,12 @@ void run_dynamic(parix::Processor& p, NodeWork& work, const std::vector<int>& or
     bool stopped = false;
     std::vector<parix::Request> sends;
     parix::Request pending = p.irecv(master);
+    parix::Bytes b;  // each assignment, received in place (take_into recycles the storage)
     for (;;) {
       // Take in every assignment that has arrived; block only when there is nothing to do.
       while (!stopped && (pending.done() || queue.empty())) {
         p.wait(pending);
-        const parix::Bytes b = pending.take();
+        pending.take_into(b);
         Chunk c;
         if (b.size() != sizeof c) throw parix::ParixError("raytrace: malformed tile assignment");
         std::memcpy(&c, b.data(), sizeof c);
@@ -263,6 +264,7 @@ void run_dynamic(parix::Processor& p, NodeWork& work, const std::vector<int>& or
   std::vector<parix::Request> recvs(n);
   for (int w = 1; w < n; ++w)
     if (outstanding[w] > 0) recvs[w] = p.irecv(links[w]);
+  parix::Bytes result;  // each run's pixels, received in place (take_into recycles the storage)
   for (;;) {
     std::vector<parix::Request*> waiting;
     std::vector<int> who;
@@ -273,7 +275,7 @@ void run_dynamic(parix::Processor& p, NodeWork& work, const std::vector<int>& or
       }
     if (waiting.empty()) break;
     const int w = who[p.wait_any(waiting)];
-    const parix::Bytes result = recvs[w].take();
+    recvs[w].take_into(result);
     --outstanding[w];
     work.assemble(p, result);
     if (!stop_sent[w]) assign(w);

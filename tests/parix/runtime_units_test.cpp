@@ -132,23 +132,28 @@ TEST(DeadlockReport, NamesEachBlockedProcessCallAndPeer) {
   EXPECT_NE(r.find("processor 1 (thread 2): blocked in join since 0 ms"), std::string::npos) << r;
 }
 
+struct CountingWaiter final : detail::Waiter {
+  int woken = 0;
+  void wake() override { ++woken; }
+};
+
 TEST(Activity, CompletesOnceAndWakesWhoeverWaits) {
   detail::Activity a;
-  int woken = 0;
+  CountingWaiter w;
   EXPECT_FALSE(a.test());
   a.complete();  // nobody waits yet: only the state changes
   EXPECT_TRUE(a.test());
   detail::Activity b;
-  b.on_complete = [&] { ++woken; };
+  b.waiter = &w;
   b.complete();
   b.complete();  // a second completion is ignored
-  EXPECT_EQ(woken, 1);
+  EXPECT_EQ(w.woken, 1);
 }
 
 TEST(Activity, ACancelledActivityWakesItsWaiterOnceAndIgnoresItsCompletion) {
   detail::Activity a;
-  int woken = 0;
-  a.on_complete = [&] { ++woken; };
+  CountingWaiter w;
+  a.waiter = &w;
   a.cancel();  // whoever waits learns that the activity ended
   a.complete();
   a.cancel();
@@ -156,7 +161,7 @@ TEST(Activity, ACancelledActivityWakesItsWaiterOnceAndIgnoresItsCompletion) {
   EXPECT_TRUE(a.cancelled());
   EXPECT_FALSE(a.test());
   EXPECT_FALSE(a.running());
-  EXPECT_EQ(woken, 1);
+  EXPECT_EQ(w.woken, 1);
 }
 
 TEST(Activity, ADoneActivityCannotBeCancelled) {

@@ -36,7 +36,9 @@ TEST(VirtualTopology, HypercubeNeighboursDifferInOneBitAndTreeHasParents) {
   run_simulated(on_nodes(16), [&](Processor& p) {
     for (int w : virtual_topology(p, "hypercube").neighbours()) EXPECT_EQ(__builtin_popcount(unsigned(w ^ p.id())), 1);
     const auto tree = virtual_topology(p, "tree");
-    if (p.id() > 0) EXPECT_EQ(tree.neighbours().front(), (p.id() - 1) / 2);
+    if (p.id() > 0) {
+      EXPECT_EQ(tree.neighbours().front(), (p.id() - 1) / 2);
+    }
     EXPECT_EQ(tree.size(), 16);
   });
 }

@@ -1,0 +1,35 @@
+#include "parix/payload_pool.hpp"
+
+#include <utility>
+
+namespace gcsim::parix {
+
+void Request::take_into(Bytes& into) {
+  into.swap(state_->data);
+  // The caller's old storage: back to the run's pool (simulated backend), else freed now.
+  if (state_->payloads) state_->payloads->give(std::move(state_->data));
+  else Bytes().swap(state_->data);
+}
+
+namespace detail {
+
+Bytes PayloadPool::take_elsewhere(std::size_t bytes) {
+  // The next two classes always fit, and hold under 8x the request, so a small message never pins
+  // a large buffer.
+  const int k = capacity_class(bytes);
+  for (int c = k + 1; c < kClasses && c <= k + 2; ++c) {
+    if (!free_[c].empty()) return pop(free_[c]);
+  }
+  Bytes b;
+  b.reserve(bytes);
+  return b;
+}
+
+std::size_t PayloadPool::kept() const {
+  std::size_t n = 0;
+  for (const std::vector<Bytes>& list : free_) n += list.size();
+  return n;
+}
+
+}  // namespace detail
+}  // namespace gcsim::parix

@@ -1,0 +1,75 @@
+#pragma once
+// Message storage recycled within one simulated run, so that a message costs no heap allocation in
+// steady state. post_send copies the sender's bytes into a vector taken from here; a receive that
+// hands the message over by swapping with a caller-owned Bytes (Processor::recv(Link&, Bytes&),
+// Request::take_into) gives the caller's old storage back, and so does a link dropping a cancelled
+// message. A program that keeps using one Bytes per link thus circulates the same few vectors.
+//
+// Vectors are kept by capacity class (floor(log2(capacity))), so a request finds storage that
+// fits without a search, and reuse is exact for a stream of equal-sized messages. Only what a run
+// could soon need is kept: at most kMaxKeptBytes in all, the rest is freed at once. The pool is
+// owned by the Simulation (never global), so runs in one host process share nothing.
+#include <array>
+#include <bit>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "parix/processor.hpp"
+
+namespace gcsim::parix::detail {
+
+class PayloadPool {
+ public:
+  static constexpr std::size_t kMaxKeptBytes = std::size_t{64} << 20;
+
+  PayloadPool() = default;
+  PayloadPool(const PayloadPool&) = delete;
+  PayloadPool& operator=(const PayloadPool&) = delete;
+
+  // A vector holding a copy of data; its storage is recycled when some that fits is free.
+  // Inline, as give(): both run once per message.
+  Bytes copy(std::span<const std::byte> data) {
+    if (data.empty()) return {};
+    Bytes b = take(data.size());
+    b.assign(data.begin(), data.end());
+    return b;
+  }
+  // Takes back b's storage (its contents are dropped); b is left empty.
+  void give(Bytes&& b) {
+    const std::size_t cap = b.capacity();
+    if (cap == 0) return;
+    if (kept_bytes_ + cap > kMaxKeptBytes) {
+      Bytes().swap(b);  // the pool is full: free it
+      return;
+    }
+    b.clear();
+    free_[capacity_class(cap)].push_back(std::move(b));
+    kept_bytes_ += cap;
+  }
+
+  std::size_t kept() const;
+  std::size_t kept_bytes() const { return kept_bytes_; }
+
+ private:
+  static constexpr int kClasses = 64;
+  static int capacity_class(std::size_t bytes) { return std::bit_width(bytes) - 1; }  // floor(log2), bytes > 0
+  // Storage for at least `bytes` bytes, empty: the last vector given back in its class when it
+  // fits (always, for equal-sized messages), else take_elsewhere.
+  Bytes take(std::size_t bytes) {
+    std::vector<Bytes>& list = free_[capacity_class(bytes)];
+    if (list.empty() || list.back().capacity() < bytes) return take_elsewhere(bytes);
+    return pop(list);
+  }
+  Bytes take_elsewhere(std::size_t bytes);
+  Bytes pop(std::vector<Bytes>& list) {
+    Bytes b = std::move(list.back());
+    list.pop_back();
+    kept_bytes_ -= b.capacity();
+    return b;
+  }
+  std::array<std::vector<Bytes>, kClasses> free_;  // free_[k]: capacities in [2^k, 2^(k+1))
+  std::size_t kept_bytes_ = 0;
+};
+
+}  // namespace gcsim::parix::detail
