@@ -6,6 +6,7 @@
 
 #include "parix/collectives.hpp"
 #include "parix/simulated_runtime.hpp"
+#include "tests/support/published_machine.hpp"
 
 namespace gcsim::parix {
 namespace {
@@ -65,11 +66,7 @@ TEST(LinkTable, AThousandPairsOpenedAndClosedInTurnUseTwoSlots) {
   EXPECT_EQ(t.slots(), 2u);
 }
 
-SimulationOptions on_nodes(int n) {
-  SimulationOptions o;
-  o.config = machine::with_nodes(machine::default_machine_config(), n);
-  return o;
-}
+using test_support::published_machine;
 
 Bytes number(int i) {
   Bytes b(sizeof i);
@@ -87,7 +84,7 @@ int number_of(const Bytes& b) {
 // at once leave their message in flight; its pair is reused only after the receive.
 TEST(LinkTable, AConnectionPerMessageReusesTheSameSlots) {
   std::vector<int> got;
-  const RunResult r = run_simulated(on_nodes(2), [&](Processor& p) {
+  const RunResult r = run_simulated(published_machine(2), [&](Processor& p) {
     for (int i = 0; i < 500; ++i) {
       Link l = p.connect(1 - p.id());
       if (p.id() == 0) {
@@ -107,7 +104,7 @@ TEST(LinkTable, AConnectionPerMessageReusesTheSameSlots) {
 TEST(LinkTable, BroadcastsThatConnectPerMessageHoldAboutOneRoundOfLinks) {
   constexpr int kNodes = 8, kRounds = 50;
   std::vector<int> sums(kNodes, 0);
-  const RunResult r = run_simulated(on_nodes(kNodes), [&](Processor& p) {
+  const RunResult r = run_simulated(published_machine(kNodes), [&](Processor& p) {
     CollectiveOptions o;
     o.connect_per_message = true;
     for (int round = 0; round < kRounds; ++round) {

@@ -13,15 +13,12 @@
 #include "apps/render/render_setup.hpp"
 #include "apps/render/unified_render.hpp"
 #include "machine/machine_config.hpp"
+#include "tests/support/published_machine.hpp"
 
 namespace gcsim::render {
 namespace {
 
-parix::SimulationOptions machine_of(int nodes) {
-  parix::SimulationOptions sim;
-  sim.config = machine::with_nodes(machine::default_machine_config(), nodes);
-  return sim;
-}
+using test_support::published_machine;
 
 const std::string kSmall = (std::filesystem::path(GCSIM_SOURCE_DIR) / "scenes" / "media-small.toml").string();
 
@@ -38,7 +35,7 @@ Rendered render(const scene::SceneDescription& d, int nodes, std::size_t photons
   view.secondary = plan.pass(PassId::specular).on;
   view.shadows = plan.pass(PassId::shadows).on;
   UnifiedRender out(nodes);
-  const parix::RunResult run = parix::run_simulated(machine_of(nodes), [&](parix::Processor& p) {
+  const parix::RunResult run = parix::run_simulated(published_machine(nodes), [&](parix::Processor& p) {
     unified_render_program(p, setup.split.surfaces, nullptr, {}, view, setup.media.get(), out);
   });
   finish(out);
@@ -58,7 +55,7 @@ TEST(MediaSample, ASampleOfEveryPhotonAndTilePredictsThePassExactly) {
   ASSERT_FALSE(plan.pass(PassId::radiosity).on);
   for (int nodes : {1, 3}) {
     SCOPED_TRACE(nodes);
-    const MediaSample s = sample_media(d, plan, kSmall, machine_of(nodes), {.photons = 3000, .photon_divisor = 1, .tile_stride = 1});
+    const MediaSample s = sample_media(d, plan, kSmall, published_machine(nodes), {.photons = 3000, .photon_divisor = 1, .tile_stride = 1});
     ASSERT_EQ(s.tiles_rendered, s.tiles);
     const Rendered r = render(d, nodes, 3000);
     EXPECT_DOUBLE_EQ(s.photon_seconds, r.photons_end);
@@ -74,7 +71,7 @@ TEST(MediaSample, ASampleLandsNearThePassAndChangesNothingInTheRender) {
   const scene::SceneDescription d = small_scene();
   const Plan plan = make_plan(d);
   const Rendered before = render(d, 2, 8000);
-  const MediaSample s = sample_media(d, plan, kSmall, machine_of(2), {.photons = 8000, .photon_divisor = 8, .tile_stride = 2});
+  const MediaSample s = sample_media(d, plan, kSmall, published_machine(2), {.photons = 8000, .photon_divisor = 8, .tile_stride = 2});
   EXPECT_EQ(s.traced, 1000u);
   EXPECT_LT(s.tiles_rendered, s.tiles);
   const Rendered after = render(d, 2, 8000);
@@ -89,7 +86,7 @@ TEST(MediaSample, TheSameSampleTwiceGivesTheSameFigures) {
   const scene::SceneDescription d = small_scene();
   const Plan plan = make_plan(d);
   const MediaSampleOptions o{.photons = 4000, .photon_divisor = 4, .tile_stride = 3};
-  const MediaSample a = sample_media(d, plan, kSmall, machine_of(3), o), b = sample_media(d, plan, kSmall, machine_of(3), o);
+  const MediaSample a = sample_media(d, plan, kSmall, published_machine(3), o), b = sample_media(d, plan, kSmall, published_machine(3), o);
   EXPECT_EQ(a.photon_seconds, b.photon_seconds);
   EXPECT_EQ(a.grid_seconds, b.grid_seconds);
   EXPECT_EQ(a.march_seconds, b.march_seconds);
@@ -103,8 +100,8 @@ TEST(MediaSample, WallDepositsAreScaledToEveryPhoton) {
   scene::SceneDescription d = scene::load_scene_file(file);
   d.image.width = d.image.height = 32;
   const Plan plan = make_plan(d);
-  const MediaSample all = sample_media(d, plan, file, machine_of(2), {.photons = 4000, .photon_divisor = 1});
-  const MediaSample part = sample_media(d, plan, file, machine_of(2), {.photons = 4000, .photon_divisor = 4});
+  const MediaSample all = sample_media(d, plan, file, published_machine(2), {.photons = 4000, .photon_divisor = 1});
+  const MediaSample part = sample_media(d, plan, file, published_machine(2), {.photons = 4000, .photon_divisor = 4});
   ASSERT_FALSE(all.wall_power.empty());
   ASSERT_EQ(all.wall_power.size(), part.wall_power.size());
   double sum_all = 0, sum_part = 0;

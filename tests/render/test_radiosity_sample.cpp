@@ -13,15 +13,12 @@
 #include "apps/render/render_setup.hpp"
 #include "apps/render/unified_render.hpp"
 #include "machine/machine_config.hpp"
+#include "tests/support/published_machine.hpp"
 
 namespace gcsim::render {
 namespace {
 
-parix::SimulationOptions machine_of(int nodes) {
-  parix::SimulationOptions sim;
-  sim.config = machine::with_nodes(machine::default_machine_config(), nodes);
-  return sim;
-}
+using test_support::published_machine;
 
 TEST(RadiositySample, ExtrapolatesAGeometricDeclineToItsEnd) {
   std::vector<radiosity::StepRecord> steps;
@@ -40,14 +37,14 @@ TEST(RadiositySample, ASampleThatConvergesPredictsThePassExactly) {
   ASSERT_TRUE(plan.pass(PassId::radiosity).on);
   for (int nodes : {1, 4}) {
     SCOPED_TRACE(nodes);
-    const RadiositySample s = sample_radiosity_loops(d, file.string(), machine_of(nodes), 40);
+    const RadiositySample s = sample_radiosity_loops(d, file.string(), published_machine(nodes), 40);
     ASSERT_LT(s.loops, 40);
     EXPECT_EQ(s.expected_loops, s.loops);
     CostModel model;
     model.radiosity_seconds_per_loop = s.seconds_per_loop;
     model.radiosity_loops = s.expected_loops;
     const double predicted =
-        estimate_pass(plan.pass(PassId::radiosity), plan.facts, machine_of(nodes).config, nodes, model).seconds_per_node;
+        estimate_pass(plan.pass(PassId::radiosity), plan.facts, published_machine(nodes).config, nodes, model).seconds_per_node;
     // The render's radiosity pass on the same machine, without the view.
     const RenderSetup setup = prepare_render(d, plan, file.string());
     radiosity::ParallelOptions o;
@@ -55,7 +52,7 @@ TEST(RadiositySample, ASampleThatConvergesPredictsThePassExactly) {
     o.solver.energy = 0.999;
     o.solver.media = setup.radiosity_media_or_null();  // example.toml's fog, as the render's pass
     o = radiosity::with_shared_projections(o);
-    const parix::RunResult run = parix::run_simulated(machine_of(nodes), [&](parix::Processor& p) {
+    const parix::RunResult run = parix::run_simulated(published_machine(nodes), [&](parix::Processor& p) {
       radiosity::solve_replica(p, setup.mesh, o);
     });
     EXPECT_NEAR(predicted, run.simulated_seconds(), 1e-9 * run.simulated_seconds());

@@ -24,6 +24,7 @@
 #include "apps/render/unified_render.hpp"
 #include "apps/render/view_scene.hpp"
 #include "parix/simulated_runtime.hpp"
+#include "tests/support/published_machine.hpp"
 
 namespace gcsim::render {
 namespace {
@@ -39,11 +40,7 @@ radiosity::ParallelOptions small_solve() {
   return o;
 }
 
-parix::SimulationOptions machine_of(int nodes) {
-  parix::SimulationOptions sim;
-  sim.config = machine::with_nodes(machine::default_machine_config(), nodes);
-  return sim;
-}
+using test_support::published_machine;
 
 struct Rendered {
   std::unique_ptr<UnifiedRender> out;
@@ -53,7 +50,7 @@ struct Rendered {
 Rendered render_on(const scene::SceneDescription& d, const radiosity::Scene* mesh, int nodes, ViewSettings view = {}) {
   Rendered r{std::make_unique<UnifiedRender>(nodes), {}};
   const radiosity::ParallelOptions o = small_solve();
-  r.run = parix::run_simulated(machine_of(nodes), [&](parix::Processor& p) { unified_render_program(p, d, mesh, o, view, nullptr, *r.out); });
+  r.run = parix::run_simulated(published_machine(nodes), [&](parix::Processor& p) { unified_render_program(p, d, mesh, o, view, nullptr, *r.out); });
   finish(*r.out);
   return r;
 }
@@ -68,7 +65,7 @@ TEST(ViewPass, RadiosityPassIsTheRadiosityProgram) {
   const radiosity::Scene mesh = radiosity::flatten(scene::to_world(d));
   const Rendered unified = render_on(d, &mesh, 2);
   radiosity::ParallelOutcome alone;
-  const auto run = parix::run_simulated(machine_of(2), [&](parix::Processor& p) {
+  const auto run = parix::run_simulated(published_machine(2), [&](parix::Processor& p) {
     radiosity::radiosity_program(p, mesh, small_solve(), &alone);
   });
   EXPECT_EQ(unified.out->radiosity.element_radiosity, alone.element_radiosity);
