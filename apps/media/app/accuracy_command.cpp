@@ -16,6 +16,7 @@
 #include "apps/media/app/commands.hpp"
 #include "apps/pipeline/list_parsing.hpp"
 #include "apps/pipeline/machine_options.hpp"
+#include "apps/pipeline/option_checks.hpp"
 #include "apps/pipeline/progress.hpp"
 #include "parix/interruption.hpp"
 
@@ -274,10 +275,10 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
   cmd->add_option("--estimators", f->estimators, "Estimators to compare")->capture_default_str();
   cmd->add_option("--budgets", f->budgets, "Budgets in units (the transmittance estimator's time at M = unit-b S)")
       ->capture_default_str();
-  cmd->add_option("--unit-b", f->o.unit_b, "b of the budget unit")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--unit-b", f->o.unit_b, "b of the budget unit")->check(pipeline::positive_number())->capture_default_str();
   cmd->add_option("--width", f->o.width, "Image width")->check(CLI::Range(4, 4096))->capture_default_str();
   cmd->add_option("--height", f->o.height, "Image height")->check(CLI::Range(4, 4096))->capture_default_str();
-  cmd->add_option("--photons", f->o.photons, "Photons emitted (default: the scene's)")->check(CLI::PositiveNumber);
+  cmd->add_option("--photons", f->o.photons, "Photons emitted (default: the scene's)")->check(pipeline::positive_number());
   cmd->add_option("--reference-factor", f->o.reference_factor, "Reference budget over the largest budget")
       ->check(CLI::Range(1.0, 1e6))
       ->capture_default_str();
@@ -288,7 +289,7 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
   cmd->add_option("--max-voxel-optical-depth", f->o.density.max_voxel_optical_depth,
                   "Radiance sampling draws from the transmittance where voxels are thicker than this many mean free paths "
                   "(1e9: the paper's density everywhere)")
-      ->check(CLI::PositiveNumber)
+      ->check(pipeline::positive_number())
       ->capture_default_str();
   cmd->add_option("--repeats", f->o.spread_repeats, "Renders per estimator for the noise spread")
       ->check(CLI::Range(2, 1000))

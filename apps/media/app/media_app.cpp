@@ -12,6 +12,7 @@
 #include "apps/media/parallel_media.hpp"
 #include "apps/media/tone_map.hpp"
 #include "apps/pipeline/app_registry.hpp"
+#include "apps/pipeline/option_checks.hpp"
 
 namespace gcsim::media::app {
 namespace {
@@ -137,7 +138,7 @@ pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) 
   cmd.add_option("--max-voxel-optical-depth", f->max_voxel_optical_depth,
                  "radiance estimator: draw from the transmittance where the grid's voxels are thicker than this many mean "
                  "free paths (1e9: the paper's density everywhere)")
-      ->check(CLI::PositiveNumber)
+      ->check(pipeline::positive_number())
       ->capture_default_str();
   cmd.add_option("--rounding", f->rounding,
                  "M < 1: one sample (at-least-one, notes A12) or one with probability M and weight 1/M (stochastic)")
@@ -151,7 +152,7 @@ pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) 
   if (verb == pipeline::Verb::run) {
     cmd.add_option("--image", f->image, "Write the image as PNG");
     cmd.add_option("--exposure", f->exposure, "PNG exposure (default: the 99th percentile of the lit pixels maps to white)")
-        ->check(CLI::PositiveNumber);
+        ->check(pipeline::positive_number());
   }
   return [f] { return std::make_unique<MediaExperiment>(*f); };
 }

@@ -9,6 +9,7 @@
 #include "apps/common/scene/scene_file.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/machine_options.hpp"
+#include "apps/pipeline/option_checks.hpp"
 #include "apps/render/app/render_commands.hpp"
 #include "apps/render/render_accuracy.hpp"
 #include "parix/interruption.hpp"
@@ -88,7 +89,7 @@ void add_render_accuracy_command(pipeline::CommandGroups& g) {
       "a reference (hemicube 512, energy 0.9999, depth 10, 200000 photons, march 128) next to its simulated\n"
       "and wall time.");
   cmd->add_option("scene", f->scene, "a TOML scene file (scenes/*.toml)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--nodes", f->machine.nodes, "nodes of the machine (default 8)")->check(CLI::PositiveNumber);
+  cmd->add_option("--nodes", f->machine.nodes, "nodes of the machine (default 8)")->check(pipeline::positive_number());
   cmd->add_option("--config", f->machine.config, "machine file (default: the built-in GC-PowerPlus)");
   cmd->add_option("--csv", f->csv, "write pass,control,value,relative_rmse,simulated_s,wall_s");
   cmd->add_flag("--quick", f->quick, "fewer values and a hemicube-256 reference (about a minute on CORNELL)");

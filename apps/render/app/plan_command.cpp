@@ -7,6 +7,7 @@
 
 #include "apps/common/scene/scene_file.hpp"
 #include "apps/pipeline/machine_options.hpp"
+#include "apps/pipeline/option_checks.hpp"
 #include "apps/render/app/render_commands.hpp"
 #include "apps/render/plan_report.hpp"
 #include "apps/render/media_sample.hpp"
@@ -59,7 +60,7 @@ void add_plan_command(pipeline::CommandGroups& g) {
       "media, shadows), say why each is on or off, and estimate each pass's simulated time and memory per\n"
       "node on the chosen machine before anything runs.");
   cmd->add_option("scene", f->scene, "a TOML scene file (see scenes/ and apps/common/scene/README.md)")->required();
-  cmd->add_option("--nodes", f->machine.nodes, "nodes the estimate is for (default 1)")->check(CLI::PositiveNumber);
+  cmd->add_option("--nodes", f->machine.nodes, "nodes the estimate is for (default 1)")->check(pipeline::positive_number());
   cmd->add_option("--config", f->machine.config, "machine file (default: the built-in GC-PowerPlus)");
   cmd->add_option("--json", f->machine.json, "also write the plan as JSON to this file");
   cmd->add_option("--model", f->machine.model, "network model of the radiosity sample: analytic, flow or packet");
@@ -78,7 +79,7 @@ void add_plan_command(pipeline::CommandGroups& g) {
       ->check(CLI::Range(0, 1000));
   cmd->add_option("--photons", f->photons, "photons the render will emit (gcsim render --photons)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(pipeline::positive_number());
   cmd->callback([f] {
     const scene::SceneDescription d = scene::load_scene_file(f->scene);
     const machine::MachineConfig machine = pipeline::simulation_options(f->machine, 1).config;
