@@ -14,15 +14,7 @@ void send_to(Processor& p, int peer, std::span<const std::byte> data, const Coll
   }
 }
 
-Bytes recv_from(Processor& p, int peer, const CollectiveOptions& o) {
-  if (o.connect_per_message) {
-    Link l = p.connect(peer, o.tag);
-    return p.recv(l);
-  }
-  return p.recv(p.persistent_link(peer, o.tag));
-}
-
-// The same into a vector the caller reuses across a loop: its storage goes back to the runtime.
+// Into a vector the caller may reuse across a loop: its old storage goes back to the runtime.
 void recv_from(Processor& p, int peer, const CollectiveOptions& o, Bytes& into) {
   if (o.connect_per_message) {
     Link l = p.connect(peer, o.tag);
@@ -30,6 +22,12 @@ void recv_from(Processor& p, int peer, const CollectiveOptions& o, Bytes& into) 
     return;
   }
   p.recv(p.persistent_link(peer, o.tag), into);
+}
+
+Bytes recv_from(Processor& p, int peer, const CollectiveOptions& o) {
+  Bytes b;
+  recv_from(p, peer, o, b);
+  return b;
 }
 
 int rank_of(int id, int root, int n) { return (id - root + n) % n; }

@@ -148,8 +148,7 @@ Link SimProcess::connect(int peer, int tag) {
 void SimProcess::close_link(std::int64_t handle) { sim_.links.close(handle); }
 
 LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
-  if (!link.valid()) throw ParixError(fmt::format("processor {}: {} on a link that is not open", id_, call));
-  LinkEnd* found = sim_.links.find(link.handle());
+  LinkEnd* found = link.valid() ? sim_.links.find(link.handle()) : nullptr;
   if (!found) throw ParixError(fmt::format("processor {}: {} on a link that is not open", id_, call));
   LinkEnd& e = *found;
   if (e.owner != id_) throw ParixError(fmt::format("processor {}: {} on a link owned by processor {}", id_, call, e.owner));
@@ -202,7 +201,7 @@ void Simulation::deliver(Message&& m) {
   LinkEnd& e = links.at(end);
   const std::int64_t seq = m.link_seq;
   e.order.arrive(seq, std::move(m), [this, &e](Message&& next) { accept(e, std::move(next)); });
-  links.release_if_done(end);  // the last message to a closed link may free it
+  if (!e.open) links.release_if_done(end);  // the last message to a closed link may free it
 }
 
 void Simulation::accept(LinkEnd& e, Message&& m) {

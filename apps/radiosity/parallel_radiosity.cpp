@@ -76,6 +76,11 @@ class RadiosityNode {
   }
 
   void solve() {
+    if (o_.solver.received && !o_.solver.received->empty()) {
+      // Each element took its received power before the first shot (ProgressiveState's receive).
+      ops_.element_update += std::int64_t(o_.solver.received->size());
+      ops_.charge(p_);
+    }
     while (state_.shot_fraction() < o_.solver.energy && state_.steps() < o_.solver.max_steps) {
       const std::vector<int> shooters = choose_shooters();
       if (shooters.empty()) break;

@@ -90,7 +90,8 @@ struct SolverOptions {
   const PathTransmittance* media = nullptr;
   // Power (per channel, one per element) that reaches the elements by paths radiosity does not
   // transport, before the solve (apps/render: light the media scatter onto the walls); the solve
-  // carries on what they reflect. Null: none. Not owned.
+  // carries on what they reflect; the parallel solve charges an element_update per element for
+  // taking it. Null: none. Not owned.
   const std::vector<Rgb>* received = nullptr;
 };
 

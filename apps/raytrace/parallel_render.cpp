@@ -291,7 +291,9 @@ void run_dynamic(parix::Processor& p, NodeWork& work, const std::vector<int>& or
 
 ParallelRenderJob::ParallelRenderJob(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                                      Distribution distribution)
-    : scene_(scene), bvh_(bvh), settings_(settings), distribution_(distribution) {}
+    : scene_(scene), bvh_(bvh), settings_(settings), distribution_(distribution) {
+  for (int t = 0; t < Tiling{settings_.width, settings_.height, settings_.tile}.count(); ++t) order_.push_back(t);
+}
 
 ParallelRender ParallelRenderJob::new_result(int nodes) const {
   ParallelRender out;
@@ -328,12 +330,7 @@ void ParallelRenderJob::program(parix::Processor& p, ParallelRender& out, TilePr
   // Built here, by the processor that uses it (on the heap: fiber stacks are small).
   const auto renderer = std::make_unique<TileRenderer>(scene_, bvh_, settings_);
   NodeWork work{scene_, bvh_, settings_, Tiling{settings_.width, settings_.height, settings_.tile}, out, *renderer, prefetch};
-  if (distribution_ == Distribution::dynamic) {
-    std::vector<int> every;
-    if (order_.empty())
-      for (int t = 0; t < work.tiling.count(); ++t) every.push_back(t);
-    run_dynamic(p, work, order_.empty() ? every : order_);
-  }
+  if (distribution_ == Distribution::dynamic) run_dynamic(p, work, order_);
   else run_static(p, work, distribution_);
 }
 
@@ -348,7 +345,7 @@ void ParallelRenderJob::sample_tiles(int stride) {
 }
 
 int ParallelRenderJob::tiles_rendered_per_run() const {
-  return order_.empty() ? Tiling{settings_.width, settings_.height, settings_.tile}.count() : int(order_.size());
+  return int(order_.size());
 }
 
 std::int64_t ParallelRenderJob::scene_bytes() const {

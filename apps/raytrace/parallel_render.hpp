@@ -88,7 +88,7 @@ class ParallelRenderJob {
   const Bvh& bvh_;
   RenderSettings settings_;
   Distribution distribution_;
-  std::vector<int> order_;  // the tiles handed out, in this order (empty: every tile, by index)
+  std::vector<int> order_;  // the tiles the dynamic distribution hands out, in this order (every tile, or a sample)
 };
 
 // Runs the job on the simulated machine (for tests and callers without a pipeline), with

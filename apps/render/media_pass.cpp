@@ -43,14 +43,15 @@ VolumePhotons trace_share(parix::Processor& p, const MediaSetup& s, std::optiona
   const std::size_t first = share_begin(s.photons, p.id(), p.count());
   const std::size_t end = share_begin(s.photons, p.id() + 1, p.count());
   const std::size_t last = s.traced > 0 ? std::min<std::size_t>(end, first + share(s.traced, p.id(), p.count())) : end;
-  if (!s.walls) return trace_volume_photons(s.surfaces, s.bvh, s.lights, s.regions, first, last, s.photons, s.seed);
-  sums.emplace(s.walls->element_count(), s.lights.total_flux / double(s.photons));
-  DepositSums& d = *sums;
-  const WallHit on_wall = [&](const glm::dvec3& origin, const glm::dvec3& direction, const glm::dvec3& power) {
-    const int e = s.walls->find(origin, direction, lookups);
-    if (e < 0) ++d.missed;
-    else d.add(e, power);
-  };
+  WallHit on_wall;
+  if (s.walls) {
+    DepositSums& d = sums.emplace(s.walls->element_count(), s.lights.total_flux / double(s.photons));
+    on_wall = [&](const glm::dvec3& origin, const glm::dvec3& direction, const glm::dvec3& power) {
+      const int e = s.walls->find(origin, direction, lookups);
+      if (e < 0) ++d.missed;
+      else d.add(e, power);
+    };
+  }
   return trace_volume_photons(s.surfaces, s.bvh, s.lights, s.regions, first, last, s.photons, s.seed, on_wall);
 }
 

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <memory>
 
+#include "apps/raytrace/render.hpp"
+#include "apps/raytrace/render_settings.hpp"
 #include "apps/render/render_setup.hpp"
 #include "apps/render/view_pass.hpp"
 
@@ -97,8 +99,8 @@ MediaSample sample_media(const scene::SceneDescription& d, const Plan& plan, con
   const Sampler sampler(setup, plan, machine);
   const std::size_t n = o.photons, big = std::max<std::size_t>(1, n / std::size_t(std::max(o.photon_divisor, 1)));
   const double scale = double(n) / double(big);
-  const int tiles_y = (d.image.height + 7) / 8, tiles_x = (d.image.width + 7) / 8;  // RenderSettings::tile
-  const int stride = o.tile_stride > 0 ? o.tile_stride : sample_tile_stride(tiles_x * tiles_y, machine.config.nodes);
+  const int tiles = raytrace::Tiling{d.image.width, d.image.height, raytrace::RenderSettings{}.tile}.count();  // the view's
+  const int stride = o.tile_stride > 0 ? o.tile_stride : sample_tile_stride(tiles, machine.config.nodes);
 
   MediaSample m;
   media.traced = big < n ? big : 0;

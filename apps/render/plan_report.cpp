@@ -14,6 +14,12 @@ std::string needs(const PassPlan& p) {
   return out.empty() ? "-" : out;
 }
 
+// Whether the pass's estimate came from a sample run on the simulated machine, not from counts.
+bool is_measured(const PassPlan& p, const CostModel& model) {
+  return (p.id == PassId::radiosity && model.radiosity_seconds_per_loop > 0) ||
+         (p.id == PassId::media && model.media_seconds > 0);
+}
+
 // Which figures ran on the simulated machine and which are operation counts.
 std::string describe_estimate(const Plan& plan, const CostModel& model) {
   const SceneFacts& f = plan.facts;
@@ -27,9 +33,7 @@ std::string describe_estimate(const Plan& plan, const CostModel& model) {
   if (model.media_seconds > 0) out += "measured  media: " + model.media_measured + "\n";
   std::string counted;
   for (const PassPlan& p : plan.passes) {
-    const bool measured = (p.id == PassId::radiosity && model.radiosity_seconds_per_loop > 0) ||
-                          (p.id == PassId::media && model.media_seconds > 0);
-    if (p.on && !measured) counted += (counted.empty() ? "" : ", ") + std::string(pass_name(p.id));
+    if (p.on && !is_measured(p, model)) counted += (counted.empty() ? "" : ", ") + std::string(pass_name(p.id));
   }
   if (counted.empty()) return out;
   out += "modeled   " + counted + ": work split evenly over the nodes from the counts above and the machine's [ops]\n"
@@ -83,10 +87,8 @@ nlohmann::json plan_json(const Plan& plan, const machine::MachineConfig& machine
     const PassCost c = estimate_pass(p, f, machine, nodes, model);
     nlohmann::json needs_list = nlohmann::json::array();
     for (PassId d : p.depends_on) needs_list.push_back(pass_name(d));
-    const bool measured = (p.id == PassId::radiosity && model.radiosity_seconds_per_loop > 0) ||
-                          (p.id == PassId::media && model.media_seconds > 0);
     j["passes"].push_back({{"name", pass_name(p.id)}, {"on", p.on}, {"reason", p.reason}, {"detail", p.detail},
-                           {"estimate", !p.on ? "none" : measured ? "measured" : "modeled"},
+                           {"estimate", !p.on ? "none" : is_measured(p, model) ? "measured" : "modeled"},
                            {"needs", needs_list}, {"estimated_seconds_per_node", c.seconds_per_node},
                            {"estimated_bytes_per_node", c.bytes_per_node}});
   }

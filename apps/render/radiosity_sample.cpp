@@ -37,10 +37,8 @@ RadiositySample sample_radiosity_loops(const scene::SceneDescription& d, const s
   options = radiosity::with_shared_projections(options);
   std::vector<radiosity::StepRecord> steps;
   bool converged = false;
-  const bool deposits = received && !received->empty();
-  if (deposits) options.solver.received = received;
+  if (received && !received->empty()) options.solver.received = received;
   const parix::RunResult run = parix::run_simulated(machine, [&](parix::Processor& p) {
-    if (deposits) p.compute("element_update", std::int64_t(received->size()));  // as unified_render.cpp
     radiosity::ParallelOutcome out = radiosity::solve_replica(p, mesh, options);
     if (p.id() == 0) steps = std::move(out.steps), converged = out.converged;
   });

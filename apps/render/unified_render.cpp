@@ -30,11 +30,7 @@ void unified_render_program(parix::Processor& p, const scene::SceneDescription& 
   radiosity::ParallelOutcome mine;
   if (mesh) {
     radiosity::ParallelOptions o = options;
-    if (!photons.wall_power.empty()) {
-      // Each element takes its deposit as received power before the first shot.
-      p.compute("element_update", std::int64_t(photons.wall_power.size()));
-      o.solver.received = &photons.wall_power;
-    }
+    if (!photons.wall_power.empty()) o.solver.received = &photons.wall_power;  // before the first shot
     mine = radiosity::solve_replica(p, *mesh, o);
   }
   out.radiosity_end_s[std::size_t(p.id())] = p.now_seconds();

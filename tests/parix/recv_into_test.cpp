@@ -8,14 +8,12 @@
 #include <cstring>
 #include <string>
 
+#include "tests/support/published_machine.hpp"
+
 namespace gcsim::parix {
 namespace {
 
-SimulationOptions on_nodes(int n) {
-  SimulationOptions o;
-  o.config = machine::with_nodes(machine::default_machine_config(), n);
-  return o;
-}
+using test_support::published_machine;
 
 Bytes bytes_of(std::string_view s) {
   Bytes b(s.size());
@@ -32,7 +30,7 @@ struct Received {
 };
 Received exchange(std::string_view text, std::int64_t sender_ops, std::int64_t receiver_ops, bool into) {
   Received got;
-  run_simulated(on_nodes(2), [&](Processor& p) {
+  run_simulated(published_machine(2), [&](Processor& p) {
     Link l = p.connect(1 - p.id());
     if (p.id() == 0) {
       p.compute("cycle", sender_ops);
@@ -77,7 +75,7 @@ TEST(RecvInto, TheCallersOldStorageCarriesALaterMessage) {
   const std::byte* old_storage = nullptr;
   const std::byte* second_storage = nullptr;
   Bytes first, second;
-  run_simulated(on_nodes(2), [&](Processor& p) {
+  run_simulated(published_machine(2), [&](Processor& p) {
     Link l = p.connect(1 - p.id());
     if (p.id() == 0) {
       p.send(l, bytes_of("message one"));
@@ -101,7 +99,7 @@ TEST(RecvInto, TheCallersOldStorageCarriesALaterMessage) {
 
 TEST(RecvInto, TakeIntoAfterIrecvSwapsAndTheRequestKeepsNothing) {
   Bytes got = bytes_of("old"), after;
-  run_simulated(on_nodes(2), [&](Processor& p) {
+  run_simulated(published_machine(2), [&](Processor& p) {
     Link l = p.connect(1 - p.id());
     if (p.id() == 0) {
       p.send(l, bytes_of("payload"));
@@ -121,7 +119,7 @@ TEST(RecvInto, TakeIntoAfterIrecvSwapsAndTheRequestKeepsNothing) {
 TEST(RecvInto, TakeIntoACancelledReceiveEmptiesTheVector) {
   Bytes withdrawn = bytes_of("untouched"), next;
   bool cancelled = false;
-  run_simulated(on_nodes(2), [&](Processor& p) {
+  run_simulated(published_machine(2), [&](Processor& p) {
     Link l = p.connect(1 - p.id());
     if (p.id() == 0) {
       p.send(l, bytes_of("only message"));
@@ -141,7 +139,7 @@ TEST(RecvInto, TakeIntoACancelledReceiveEmptiesTheVector) {
 TEST(RecvInto, RecvValueStillChecksTheSize) {
   int value = 0;
   std::string error;
-  run_simulated(on_nodes(2), [&](Processor& p) {
+  run_simulated(published_machine(2), [&](Processor& p) {
     Link l = p.connect(1 - p.id());
     if (p.id() == 0) {
       p.send_value(l, 42);

@@ -40,7 +40,6 @@ void measure_media(const PlanFlags& f, const scene::SceneDescription& d, const P
   }
   model.media_seconds = s.seconds();
   model.media_bytes = s.map_bytes;
-  model.photons = int(f.photons);
   model.media_measured = fmt::format(
       "{} and {} of the {} photons traced, then one tile in {} of the view ({} of {})\n"
       "          with and without the media, on the simulated machine: photons ~{:.3g} s (linear in the photons\n"
