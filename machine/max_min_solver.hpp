@@ -1,0 +1,86 @@
+#pragma once
+// Max-min fair rates of flows over shared channels of equal capacity, by progressive filling:
+// repeatedly saturate the channel that offers the smallest equal share left / unassigned to the
+// flows still without a rate (the lowest-numbered one on a tie) and fix those flows at that share.
+// The rates depend only on the set of flows (each channel's capacity is given out in increasing
+// share order whatever the order of insertion), so a solve over all flows gives every flow the
+// same rate, bit for bit, as a solve over its connected component.
+//
+// Each start or end changes a few rates out of hundreds, so the solver keeps the levels of its
+// last solution (channel, share, flows fixed) and replays them: a channel whose state (capacity
+// left, flows without a rate) is the same as at the same point of the last solution needs no look,
+// since it offered no less than the level the last solution took there. Only the channels whose
+// state differs (the perturbed ones: on the changed flow's route, then on the routes of flows fixed
+// differently) are scanned. Levels whose channel is unperturbed are replayed as they were; the
+// others are dropped and their flows refilled. The result is what a full solve gives, bit for bit
+// (tests/machine/max_min_solver_test.cpp compares them).
+#include <climits>
+#include <cstdint>
+#include <vector>
+
+namespace gcsim::machine {
+
+class MaxMinSolver {
+ public:
+  MaxMinSolver(int channels, double capacity);
+
+  // A free flow slot; fill route(slot) with its channels, then start it.
+  int open();
+  std::vector<int>& route(int slot) { return flows_[static_cast<std::size_t>(slot)].route; }
+  // Adds the flow to its channels and re-solves; changed() then holds its slot too.
+  void start(int slot);
+  // Removes the flow and re-solves; the slot may be reused by the next open().
+  void finish(int slot);
+
+  double rate(int slot) const { return flows_[static_cast<std::size_t>(slot)].rate; }
+  // The flows whose rate the last start or finish changed (the started one included), unordered.
+  const std::vector<int>& changed() const { return changed_; }
+  std::size_t active() const { return active_; }
+
+ private:
+  static constexpr int kNoLevel = INT_MAX;  // at the capacity of its own channels, or new
+  struct Flow {
+    std::vector<int> route;
+    int level = kNoLevel;    // index in levels_ of the last solution
+    double rate = 0;
+    bool fresh = false;      // started since the last solution: its rate counts as changed
+    std::uint64_t fixed = 0;  // the solve that gave it new_rate
+    double new_rate = 0;
+  };
+  struct Level {
+    int channel;
+    double share;
+    int first, count;  // its flows in members_
+  };
+
+  void solve(const std::vector<int>& seed);
+  void perturb(int ch, std::size_t k);
+  void replay(std::size_t k);
+  void skip(std::size_t k);
+  void fix(int ch, double share, std::size_t k);
+  bool tightest_perturbed(int& best, double& best_share);
+  void settle();
+
+  double capacity_;
+  std::vector<Flow> flows_;
+  std::vector<int> free_slots_;
+  std::size_t active_ = 0;
+  std::vector<std::vector<int>> on_channel_;  // started flows per channel
+
+  // The last solution: levels in the order taken, and the flows each fixed.
+  std::vector<Level> levels_, next_levels_;
+  std::vector<int> members_, next_members_;
+
+  // Scratch of a solve, kept so that a solve allocates nothing.
+  std::uint64_t solve_ = 0;
+  std::vector<std::uint64_t> perturbed_;  // per channel: the solve that perturbed it
+  std::vector<double> left_;              // per perturbed channel: capacity not yet given out
+  std::vector<int> unassigned_;           // per perturbed channel: flows without a rate
+  std::vector<int> perturbed_list_;
+  std::vector<int> live_;                 // perturbed shared channels with flows to fix
+  std::vector<int> touched_;              // flows given a rate other than by replay
+  std::vector<int> changed_;
+  std::vector<int> earlier_;              // perturb's levels of a channel's fixed flows
+};
+
+}  // namespace gcsim::machine
