@@ -7,10 +7,7 @@ namespace gcsim::machine {
 
 MaxMinSolver::MaxMinSolver(int channels, double capacity)
     : capacity_(capacity),
-      on_channel_(static_cast<std::size_t>(channels)),
-      perturbed_(static_cast<std::size_t>(channels), 0),
-      left_(static_cast<std::size_t>(channels), 0.0),
-      unassigned_(static_cast<std::size_t>(channels), 0) {}
+      channels_(static_cast<std::size_t>(channels)) {}
 
 int MaxMinSolver::open() {
   if (free_slots_.empty()) {
@@ -31,7 +28,7 @@ void MaxMinSolver::start(int slot) {
   Flow& f = flows_[static_cast<std::size_t>(slot)];
   f.fresh = true;
   f.level = kNoLevel;
-  for (int ch : f.route) on_channel_[static_cast<std::size_t>(ch)].push_back(slot);
+  for (int ch : f.route) channels_[static_cast<std::size_t>(ch)].flows.push_back(slot);
   ++active_;
   solve(f.route);
 }
@@ -40,7 +37,7 @@ void MaxMinSolver::finish(int slot) {
   const Flow& f = flows_[static_cast<std::size_t>(slot)];
   // A channel's flows are a set: their order changes no rate (see perturb and fix).
   for (int ch : f.route) {
-    auto& v = on_channel_[static_cast<std::size_t>(ch)];
+    auto& v = channels_[static_cast<std::size_t>(ch)].flows;
     *std::find(v.begin(), v.end(), slot) = v.back();
     v.pop_back();
   }
@@ -57,10 +54,13 @@ void MaxMinSolver::solve(const std::vector<int>& seed) {
   changed_.clear();
   next_levels_.clear();
   next_members_.clear();
+  crossings_.clear();
+  best_ = -1;
+  best_stale_ = false;
   for (int ch : seed) perturb(ch, 0);
   std::size_t k = 0;  // the next level of the last solution
   for (;;) {
-    while (k < levels_.size() && perturbed_[static_cast<std::size_t>(levels_[k].channel)] == solve_) skip(k++);
+    while (k < levels_.size() && channels_[static_cast<std::size_t>(levels_[k].channel)].perturbed == solve_) skip(k++);
     int best = -1;
     double best_share = 0;
     const bool any = tightest_perturbed(best, best_share);
@@ -83,27 +83,53 @@ void MaxMinSolver::solve(const std::vector<int>& seed) {
 // it still has, being unperturbed so far): its capacity less the shares of its flows fixed by
 // earlier levels, taken in level order as the filling did.
 void MaxMinSolver::perturb(int ch, std::size_t k) {
-  const auto c = static_cast<std::size_t>(ch);
-  if (perturbed_[c] == solve_) return;
-  perturbed_[c] = solve_;
+  Channel& c = channels_[static_cast<std::size_t>(ch)];
+  if (c.perturbed == solve_) return;
+  c.perturbed = solve_;
   perturbed_list_.push_back(ch);
-  const std::vector<int>& on = on_channel_[c];
+  const std::vector<int>& on = c.flows;
   earlier_.clear();
   for (int s : on) {
-    const int level = flows_[static_cast<std::size_t>(s)].level;
-    if (level < static_cast<int>(k)) earlier_.push_back(level);
+    Flow& f = flows_[static_cast<std::size_t>(s)];
+    if (f.level < static_cast<int>(k)) {
+      earlier_.push_back(f.level);
+      continue;
+    }
+    // Without a rate yet: a replay of its level must take its share here too.
+    if (f.crossed != solve_) f.crossed = solve_, f.first_crossed = -1;
+    crossings_.push_back({ch, f.first_crossed});
+    f.first_crossed = static_cast<int>(crossings_.size() - 1);
   }
-  std::sort(earlier_.begin(), earlier_.end());
-  double left = capacity_;
-  for (int level : earlier_) left -= levels_[static_cast<std::size_t>(level)].share;
-  left_[c] = left;
-  unassigned_[c] = static_cast<int>(on.size() - earlier_.size());
+  // A few flows per channel: insertion sort.
+  for (std::size_t i = 1; i < earlier_.size(); ++i)
+    for (std::size_t j = i; j > 0 && earlier_[j] < earlier_[j - 1]; --j) std::swap(earlier_[j], earlier_[j - 1]);
+  c.left = capacity_;
+  for (int level : earlier_) c.left -= levels_[static_cast<std::size_t>(level)].share;
+  c.unassigned = static_cast<int>(on.size() - earlier_.size());
   // A channel with one flow only ever offers the whole capacity: left out, as settle() explains.
-  if (on.size() > 1 && unassigned_[c] > 0) live_.push_back(ch);
+  if (on.size() > 1 && c.unassigned > 0) {
+    live_.push_back(ch);
+    take(ch, 0);
+  }
+}
+
+// Gives share to one more flow of perturbed channel ch (share 0: none, ch is new) and keeps the
+// tightest live channel up to date: only a change of that channel itself calls for a rescan.
+void MaxMinSolver::take(int ch, double share) {
+  Channel& c = channels_[static_cast<std::size_t>(ch)];
+  if (share > 0) c.left -= share, --c.unassigned;
+  if (best_stale_) return;
+  if (ch == best_) {
+    best_stale_ = true;
+    return;
+  }
+  if (c.unassigned == 0 || c.flows.size() < 2) return;
+  const double s = c.left / c.unassigned;
+  if (best_ < 0 || s < best_share_ || (s == best_share_ && ch < best_)) best_ = ch, best_share_ = s;
 }
 
 // Level k of the last solution again: its channel is unperturbed, so its flows are the same and
-// still without a rate, and its share is the same.
+// still without a rate, and its share is the same. Unperturbed channels change as they did then.
 void MaxMinSolver::replay(std::size_t k) {
   const Level l = levels_[k];
   next_levels_.push_back({l.channel, l.share, static_cast<int>(next_members_.size()), l.count});
@@ -113,12 +139,9 @@ void MaxMinSolver::replay(std::size_t k) {
     Flow& f = flows_[static_cast<std::size_t>(s)];
     f.fixed = solve_;
     f.new_rate = l.share;
-    for (int ch : f.route) {
-      const auto c = static_cast<std::size_t>(ch);
-      if (perturbed_[c] != solve_) continue;  // changes as it did last time
-      left_[c] -= l.share;
-      --unassigned_[c];
-    }
+    if (f.crossed != solve_) continue;
+    for (int j = f.first_crossed; j >= 0; j = crossings_[static_cast<std::size_t>(j)].next)
+      take(crossings_[static_cast<std::size_t>(j)].channel, l.share);
   }
 }
 
@@ -135,7 +158,7 @@ void MaxMinSolver::skip(std::size_t k) {
 void MaxMinSolver::fix(int ch, double share, std::size_t k) {
   next_levels_.push_back({ch, share, static_cast<int>(next_members_.size()), 0});
   int count = 0;
-  for (int s : on_channel_[static_cast<std::size_t>(ch)]) {
+  for (int s : channels_[static_cast<std::size_t>(ch)].flows) {
     Flow& f = flows_[static_cast<std::size_t>(s)];
     if (f.fixed == solve_) continue;
     f.fixed = solve_;
@@ -145,27 +168,31 @@ void MaxMinSolver::fix(int ch, double share, std::size_t k) {
     ++count;
     for (int c : f.route) {
       perturb(c, k);
-      left_[static_cast<std::size_t>(c)] -= share;
-      --unassigned_[static_cast<std::size_t>(c)];
+      take(c, share);
     }
   }
   next_levels_.back().count = count;
 }
 
-// The perturbed channel offering the smallest share (the lowest-numbered on a tie); drops the
-// channels whose flows all have a rate.
+// The perturbed channel offering the smallest share (the lowest-numbered on a tie), rescanned if
+// stale; the scan drops the channels whose flows all have a rate.
 bool MaxMinSolver::tightest_perturbed(int& best, double& best_share) {
-  std::size_t kept = 0;
-  for (const int ch : live_) {
-    const auto c = static_cast<std::size_t>(ch);
-    const int n = unassigned_[c];
-    if (n == 0) continue;
-    live_[kept++] = ch;
-    const double share = left_[c] / n;
-    if (best < 0 || share < best_share || (share == best_share && ch < best)) best = ch, best_share = share;
+  if (best_stale_) {
+    best_stale_ = false;
+    best_ = -1;
+    std::size_t kept = 0;
+    for (const int ch : live_) {
+      const Channel& c = channels_[static_cast<std::size_t>(ch)];
+      if (c.unassigned == 0) continue;
+      live_[kept++] = ch;
+      const double s = c.left / c.unassigned;
+      if (best_ < 0 || s < best_share_ || (s == best_share_ && ch < best_)) best_ = ch, best_share_ = s;
+    }
+    live_.resize(kept);
   }
-  live_.resize(kept);
-  return best >= 0;
+  best = best_;
+  best_share = best_share_;
+  return best_ >= 0;
 }
 
 // Flows still without a rate cross only channels of their own (every shared channel offered less
@@ -173,7 +200,7 @@ bool MaxMinSolver::tightest_perturbed(int& best, double& best_share) {
 // Then the new solution replaces the last, and the rates that moved are reported.
 void MaxMinSolver::settle() {
   for (int ch : perturbed_list_) {
-    for (int s : on_channel_[static_cast<std::size_t>(ch)]) {
+    for (int s : channels_[static_cast<std::size_t>(ch)].flows) {
       Flow& f = flows_[static_cast<std::size_t>(s)];
       if (f.fixed == solve_) continue;
       f.fixed = solve_;

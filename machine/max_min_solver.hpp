@@ -46,15 +46,29 @@ class MaxMinSolver {
     bool fresh = false;      // started since the last solution: its rate counts as changed
     std::uint64_t fixed = 0;  // the solve that gave it new_rate
     double new_rate = 0;
+    std::uint64_t crossed = 0;  // the solve whose perturbed channels `first_crossed` lists
+    int first_crossed = -1;     // in crossings_: the perturbed channels it crosses
   };
   struct Level {
     int channel;
     double share;
     int first, count;  // its flows in members_
   };
+  // A channel's started flows and, while perturbed (perturbed == the solve under way), its state.
+  // Together, so that the first look at a channel in a solve misses the cache once.
+  struct Channel {
+    std::uint64_t perturbed = 0;
+    double left = 0;     // capacity not yet given out
+    int unassigned = 0;  // flows without a rate
+    std::vector<int> flows;
+  };
+  struct Crossing {
+    int channel, next;
+  };
 
   void solve(const std::vector<int>& seed);
   void perturb(int ch, std::size_t k);
+  void take(int ch, double share);
   void replay(std::size_t k);
   void skip(std::size_t k);
   void fix(int ch, double share, std::size_t k);
@@ -65,7 +79,7 @@ class MaxMinSolver {
   std::vector<Flow> flows_;
   std::vector<int> free_slots_;
   std::size_t active_ = 0;
-  std::vector<std::vector<int>> on_channel_;  // started flows per channel
+  std::vector<Channel> channels_;
 
   // The last solution: levels in the order taken, and the flows each fixed.
   std::vector<Level> levels_, next_levels_;
@@ -73,14 +87,17 @@ class MaxMinSolver {
 
   // Scratch of a solve, kept so that a solve allocates nothing.
   std::uint64_t solve_ = 0;
-  std::vector<std::uint64_t> perturbed_;  // per channel: the solve that perturbed it
-  std::vector<double> left_;              // per perturbed channel: capacity not yet given out
-  std::vector<int> unassigned_;           // per perturbed channel: flows without a rate
   std::vector<int> perturbed_list_;
-  std::vector<int> live_;                 // perturbed shared channels with flows to fix
-  std::vector<int> touched_;              // flows given a rate other than by replay
+  std::vector<int> live_;       // perturbed shared channels that had flows to fix when last scanned
+  // The live channel offering the smallest share, kept up to date as channels change and
+  // rescanned only when it changes itself (replays seldom touch it).
+  int best_ = -1;
+  double best_share_ = 0;
+  bool best_stale_ = false;
+  std::vector<Crossing> crossings_;  // per flow without a rate, lists of perturbed channels
+  std::vector<int> touched_;         // flows given a rate other than by replay
   std::vector<int> changed_;
-  std::vector<int> earlier_;              // perturb's levels of a channel's fixed flows
+  std::vector<int> earlier_;         // perturb's levels of a channel's fixed flows
 };
 
 }  // namespace gcsim::machine
