@@ -30,7 +30,7 @@ void MaxMinSolver::start(int slot) {
   f.level = kNoLevel;
   for (int ch : f.route) channels_[static_cast<std::size_t>(ch)].flows.push_back(slot);
   ++active_;
-  solve(f.route);
+  solve(f.route, slot, -1);
 }
 
 void MaxMinSolver::finish(int slot) {
@@ -42,19 +42,21 @@ void MaxMinSolver::finish(int slot) {
     v.pop_back();
   }
   --active_;
-  solve(f.route);  // its old level is dropped (its channel is perturbed), so it leaves the solution
+  solve(f.route, -1, slot);  // its old level is dropped (its channel is perturbed), so it leaves the solution
   free_slots_.push_back(slot);
 }
 
-void MaxMinSolver::solve(const std::vector<int>& seed) {
+void MaxMinSolver::solve(const std::vector<int>& seed, int started, int finished) {
   ++solve_;
-  perturbed_list_.clear();
   live_.clear();
   touched_.clear();
   changed_.clear();
   next_levels_.clear();
   next_members_.clear();
   crossings_.clear();
+  unsettled_.clear();
+  if (started >= 0) unsettled_.push_back(started);
+  finished_ = finished;
   best_ = -1;
   best_stale_ = false;
   for (int ch : seed) perturb(ch, 0);
@@ -82,11 +84,9 @@ void MaxMinSolver::solve(const std::vector<int>& seed) {
 // Marks ch perturbed from here on, with the state it had before level k of the last solution (which
 // it still has, being unperturbed so far): its capacity less the shares of its flows fixed by
 // earlier levels, taken in level order as the filling did.
-void MaxMinSolver::perturb(int ch, std::size_t k) {
+void MaxMinSolver::perturb_now(int ch, std::size_t k) {
   Channel& c = channels_[static_cast<std::size_t>(ch)];
-  if (c.perturbed == solve_) return;
   c.perturbed = solve_;
-  perturbed_list_.push_back(ch);
   const std::vector<int>& on = c.flows;
   earlier_.clear();
   for (int s : on) {
@@ -149,8 +149,11 @@ void MaxMinSolver::replay(std::size_t k) {
 // capacity from diverge from the last solution here.
 void MaxMinSolver::skip(std::size_t k) {
   const Level& l = levels_[k];
-  for (int i = l.first; i < l.first + l.count; ++i)
-    for (int ch : flows_[static_cast<std::size_t>(members_[static_cast<std::size_t>(i)])].route) perturb(ch, k);
+  for (int i = l.first; i < l.first + l.count; ++i) {
+    const int s = members_[static_cast<std::size_t>(i)];
+    unsettled_.push_back(s);
+    for (int ch : flows_[static_cast<std::size_t>(s)].route) perturb(ch, k);
+  }
 }
 
 // A new level on a perturbed channel: its flows without a rate get the share, and every channel
@@ -195,19 +198,18 @@ bool MaxMinSolver::tightest_perturbed(int& best, double& best_share) {
   return best_ >= 0;
 }
 
-// Flows still without a rate cross only channels of their own (every shared channel offered less
-// than the capacity, so the filling would fix them last, each at left / 1 = the whole capacity).
+// Flows still without a rate (only the new one and those of dropped levels can be: any other kept
+// its level or had none) cross only channels of their own: every shared channel offered less than
+// the capacity, so the filling would fix them last, each at left / 1 = the whole capacity.
 // Then the new solution replaces the last, and the rates that moved are reported.
 void MaxMinSolver::settle() {
-  for (int ch : perturbed_list_) {
-    for (int s : channels_[static_cast<std::size_t>(ch)].flows) {
-      Flow& f = flows_[static_cast<std::size_t>(s)];
-      if (f.fixed == solve_) continue;
-      f.fixed = solve_;
-      f.new_rate = capacity_;
-      f.level = kNoLevel;
-      touched_.push_back(s);
-    }
+  for (int s : unsettled_) {
+    Flow& f = flows_[static_cast<std::size_t>(s)];
+    if (f.fixed == solve_ || s == finished_) continue;
+    f.fixed = solve_;
+    f.new_rate = capacity_;
+    f.level = kNoLevel;
+    touched_.push_back(s);
   }
   for (std::size_t i = 0; i < next_levels_.size(); ++i) {
     const Level& l = next_levels_[i];

@@ -66,8 +66,12 @@ class MaxMinSolver {
     int channel, next;
   };
 
-  void solve(const std::vector<int>& seed);
-  void perturb(int ch, std::size_t k);
+  void solve(const std::vector<int>& seed, int started, int finished);
+  // Most calls find the channel perturbed already: that check is inline, the work is not.
+  void perturb(int ch, std::size_t k) {
+    if (channels_[static_cast<std::size_t>(ch)].perturbed != solve_) perturb_now(ch, k);
+  }
+  void perturb_now(int ch, std::size_t k);
   void take(int ch, double share);
   void replay(std::size_t k);
   void skip(std::size_t k);
@@ -87,7 +91,6 @@ class MaxMinSolver {
 
   // Scratch of a solve, kept so that a solve allocates nothing.
   std::uint64_t solve_ = 0;
-  std::vector<int> perturbed_list_;
   std::vector<int> live_;       // perturbed shared channels that had flows to fix when last scanned
   // The live channel offering the smallest share, kept up to date as channels change and
   // rescanned only when it changes itself (replays seldom touch it).
@@ -96,6 +99,8 @@ class MaxMinSolver {
   bool best_stale_ = false;
   std::vector<Crossing> crossings_;  // per flow without a rate, lists of perturbed channels
   std::vector<int> touched_;         // flows given a rate other than by replay
+  std::vector<int> unsettled_;       // flows that may end at the capacity: dropped levels', the new
+  int finished_ = -1;                // the flow leaving, which is in a dropped level but gets no rate
   std::vector<int> changed_;
   std::vector<int> earlier_;         // perturb's levels of a channel's fixed flows
 };
