@@ -42,7 +42,7 @@ void MaxMinSolver::finish(int slot) {
     v.pop_back();
   }
   --active_;
-  solve(f.route, -1, slot);  // its old level is dropped (its channel is perturbed), so it leaves the solution
+  solve(f.route, -1, slot);  // its level is dropped (its channel is perturbed): it leaves the solution
   free_slots_.push_back(slot);
 }
 
@@ -62,7 +62,8 @@ void MaxMinSolver::solve(const std::vector<int>& seed, int started, int finished
   for (int ch : seed) perturb(ch, 0);
   std::size_t k = 0;  // the next level of the last solution
   for (;;) {
-    while (k < levels_.size() && channels_[static_cast<std::size_t>(levels_[k].channel)].perturbed == solve_) skip(k++);
+    while (k < levels_.size() && channels_[static_cast<std::size_t>(levels_[k].channel)].perturbed == solve_)
+      skip(k++);
     int best = -1;
     double best_share = 0;
     const bool any = tightest_perturbed(best, best_share);
@@ -109,20 +110,27 @@ void MaxMinSolver::perturb_now(int ch, std::size_t k) {
   // A channel with one flow only ever offers the whole capacity: left out, as settle() explains.
   if (on.size() > 1 && c.unassigned > 0) {
     live_.push_back(ch);
-    take(ch, 0);
+    consider(ch);
   }
 }
 
-// Gives share to one more flow of perturbed channel ch (share 0: none, ch is new) and keeps the
-// tightest live channel up to date: only a change of that channel itself calls for a rescan.
+// Gives share to one more flow of perturbed channel ch.
 void MaxMinSolver::take(int ch, double share) {
   Channel& c = channels_[static_cast<std::size_t>(ch)];
-  if (share > 0) c.left -= share, --c.unassigned;
+  c.left -= share;
+  --c.unassigned;
+  consider(ch);
+}
+
+// Keeps the tightest live channel up to date as perturbed channel ch changes or joins: only a
+// change of that channel itself calls for a rescan (any other can only take its place).
+void MaxMinSolver::consider(int ch) {
   if (best_stale_) return;
   if (ch == best_) {
     best_stale_ = true;
     return;
   }
+  const Channel& c = channels_[static_cast<std::size_t>(ch)];
   if (c.unassigned == 0 || c.flows.size() < 2) return;
   const double s = c.left / c.unassigned;
   if (best_ < 0 || s < best_share_ || (s == best_share_ && ch < best_)) best_ = ch, best_share_ = s;
