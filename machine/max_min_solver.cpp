@@ -24,23 +24,43 @@ int MaxMinSolver::open() {
   return slot;
 }
 
+void MaxMinSolver::Channel::add(int slot) {
+  if (count < kNear) {
+    near[static_cast<std::size_t>(count)] = slot;
+  } else {
+    far.push_back(slot);
+  }
+  ++count;
+}
+
+// The last flow takes the place of the one leaving.
+void MaxMinSolver::Channel::remove(int slot) {
+  int i = 0;
+  while (flow(i) != slot) ++i;
+  const int last = flow(count - 1);
+  if (i < kNear) {
+    near[static_cast<std::size_t>(i)] = last;
+  } else {
+    far[static_cast<std::size_t>(i - kNear)] = last;
+  }
+  if (count > kNear) far.pop_back();
+  --count;
+}
+
 void MaxMinSolver::start(int slot) {
   Flow& f = flows_[static_cast<std::size_t>(slot)];
   f.fresh = true;
   f.level = kNoLevel;
-  for (int ch : f.route) channels_[static_cast<std::size_t>(ch)].flows.push_back(slot);
+  for (int ch : f.route) channels_[static_cast<std::size_t>(ch)].add(slot);
   ++active_;
   solve(f.route, slot, -1);
 }
 
 void MaxMinSolver::finish(int slot) {
   const Flow& f = flows_[static_cast<std::size_t>(slot)];
-  // A channel's flows are a set: their order changes no rate (see perturb and fix).
-  for (int ch : f.route) {
-    auto& v = channels_[static_cast<std::size_t>(ch)].flows;
-    *std::find(v.begin(), v.end(), slot) = v.back();
-    v.pop_back();
-  }
+  // A channel's flows are a set: their order changes no rate (a level gives all it fixes the same
+  // share, and a channel's capacity is given out level by level).
+  for (int ch : f.route) channels_[static_cast<std::size_t>(ch)].remove(slot);
   --active_;
   solve(f.route, -1, slot);  // its level is dropped (its channel is perturbed): it leaves the solution
   free_slots_.push_back(slot);
@@ -88,9 +108,9 @@ void MaxMinSolver::solve(const std::vector<int>& seed, int started, int finished
 void MaxMinSolver::perturb_now(int ch, std::size_t k) {
   Channel& c = channels_[static_cast<std::size_t>(ch)];
   c.perturbed = solve_;
-  const std::vector<int>& on = c.flows;
   earlier_.clear();
-  for (int s : on) {
+  for (int i = 0; i < c.count; ++i) {
+    const int s = c.flow(i);
     Flow& f = flows_[static_cast<std::size_t>(s)];
     if (f.level < static_cast<int>(k)) {
       earlier_.push_back(f.level);
@@ -106,9 +126,9 @@ void MaxMinSolver::perturb_now(int ch, std::size_t k) {
     for (std::size_t j = i; j > 0 && earlier_[j] < earlier_[j - 1]; --j) std::swap(earlier_[j], earlier_[j - 1]);
   c.left = capacity_;
   for (int level : earlier_) c.left -= levels_[static_cast<std::size_t>(level)].share;
-  c.unassigned = static_cast<int>(on.size() - earlier_.size());
+  c.unassigned = c.count - static_cast<int>(earlier_.size());
   // A channel with one flow only ever offers the whole capacity: left out, as settle() explains.
-  if (on.size() > 1 && c.unassigned > 0) {
+  if (c.count > 1 && c.unassigned > 0) {
     live_.push_back(ch);
     consider(ch);
   }
@@ -131,7 +151,7 @@ void MaxMinSolver::consider(int ch) {
     return;
   }
   const Channel& c = channels_[static_cast<std::size_t>(ch)];
-  if (c.unassigned == 0 || c.flows.size() < 2) return;
+  if (c.unassigned == 0 || c.count < 2) return;
   const double s = c.left / c.unassigned;
   if (best_ < 0 || s < best_share_ || (s == best_share_ && ch < best_)) best_ = ch, best_share_ = s;
 }
@@ -169,7 +189,9 @@ void MaxMinSolver::skip(std::size_t k) {
 void MaxMinSolver::fix(int ch, double share, std::size_t k) {
   next_levels_.push_back({ch, share, static_cast<int>(next_members_.size()), 0});
   int count = 0;
-  for (int s : channels_[static_cast<std::size_t>(ch)].flows) {
+  const Channel& on = channels_[static_cast<std::size_t>(ch)];
+  for (int i = 0; i < on.count; ++i) {
+    const int s = on.flow(i);
     Flow& f = flows_[static_cast<std::size_t>(s)];
     if (f.fixed == solve_) continue;
     f.fixed = solve_;

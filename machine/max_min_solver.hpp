@@ -14,6 +14,7 @@
 // differently) are scanned. Levels whose channel is unperturbed are replayed as they were; the
 // others are dropped and their flows refilled. The result is what a full solve gives, bit for bit
 // (tests/machine/max_min_solver_test.cpp compares them).
+#include <array>
 #include <climits>
 #include <cstdint>
 #include <vector>
@@ -54,13 +55,21 @@ class MaxMinSolver {
     double share;
     int first, count;  // its flows in members_
   };
-  // A channel's started flows and, while perturbed (perturbed == the solve under way), its state.
-  // Together, so that the first look at a channel in a solve misses the cache once.
-  struct Channel {
+  // A channel's started flows and, while perturbed (perturbed == the solve under way), its state,
+  // in one cache line: the first look at a channel in a solve (a few hundred per solve, spread over
+  // the mesh) misses once. Most channels carry at most four flows; the others keep the rest apart.
+  // The order of a channel's flows is moot (see finish).
+  struct alignas(64) Channel {
     std::uint64_t perturbed = 0;
     double left = 0;     // capacity not yet given out
     int unassigned = 0;  // flows without a rate
-    std::vector<int> flows;
+    int count = 0;       // started flows on it
+    static constexpr int kNear = 4;
+    std::array<int, kNear> near{};
+    std::vector<int> far;
+    int flow(int i) const { return i < kNear ? near[static_cast<std::size_t>(i)] : far[static_cast<std::size_t>(i - kNear)]; }
+    void add(int slot);
+    void remove(int slot);
   };
   struct Crossing {
     int channel, next;
