@@ -152,6 +152,14 @@ void MaxMinSolver::consider(int ch) {
   }
   const Channel& c = channels_[static_cast<std::size_t>(ch)];
   if (c.unassigned == 0 || c.count < 2) return;
+  offer(ch, c);
+}
+
+// Makes ch the tightest if it offers less than the tightest so far (or as much, lower-numbered).
+// Most channels offer clearly more: a multiplication tells, and the division (whose rounding
+// decides near ties) is left to the few that may not.
+void MaxMinSolver::offer(int ch, const Channel& c) {
+  if (best_ >= 0 && best_share_ > 0 && c.left > best_share_ * c.unassigned * (1 + 1e-9)) return;
   const double s = c.left / c.unassigned;
   if (best_ < 0 || s < best_share_ || (s == best_share_ && ch < best_)) best_ = ch, best_share_ = s;
 }
@@ -218,8 +226,7 @@ bool MaxMinSolver::tightest_perturbed(int& best, double& best_share) {
       const Channel& c = channels_[static_cast<std::size_t>(ch)];
       if (c.unassigned == 0) continue;
       live_[kept++] = ch;
-      const double s = c.left / c.unassigned;
-      if (best_ < 0 || s < best_share_ || (s == best_share_ && ch < best_)) best_ = ch, best_share_ = s;
+      offer(ch, c);
     }
     live_.resize(kept);
   }

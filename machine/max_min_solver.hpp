@@ -83,6 +83,7 @@ class MaxMinSolver {
   void perturb_now(int ch, std::size_t k);
   void take(int ch, double share);
   void consider(int ch);
+  void offer(int ch, const Channel& c);
   void replay(std::size_t k);
   void skip(std::size_t k);
   void fix(int ch, double share, std::size_t k);
