@@ -53,7 +53,8 @@ void MaxMinSolver::start(int slot) {
   f.level = kNoLevel;
   for (int ch : f.route) channels_[static_cast<std::size_t>(ch)].add(slot);
   ++active_;
-  solve(f.route, slot, -1);
+  const int group = join(slot);
+  solve(group, f.route, slot, -1);
 }
 
 void MaxMinSolver::finish(int slot) {
@@ -62,12 +63,15 @@ void MaxMinSolver::finish(int slot) {
   // share, and a channel's capacity is given out level by level).
   for (int ch : f.route) channels_[static_cast<std::size_t>(ch)].remove(slot);
   --active_;
-  solve(f.route, -1, slot);  // its level is dropped (its channel is perturbed): it leaves the solution
+  solve(f.group, f.route, -1, slot);  // its level is dropped (its channel is perturbed): it leaves the solution
+  leave(slot);
   free_slots_.push_back(slot);
 }
 
-void MaxMinSolver::solve(const std::vector<int>& seed, int started, int finished) {
+void MaxMinSolver::solve(int group, const std::vector<int>& seed, int started, int finished) {
   ++solve_;
+  group_ = &groups_[static_cast<std::size_t>(group)];
+  const std::vector<Level>& last = group_->levels;
   live_.clear();
   touched_.clear();
   changed_.clear();
@@ -82,14 +86,14 @@ void MaxMinSolver::solve(const std::vector<int>& seed, int started, int finished
   for (int ch : seed) perturb(ch, 0);
   std::size_t k = 0;  // the next level of the last solution
   for (;;) {
-    while (k < levels_.size() && channels_[static_cast<std::size_t>(levels_[k].channel)].perturbed == solve_)
+    while (k < last.size() && channels_[static_cast<std::size_t>(last[k].channel)].perturbed == solve_)
       skip(k++);
     int best = -1;
     double best_share = 0;
     const bool any = tightest_perturbed(best, best_share);
-    if (k < levels_.size()) {
+    if (k < last.size()) {
       // Every unperturbed channel offers what it offered there, no less than this level's share.
-      const Level& l = levels_[k];
+      const Level& l = last[k];
       if (!any || l.share < best_share || (l.share == best_share && l.channel < best)) {
         replay(k++);
         continue;
@@ -125,7 +129,7 @@ void MaxMinSolver::perturb_now(int ch, std::size_t k) {
   for (std::size_t i = 1; i < earlier_.size(); ++i)
     for (std::size_t j = i; j > 0 && earlier_[j] < earlier_[j - 1]; --j) std::swap(earlier_[j], earlier_[j - 1]);
   c.left = capacity_;
-  for (int level : earlier_) c.left -= levels_[static_cast<std::size_t>(level)].share;
+  for (int level : earlier_) c.left -= group_->levels[static_cast<std::size_t>(level)].share;
   c.unassigned = c.count - static_cast<int>(earlier_.size());
   // A channel with one flow only ever offers the whole capacity: left out, as settle() explains.
   if (c.count > 1 && c.unassigned > 0) {
@@ -167,10 +171,10 @@ void MaxMinSolver::offer(int ch, const Channel& c) {
 // Level k of the last solution again: its channel is unperturbed, so its flows are the same and
 // still without a rate, and its share is the same. Unperturbed channels change as they did then.
 void MaxMinSolver::replay(std::size_t k) {
-  const Level l = levels_[k];
+  const Level l = group_->levels[k];
   next_levels_.push_back({l.channel, l.share, static_cast<int>(next_members_.size()), l.count});
   for (int i = l.first; i < l.first + l.count; ++i) {
-    const int s = members_[static_cast<std::size_t>(i)];
+    const int s = group_->members[static_cast<std::size_t>(i)];
     next_members_.push_back(s);
     Flow& f = flows_[static_cast<std::size_t>(s)];
     f.fixed = solve_;
@@ -184,9 +188,9 @@ void MaxMinSolver::replay(std::size_t k) {
 // Level k of the last solution is not taken as it was: the channels its flows would have taken
 // capacity from diverge from the last solution here.
 void MaxMinSolver::skip(std::size_t k) {
-  const Level& l = levels_[k];
+  const Level& l = group_->levels[k];
   for (int i = l.first; i < l.first + l.count; ++i) {
-    const int s = members_[static_cast<std::size_t>(i)];
+    const int s = group_->members[static_cast<std::size_t>(i)];
     unsettled_.push_back(s);
     for (int ch : flows_[static_cast<std::size_t>(s)].route) perturb(ch, k);
   }
@@ -253,8 +257,8 @@ void MaxMinSolver::settle() {
     for (int j = l.first; j < l.first + l.count; ++j)
       flows_[static_cast<std::size_t>(next_members_[static_cast<std::size_t>(j)])].level = static_cast<int>(i);
   }
-  std::swap(levels_, next_levels_);
-  std::swap(members_, next_members_);
+  std::swap(group_->levels, next_levels_);
+  std::swap(group_->members, next_members_);
   for (int s : touched_) {
     Flow& f = flows_[static_cast<std::size_t>(s)];
     if (f.fresh || f.new_rate != f.rate) changed_.push_back(s);

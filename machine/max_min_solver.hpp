@@ -6,14 +6,14 @@
 // share order whatever the order of insertion), so a solve over all flows gives every flow the
 // same rate, bit for bit, as a solve over its connected component.
 //
-// Each start or end changes a few rates out of hundreds, so the solver keeps the levels of its
-// last solution (channel, share, flows fixed) and replays them: a channel whose state (capacity
-// left, flows without a rate) is the same as at the same point of the last solution needs no look,
-// since it offered no less than the level the last solution took there. Only the channels whose
-// state differs (the perturbed ones: on the changed flow's route, then on the routes of flows fixed
-// differently) are scanned. Levels whose channel is unperturbed are replayed as they were; the
-// others are dropped and their flows refilled. The result is what a full solve gives, bit for bit
-// (tests/machine/max_min_solver_test.cpp compares them).
+// Each start or end changes a few rates out of hundreds, so the solver keeps the levels of the last
+// solution of each group of linked flows (channel, share, flows fixed) and replays the changed
+// flow's group: a channel whose state (capacity left, flows without a rate) is the same as at the
+// same point of the last solution needs no look, since it offered no less than the level the last
+// solution took there. Only the channels whose state differs (the perturbed ones: on the changed
+// flow's route, then on the routes of flows fixed differently) are scanned. Levels whose channel is
+// unperturbed are replayed as they were; the others are dropped and their flows refilled. The
+// result is what a full solve gives, bit for bit (tests/machine/max_min_solver_test.cpp compares).
 #include <array>
 #include <climits>
 #include <cstdint>
@@ -49,6 +49,8 @@ class MaxMinSolver {
     double new_rate = 0;
     std::uint64_t crossed = 0;  // the solve whose perturbed channels `first_crossed` lists
     int first_crossed = -1;     // in crossings_: the perturbed channels it crosses
+    int group = -1;             // in groups_
+    int in_group = -1;          // its place in the group's flows
   };
   struct Level {
     int channel;
@@ -74,8 +76,23 @@ class MaxMinSolver {
   struct Crossing {
     int channel, next;
   };
+  // Flows linked through shared channels, directly or not, and the levels of their last solution
+  // (its flows level after level in `members`). A solve replays its own group's levels only. A start
+  // joins the groups its route touches; groups are not split when flows end (a solve over a union
+  // of components gives each the same rates), only dropped when empty.
+  struct Group {
+    std::vector<Level> levels;
+    std::vector<int> members;
+    std::vector<int> flows;  // all its started flows
+    std::uint64_t seen = 0;  // scratch of join()
+  };
 
-  void solve(const std::vector<int>& seed, int started, int finished);
+  // Groups (machine/max_min_groups.cpp).
+  int join(int slot);
+  void merge(int into, int from);
+  void leave(int slot);
+
+  void solve(int group, const std::vector<int>& seed, int started, int finished);
   // Most calls find the channel perturbed already: that check is inline, the work is not.
   void perturb(int ch, std::size_t k) {
     if (channels_[static_cast<std::size_t>(ch)].perturbed != solve_) perturb_now(ch, k);
@@ -96,9 +113,15 @@ class MaxMinSolver {
   std::size_t active_ = 0;
   std::vector<Channel> channels_;
 
-  // The last solution: levels in the order taken, and the flows each fixed.
-  std::vector<Level> levels_, next_levels_;
-  std::vector<int> members_, next_members_;
+  std::vector<Group> groups_;
+  std::vector<int> free_groups_;
+  std::uint64_t joins_ = 0;
+  std::vector<int> joined_;  // join's groups met
+
+  // The group being solved; the solve writes its new levels next to its last ones, then swaps.
+  Group* group_ = nullptr;
+  std::vector<Level> next_levels_;
+  std::vector<int> next_members_;
 
   // Scratch of a solve, kept so that a solve allocates nothing.
   std::uint64_t solve_ = 0;

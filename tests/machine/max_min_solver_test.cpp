@@ -48,8 +48,7 @@ std::map<int, double> full_solve(const std::map<int, std::vector<int>>& routes, 
 // Starts and finishes random flows over random channel sets (routes of a few channels out of a
 // few dozen, so that levels tie, cascade and split components) and checks every rate and the
 // changed list against a solve from scratch after each change.
-void check_random_run(unsigned seed, int channels, int max_route, int steps) {
-  const double capacity = 4 * 35e6 / 16;
+void check_random_run(unsigned seed, int channels, int max_route, int steps, double capacity = 4 * 35e6 / 16) {
   MaxMinSolver solver(channels, capacity);
   std::mt19937 rng(seed);
   std::map<int, std::vector<int>> routes;  // started flows by slot
@@ -60,7 +59,10 @@ void check_random_run(unsigned seed, int channels, int max_route, int steps) {
     if (add) {
       const int slot = solver.open();
       std::vector<int>& route = solver.route(slot);
-      const int len = 1 + static_cast<int>(rng() % static_cast<unsigned>(max_route));
+      // max_route < 0: short routes (small groups) and now and then a long one bridging groups.
+      const int len = max_route > 0 ? 1 + static_cast<int>(rng() % static_cast<unsigned>(max_route))
+                      : rng() % 6 == 0 ? 1 + static_cast<int>(rng() % static_cast<unsigned>(-max_route))
+                                       : 1 + static_cast<int>(rng() % 2);
       while (static_cast<int>(route.size()) < len) {
         const int ch = static_cast<int>(rng() % static_cast<unsigned>(channels));
         if (std::find(route.begin(), route.end(), ch) == route.end()) route.push_back(ch);
@@ -92,10 +94,20 @@ void check_random_run(unsigned seed, int channels, int max_route, int steps) {
 
 TEST(MaxMinSolver, MatchesAFullSolveBitForBitAfterEveryChange) {
   for (unsigned seed = 1; seed <= 40; ++seed) check_random_run(seed, 24, 6, 300);
+  for (unsigned seed = 41; seed <= 60; ++seed) check_random_run(seed, 24, 6, 300, 1e7 / 3);
 }
 
 TEST(MaxMinSolver, MatchesAFullSolveWithLongRoutesOverManyChannels) {
   for (unsigned seed = 100; seed <= 110; ++seed) check_random_run(seed, 200, 30, 400);
+}
+
+// Short routes over many channels: many groups, which starts join now and then (their levels
+// interleaved) and which stay joined when the flows linking them end.
+TEST(MaxMinSolver, MatchesAFullSolveAcrossManyGroups) {
+  for (unsigned seed = 200; seed <= 215; ++seed) check_random_run(seed, 300, 3, 500);
+  // A capacity no share of which is exact, so that any change in the order of subtractions shows.
+  for (unsigned seed = 300; seed <= 315; ++seed) check_random_run(seed, 300, 3, 500, 1e7 / 3);
+  for (unsigned seed = 400; seed <= 460; ++seed) check_random_run(seed, 60, -12, 300, 1e7 / 3);
 }
 
 // The rates depend on the set of flows only: started in opposite orders (so that the levels are

@@ -1,0 +1,102 @@
+// MaxMinSolver's groups: each keeps the levels of its flows' last solution, so that a solve replays
+// the levels of the flows it can affect and no others.
+#include <utility>
+
+#include "machine/max_min_solver.hpp"
+
+namespace gcsim::machine {
+
+// The group of a starting flow (already on its channels): the groups of the flows it shares a
+// channel with, merged into the one with the most levels, or a new group if it shares none.
+int MaxMinSolver::join(int slot) {
+  ++joins_;
+  joined_.clear();
+  for (int ch : flows_[static_cast<std::size_t>(slot)].route) {
+    const Channel& c = channels_[static_cast<std::size_t>(ch)];
+    for (int i = 0; i < c.count; ++i) {
+      const int s = c.flow(i);
+      if (s == slot) continue;
+      const int g = flows_[static_cast<std::size_t>(s)].group;
+      if (groups_[static_cast<std::size_t>(g)].seen == joins_) continue;
+      groups_[static_cast<std::size_t>(g)].seen = joins_;
+      joined_.push_back(g);
+    }
+  }
+  int into;
+  if (joined_.empty()) {
+    if (free_groups_.empty()) {
+      groups_.emplace_back();
+      into = static_cast<int>(groups_.size() - 1);
+    } else {
+      into = free_groups_.back();
+      free_groups_.pop_back();
+    }
+  } else {
+    into = joined_.front();
+    for (int g : joined_)
+      if (groups_[static_cast<std::size_t>(g)].levels.size() > groups_[static_cast<std::size_t>(into)].levels.size()) into = g;
+    for (int g : joined_)
+      if (g != into) merge(into, g);
+  }
+  Group& g = groups_[static_cast<std::size_t>(into)];
+  Flow& f = flows_[static_cast<std::size_t>(slot)];
+  f.group = into;
+  f.in_group = static_cast<int>(g.flows.size());
+  g.flows.push_back(slot);
+  return into;
+}
+
+// Group `from` joins `into`. Their flows shared no channel, so solved together their levels
+// interleave: each step takes the head that offers less (the lower channel on a tie), which is what
+// progressive filling over both would have chosen.
+void MaxMinSolver::merge(int into, int from) {
+  Group& a = groups_[static_cast<std::size_t>(into)];
+  Group& b = groups_[static_cast<std::size_t>(from)];
+  next_levels_.clear();
+  next_members_.clear();
+  std::size_t i = 0, j = 0;
+  while (i < a.levels.size() || j < b.levels.size()) {
+    const bool from_a = j == b.levels.size() ||
+                        (i < a.levels.size() && (a.levels[i].share < b.levels[j].share ||
+                                                 (a.levels[i].share == b.levels[j].share && a.levels[i].channel < b.levels[j].channel)));
+    const Group& g = from_a ? a : b;
+    const Level l = from_a ? a.levels[i++] : b.levels[j++];
+    const auto index = static_cast<int>(next_levels_.size());
+    next_levels_.push_back({l.channel, l.share, static_cast<int>(next_members_.size()), l.count});
+    for (int m = l.first; m < l.first + l.count; ++m) {
+      const int s = g.members[static_cast<std::size_t>(m)];
+      next_members_.push_back(s);
+      flows_[static_cast<std::size_t>(s)].level = index;
+    }
+  }
+  std::swap(a.levels, next_levels_);
+  std::swap(a.members, next_members_);
+  for (int s : b.flows) {
+    Flow& f = flows_[static_cast<std::size_t>(s)];
+    f.group = into;
+    f.in_group = static_cast<int>(a.flows.size());
+    a.flows.push_back(s);
+  }
+  b.levels.clear();
+  b.members.clear();
+  b.flows.clear();
+  free_groups_.push_back(from);
+}
+
+// A flow that ended (and was solved away) leaves its group; an empty group is free for reuse.
+void MaxMinSolver::leave(int slot) {
+  Flow& f = flows_[static_cast<std::size_t>(slot)];
+  Group& g = groups_[static_cast<std::size_t>(f.group)];
+  const int last = g.flows.back();
+  g.flows[static_cast<std::size_t>(f.in_group)] = last;
+  flows_[static_cast<std::size_t>(last)].in_group = f.in_group;
+  g.flows.pop_back();
+  if (g.flows.empty()) {
+    g.levels.clear();
+    g.members.clear();
+    free_groups_.push_back(f.group);
+  }
+  f.group = f.in_group = -1;
+}
+
+}  // namespace gcsim::machine
