@@ -80,6 +80,7 @@ void MaxMinSolver::merge(int into, int from) {
   b.levels.clear();
   b.members.clear();
   b.flows.clear();
+  b.ends = 0;
   free_groups_.push_back(from);
 }
 
@@ -91,12 +92,88 @@ void MaxMinSolver::leave(int slot) {
   g.flows[static_cast<std::size_t>(f.in_group)] = last;
   flows_[static_cast<std::size_t>(last)].in_group = f.in_group;
   g.flows.pop_back();
+  const int group = f.group;
+  f.group = f.in_group = -1;
   if (g.flows.empty()) {
     g.levels.clear();
     g.members.clear();
-    free_groups_.push_back(f.group);
+    g.ends = 0;
+    free_groups_.push_back(group);
+  } else if (++g.ends >= g.flows.size()) {
+    split(group);  // as often as the group's size allows, so that it costs a few steps per end
   }
-  f.group = f.in_group = -1;
+}
+
+// Labels the group's flows with their connected component (`part`, from 0); returns how many.
+int MaxMinSolver::mark_parts(const Group& g) {
+  ++splits_;
+  int parts = 0;
+  for (int first : g.flows) {
+    if (flows_[static_cast<std::size_t>(first)].marked == splits_) continue;
+    to_visit_.assign(1, first);
+    flows_[static_cast<std::size_t>(first)].marked = splits_;
+    while (!to_visit_.empty()) {
+      Flow& f = flows_[static_cast<std::size_t>(to_visit_.back())];
+      to_visit_.pop_back();
+      f.part = parts;
+      for (int ch : f.route) {
+        const Channel& c = channels_[static_cast<std::size_t>(ch)];
+        for (int i = 0; i < c.count; ++i) {
+          Flow& t = flows_[static_cast<std::size_t>(c.flow(i))];
+          if (t.marked == splits_) continue;
+          t.marked = splits_;
+          to_visit_.push_back(c.flow(i));
+        }
+      }
+    }
+    ++parts;
+  }
+  return parts;
+}
+
+// Gives each component of the group a group of its own: part 0 keeps it. A level's flows share its
+// channel, so each level goes whole to one part, in the order it had: filling that part alone would
+// take its levels in that order.
+void MaxMinSolver::split(int group) {
+  groups_[static_cast<std::size_t>(group)].ends = 0;
+  const int parts = mark_parts(groups_[static_cast<std::size_t>(group)]);
+  if (parts == 1) return;
+  parts_.assign(1, group);
+  for (int p = 1; p < parts; ++p) {
+    if (free_groups_.empty()) {
+      groups_.emplace_back();  // may move the groups: none is held across
+      parts_.push_back(static_cast<int>(groups_.size() - 1));
+    } else {
+      parts_.push_back(free_groups_.back());
+      free_groups_.pop_back();
+    }
+  }
+  Group& whole = groups_[static_cast<std::size_t>(group)];
+  std::swap(whole.levels, next_levels_);
+  std::swap(whole.members, next_members_);
+  whole.levels.clear();
+  whole.members.clear();
+  for (const Level& l : next_levels_) {
+    const int part = flows_[static_cast<std::size_t>(next_members_[static_cast<std::size_t>(l.first)])].part;
+    Group& g = groups_[static_cast<std::size_t>(parts_[static_cast<std::size_t>(part)])];
+    const auto index = static_cast<int>(g.levels.size());
+    g.levels.push_back({l.channel, l.share, static_cast<int>(g.members.size()), l.count});
+    for (int m = l.first; m < l.first + l.count; ++m) {
+      const int s = next_members_[static_cast<std::size_t>(m)];
+      g.members.push_back(s);
+      flows_[static_cast<std::size_t>(s)].level = index;
+    }
+  }
+  to_visit_.swap(whole.flows);  // the flows, to share out
+  whole.flows.clear();
+  for (int s : to_visit_) {
+    Flow& f = flows_[static_cast<std::size_t>(s)];
+    Group& g = groups_[static_cast<std::size_t>(parts_[static_cast<std::size_t>(f.part)])];
+    f.group = parts_[static_cast<std::size_t>(f.part)];
+    f.in_group = static_cast<int>(g.flows.size());
+    g.flows.push_back(s);
+  }
+  to_visit_.clear();
 }
 
 }  // namespace gcsim::machine

@@ -37,6 +37,8 @@ class MaxMinSolver {
   // The flows whose rate the last start or finish changed (the started one included), unordered.
   const std::vector<int>& changed() const { return changed_; }
   std::size_t active() const { return active_; }
+  // Groups with flows (for tests).
+  std::size_t groups() const { return groups_.size() - free_groups_.size(); }
 
  private:
   static constexpr int kNoLevel = INT_MAX;  // at the capacity of its own channels, or new
@@ -51,6 +53,8 @@ class MaxMinSolver {
     int first_crossed = -1;     // in crossings_: the perturbed channels it crosses
     int group = -1;             // in groups_
     int in_group = -1;          // its place in the group's flows
+    std::uint64_t marked = 0;   // the split that gave it `part`
+    int part = 0;
   };
   struct Level {
     int channel;
@@ -78,19 +82,23 @@ class MaxMinSolver {
   };
   // Flows linked through shared channels, directly or not, and the levels of their last solution
   // (its flows level after level in `members`). A solve replays its own group's levels only. A start
-  // joins the groups its route touches; groups are not split when flows end (a solve over a union
-  // of components gives each the same rates), only dropped when empty.
+  // joins the groups its route touches. An end may leave a group in several components, which a
+  // solve over the group handles alike (each gets the same rates): the group is split only now and
+  // then, once it has seen as many ends as it has flows.
   struct Group {
     std::vector<Level> levels;
     std::vector<int> members;
     std::vector<int> flows;  // all its started flows
     std::uint64_t seen = 0;  // scratch of join()
+    std::size_t ends = 0;    // since it was last split
   };
 
   // Groups (machine/max_min_groups.cpp).
   int join(int slot);
   void merge(int into, int from);
   void leave(int slot);
+  void split(int group);
+  int mark_parts(const Group& g);
 
   void solve(int group, const std::vector<int>& seed, int started, int finished);
   // Most calls find the channel perturbed already: that check is inline, the work is not.
@@ -117,6 +125,9 @@ class MaxMinSolver {
   std::vector<int> free_groups_;
   std::uint64_t joins_ = 0;
   std::vector<int> joined_;  // join's groups met
+  std::uint64_t splits_ = 0;
+  std::vector<int> parts_;    // split's scratch: the group of each part, and flows to visit
+  std::vector<int> to_visit_;
 
   // The group being solved; the solve writes its new levels next to its last ones, then swaps.
   Group* group_ = nullptr;

@@ -189,5 +189,38 @@ TEST(MaxMinSolver, DisjointFlowChangesNothingElse) {
   EXPECT_TRUE(s.changed().empty());
 }
 
+// Two pairs on channels 0 and 5 are two groups; a flow over both channels joins them. After it
+// ends the group is split again once it has seen as many ends as it has flows (four).
+TEST(MaxMinSolver, GroupsJoinThroughABridgeAndSplitAfterIt) {
+  MaxMinSolver s(10, 1.0);
+  auto start = [&](std::vector<int> route) {
+    const int slot = s.open();
+    s.route(slot) = std::move(route);
+    s.start(slot);
+    return slot;
+  };
+  const int x = start({0});
+  start({0});
+  const int y = start({5});
+  start({5});
+  EXPECT_EQ(s.groups(), 2u);
+  const int bridge = start({0, 5});
+  EXPECT_EQ(s.groups(), 1u);
+  EXPECT_EQ(s.rate(x), 1.0 / 3);
+  s.finish(bridge);
+  EXPECT_EQ(s.groups(), 1u);
+  for (int end = 2; end <= 4; ++end) {
+    s.finish(start({0}));
+    EXPECT_EQ(s.groups(), end < 4 ? 1u : 2u) << end;
+  }
+  EXPECT_EQ(s.rate(x), 0.5);
+  EXPECT_EQ(s.rate(y), 0.5);
+  // The split groups still solve like one: a new bridge gets a third on channel 0 (the lower of two
+  // equal shares, filled first), which leaves the two others on channel 5 (1 - 1/3) / 2 each.
+  start({0, 5});
+  EXPECT_EQ(s.rate(x), 1.0 / 3);
+  EXPECT_EQ(s.rate(y), (1.0 - 1.0 / 3) / 2);
+}
+
 }  // namespace
 }  // namespace gcsim::machine
