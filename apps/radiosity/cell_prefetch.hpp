@@ -18,21 +18,23 @@
 #include <utility>
 #include <vector>
 
+#include "apps/radiosity/cell_assignment.hpp"
 #include "apps/radiosity/hemicube.hpp"
 
 namespace gcsim::radiosity {
 
 class CellPrefetch {
  public:
-  // workers: host threads besides the simulation's (host threads - 1), at least 1.
-  explicit CellPrefetch(int workers);
+  // workers: host threads besides the simulation's (host threads - 1), at least 1; `assignment`:
+  // which cells each replica takes, so the workers compute them in the order they are asked for.
+  explicit CellPrefetch(int workers, CellAssignment assignment = CellAssignment::cyclic);
   ~CellPrefetch();  // the workers finish the cell in hand and stop
   CellPrefetch(const CellPrefetch&) = delete;
   CellPrefetch& operator=(const CellPrefetch&) = delete;
 
   // The form factors of `cell` for the projection `renderer` holds (project or use_projection
-  // first), in loop `step` of a run on `nodes` replicas where replica r takes cells r, r + nodes,
-  // ...; adds the cell's operations to `ops`. Every cell of a (step, shooter) must be taken once.
+  // first), in loop `step` of a run on `nodes` replicas where replica r takes cells_of(assignment,
+  // r, nodes, cells); adds the cell's operations to `ops`. Every cell of a (step, shooter) must be taken once.
   CellFormFactors take(HemicubeRenderer& renderer, const Scene& scene, int step, int cell, int nodes, OpCounts& ops);
 
   int workers() const { return int(threads_.size()); }
@@ -63,6 +65,7 @@ class CellPrefetch {
   std::pair<Cell*, int> claim(std::shared_ptr<const HemicubeProjection>& projection);
 
   const int worker_count_;
+  const CellAssignment assignment_;
   mutable std::mutex lock_;
   std::condition_variable work_ready_, cell_done_;
   std::map<Key, Batch> batches_;

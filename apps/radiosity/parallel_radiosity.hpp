@@ -42,6 +42,7 @@ struct ParallelOptions {
   bool aggregate = false;
   bool keep_links = false;      // reuse links between exchanges instead of connecting per message
   int hierarchical_levels = 3;  // for hemicube-hierarchical
+  CellAssignment cell_assignment = CellAssignment::cyclic;  // which cells each node computes
   std::vector<int> snapshot_loops;  // processor 0 keeps the radiosities after these loops
   std::function<void(int loop, double shot_fraction)> on_loop;  // processor 0 calls it after every loop (progress)
   // Computation sampling (projection_cache.hpp): the replicas of one simulated run share each

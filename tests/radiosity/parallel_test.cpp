@@ -17,6 +17,7 @@ struct Variant {
   parix::BcastAlgo bcast;
   bool aggregate;
   bool keep_links = false;
+  CellAssignment cells = CellAssignment::cyclic;
 };
 
 ParallelOutcome run(const Scene& scene, const ParallelOptions& o, int nodes, parix::RunResult* result = nullptr) {
@@ -37,6 +38,8 @@ TEST(ParallelRadiosity, EveryVariantEqualsSequentialOnEveryNodeCount) {
       {ParallelAlgorithm::patch, parix::BcastAlgo::tree, true},
       {ParallelAlgorithm::hemicube_hierarchical, parix::BcastAlgo::sequential, false},
       {ParallelAlgorithm::patch, parix::BcastAlgo::sequential, false},
+      {ParallelAlgorithm::hemicube_fixed, parix::BcastAlgo::sequential, false, false, CellAssignment::block},
+      {ParallelAlgorithm::hemicube_hierarchical, parix::BcastAlgo::tree, false, false, CellAssignment::block},
   };
   for (const Variant& v : variants) {
     // Every K for the thesis's variant; K = 2 (the thesis's) for the others, to keep the suite short.
@@ -51,6 +54,7 @@ TEST(ParallelRadiosity, EveryVariantEqualsSequentialOnEveryNodeCount) {
       o.bcast = v.bcast;
       o.aggregate = v.aggregate;
       o.keep_links = v.keep_links;
+      o.cell_assignment = v.cells;
       o.hierarchical_levels = 2;
       SolverOptions seq = o.solver;
       if (v.algorithm == ParallelAlgorithm::hemicube_hierarchical) seq.hemicube.hierarchical_levels = 2;
@@ -62,7 +66,8 @@ TEST(ParallelRadiosity, EveryVariantEqualsSequentialOnEveryNodeCount) {
           ASSERT_EQ(out.steps[s].shooters, reference.steps[s].shooters) << "step " << s;
         // Bit-identical, not merely close.
         ASSERT_EQ(out.element_radiosity, reference.state.element_radiosity())
-            << to_string(v.algorithm) << " K " << k << " nodes " << nodes << (v.aggregate ? " aggregated" : "");
+            << to_string(v.algorithm) << " K " << k << " nodes " << nodes << (v.aggregate ? " aggregated" : "")
+            << " cells " << to_string(v.cells);
       }
     }
   }

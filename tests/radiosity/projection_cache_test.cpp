@@ -55,9 +55,11 @@ struct Variant {
   ParallelAlgorithm algorithm;
   bool aggregate;
   int near_samples;
+  CellAssignment cells = CellAssignment::cyclic;
 };
 const Variant kVariants[] = {{ParallelAlgorithm::hemicube_fixed, false, 2}, {ParallelAlgorithm::hemicube_fixed, true, 1},
-                             {ParallelAlgorithm::hemicube_hierarchical, false, 2}, {ParallelAlgorithm::patch, false, 2}};
+                             {ParallelAlgorithm::hemicube_hierarchical, false, 2}, {ParallelAlgorithm::patch, false, 2},
+                             {ParallelAlgorithm::hemicube_fixed, false, 2, CellAssignment::block}};
 
 ParallelOptions small_options(const Variant& v) {
   ParallelOptions o;
@@ -67,6 +69,7 @@ ParallelOptions small_options(const Variant& v) {
   o.solver.energy = 0.95;
   o.algorithm = v.algorithm;
   o.aggregate = v.aggregate;
+  o.cell_assignment = v.cells;
   o.hierarchical_levels = 2;
   return o;
 }

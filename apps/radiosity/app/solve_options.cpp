@@ -59,6 +59,12 @@ void add_solve_options(CLI::App* cmd, SolveFlags& f) {
                   "Hemicube partition: T x T cells on the top face, T x T/2 per side face (even)")
       ->check(CLI::Range(2, 512))
       ->capture_default_str();
+  cmd->add_option("--cell-assignment", f.cell_assignment,
+                  "Which cells each node computes: cyclic (node r: cells r, r + N, ...; nearly even work) or block "
+                  "(one contiguous region of the hemicube per node, as the thesis's figure 4.1 draws it: the node "
+                  "whose region sees most of the scene sets the pace). Same radiosities either way")
+      ->check(CLI::IsMember({"cyclic", "block"}))
+      ->capture_default_str();
   cmd->add_option("--near-field-ratio", f.near_field_ratio,
                   "Near field: a shooter splits into n x n parts (each shooting its own hemicube of resolution / n) "
                   "until each part is at most this times its centre's distance to the nearest receiver. At the "
@@ -107,6 +113,7 @@ ParallelOptions parallel_options(const SolveFlags& f) {
   o.aggregate = f.aggregate;
   o.keep_links = f.keep_links;
   o.hierarchical_levels = f.levels;
+  o.cell_assignment = parse_cell_assignment(f.cell_assignment);
   // Fail early, with the reason, on an impossible hemicube / partition combination.
   HemicubeOptions check = o.solver.hemicube;
   if (o.algorithm == ParallelAlgorithm::hemicube_hierarchical) check.hierarchical_levels = f.levels;

@@ -20,6 +20,7 @@ struct SolveFlags {
   bool keep_links = false;
   int levels = 3;
   int cells = 8;
+  std::string cell_assignment = "cyclic";
   int near_field_samples = 2;   // HemicubeOptions::max_shooter_samples
   double near_field_ratio = 1.0;
   bool each_node_projects = false;  // ParallelOptions::share_projections off
