@@ -19,10 +19,11 @@ std::vector<std::string> split_list(const std::string& s, char sep) {
 
 namespace {
 
-// Leaves only the rows whose node counts are listed ("1+8").
-void keep_rows(MeasuredTable& t, const std::string& rows, const std::string& spec) {
-  std::vector<int> keep;
-  for (const auto& item : split_list(rows, '+')) {
+// Leaves only the listed rows and columns ("1+8", "CORNELL+PICROOM", "1+8+CORNELL"): a number is a
+// node count, a name a column; rows or columns not named at all are all kept.
+void keep_cells(MeasuredTable& t, const std::string& items, const std::string& spec) {
+  std::vector<int> rows, columns;
+  for (const auto& item : split_list(items, '+')) {
     int n = 0;
     try {
       std::size_t used = 0;
@@ -30,13 +31,23 @@ void keep_rows(MeasuredTable& t, const std::string& rows, const std::string& spe
       if (used != item.size()) n = 0;
     } catch (const std::exception&) {
     }
-    if (n < 1 || t.row_of(n) < 0)
-      throw std::invalid_argument(fmt::format("--fit {}: '{}' is not a node count of table {}", spec, item, t.id));
-    keep.push_back(n);
+    if (n >= 1 && t.row_of(n) >= 0) {
+      rows.push_back(t.row_of(n));
+    } else if (n < 1 && t.column_of(item) >= 0) {
+      columns.push_back(t.column_of(item));
+    } else {
+      std::string names;
+      for (const auto& c : t.columns) names += (names.empty() ? "" : ", ") + c;
+      throw std::invalid_argument(fmt::format("--fit {}: '{}' is neither a node count nor a column of table {} (columns: {})",
+                                              spec, item, t.id, names));
+    }
   }
+  auto kept = [](const std::vector<int>& named, int i) {
+    return named.empty() || std::find(named.begin(), named.end(), i) != named.end();
+  };
   for (std::size_t r = 0; r < t.nodes.size(); ++r)
-    if (std::find(keep.begin(), keep.end(), t.nodes[r]) == keep.end())
-      for (double& v : t.values[r]) v = kNotMeasured;
+    for (std::size_t k = 0; k < t.columns.size(); ++k)
+      if (!kept(rows, int(r)) || !kept(columns, int(k))) t.values[r][k] = kNotMeasured;
 }
 
 }  // namespace
@@ -53,7 +64,7 @@ MeasuredTable table_from_spec(const std::string& spec) {
   } else {
     t = thesis_table(source);
   }
-  if (!rows.empty()) keep_rows(t, rows, spec);
+  if (!rows.empty()) keep_cells(t, rows, spec);
   return t;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "apps/calibration/measured_table.hpp"
+#include "apps/radiosity/cell_assignment.hpp"
 #include "machine/machine_config.hpp"
 
 namespace gcsim::calibration {
@@ -19,6 +20,7 @@ struct PredictionSettings {
   int hemicube = 256;    // radiosity runs: hemicube resolution
   int shooters = 2;      //                 patches shot per loop (the thesis: 2)
   double energy = 0.999; //                 shot fraction at which a run stops (the thesis: 99.9%)
+  radiosity::CellAssignment cell_assignment = radiosity::CellAssignment::block;  // the thesis's figure 4.1
   int jobs = 1;          // simulations run side by side on this many host threads
 };
 

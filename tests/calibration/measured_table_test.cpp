@@ -5,6 +5,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 #include <fstream>
 
 namespace gcsim::calibration {
@@ -43,7 +46,27 @@ TEST(MeasuredTable, RowSelectionKeepsOnlyTheNamedNodeCounts) {
   for (const auto& row : t.values)
     for (double v : row) measured += !std::isnan(v);
   EXPECT_EQ(measured, 6);
-  EXPECT_NE(error_of([] { table_from_spec("4.3@5"); }).find("'5' is not a node count of table 4.3"), std::string::npos);
+  EXPECT_NE(error_of([] { table_from_spec("4.3@5"); }).find("'5' is neither a node count nor a column of table 4.3"),
+            std::string::npos);
+}
+
+TEST(MeasuredTable, ColumnSelectionKeepsOnlyTheNamedScenes) {
+  const MeasuredTable t = table_from_spec("4.3@1+8+cornell+PICROOM");
+  std::vector<std::pair<int, std::string>> kept;
+  for (std::size_t r = 0; r < t.nodes.size(); ++r)
+    for (std::size_t k = 0; k < t.columns.size(); ++k)
+      if (!std::isnan(t.values[r][k])) kept.emplace_back(t.nodes[r], t.columns[k]);
+  const std::vector<std::pair<int, std::string>> expected{{1, "PICROOM"}, {1, "CORNELL"}, {8, "PICROOM"}, {8, "CORNELL"}};
+  EXPECT_EQ(kept, expected);
+  EXPECT_DOUBLE_EQ(t.values[t.row_of(8)][t.column_of("CORNELL")], 144);
+  const MeasuredTable columns_only = table_from_spec("4.5@CORNELL");
+  int measured = 0;
+  for (const auto& row : columns_only.values) measured += !std::isnan(row[columns_only.column_of("CORNELL")]);
+  EXPECT_EQ(measured, 6);  // every node count of 4.5 kept
+  const std::string e = error_of([] { table_from_spec("4.3@KITCHEN"); });
+  EXPECT_NE(e.find("'KITCHEN' is neither a node count nor a column of table 4.3 (columns: ROOM, PICROOM, CORNELL)"),
+            std::string::npos)
+      << e;
 }
 
 TEST(MeasuredTable, UserCsvInATablesLayout) {

@@ -105,7 +105,7 @@ TEST_F(Inheritance, ShippedFilesEqualTheirOldFullCopies) {
   const std::string dir = GCSIM_SOURCE_DIR "/configs/";
   const MachineConfig gc = default_machine_config();
   // The mechanisms file changes only the connection model and the 8-node shape; the calibrated
-  // file inherits it and overrides only the three keys gcsim calibrate fitted.
+  // file inherits it and overrides only the five keys gcsim calibrate fitted.
   MachineConfig mechanisms = gc;
   mechanisms.connect_model = ConnectModel::servers;
   mechanisms.connect_block_width = mechanisms.connect_block_height = 4;
@@ -116,8 +116,9 @@ TEST_F(Inheritance, ShippedFilesEqualTheirOldFullCopies) {
   fitted.connect_base = calibrated.connect_base;
   fitted.connect_per_hop = calibrated.connect_per_hop;
   fitted.link_bandwidth = calibrated.link_bandwidth;
+  for (const char* op : {"polygon_project", "hemicube_pixel"}) fitted.cycles_per_op[op] = calibrated.cycles_per_op.at(op);
   expect_same_machine(calibrated, fitted);
-  EXPECT_EQ(calibrated.calibrated_on, std::vector<std::string>{"4.6"});
+  EXPECT_EQ(calibrated.calibrated_on, (std::vector<std::string>{"4.6", "4.3@1+8+CORNELL+PICROOM"}));
   MachineConfig big = gc;
   big.nodes = 1024;
   big.mesh_width = big.mesh_height = 32;

@@ -34,6 +34,7 @@ struct PredictFlags {
   std::string model;
   int hemicube = 256;
   double energy = 0.999;
+  std::string cell_assignment = "block";
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 };
 
@@ -46,6 +47,12 @@ void add_predict_options(CLI::App* cmd, PredictFlags& f) {
   cmd->add_option("--energy", f.energy, "Radiosity tables: shot fraction at which a run stops (the thesis: 0.999)")
       ->check(CLI::Range(0.5, 0.99999))
       ->capture_default_str();
+  cmd->add_option("--cell-assignment", f.cell_assignment,
+                  "Radiosity tables: which hemicube cells each node computes: block (one region of the hemicube per "
+                  "node, as the thesis's figure 4.1 draws it; fitted on 4.6 and 4.3@1+8 it predicts the other "
+                  "radiosity cells better than cyclic: README, Calibration) or cyclic (`gcsim run radiosity`'s default)")
+      ->check(CLI::IsMember({"cyclic", "block"}))
+      ->capture_default_str();
   cmd->add_option("--jobs", f.jobs, "Simulations run side by side on this many host threads")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
@@ -56,6 +63,7 @@ cal::PredictionSettings settings(const PredictFlags& f) {
   s.model = f.model;
   s.hemicube = f.hemicube;
   s.energy = f.energy;
+  s.cell_assignment = radiosity::parse_cell_assignment(f.cell_assignment);
   s.jobs = f.jobs;
   return s;
 }
@@ -113,7 +121,8 @@ void add_calibrate(CommandGroups& g) {
       "the fitted keys. Then `gcsim validate --config OUT` predicts the tables that were not fitted.");
   cmd->add_option("--fit", f->fit,
                   "Tables to fit, comma-separated: 4.6, 4.7, 4.3, 4.4, 4.5, 4.8 (the thesis's, built in); "
-                  "TABLE@N+N keeps those node counts only (4.3@1: the 1-node figures); PATH.csv:TABLE is your "
+                  "TABLE@N+N keeps those node counts only (4.3@1: the 1-node figures), TABLE@NAME+NAME those columns "
+                  "(4.3@1+8+CORNELL+PICROOM: two rows of two scenes); PATH.csv:TABLE is your "
                   "own figures in that table's layout (header nodes,<its columns>)")
       ->required();
   cmd->add_option("--free", f->free, "Keys to fit, comma-separated, as table.key: network.connect_base_us, ops.polygon_project, ...")
@@ -126,8 +135,10 @@ void add_calibrate(CommandGroups& g) {
   add_predict_options(cmd, f->predict);
   cmd->footer(
       "\n\nExample (the shipped configs/gc-powerplus-calibrated.toml):\n"
-      "  gcsim calibrate --fit 4.6 --free network.connect_base_us,network.connect_per_hop_us,"
-      "network.link_bandwidth_mbps \\\n      --config configs/gc-powerplus.toml --out configs/gc-powerplus-calibrated.toml");
+      "  cd configs && gcsim calibrate --fit 4.6,4.3@1+8+CORNELL+PICROOM \\\n"
+      "      --free network.connect_base_us,network.connect_per_hop_us,network.link_bandwidth_mbps,"
+      "ops.polygon_project,ops.hemicube_pixel \\\n"
+      "      --config gc-powerplus-mechanisms.toml --out gc-powerplus-calibrated.toml");
   cmd->callback([f] {
     for (const auto& [path, option] : {std::pair{f->out, "--out"}, {f->json, "--json"}, {f->csv, "--csv"}})
       pipeline::check_writable(path, option);  // before the fit's many runs
