@@ -25,7 +25,6 @@ void SimProcess::block(const char* call, int peer) {
   blocked_peer = peer;
   blocked_since = sim_.kernel.now();
   asleep = true;
-  --sim_.runnable;
   fiber.suspend();
   blocked_call = nullptr;
   if (sim_.cancelling && std::uncaught_exceptions() == 0) throw Cancelled{};
@@ -34,7 +33,6 @@ void SimProcess::block(const char* call, int peer) {
 void SimProcess::wake() {
   if (!asleep) return;
   asleep = false;
-  ++sim_.runnable;
   fiber.resume();
 }
 

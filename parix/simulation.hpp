@@ -152,7 +152,6 @@ class Simulation {
   // Starts p's fiber; throws, with nothing started, if no fiber stack can be mapped.
   void launch(SimProcess* p, std::function<void(Processor&)> body) {
     fibers.launch(p->fiber, [this, p, body = std::move(body)] {
-      p->fiber.bind_to_current();
       try {
         if (!cancelling) body(*p);  // a run abandoned before this fiber first ran skips it
       } catch (const Cancelled&) {
@@ -162,7 +161,6 @@ class Simulation {
       p->drop_persistent_links();
       finish(p);
     });
-    ++runnable;
     ++live;
   }
 
@@ -171,7 +169,6 @@ class Simulation {
     auto& s = stats[p->id()];
     s.finish = std::max(s.finish, kernel.now());
     if (p->joiner) p->joiner->wake();
-    --runnable;
     --live;
   }
 
@@ -246,7 +243,6 @@ class Simulation {
   };
   ConnectionMatcher<PendingConnect> connect_matcher;
   std::int64_t next_message = 0;
-  int runnable = 0;
   int live = 0;
   bool cancelling = false;
   std::exception_ptr failure;
