@@ -40,21 +40,29 @@ void Kernel::at(SimTime t, Action&& a) {
 bool Kernel::step() {
   if (heap_.empty()) return false;
   const Key top = heap_.front();
-  // Sift the last key down from the root.
   const Key last = heap_.back();
   heap_.pop_back();
   const std::size_t n = heap_.size();
   if (n > 0) {
+    // Floyd's pop: the hole at the root sinks along the earlier child to a leaf (one comparison a
+    // level, not two), then `last` climbs from there; being late, it rarely climbs far. Keys are
+    // unique, so the order of pops is the same as for any heap.
+    Key* h = heap_.data();
     std::size_t i = 0;
-    for (;;) {
-      std::size_t child = 2 * i + 1;
-      if (child >= n) break;
-      if (child + 1 < n && heap_[child + 1] < heap_[child]) ++child;
-      if (!(heap_[child] < last)) break;
-      heap_[i] = heap_[child];
+    std::size_t child = 1;
+    for (; child + 1 < n; child = 2 * i + 1) {
+      child += h[child + 1] < h[child];
+      h[i] = h[child];
       i = child;
     }
-    heap_[i] = last;
+    if (child < n) h[i] = h[child], i = child;  // a last, only child
+    while (i > 0) {
+      const std::size_t parent = (i - 1) / 2;
+      if (!(last < h[parent])) break;
+      h[i] = h[parent];
+      i = parent;
+    }
+    h[i] = last;
   }
   now_ = top.time;
   ++processed_;

@@ -39,7 +39,12 @@ class Kernel {
     SimTime time;
     std::uint64_t seq;
     std::uint32_t slot;
-    bool operator<(const Key& o) const { return time != o.time ? time < o.time : seq < o.seq; }
+    // One 128-bit comparison of (time, seq), without a branch; times are never negative (at()
+    // refuses the past and the clock starts at 0), so they order the same as unsigned.
+    bool operator<(const Key& o) const {
+      using U = unsigned __int128;
+      return (U(static_cast<std::uint64_t>(time)) << 64 | seq) < (U(static_cast<std::uint64_t>(o.time)) << 64 | o.seq);
+    }
   };
   static constexpr std::uint32_t kChunkBits = 10;
   static constexpr std::uint32_t kChunk = 1u << kChunkBits;
