@@ -143,6 +143,7 @@ class Simulation {
     }
     stats.resize(config.nodes);
     node_of = checked_placement(o.placement, config.nodes);
+    for (int p = 0; p < config.nodes; ++p) memory_of.push_back(&nodes[node_of[p]].memory());
   }
 
   RunResult run(const std::function<void(Processor&)>& program);
@@ -172,7 +173,8 @@ class Simulation {
     --live;
   }
 
-  void deliver(Message&& m);
+  // The message in `slot` arrived: delivered in place (no copy of it), then the slot is free.
+  void deliver(std::int64_t slot);
   // Messages in the network wait in a slab, so callbacks can refer to them by index.
   std::int64_t park(Message&& m) {
     if (free_slots.empty()) {
@@ -184,11 +186,6 @@ class Simulation {
     in_flight[slot] = std::move(m);
     return slot;
   }
-  Message unpark(std::int64_t slot) {
-    Message m = std::move(in_flight[slot]);
-    free_slots.push_back(slot);
-    return m;
-  }
   void accept(LinkEnd& e, Message&& m);
   // Declares memory on the node of `processor` (negative: releases). Returns "" when granted,
   // else the out-of-memory report to raise; the first overrun of a run that only warns is kept
@@ -198,13 +195,13 @@ class Simulation {
   // The same by handle without building a report, the form the runtime uses on every message:
   // true when granted; when refused, refusal() is the report. Inline: it runs twice per message.
   bool declare_memory(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
-    machine::NodeMemory& memory = nodes[node_of[processor]].memory();
+    machine::NodeMemory& memory = *memory_of[processor];
     if (!memory.use(bytes, kind)) return false;
     if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, memory.kind_name(kind));
     return true;
   }
   std::string refusal(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) const {
-    const machine::NodeMemory& memory = nodes[node_of[processor]].memory();
+    const machine::NodeMemory& memory = *memory_of[processor];
     return memory.report(processor, bytes, memory.kind_name(kind));
   }
   void complete(const std::shared_ptr<RequestState>& r) { r->complete(); }
@@ -215,7 +212,11 @@ class Simulation {
   BlockPool request_blocks;  // first member: outlives every request the others hold
   PayloadPool payloads;      // messages' storage, recycled (parix/payload_pool.hpp)
   machine::MachineConfig config;
+  // Whether [comm_cpu] charges anything: asked on every send and receive.
+  const bool charges_comm_cpu = config.comm_cpu.any();
   std::vector<int> node_of;  // processor -> node (SimulationOptions::placement)
+  // processor -> its node's memory: what every message declares to, without the deque's lookup.
+  std::vector<machine::NodeMemory*> memory_of;
   machine::Kernel kernel;
   machine::Mesh mesh;
   machine::TraceWriter trace;
