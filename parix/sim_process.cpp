@@ -182,7 +182,10 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   if (bytes > 0) {
     if (!sim_.declare_memory(id_, bytes, sim_.in_flight_kind)) throw OutOfMemoryError(sim_.refusal(id_, bytes, sim_.in_flight_kind));
   }
-  Message m;
+  // Built in its slot; the arrival callback captures only (simulation, slot), small enough for
+  // the kernel to store inline, which keeps the per-message cost free of extra allocations.
+  const std::int64_t slot = sim_.take_slot();
+  Message& m = sim_.in_flight[slot];
   m.data = sim_.payloads.copy(data);
   m.send = req;
   m.synchronous = synchronous;
@@ -190,15 +193,11 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   m.link_seq = e.sent++;
   m.src = id_;
   m.sent = sim_.kernel.now();
+  m.dst_end = e.peer_end;
   auto& s = sim_.stats[id_];
   ++s.messages_sent;
-  s.bytes_sent += static_cast<std::int64_t>(data.size());
-  m.dst_end = e.peer_end;
-  // The arrival callback captures only (simulation, slot): small enough for std::function to
-  // store inline, which keeps the per-message cost free of extra allocations.
-  const std::int64_t slot = sim_.park(std::move(m));
-  sim_.network->transfer(sim_.node_of[id_], sim_.node_of[e.peer], static_cast<std::int64_t>(data.size()),
-                         [sim = &sim_, slot] { sim->deliver(slot); });
+  s.bytes_sent += bytes;
+  sim_.network->transfer(sim_.node_of[id_], sim_.node_of[e.peer], bytes, [sim = &sim_, slot] { sim->deliver(slot); });
   return Request(std::move(req));
 }
 
@@ -271,7 +270,7 @@ Request SimProcess::irecv(Link& link) {
   } else {
     e.receives.push_back(req);
   }
-  return Request(req);
+  return Request(std::move(req));
 }
 
 Bytes SimProcess::recv(Link& link) {

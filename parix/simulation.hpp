@@ -175,15 +175,16 @@ class Simulation {
 
   // The message in `slot` arrived: delivered in place (no copy of it), then the slot is free.
   void deliver(std::int64_t slot);
-  // Messages in the network wait in a slab, so callbacks can refer to them by index.
-  std::int64_t park(Message&& m) {
+  // Messages in the network wait in a slab, so callbacks can refer to them by index. A free slot
+  // for the next one, which the caller fills in place: its payload is empty and its request null
+  // (moved on or reset by deliver).
+  std::int64_t take_slot() {
     if (free_slots.empty()) {
-      in_flight.push_back(std::move(m));
+      in_flight.emplace_back();
       return static_cast<std::int64_t>(in_flight.size()) - 1;
     }
     const std::int64_t slot = free_slots.back();
     free_slots.pop_back();
-    in_flight[slot] = std::move(m);
     return slot;
   }
   void accept(LinkEnd& e, Message&& m);
