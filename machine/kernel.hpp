@@ -46,10 +46,18 @@ class Kernel {
       return (U(static_cast<std::uint64_t>(time)) << 64 | seq) < (U(static_cast<std::uint64_t>(o.time)) << 64 | o.seq);
     }
   };
+  static constexpr std::size_t kArity = 4;  // children per heap node
   static constexpr std::uint32_t kChunkBits = 10;
   static constexpr std::uint32_t kChunk = 1u << kChunkBits;
   Action& action(std::uint32_t slot) { return chunks_[slot >> kChunkBits][slot & (kChunk - 1)]; }
-  std::uint32_t take_slot();
+  // Inline, as at() runs once per event; growing the pool is out of line.
+  std::uint32_t take_slot() {
+    if (free_slots_.empty()) add_chunk();
+    const std::uint32_t slot = free_slots_.back();
+    free_slots_.pop_back();
+    return slot;
+  }
+  void add_chunk();
 
   std::vector<Key> heap_;  // min-heap on (time, seq)
   // Chunks never move, so an action runs in place even if it schedules more events.
