@@ -1,7 +1,7 @@
 #pragma once
 // The discrete-event kernel: a clock and a queue of actions ordered by (time, sequence number).
 // Ties at equal times run in the order they were scheduled, so a run is deterministic.
-// The queue is a binary heap of small (time, sequence, slot) keys; the actions themselves stay
+// The queue is a 4-ary heap of small (time, sequence, slot) keys; the actions themselves stay
 // in place in a pool of fixed-size chunks whose slots are reused, so scheduling an event
 // allocates nothing once the pool has grown to the run's peak number of pending events.
 #include <cstdint>
