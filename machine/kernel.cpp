@@ -1,20 +1,16 @@
 #include "machine/kernel.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
 namespace gcsim::machine {
 
-std::uint32_t Kernel::take_slot() {
-  if (free_slots_.empty()) {
-    const auto first = static_cast<std::uint32_t>(chunks_.size() * kChunk);
-    chunks_.push_back(std::make_unique<Action[]>(kChunk));
-    free_slots_.reserve(free_slots_.size() + kChunk);
-    for (std::uint32_t i = kChunk; i-- > 0;) free_slots_.push_back(first + i);
-  }
-  const std::uint32_t slot = free_slots_.back();
-  free_slots_.pop_back();
-  return slot;
+void Kernel::add_chunk() {
+  const auto first = static_cast<std::uint32_t>(chunks_.size() * kChunk);
+  chunks_.push_back(std::make_unique<Action[]>(kChunk));
+  free_slots_.reserve(free_slots_.size() + kChunk);
+  for (std::uint32_t i = kChunk; i-- > 0;) free_slots_.push_back(first + i);
 }
 
 void Kernel::at(SimTime t, Action&& a) {
@@ -29,7 +25,7 @@ void Kernel::at(SimTime t, Action&& a) {
   std::size_t i = heap_.size();
   heap_.push_back(key);
   while (i > 0) {
-    const std::size_t parent = (i - 1) / 2;
+    const std::size_t parent = (i - 1) / kArity;
     if (!(key < heap_[parent])) break;
     heap_[i] = heap_[parent];
     i = parent;
@@ -40,21 +36,34 @@ void Kernel::at(SimTime t, Action&& a) {
 bool Kernel::step() {
   if (heap_.empty()) return false;
   const Key top = heap_.front();
-  // Sift the last key down from the root.
   const Key last = heap_.back();
   heap_.pop_back();
   const std::size_t n = heap_.size();
   if (n > 0) {
+    // Floyd's pop on a 4-ary heap (half the levels of a binary one): the hole at the root sinks
+    // along the earliest child to a leaf, then `last` climbs from there; being late, it rarely
+    // climbs far. Keys are unique, so the order of pops is the same as for any heap.
+    Key* h = heap_.data();
     std::size_t i = 0;
-    for (;;) {
-      std::size_t child = 2 * i + 1;
-      if (child >= n) break;
-      if (child + 1 < n && heap_[child + 1] < heap_[child]) ++child;
-      if (!(heap_[child] < last)) break;
-      heap_[i] = heap_[child];
-      i = child;
+    for (std::size_t first = 1; first < n; first = kArity * i + 1) {
+      std::size_t best = first;
+      if (first + 3 < n) {  // all four children: a tournament of three comparisons
+        const std::size_t a = first + (h[first + 1] < h[first]);
+        const std::size_t b = first + 2 + (h[first + 3] < h[first + 2]);
+        best = h[b] < h[a] ? b : a;
+      } else {
+        for (std::size_t c = first + 1; c < n; ++c) best = h[c] < h[best] ? c : best;
+      }
+      h[i] = h[best];
+      i = best;
     }
-    heap_[i] = last;
+    while (i > 0) {
+      const std::size_t parent = (i - 1) / kArity;
+      if (!(last < h[parent])) break;
+      h[i] = h[parent];
+      i = parent;
+    }
+    h[i] = last;
   }
   now_ = top.time;
   ++processed_;

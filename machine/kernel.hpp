@@ -1,7 +1,7 @@
 #pragma once
 // The discrete-event kernel: a clock and a queue of actions ordered by (time, sequence number).
 // Ties at equal times run in the order they were scheduled, so a run is deterministic.
-// The queue is a binary heap of small (time, sequence, slot) keys; the actions themselves stay
+// The queue is a 4-ary heap of small (time, sequence, slot) keys; the actions themselves stay
 // in place in a pool of fixed-size chunks whose slots are reused, so scheduling an event
 // allocates nothing once the pool has grown to the run's peak number of pending events.
 #include <cstdint>
@@ -39,12 +39,25 @@ class Kernel {
     SimTime time;
     std::uint64_t seq;
     std::uint32_t slot;
-    bool operator<(const Key& o) const { return time != o.time ? time < o.time : seq < o.seq; }
+    // One 128-bit comparison of (time, seq), without a branch; times are never negative (at()
+    // refuses the past and the clock starts at 0), so they order the same as unsigned.
+    bool operator<(const Key& o) const {
+      using U = unsigned __int128;
+      return (U(static_cast<std::uint64_t>(time)) << 64 | seq) < (U(static_cast<std::uint64_t>(o.time)) << 64 | o.seq);
+    }
   };
+  static constexpr std::size_t kArity = 4;  // children per heap node
   static constexpr std::uint32_t kChunkBits = 10;
   static constexpr std::uint32_t kChunk = 1u << kChunkBits;
   Action& action(std::uint32_t slot) { return chunks_[slot >> kChunkBits][slot & (kChunk - 1)]; }
-  std::uint32_t take_slot();
+  // Inline, as at() runs once per event; growing the pool is out of line.
+  std::uint32_t take_slot() {
+    if (free_slots_.empty()) add_chunk();
+    const std::uint32_t slot = free_slots_.back();
+    free_slots_.pop_back();
+    return slot;
+  }
+  void add_chunk();
 
   std::vector<Key> heap_;  // min-heap on (time, seq)
   // Chunks never move, so an action runs in place even if it schedules more events.

@@ -93,17 +93,17 @@ class FiberStackPool {
   std::unordered_map<void*, unsigned> valgrind_ids_;  // stack top -> id, only under valgrind
 };
 
-// The allocator handed to Boost.Fiber: a share of the pool. Boost keeps a copy in each fiber's
-// record and releases terminated fibers lazily (at its scheduler's next dispatch), so the pool
-// lives until the last stack is back, whenever that is.
+// The stack allocator handed to Boost.Context: a view of the pool. Boost keeps a copy in each
+// fiber's record and gives the stack back as the fiber returns, so the pool (FiberPool's first
+// member) outlives every stack.
 class FiberStack {
  public:
-  explicit FiberStack(std::shared_ptr<FiberStackPool> pool) : pool_(std::move(pool)) {}
+  explicit FiberStack(FiberStackPool* pool) : pool_(pool) {}
   boost::context::stack_context allocate() { return pool_->allocate(); }
   void deallocate(boost::context::stack_context& s) noexcept { pool_->deallocate(s); }
 
  private:
-  std::shared_ptr<FiberStackPool> pool_;
+  FiberStackPool* pool_;
 };
 
 }  // namespace gcsim::parix

@@ -25,7 +25,6 @@ void SimProcess::block(const char* call, int peer) {
   blocked_peer = peer;
   blocked_since = sim_.kernel.now();
   asleep = true;
-  --sim_.runnable;
   fiber.suspend();
   blocked_call = nullptr;
   if (sim_.cancelling && std::uncaught_exceptions() == 0) throw Cancelled{};
@@ -34,7 +33,6 @@ void SimProcess::block(const char* call, int peer) {
 void SimProcess::wake() {
   if (!asleep) return;
   asleep = false;
-  ++sim_.runnable;
   fiber.resume();
 }
 
@@ -80,8 +78,8 @@ bool SimProcess::occupy_cpu(machine::SimTime duration, std::string_view label) {
 }
 
 bool SimProcess::charge_comm_cpu(machine::SimTime fixed, std::int64_t bytes, std::string_view label) {
+  if (!sim_.charges_comm_cpu) return true;  // the published machine: no arithmetic, no event
   const machine::MachineConfig::CommCpu& cc = sim_.config.comm_cpu;
-  if (!cc.any()) return true;  // the published machine: no arithmetic, no event
   const machine::SimTime d = fixed + machine::from_seconds(cc.seconds_per_byte * static_cast<double>(bytes));
   if (d == 0) return true;  // no event at all, so timings stay as they were
   const machine::SimTime start = sim_.kernel.now();
@@ -147,16 +145,25 @@ Link SimProcess::connect(int peer, int tag) {
 
 void SimProcess::close_link(std::int64_t handle) { sim_.links.close(handle); }
 
-LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
+namespace {
+
+// Why `link` is not processor's to use; out of line, so that the check on every send and receive
+// inlines to a few instructions.
+[[noreturn, gnu::noinline, gnu::cold]] void throw_bad_link(int processor, const char* call, const LinkEnd* found) {
+  if (!found) throw ParixError(fmt::format("processor {}: {} on a link that is not open", processor, call));
+  throw ParixError(fmt::format("processor {}: {} on a link owned by processor {}", processor, call, found->owner));
+}
+
+}  // namespace
+
+inline LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
   LinkEnd* found = link.valid() ? sim_.links.find(link.handle()) : nullptr;
-  if (!found) throw ParixError(fmt::format("processor {}: {} on a link that is not open", id_, call));
-  LinkEnd& e = *found;
-  if (e.owner != id_) throw ParixError(fmt::format("processor {}: {} on a link owned by processor {}", id_, call, e.owner));
-  return e;
+  if (!found || found->owner != id_) [[unlikely]] throw_bad_link(id_, call, found);
+  return *found;
 }
 
 Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool synchronous) {
-  if (sim_.config.comm_cpu.any()) {
+  if (sim_.charges_comm_cpu) {
     end_of(link, "send");  // checked before the CPU is spent on it
     // The CPU hands the message to the communication processors before it travels (copying it).
     if (!charge_comm_cpu(sim_.config.comm_cpu.send, static_cast<std::int64_t>(data.size()), "send_cpu")) {
@@ -175,7 +182,10 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   if (bytes > 0) {
     if (!sim_.declare_memory(id_, bytes, sim_.in_flight_kind)) throw OutOfMemoryError(sim_.refusal(id_, bytes, sim_.in_flight_kind));
   }
-  Message m;
+  // Built in its slot; the arrival callback captures only (simulation, slot), small enough for
+  // the kernel to store inline, which keeps the per-message cost free of extra allocations.
+  const std::int64_t slot = sim_.take_slot();
+  Message& m = sim_.in_flight[slot];
   m.data = sim_.payloads.copy(data);
   m.send = req;
   m.synchronous = synchronous;
@@ -183,24 +193,25 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   m.link_seq = e.sent++;
   m.src = id_;
   m.sent = sim_.kernel.now();
+  m.dst_end = e.peer_end;
   auto& s = sim_.stats[id_];
   ++s.messages_sent;
-  s.bytes_sent += static_cast<std::int64_t>(data.size());
-  m.dst_end = e.peer_end;
-  // The arrival callback captures only (simulation, slot): small enough for std::function to
-  // store inline, which keeps the per-message cost free of extra allocations.
-  const std::int64_t slot = sim_.park(std::move(m));
-  sim_.network->transfer(sim_.node_of[id_], sim_.node_of[e.peer], static_cast<std::int64_t>(data.size()),
-                         [sim = &sim_, slot] { sim->deliver(sim->unpark(slot)); });
+  s.bytes_sent += bytes;
+  sim_.network->transfer(sim_.node_of[id_], sim_.node_of[e.peer], bytes, [sim = &sim_, slot] { sim->deliver(slot); });
   return Request(std::move(req));
 }
 
-void Simulation::deliver(Message&& m) {
+void Simulation::deliver(std::int64_t slot) {
+  Message& m = in_flight[slot];  // stays put: nothing parks a message during a delivery
   if (!m.data.empty()) declare_memory(m.src, -static_cast<std::int64_t>(m.data.size()), in_flight_kind);  // releasing never fails
   const std::int64_t end = m.dst_end;  // its pair is not reused while a message travels to it
   LinkEnd& e = links.at(end);
   const std::int64_t seq = m.link_seq;
   e.order.arrive(seq, std::move(m), [this, &e](Message&& next) { accept(e, std::move(next)); });
+  // Its payload went on (to a receive, the link's queue, the held messages or the pool); the
+  // request it keeps alive must not wait for the slot's reuse.
+  m.send.reset();
+  free_slots.push_back(slot);
   if (!e.open) links.release_if_done(end);  // the last message to a closed link may free it
 }
 
@@ -259,7 +270,7 @@ Request SimProcess::irecv(Link& link) {
   } else {
     e.receives.push_back(req);
   }
-  return Request(req);
+  return Request(std::move(req));
 }
 
 Bytes SimProcess::recv(Link& link) {
@@ -287,7 +298,7 @@ void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {
 }
 
 void SimProcess::charge_receive_cpu(RequestState& r) {
-  if (!r.is_receive || r.cpu_charged) return;
+  if (!sim_.charges_comm_cpu || !r.is_receive || r.cpu_charged) return;  // the first test: per message
   r.cpu_charged = true;
   charge_comm_cpu(sim_.config.comm_cpu.recv, static_cast<std::int64_t>(r.data.size()), "recv_cpu");
 }

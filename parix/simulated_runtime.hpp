@@ -1,5 +1,5 @@
 #pragma once
-// Runs an SPMD program on the simulated machine: each virtual processor is a Boost.Fiber whose
+// Runs an SPMD program on the simulated machine: each virtual processor is a fiber (Boost.Context) whose
 // blocking calls become events on the discrete-event kernel.
 #include <functional>
 #include <stdexcept>

@@ -58,7 +58,7 @@ RunResult Simulation::run(const std::function<void(Processor&)>& program) {
   bool deadlock = false;
   bool interrupted = false;
   for (;;) {
-    while (runnable > 0) FiberPool::yield();  // let every woken fiber run until it blocks
+    fibers.run_ready();  // every woken fiber runs until it blocks or returns
     if (failure || live == 0) break;
     if (interruption_requested()) {  // SIGINT/SIGTERM (parix/interruption.hpp): one relaxed load per event
       interrupted = true;
@@ -75,7 +75,7 @@ RunResult Simulation::run(const std::function<void(Processor&)>& program) {
     // Unwind every blocked fiber so that their stacks are released cleanly.
     cancelling = true;
     for (auto& p : processes) p->wake();
-    while (live > 0) FiberPool::yield();
+    fibers.run_ready();
   } else {
     kernel.run();  // messages still in flight after the last processor returned
   }

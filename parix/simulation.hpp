@@ -143,6 +143,7 @@ class Simulation {
     }
     stats.resize(config.nodes);
     node_of = checked_placement(o.placement, config.nodes);
+    for (int p = 0; p < config.nodes; ++p) memory_of.push_back(&nodes[node_of[p]].memory());
   }
 
   RunResult run(const std::function<void(Processor&)>& program);
@@ -152,7 +153,6 @@ class Simulation {
   // Starts p's fiber; throws, with nothing started, if no fiber stack can be mapped.
   void launch(SimProcess* p, std::function<void(Processor&)> body) {
     fibers.launch(p->fiber, [this, p, body = std::move(body)] {
-      p->fiber.bind_to_current();
       try {
         if (!cancelling) body(*p);  // a run abandoned before this fiber first ran skips it
       } catch (const Cancelled&) {
@@ -162,7 +162,6 @@ class Simulation {
       p->drop_persistent_links();
       finish(p);
     });
-    ++runnable;
     ++live;
   }
 
@@ -171,26 +170,22 @@ class Simulation {
     auto& s = stats[p->id()];
     s.finish = std::max(s.finish, kernel.now());
     if (p->joiner) p->joiner->wake();
-    --runnable;
     --live;
   }
 
-  void deliver(Message&& m);
-  // Messages in the network wait in a slab, so callbacks can refer to them by index.
-  std::int64_t park(Message&& m) {
+  // The message in `slot` arrived: delivered in place (no copy of it), then the slot is free.
+  void deliver(std::int64_t slot);
+  // Messages in the network wait in a slab, so callbacks can refer to them by index. A free slot
+  // for the next one, which the caller fills in place: its payload is empty and its request null
+  // (moved on or reset by deliver).
+  std::int64_t take_slot() {
     if (free_slots.empty()) {
-      in_flight.push_back(std::move(m));
+      in_flight.emplace_back();
       return static_cast<std::int64_t>(in_flight.size()) - 1;
     }
     const std::int64_t slot = free_slots.back();
     free_slots.pop_back();
-    in_flight[slot] = std::move(m);
     return slot;
-  }
-  Message unpark(std::int64_t slot) {
-    Message m = std::move(in_flight[slot]);
-    free_slots.push_back(slot);
-    return m;
   }
   void accept(LinkEnd& e, Message&& m);
   // Declares memory on the node of `processor` (negative: releases). Returns "" when granted,
@@ -201,13 +196,13 @@ class Simulation {
   // The same by handle without building a report, the form the runtime uses on every message:
   // true when granted; when refused, refusal() is the report. Inline: it runs twice per message.
   bool declare_memory(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
-    machine::NodeMemory& memory = nodes[node_of[processor]].memory();
+    machine::NodeMemory& memory = *memory_of[processor];
     if (!memory.use(bytes, kind)) return false;
     if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, memory.kind_name(kind));
     return true;
   }
   std::string refusal(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) const {
-    const machine::NodeMemory& memory = nodes[node_of[processor]].memory();
+    const machine::NodeMemory& memory = *memory_of[processor];
     return memory.report(processor, bytes, memory.kind_name(kind));
   }
   void complete(const std::shared_ptr<RequestState>& r) { r->complete(); }
@@ -218,7 +213,11 @@ class Simulation {
   BlockPool request_blocks;  // first member: outlives every request the others hold
   PayloadPool payloads;      // messages' storage, recycled (parix/payload_pool.hpp)
   machine::MachineConfig config;
+  // Whether [comm_cpu] charges anything: asked on every send and receive.
+  const bool charges_comm_cpu = config.comm_cpu.any();
   std::vector<int> node_of;  // processor -> node (SimulationOptions::placement)
+  // processor -> its node's memory: what every message declares to, without the deque's lookup.
+  std::vector<machine::NodeMemory*> memory_of;
   machine::Kernel kernel;
   machine::Mesh mesh;
   machine::TraceWriter trace;
@@ -246,7 +245,6 @@ class Simulation {
   };
   ConnectionMatcher<PendingConnect> connect_matcher;
   std::int64_t next_message = 0;
-  int runnable = 0;
   int live = 0;
   bool cancelling = false;
   std::exception_ptr failure;

@@ -87,7 +87,7 @@ void overflow_third_fiber(bool guarded) {
       if (i == 2) dig(18);
     });
   }
-  while (true) detail::FiberPool::yield();  // the third fiber's end of run must stop the process
+  while (true) fibers.run_ready();  // the third fiber's end of run must stop the process
 }
 
 TEST(FiberStackPoolDeathTest, OverflowIntoAGuardPageNamesTheSetting) {
