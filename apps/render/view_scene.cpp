@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -43,9 +44,11 @@ std::vector<int> back_twins(const radiosity::Scene& mesh) {
   std::vector<int> twin(mesh.elements.size(), -1);
   for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
     const radiosity::SceneElement& el = mesh.elements[e];
-    std::array<int, 4> key{-1, -1, -1, -1};
-    std::copy_n(el.vertex.begin(), el.count, key.begin());
-    std::sort(key.begin(), key.begin() + el.count);
+    // A triangle's unused fourth slot sorts last; sorting all four keeps GCC 12 from a false -Warray-bounds.
+    std::array<int, 4> key;
+    key.fill(std::numeric_limits<int>::max());
+    std::copy_n(el.vertex.begin(), std::clamp(int(el.count), 0, 4), key.begin());
+    std::sort(key.begin(), key.end());
     auto [it, added] = by_vertices.emplace(key, int(e));
     if (added || glm::dot(mesh.elements[std::size_t(it->second)].normal, el.normal) >= 0) continue;
     twin[e] = it->second;

@@ -38,9 +38,9 @@ struct Material {
   double transmittance = 0.0;  // > 0: glass refracting with index ior
   double ior = 1.5;
   bool fresnel = true;  // glass splits reflection and refraction by the Fresnel equations
-  std::optional<Rgb> checker_other;  // second checkerboard colour
+  std::optional<Rgb> checker_other{};  // second checkerboard colour
   double checker_size = 1.0;
-  std::optional<Medium> medium;  // the shape bounds a participating medium
+  std::optional<Medium> medium{};  // the shape bounds a participating medium
 };
 
 // An element given explicitly (a WORLD file's ELEMENT record, placed): 3 or 4 vertices.
