@@ -18,6 +18,8 @@ std::vector<radiosity::Rgb> emitted_radiosity(const radiosity::Scene& mesh) {
   return b;
 }
 
+int view_tile_stride(int tiles, int nodes) { return std::min(sample_tile_stride(tiles, nodes), 4); }
+
 namespace {
 
 struct ViewRun {
@@ -39,7 +41,7 @@ ViewRun run_view(const RenderSetup& s, const std::vector<radiosity::Rgb>* b, con
     if (media) g = photon_pass(p, *media);  // no photon pass: nothing charged, one empty list per medium
     if (!v) {  // as the render: the first node here builds the view
       v = make_view_pass(s.split.surfaces, s.mesh_or_null(), b, view, p.count(), media, std::move(g.per_region));
-      v->job->sample_tiles(stride);
+      v->job->sample_tiles(stride, true);  // runs of tiles as the whole image's share row planes
     }
     if (v->medium) charge_grid_share(p, v->medium->grid_build());
     start[std::size_t(p.id())] = p.now_seconds();
@@ -68,7 +70,7 @@ ViewSample sample_view(const scene::SceneDescription& d, const Plan& plan, const
   const RenderSetup setup = prepare_render(d, plan, file, {}, kDefaultPhotons, !media_pass);
   const std::vector<radiosity::Rgb> b = setup.radiosity ? emitted_radiosity(setup.mesh) : std::vector<radiosity::Rgb>{};
   const int tiles = raytrace::Tiling{d.image.width, d.image.height, raytrace::RenderSettings{}.tile}.count();
-  const int stride = o.tile_stride > 0 ? o.tile_stride : sample_tile_stride(tiles, machine.config.nodes);
+  const int stride = o.tile_stride > 0 ? o.tile_stride : view_tile_stride(tiles, machine.config.nodes);
   const MediaSetup* media = setup.media.get();  // only an absorbing medium here (with_media false otherwise)
   const std::vector<radiosity::Rgb>* shown = setup.radiosity ? &b : nullptr;
 

@@ -71,8 +71,10 @@ TEST_F(ViewSampleTest, ASampleOfEveryTilePredictsThePassExactly) {
   }
 }
 
-// One tile in 2 and in 4, on 2 nodes: within 15 % of the render's view pass.
+// One run of tiles in 2 and in 4 of a 256 x 192 view (768 tiles), on 2 nodes: within 15 % of the
+// render's view pass (measured: +2 % and -11 %; the spheres' tiles are what a sample can miss).
 TEST_F(ViewSampleTest, ASampleLandsNearThePass) {
+  d.image.width = 256, d.image.height = 192;
   const double all = render_view_seconds(d, 2, true, true);
   for (int stride : {2, 4}) {
     SCOPED_TRACE(stride);

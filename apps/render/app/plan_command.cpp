@@ -70,7 +70,7 @@ void measure_view(const PlanFlags& f, const scene::SceneDescription& d, const Pl
   if (plan.pass(PassId::specular).on) rows += ", specular";
   if (plan.pass(PassId::shadows).on) rows += ", shadows";
   model.view_measured = fmt::format(
-      "{}: one tile in {} of the view ({} of {}) traced on the simulated\n"
+      "{}: one run of 4 tiles in {} of the view ({} of {}) traced on the simulated\n"
       "          machine{}, {} run{} adding one kind of ray at a time (the difference is the pass's); the\n"
       "          nodes' mean work scaled to every tile, their waiting kept; {:.2g} s of host time.",
       rows, s.tile_stride, s.tiles_rendered, s.tiles, plan.pass(PassId::media).on ? " without the media" : "", s.runs,
@@ -106,8 +106,9 @@ void add_plan_command(pipeline::CommandGroups& g) {
       ->check(CLI::Range(0, 1000));
   cmd->add_option("--sample-tiles", f->sample_tiles,
                   "K: the view (with specular and shadow rays when those passes are on) is measured on the\n"
-                  "simulated machine by tracing one tile in K, on diagonals, and scaling up; default: K chosen\n"
-                  "(up to 8, at least 16 tiles a node); 1: every tile; 0: count operations instead")
+                  "simulated machine by tracing one run of 4 tiles in K, on diagonals, and scaling up;\n"
+                  "default: K chosen (up to 4, at least 16 tiles a node; the media's sample up to 8);\n"
+                  "1: every tile (exact); 0: count operations instead. Also the media's K when given")
       ->check(CLI::Range(0, 1000));
   cmd->add_option("--photons", f->photons, "photons the render will emit (gcsim render --photons)")
       ->capture_default_str()
