@@ -180,32 +180,33 @@ void run_static(parix::Processor& p, NodeWork& work, Distribution d) {
 }
 
 // Guided self-scheduling: a request is answered with a run of consecutive tiles of one row, about
-// 1/(4N) of what is left (at least one, at most kMaxRun). Early runs are long, so there are few messages and
+// 1/(4N) of what is left (at least one, at most kRunTiles). Early runs are long, so there are few messages and
 // neighbouring tiles share their row planes (2.2.1); the last runs are single tiles, so the
 // nodes finish together.
-constexpr int kMaxRun = 4;  // long enough to share row planes, short enough to balance
+// kRunTiles: long enough to share row planes, short enough to balance.
 
 struct Chunk {
   std::int32_t first = -1;  // -1: no more work
   std::int32_t count = 0;
 };
 
-// next: a position in order (the tiles to hand out, whole rows of them, by index).
-Chunk next_chunk(int& next, const std::vector<int>& order, int tiles_x, int nodes) {
+// next: a position in order (the tiles to hand out, whole rows of them, by index). scale: image
+// tiles per tile of order (a sample's runs sized as the whole image's would be there).
+Chunk next_chunk(int& next, const std::vector<int>& order, int tiles_x, int nodes, double scale) {
   const int tiles = int(order.size());
   if (next >= tiles) return {};
   const int first = order[std::size_t(next)], left_in_row = tiles_x - first % tiles_x;
   int consecutive = 1;  // a run is consecutive tiles of one row (a sample's order skips some)
-  while (consecutive < std::min(left_in_row, kMaxRun) && next + consecutive < tiles &&
+  while (consecutive < std::min(left_in_row, kRunTiles) && next + consecutive < tiles &&
          order[std::size_t(next + consecutive)] == first + consecutive)
     ++consecutive;
-  const int count = std::clamp((tiles - next) / (4 * nodes), 1, consecutive);
+  const int count = std::clamp(int(double(tiles - next) * scale) / (4 * nodes), 1, consecutive);
   const Chunk c{first, count};
   next += count;
   return c;
 }
 
-void run_dynamic(parix::Processor& p, NodeWork& work, const std::vector<int>& order) {
+void run_dynamic(parix::Processor& p, NodeWork& work, const std::vector<int>& order, double scale) {
   const int n = p.count(), me = p.id(), tiles = int(order.size()), tiles_x = work.tiling.tiles_x();
   if (me != 0) {
     parix::Link master = p.connect(0, kTileTag);
@@ -243,7 +244,7 @@ void run_dynamic(parix::Processor& p, NodeWork& work, const std::vector<int>& or
   // Node 0: the master, and a worker thread on the node's second CPU sharing the tile pool.
   int next = 0;
   parix::Thread local = p.spawn([&](parix::Processor& q) {
-    for (Chunk c = next_chunk(next, order, tiles_x, n); c.first >= 0; c = next_chunk(next, order, tiles_x, n))
+    for (Chunk c = next_chunk(next, order, tiles_x, n, scale); c.first >= 0; c = next_chunk(next, order, tiles_x, n, scale))
       for (int t = c.first; t < c.first + c.count; ++t) work.assemble(q, work.render(q, t));
   });
   std::vector<parix::Link> links = connect_root_to_all(p);
@@ -253,7 +254,7 @@ void run_dynamic(parix::Processor& p, NodeWork& work, const std::vector<int>& or
   sent.reserve(std::size_t(tiles) + std::size_t(n));
   std::vector<parix::Request> sends;
   auto assign = [&](int w) {
-    sent.push_back(next_chunk(next, order, tiles_x, n));
+    sent.push_back(next_chunk(next, order, tiles_x, n, scale));
     if (sent.back().first >= 0) ++outstanding[w];
     else stop_sent[w] = true;
     sends.push_back(p.isend(links[w], std::as_bytes(std::span(&sent.back(), 1))));
@@ -330,18 +331,20 @@ void ParallelRenderJob::program(parix::Processor& p, ParallelRender& out, TilePr
   // Built here, by the processor that uses it (on the heap: fiber stacks are small).
   const auto renderer = std::make_unique<TileRenderer>(scene_, bvh_, settings_);
   NodeWork work{scene_, bvh_, settings_, Tiling{settings_.width, settings_.height, settings_.tile}, out, *renderer, prefetch};
-  if (distribution_ == Distribution::dynamic) run_dynamic(p, work, order_);
+  if (distribution_ == Distribution::dynamic) run_dynamic(p, work, order_, schedule_scale_);
   else run_static(p, work, distribution_);
 }
 
-void ParallelRenderJob::sample_tiles(int stride) {
+void ParallelRenderJob::sample_tiles(int stride, bool runs_as_whole) {
   if (distribution_ != Distribution::dynamic) throw std::invalid_argument("raytrace: only a dynamic render samples tiles");
   const Tiling tiling{settings_.width, settings_.height, settings_.tile};
   stride = std::max(stride, 1);
+  const int run = runs_as_whole ? kRunTiles : 1;
   order_.clear();
   for (int y = 0; y < tiling.tiles_y(); ++y)
     for (int x = 0; x < tiling.tiles_x(); ++x)
-      if ((x + y) % stride == stride / 2 % stride) order_.push_back(y * tiling.tiles_x() + x);
+      if ((x / run + y) % stride == stride / 2 % stride) order_.push_back(y * tiling.tiles_x() + x);
+  schedule_scale_ = runs_as_whole && !order_.empty() ? double(tiling.count()) / double(order_.size()) : 1.0;
 }
 
 int ParallelRenderJob::tiles_rendered_per_run() const {

@@ -8,20 +8,13 @@
 #include "apps/raytrace/render_settings.hpp"
 #include "apps/render/render_setup.hpp"
 #include "apps/render/view_pass.hpp"
+#include "apps/render/view_sample.hpp"
 
 namespace gcsim::render {
 
 int sample_tile_stride(int tiles, int nodes) { return std::clamp(tiles / (16 * std::max(nodes, 1)), 1, 8); }
 
 namespace {
-
-// What the view shows on each element before radiosity has run: its emission. The view's work does
-// not depend on the radiosities (the same triangles, the same rays), only its colours do.
-std::vector<radiosity::Rgb> emitted(const radiosity::Scene& mesh) {
-  std::vector<radiosity::Rgb> b(mesh.elements.size());
-  for (std::size_t e = 0; e < b.size(); ++e) b[e] = mesh.surface_of_element(int(e)).exitance;
-  return b;
-}
 
 media::GridBuildCounts scaled(media::GridBuildCounts c, double f) {
   for (std::uint64_t* n : {&c.knn_queries, &c.knn_photons, &c.range_queries, &c.range_candidates, &c.projections,
@@ -49,7 +42,7 @@ void keep(GatheredPhotons& g, Timings& t) {
 class Sampler {
  public:
   Sampler(RenderSetup& s, const Plan& plan, const parix::SimulationOptions& machine)
-      : s_(s), machine_(machine), b_(s.radiosity ? emitted(s.mesh) : std::vector<radiosity::Rgb>{}) {
+      : s_(s), machine_(machine), b_(s.radiosity ? emitted_radiosity(s.mesh) : std::vector<radiosity::Rgb>{}) {
     view_.secondary = plan.pass(PassId::specular).on;
     view_.shadows = plan.pass(PassId::shadows).on;
   }

@@ -4,7 +4,8 @@
 // is taken to split evenly over the nodes, communication is not counted, and the unknowns (shots per
 // patch, specular depth, march samples, photons) are the constants below. The radiosity pass can
 // instead be measured by sampling its first loops (radiosity_seconds_per_loop), which counts its
-// communication and waiting too.
+// communication and waiting too; the media and the view (with specular and shadows) by sampling
+// their photons and tiles.
 #include <cstdint>
 #include <string>
 
@@ -34,6 +35,12 @@ struct CostModel {
   double media_seconds = 0;
   std::int64_t media_bytes = 0;
   std::string media_measured;     // how that sample ran, for the report
+  // view_sampled: the view, specular and shadows passes measured on the machine by a sample of the
+  // view's tiles (view_sample.hpp): each row's simulated seconds and the view's bytes.
+  bool view_sampled = false;
+  double view_seconds = 0, specular_seconds = 0, shadow_seconds = 0;
+  std::int64_t view_bytes = 0;
+  std::string view_measured;      // how that sample ran, for the report
   bool radiosity_deposits = false;  // the radiosity sample started from the photons' wall deposits
   int photons = 50000;            // `gcsim render --photons`' default (render_setup.hpp)
   int k_nearest = 50;             // photons per radiance estimate

@@ -16,8 +16,9 @@ std::string needs(const PassPlan& p) {
 
 // Whether the pass's estimate came from a sample run on the simulated machine, not from counts.
 bool is_measured(const PassPlan& p, const CostModel& model) {
+  const bool view = p.id == PassId::view || p.id == PassId::specular || p.id == PassId::shadows;
   return (p.id == PassId::radiosity && model.radiosity_seconds_per_loop > 0) ||
-         (p.id == PassId::media && model.media_seconds > 0);
+         (p.id == PassId::media && model.media_seconds > 0) || (view && model.view_sampled);
 }
 
 // Which figures ran on the simulated machine and which are operation counts.
@@ -31,6 +32,7 @@ std::string describe_estimate(const Plan& plan, const CostModel& model) {
                        model.radiosity_deposits ? " from the photons' wall deposits" : "",
                        model.radiosity_seconds_per_loop, expected_loops(f, model));
   if (model.media_seconds > 0) out += "measured  media: " + model.media_measured + "\n";
+  if (model.view_sampled) out += "measured  " + model.view_measured + "\n";
   std::string counted;
   for (const PassPlan& p : plan.passes) {
     if (p.on && !is_measured(p, model)) counted += (counted.empty() ? "" : ", ") + std::string(pass_name(p.id));

@@ -1,5 +1,6 @@
 // gcsim plan SCENE.toml [--nodes N] [--config F] [--json F]: the passes a scene needs, each on or
 // off with the reason, and an estimate of its simulated time and memory per node.
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 
@@ -13,6 +14,7 @@
 #include "apps/render/media_sample.hpp"
 #include "apps/render/radiosity_sample.hpp"
 #include "apps/render/render_setup.hpp"
+#include "apps/render/view_sample.hpp"
 
 namespace gcsim::render::app {
 
@@ -22,6 +24,7 @@ struct PlanFlags {
   pipeline::MachineOptions machine;
   int sample_loops = 16;
   int sample_photons = 8;
+  int sample_tiles = -1;  // -1: chosen (sample_tile_stride); 0: count operations
   std::size_t photons = kDefaultPhotons;
 };
 
@@ -32,6 +35,7 @@ void measure_media(const PlanFlags& f, const scene::SceneDescription& d, const P
   MediaSampleOptions o;
   o.photons = f.photons;
   o.photon_divisor = f.sample_photons;
+  o.tile_stride = std::max(f.sample_tiles, 0);  // the view's sample, when given
   try {
     s = sample_media(d, plan, f.scene, pipeline::simulation_options(f.machine, nodes), o);
   } catch (const std::invalid_argument& e) {
@@ -47,6 +51,30 @@ void measure_media(const PlanFlags& f, const scene::SceneDescription& d, const P
       "          difference, scaled to every tile); the view with them ~{:.3g} s.",
       s.traced / 2, s.traced, f.photons, s.tile_stride, s.tiles_rendered, s.tiles, s.photon_seconds, s.grid_seconds,
       s.march_seconds, s.view_seconds);
+}
+
+// The view, specular and shadows passes measured by view_sample.hpp, into the model; the operation
+// count stays where the render would refuse the scene (said on stderr).
+void measure_view(const PlanFlags& f, const scene::SceneDescription& d, const Plan& plan, int nodes, CostModel& model) {
+  ViewSample s;
+  try {
+    s = sample_view(d, plan, f.scene, pipeline::simulation_options(f.machine, nodes), {.tile_stride = std::max(f.sample_tiles, 0)});
+  } catch (const std::invalid_argument& e) {
+    fmt::print(stderr, "view not sampled ({}): operation count instead\n", e.what());
+    return;
+  }
+  model.view_sampled = true;
+  model.view_seconds = s.view_seconds, model.specular_seconds = s.specular_seconds, model.shadow_seconds = s.shadow_seconds;
+  model.view_bytes = s.bytes_per_node;
+  std::string rows = "view";
+  if (plan.pass(PassId::specular).on) rows += ", specular";
+  if (plan.pass(PassId::shadows).on) rows += ", shadows";
+  model.view_measured = fmt::format(
+      "{}: one run of 4 tiles in {} of the view ({} of {}) traced on the simulated\n"
+      "          machine{}, {} run{} adding one kind of ray at a time (the difference is the pass's); the\n"
+      "          nodes' mean work scaled to every tile, their waiting kept; {:.2g} s of host time.",
+      rows, s.tile_stride, s.tiles_rendered, s.tiles, plan.pass(PassId::media).on ? " without the media" : "", s.runs,
+      s.runs > 1 ? "s" : "", s.host_seconds);
 }
 
 }  // namespace
@@ -76,6 +104,12 @@ void add_plan_command(pipeline::CommandGroups& g) {
                   "against 7.1 s simulated)")
       ->capture_default_str()
       ->check(CLI::Range(0, 1000));
+  cmd->add_option("--sample-tiles", f->sample_tiles,
+                  "K: the view (with specular and shadow rays when those passes are on) is measured on the\n"
+                  "simulated machine by tracing one run of 4 tiles in K, on diagonals, and scaling up;\n"
+                  "default: K chosen (up to 4, at least 16 tiles a node; the media's sample up to 8);\n"
+                  "1: every tile (exact); 0: count operations instead. Also the media's K when given")
+      ->check(CLI::Range(0, 1000));
   cmd->add_option("--photons", f->photons, "photons the render will emit (gcsim render --photons)")
       ->capture_default_str()
       ->check(pipeline::positive_number());
@@ -95,6 +129,7 @@ void add_plan_command(pipeline::CommandGroups& g) {
       model.radiosity_seconds_per_loop = s.seconds_per_loop;
       model.radiosity_loops = s.expected_loops;
     }
+    if (f->sample_tiles != 0) measure_view(*f, d, plan, nodes, model);
     fmt::print("{}", format_plan(plan, machine, nodes, model));
     if (!f->machine.json.empty()) pipeline::write_json_file(f->machine.json, plan_json(plan, machine, nodes, model));
   });
