@@ -21,7 +21,7 @@ namespace {
 
 // Leaves only the listed rows and columns ("1+8", "CORNELL+PICROOM", "1+8+CORNELL"): a number is a
 // node count, a name a column; rows or columns not named at all are all kept.
-void keep_cells(MeasuredTable& t, const std::string& items, const std::string& spec) {
+void keep_cells(MeasuredTable& t, const std::string& items, const std::string& spec, const std::string& option) {
   std::vector<int> rows, columns;
   for (const auto& item : split_list(items, '+')) {
     int n = 0;
@@ -38,8 +38,8 @@ void keep_cells(MeasuredTable& t, const std::string& items, const std::string& s
     } else {
       std::string names;
       for (const auto& c : t.columns) names += (names.empty() ? "" : ", ") + c;
-      throw std::invalid_argument(fmt::format("--fit {}: '{}' is neither a node count nor a column of table {} (columns: {})",
-                                              spec, item, t.id, names));
+      throw std::invalid_argument(fmt::format("{} {}: '{}' is neither a node count nor a column of table {} (columns: {})",
+                                              option, spec, item, t.id, names));
     }
   }
   auto kept = [](const std::vector<int>& named, int i) {
@@ -52,7 +52,7 @@ void keep_cells(MeasuredTable& t, const std::string& items, const std::string& s
 
 }  // namespace
 
-MeasuredTable table_from_spec(const std::string& spec) {
+MeasuredTable table_from_spec(const std::string& spec, const std::string& option) {
   std::string source = spec, rows;
   if (const auto at = spec.rfind('@'); at != std::string::npos) {
     source = spec.substr(0, at);
@@ -64,17 +64,17 @@ MeasuredTable table_from_spec(const std::string& spec) {
   } else {
     t = thesis_table(source);
   }
-  if (!rows.empty()) keep_cells(t, rows, spec);
+  if (!rows.empty()) keep_cells(t, rows, spec, option);
   return t;
 }
 
-std::vector<MeasuredTable> tables_from_specs(const std::string& specs) {
+std::vector<MeasuredTable> tables_from_specs(const std::string& specs, const std::string& option) {
   std::vector<MeasuredTable> out;
   for (const auto& s : split_list(specs, ',')) {
-    if (s.empty()) throw std::invalid_argument("--fit: empty table name (expected e.g. 4.6 or 4.6,4.3@1)");
-    out.push_back(table_from_spec(s));
+    if (s.empty()) throw std::invalid_argument(option + ": empty table name (expected e.g. 4.6 or 4.6,4.3@1)");
+    out.push_back(table_from_spec(s, option));
   }
-  if (out.empty()) throw std::invalid_argument("--fit: no tables (expected e.g. 4.6 or 4.6,4.3@1)");
+  if (out.empty()) throw std::invalid_argument(option + ": no tables (expected e.g. 4.6 or 4.6,4.3@1)");
   return out;
 }
 

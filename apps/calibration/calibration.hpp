@@ -19,12 +19,13 @@ namespace gcsim::calibration {
 // "a,b,c" -> {"a", "b", "c"} (empty items kept, so callers can name them in errors).
 std::vector<std::string> split_list(const std::string& s, char sep = ',');
 
-// "4.6" (a built-in table), "4.3@1" (only its 1-node row), "4.3@1+8", or "PATH.csv:4.6[@...]" (a
-// user's figures in table 4.6's layout). Cells outside the named rows are left out. Throws
-// std::invalid_argument naming what was expected.
-MeasuredTable table_from_spec(const std::string& spec);
+// "4.6" (a built-in table), "4.3@1" (only its 1-node row), "4.3@1+8", "4.3@CORNELL+PICROOM" (only
+// those columns), "4.3@1+8+CORNELL", or "PATH.csv:4.6[@...]" (a user's figures in table 4.6's
+// layout). Cells outside the named rows and columns are left out. Throws std::invalid_argument
+// naming `option`, the spec and what was expected.
+MeasuredTable table_from_spec(const std::string& spec, const std::string& option = "--fit");
 // Comma-separated specs.
-std::vector<MeasuredTable> tables_from_specs(const std::string& specs);
+std::vector<MeasuredTable> tables_from_specs(const std::string& specs, const std::string& option = "--fit");
 
 struct FittedParameter {
   std::string key;

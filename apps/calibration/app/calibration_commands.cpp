@@ -189,7 +189,7 @@ void add_calibrate(CommandGroups& g) {
 // used are marked.
 std::vector<cal::MeasuredTable> validation_tables(const std::string& named, const machine::MachineConfig& c) {
   std::vector<cal::MeasuredTable> out;
-  if (!named.empty()) return cal::tables_from_specs(named);
+  if (!named.empty()) return cal::tables_from_specs(named, "--tables");
   for (const auto& id : cal::thesis_table_ids()) {
     const bool wholly_fitted = std::find(c.calibrated_on.begin(), c.calibrated_on.end(), id) != c.calibrated_on.end();
     if (!wholly_fitted) out.push_back(cal::thesis_table(id));
@@ -284,7 +284,7 @@ void add_network_accuracy(CommandGroups& g) {
     pipeline::check_writable(f->json, "--json");
     pipeline::check_writable(f->csv, "--csv");
     const cal::MachineFile file(f->config);
-    std::vector<cal::MeasuredTable> tables = cal::tables_from_specs(f->tables);
+    std::vector<cal::MeasuredTable> tables = cal::tables_from_specs(f->tables, "--tables");
     for (auto& t : tables) {
       if (t.id == "4.6" || t.id == "4.7") continue;
       const int keep = t.column_of(f->scene);
