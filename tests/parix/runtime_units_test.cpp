@@ -174,8 +174,9 @@ TEST(Activity, ADoneActivityCannotBeCancelled) {
 TEST(Request, ReportsItsCommunicationsState) {
   EXPECT_FALSE(Request().test());
   EXPECT_FALSE(Request().cancelled());
-  auto done = std::make_shared<RequestState>(), withdrawn = std::make_shared<RequestState>();
-  Request d(done), w(withdrawn);
+  auto* done = new RequestState;
+  auto* withdrawn = new RequestState;
+  Request d(done), w(withdrawn);  // deleted with the last Request (no home)
   EXPECT_FALSE(d.test());
   done->data = Bytes(3);
   done->complete();
