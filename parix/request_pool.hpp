@@ -21,29 +21,28 @@ class RequestPool final : public RequestHome {
 
   // A fresh state (running, fields at their defaults), held by the returned Request.
   Request take() {
-    if (free_.empty()) grow();
-    RequestState* s = free_.back();
-    free_.pop_back();
-    return Request(s);
+    if (free_count_ == 0) grow();
+    return Request(free_[--free_count_]);
   }
   void recycle(RequestState* s) noexcept override {
     std::destroy_at(s);  // frees data a receive still held, as deleting it did
     std::construct_at(s)->home = this;
-    free_.push_back(s);  // never reallocates: reserved for every state made
+    free_[free_count_++] = s;  // room for every state made
   }
 
  private:
   static constexpr std::size_t kPerChunk = 256;
-  void grow() {
+  [[gnu::noinline, gnu::cold]] void grow() {  // out of line: take() inlines to a few instructions
     auto& chunk = chunks_.emplace_back(std::make_unique<RequestState[]>(kPerChunk));
-    free_.reserve(chunks_.size() * kPerChunk);
+    free_.resize(chunks_.size() * kPerChunk);
     for (std::size_t i = kPerChunk; i-- > 0;) {
       chunk[i].home = this;
-      free_.push_back(&chunk[i]);
+      free_[free_count_++] = &chunk[i];
     }
   }
   std::vector<std::unique_ptr<RequestState[]>> chunks_;
-  std::vector<RequestState*> free_;
+  std::vector<RequestState*> free_;  // a stack of free_count_ states, sized for all of them
+  std::size_t free_count_ = 0;
 };
 
 }  // namespace gcsim::parix::detail
