@@ -18,6 +18,21 @@ struct MpiRequest : RequestState {
   int tag = 0;
 };
 
+// Deletes MPI requests as what they are (RequestState has no virtual destructor). Stateless, so
+// requests may outlive the processor that made them.
+struct MpiRequestHome final : detail::RequestHome {
+  void recycle(RequestState* s) noexcept override { delete static_cast<MpiRequest*>(s); }
+};
+MpiRequestHome mpi_requests;
+
+// A new MpiRequest, held by `handle` at once.
+MpiRequest& new_request(Request& handle) {
+  auto* r = new MpiRequest;
+  r->home = &mpi_requests;
+  handle = Request(r);
+  return *r;
+}
+
 // One MPI tag per link: the k-th link two processors open with a parix tag gets the same MPI tag
 // on both sides (connects match in call order), and MPI keeps the order of messages with one
 // (source, tag): a link delivers in sending order.
@@ -137,26 +152,28 @@ void MpiProcessor::send(Link& link, std::span<const std::byte> data) {
 
 Request MpiProcessor::isend(Link& link, std::span<const std::byte> data) {
   const MpiLink l = link_info(link, "send");
-  auto r = std::make_shared<MpiRequest>();
-  r->peer = l.peer;
-  r->link = link.handle();
-  r->buffer.assign(data.begin(), data.end());
-  check(MPI_Isend(r->buffer.data(), static_cast<int>(r->buffer.size()), MPI_BYTE, rank_.rank_of_processor(l.peer), l.mpi_tag, MPI_COMM_WORLD, &r->request),
+  Request handle;
+  MpiRequest& r = new_request(handle);
+  r.peer = l.peer;
+  r.link = link.handle();
+  r.buffer.assign(data.begin(), data.end());
+  check(MPI_Isend(r.buffer.data(), static_cast<int>(r.buffer.size()), MPI_BYTE, rank_.rank_of_processor(l.peer), l.mpi_tag, MPI_COMM_WORLD, &r.request),
         "isend");
   std::lock_guard<std::mutex> g(rank_.lock);
   ++rank_.stats.messages_sent;
   rank_.stats.bytes_sent += static_cast<std::int64_t>(data.size());
-  return Request(r);
+  return handle;
 }
 
 Request MpiProcessor::irecv(Link& link) {
   const MpiLink l = link_info(link, "recv");
-  auto r = std::make_shared<MpiRequest>();
-  r->is_receive = true;
-  r->peer = l.peer;
-  r->link = link.handle();
-  r->tag = l.mpi_tag;
-  return Request(r);
+  Request handle;
+  MpiRequest& r = new_request(handle);
+  r.is_receive = true;
+  r.peer = l.peer;
+  r.link = link.handle();
+  r.tag = l.mpi_tag;
+  return handle;
 }
 
 bool MpiProcessor::poll(RequestState& state) {

@@ -25,6 +25,13 @@ Bytes PayloadPool::take_elsewhere(std::size_t bytes) {
   return b;
 }
 
+// give() when its class's list is full: kept the same way, after the list grows.
+void PayloadPool::keep_growing(std::vector<Bytes>& list, Bytes&& b) {
+  kept_bytes_ += b.capacity();
+  b.clear();
+  list.push_back(std::move(b));
+}
+
 std::size_t PayloadPool::kept() const {
   std::size_t n = 0;
   for (const std::vector<Bytes>& list : free_) n += list.size();

@@ -43,8 +43,10 @@ class PayloadPool {
       Bytes().swap(b);  // the pool is full: free it
       return;
     }
+    std::vector<Bytes>& list = free_[capacity_class(cap)];
+    if (list.size() == list.capacity()) return keep_growing(list, std::move(b));
     b.clear();
-    free_[capacity_class(cap)].push_back(std::move(b));
+    list.push_back(std::move(b));  // never reallocates here: the growth path is out of line
     kept_bytes_ += cap;
   }
 
@@ -62,6 +64,7 @@ class PayloadPool {
     return pop(list);
   }
   Bytes take_elsewhere(std::size_t bytes);
+  [[gnu::noinline, gnu::cold]] void keep_growing(std::vector<Bytes>& list, Bytes&& b);
   Bytes pop(std::vector<Bytes>& list) {
     Bytes b = std::move(list.back());
     list.pop_back();

@@ -70,8 +70,14 @@ class Link {
   std::int64_t handle_ = -1;
 };
 
+namespace detail {
+struct RequestHome;
+}
+
 // Shared state of an asynchronous send or receive, an activity (parix/activity.hpp): running, then
 // done or cancelled. Backends fill it in; its waiter is backend-private (who to wake).
+// Reference-counted by the Requests that hold it (intrusively: no control block, no atomics --
+// a request belongs to one host thread, the simulation's or an MPI processor's).
 struct RequestState : detail::Activity {
   bool is_receive = false;
   Bytes data;                  // received bytes once done (receives only)
@@ -79,13 +85,46 @@ struct RequestState : detail::Activity {
   int peer = -1;
   bool cpu_charged = false;    // backend-private: the receive's CPU cost was paid
   detail::PayloadPool* payloads = nullptr;  // backend-private: where take_into recycles storage
+  // Backend-private: takes the state back when its last Request lets go (a pool); null: delete.
+  detail::RequestHome* home = nullptr;
+
+ private:
+  friend class Request;
+  std::uint32_t refs_ = 0;
 };
 
-// Handle to an asynchronous send or receive.
+namespace detail {
+struct RequestHome {
+  virtual void recycle(RequestState* s) noexcept = 0;
+
+ protected:
+  ~RequestHome() = default;
+};
+}  // namespace detail
+
+// Handle to an asynchronous send or receive; copies share the state.
 class Request {
  public:
   Request() = default;
-  explicit Request(std::shared_ptr<RequestState> s) : state_(std::move(s)) {}
+  // Holds s (made with new, or by a backend's home), which lives while any Request holds it.
+  explicit Request(RequestState* s) noexcept : state_(s) {
+    if (s) ++s->refs_;
+  }
+  Request(const Request& o) noexcept : Request(o.state_) {}
+  Request(Request&& o) noexcept : state_(std::exchange(o.state_, nullptr)) {}
+  Request& operator=(const Request& o) noexcept {
+    Request(o).swap(*this);
+    return *this;
+  }
+  Request& operator=(Request&& o) noexcept {
+    Request(std::move(o)).swap(*this);
+    return *this;
+  }
+  ~Request() {
+    if (state_ && --state_->refs_ == 0) release(state_);
+  }
+  void swap(Request& o) noexcept { std::swap(state_, o.state_); }
+
   bool valid() const { return state_ != nullptr; }
   // Whether the communication completed (never true for a cancelled one); does not block.
   bool test() const { return state_ && state_->test(); }
@@ -98,10 +137,14 @@ class Request {
   // its storage goes back to the backend for later messages (parix/payload_pool.hpp), so a loop
   // that reuses one Bytes receives without allocating. into is left empty for a cancelled receive.
   void take_into(Bytes& into);
-  RequestState* state() const { return state_.get(); }
+  RequestState* state() const { return state_; }
 
  private:
-  std::shared_ptr<RequestState> state_;
+  static void release(RequestState* s) noexcept {
+    if (s->home) s->home->recycle(s);
+    else delete s;
+  }
+  RequestState* state_ = nullptr;
 };
 
 // A node-local thread started by Processor::spawn.

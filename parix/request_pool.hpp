@@ -1,68 +1,48 @@
 #pragma once
-// Request states for the simulated runtime without a malloc per send and receive: a free list of
-// equal-sized blocks, handed to std::allocate_shared, which puts the shared_ptr's control block and
-// the RequestState in one of them. The pool lives in the Simulation and must outlive every
-// request of its run (they are held by the run's fibers and messages, all gone before it ends).
+// Request states for the simulated runtime without a malloc per send and receive: states are made
+// in chunks and kept on a free list; a Request's last reference hands its state back here
+// (RequestHome), which resets it for the next send or receive. The pool lives in the Simulation and
+// must outlive every request of its run (they are held by the run's fibers and messages, all gone
+// before it ends).
 #include <cstddef>
 #include <memory>
-#include <new>
 #include <vector>
 
 #include "parix/processor.hpp"
 
 namespace gcsim::parix::detail {
 
-class BlockPool {
+class RequestPool final : public RequestHome {
  public:
-  BlockPool() = default;
-  BlockPool(const BlockPool&) = delete;
-  BlockPool& operator=(const BlockPool&) = delete;
-  ~BlockPool() {
-    for (void* chunk : chunks_) ::operator delete(chunk, std::align_val_t{kAlign});
-  }
+  RequestPool() = default;
+  RequestPool(const RequestPool&) = delete;
+  RequestPool& operator=(const RequestPool&) = delete;
+  ~RequestPool() = default;
 
-  // Every block has the size of the first request (allocate_shared asks for one type only).
-  void* take(std::size_t bytes) {
-    if (block_ == 0) block_ = (bytes + kAlign - 1) / kAlign * kAlign;
-    if (bytes > block_) return ::operator new(bytes, std::align_val_t{kAlign});  // not expected
-    if (free_.empty()) grow();
-    void* b = free_.back();
-    free_.pop_back();
-    return b;
+  // A fresh state (running, fields at their defaults), held by the returned Request.
+  Request take() {
+    if (free_count_ == 0) grow();
+    return Request(free_[--free_count_]);
   }
-  void give(void* p, std::size_t bytes) {
-    if (bytes > block_) return ::operator delete(p, std::align_val_t{kAlign});
-    free_.push_back(p);
+  void recycle(RequestState* s) noexcept override {
+    std::destroy_at(s);  // frees data a receive still held, as deleting it did
+    std::construct_at(s)->home = this;
+    free_[free_count_++] = s;  // room for every state made
   }
 
  private:
-  static constexpr std::size_t kAlign = alignof(std::max_align_t);
-  static constexpr std::size_t kBlocksPerChunk = 256;
-  void grow() {
-    auto* chunk = static_cast<char*>(::operator new(block_ * kBlocksPerChunk, std::align_val_t{kAlign}));
-    chunks_.push_back(chunk);
-    for (std::size_t i = kBlocksPerChunk; i-- > 0;) free_.push_back(chunk + i * block_);
+  static constexpr std::size_t kPerChunk = 256;
+  [[gnu::noinline, gnu::cold]] void grow() {  // out of line: take() inlines to a few instructions
+    auto& chunk = chunks_.emplace_back(std::make_unique<RequestState[]>(kPerChunk));
+    free_.resize(chunks_.size() * kPerChunk);
+    for (std::size_t i = kPerChunk; i-- > 0;) {
+      chunk[i].home = this;
+      free_[free_count_++] = &chunk[i];
+    }
   }
-  std::size_t block_ = 0;
-  std::vector<void*> free_;
-  std::vector<void*> chunks_;
+  std::vector<std::unique_ptr<RequestState[]>> chunks_;
+  std::vector<RequestState*> free_;  // a stack of free_count_ states, sized for all of them
+  std::size_t free_count_ = 0;
 };
-
-template <class T>
-struct PoolAllocator {
-  using value_type = T;
-  BlockPool* pool;
-  explicit PoolAllocator(BlockPool& p) : pool(&p) {}
-  template <class U>
-  PoolAllocator(const PoolAllocator<U>& o) : pool(o.pool) {}  // NOLINT: rebinding converts implicitly
-  T* allocate(std::size_t n) { return static_cast<T*>(pool->take(n * sizeof(T))); }
-  void deallocate(T* p, std::size_t n) { pool->give(p, n * sizeof(T)); }
-  template <class U>
-  bool operator==(const PoolAllocator<U>& o) const { return pool == o.pool; }
-};
-
-inline std::shared_ptr<RequestState> new_request(BlockPool& pool) {
-  return std::allocate_shared<RequestState>(PoolAllocator<RequestState>(pool));
-}
 
 }  // namespace gcsim::parix::detail

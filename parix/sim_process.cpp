@@ -167,15 +167,15 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
     end_of(link, "send");  // checked before the CPU is spent on it
     // The CPU hands the message to the communication processors before it travels (copying it).
     if (!charge_comm_cpu(sim_.config.comm_cpu.send, static_cast<std::int64_t>(data.size()), "send_cpu")) {
-      auto abandoned = new_request(sim_.request_blocks);
-      abandoned->complete();
-      return Request(std::move(abandoned));
+      Request abandoned = sim_.requests.take();
+      abandoned.state()->complete();
+      return abandoned;
     }
   }
   LinkEnd& e = end_of(link, "send");  // after the CPU time: links may have grown meanwhile
-  auto req = new_request(sim_.request_blocks);
-  req->link = link.handle();
-  req->peer = e.peer;
+  Request req = sim_.requests.take();
+  req.state()->link = link.handle();
+  req.state()->peer = e.peer;
   // The runtime's copy of the message is held by the sender's node until it is delivered, then
   // by the receiver's until received; declared before the host allocates it.
   const std::int64_t bytes = static_cast<std::int64_t>(data.size());
@@ -198,7 +198,7 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   ++s.messages_sent;
   s.bytes_sent += bytes;
   sim_.network->transfer(sim_.node_of[id_], sim_.node_of[e.peer], bytes, [sim = &sim_, slot] { sim->deliver(slot); });
-  return Request(std::move(req));
+  return req;
 }
 
 void Simulation::deliver(std::int64_t slot) {
@@ -210,7 +210,7 @@ void Simulation::deliver(std::int64_t slot) {
   e.order.arrive(seq, std::move(m), [this, &e](Message&& next) { accept(e, std::move(next)); });
   // Its payload went on (to a receive, the link's queue, the held messages or the pool); the
   // request it keeps alive must not wait for the slot's reuse.
-  m.send.reset();
+  m.send = Request();
   free_slots.push_back(slot);
   if (!e.open) links.release_if_done(end);  // the last message to a closed link may free it
 }
@@ -218,7 +218,7 @@ void Simulation::deliver(std::int64_t slot) {
 void Simulation::accept(LinkEnd& e, Message&& m) {
   // Withdrawn by its sender (SimProcess::cancel) while it travelled: the link drops it, after the
   // network and the in-order delivery have finished with it.
-  if (m.send->cancelled()) {
+  if (m.send.cancelled()) {
     payloads.give(std::move(m.data));
     return;
   }
@@ -228,9 +228,9 @@ void Simulation::accept(LinkEnd& e, Message&& m) {
   }
   if (!m.synchronous) complete(m.send);
   if (!e.receives.empty()) {
-    std::shared_ptr<RequestState> r = std::move(e.receives.front());
+    Request r = std::move(e.receives.front());
     e.receives.pop_front();
-    r->data = std::move(m.data);
+    r.state()->data = std::move(m.data);
     if (m.synchronous) complete(m.send);
     complete(r);
   } else {
@@ -255,22 +255,23 @@ void SimProcess::send(Link& link, std::span<const std::byte> data) {
 
 Request SimProcess::irecv(Link& link) {
   LinkEnd& e = end_of(link, "recv");
-  auto req = new_request(sim_.request_blocks);
-  req->is_receive = true;
-  req->payloads = &sim_.payloads;
-  req->link = link.handle();
-  req->peer = e.peer;
+  Request req = sim_.requests.take();
+  RequestState& s = *req.state();
+  s.is_receive = true;
+  s.payloads = &sim_.payloads;
+  s.link = link.handle();
+  s.peer = e.peer;
   if (!e.arrived.empty()) {
     Message m = std::move(e.arrived.front());
     e.arrived.pop_front();
     if (!m.data.empty()) sim_.declare_memory(id_, -static_cast<std::int64_t>(m.data.size()), sim_.received_kind);
-    req->data = std::move(m.data);
-    req->complete();
+    s.data = std::move(m.data);
+    s.complete();
     if (m.synchronous) sim_.complete(m.send);
   } else {
     e.receives.push_back(req);
   }
-  return Request(std::move(req));
+  return req;
 }
 
 Bytes SimProcess::recv(Link& link) {
@@ -352,7 +353,7 @@ bool SimProcess::cancel(Request& r) {
     // Its link is still there: a queued receive keeps the link's slots from reuse.
     LinkEnd& e = sim_.links.at(s.link);
     if (e.owner != id_) throw ParixError(fmt::format("processor {}: cancel of a receive of processor {}", id_, e.owner));
-    e.receives.erase_if([&s](const std::shared_ptr<RequestState>& q) { return q.get() == &s; });
+    e.receives.erase_if([&s](const Request& q) { return q.state() == &s; });
     sim_.links.release_if_done(s.link);
   }
   // A send: its message is still in the network (or held for in-order delivery); accept drops it.

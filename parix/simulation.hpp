@@ -41,8 +41,8 @@ class Simulation;
 // A message on its way or waiting in a link's queue.
 struct Message {
   Bytes data;
-  std::shared_ptr<RequestState> send;  // completed when received (synchronous) or delivered;
-                                       // cancelled: the link drops the message on arrival
+  Request send;  // completed when received (synchronous) or delivered;
+                // cancelled: the link drops the message on arrival
   bool synchronous = false;
   std::int64_t id = 0;
   std::int64_t link_seq = 0;  // position on its link: a link delivers in sending order
@@ -60,7 +60,7 @@ struct LinkEnd {
   std::int64_t sent = 0;                                 // messages sent from this end
   InOrderDelivery<Message> order;                        // holds messages that overtook a predecessor
   Fifo<Message> arrived;                                 // delivered, not yet received
-  Fifo<std::shared_ptr<RequestState>> receives;          // posted, waiting for a message
+  Fifo<Request> receives;                                // posted, waiting for a message
   // Nothing the peer sent is still travelling or held, and nothing waits here: the slot may go.
   bool idle(const LinkEnd& peer) const {
     return peer.sent == order.delivered() && arrived.empty() && receives.empty();
@@ -205,12 +205,12 @@ class Simulation {
     const machine::NodeMemory& memory = *memory_of[processor];
     return memory.report(processor, bytes, memory.kind_name(kind));
   }
-  void complete(const std::shared_ptr<RequestState>& r) { r->complete(); }
+  void complete(const Request& r) { r.state()->complete(); }
 
 
   std::string deadlock_report() const;
 
-  BlockPool request_blocks;  // first member: outlives every request the others hold
+  RequestPool requests;      // first member: outlives every request the others hold
   PayloadPool payloads;      // messages' storage, recycled (parix/payload_pool.hpp)
   machine::MachineConfig config;
   // Whether [comm_cpu] charges anything: asked on every send and receive.

@@ -12,6 +12,7 @@
 #include "parix/fifo.hpp"
 #include "parix/in_order_delivery.hpp"
 #include "parix/processor.hpp"
+#include "parix/request_pool.hpp"
 
 namespace gcsim::parix {
 namespace {
@@ -174,8 +175,9 @@ TEST(Activity, ADoneActivityCannotBeCancelled) {
 TEST(Request, ReportsItsCommunicationsState) {
   EXPECT_FALSE(Request().test());
   EXPECT_FALSE(Request().cancelled());
-  auto done = std::make_shared<RequestState>(), withdrawn = std::make_shared<RequestState>();
-  Request d(done), w(withdrawn);
+  auto* done = new RequestState;
+  auto* withdrawn = new RequestState;
+  Request d(done), w(withdrawn);  // deleted with the last Request (no home)
   EXPECT_FALSE(d.test());
   done->data = Bytes(3);
   done->complete();
@@ -184,6 +186,26 @@ TEST(Request, ReportsItsCommunicationsState) {
   EXPECT_TRUE(w.cancelled() && !w.test() && !w.done());
   EXPECT_EQ(d.take().size(), 3u);
   EXPECT_TRUE(w.take().empty());
+}
+
+TEST(RequestPool, CopiesShareAStateWhichTheLastOneRecyclesReset) {
+  detail::RequestPool pool;
+  RequestState* first = nullptr;
+  {
+    Request a = pool.take();
+    first = a.state();
+    Request b = a;  // shares the state
+    a.state()->data = Bytes(5);
+    a.state()->peer = 3;
+    b.state()->complete();
+    a = Request();
+    EXPECT_TRUE(b.test());  // b still holds it
+  }
+  Request again = pool.take();  // the same state, back as new
+  ASSERT_EQ(again.state(), first);
+  EXPECT_TRUE(again.state()->running());
+  EXPECT_TRUE(again.state()->data.empty());
+  EXPECT_EQ(again.state()->peer, -1);
 }
 
 }  // namespace
