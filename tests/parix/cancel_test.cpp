@@ -134,7 +134,9 @@ void hold_nearly_all_memory_after_64_kb_arrive(bool withdraw) {
     Link l = p.connect(1 - p.id());
     if (p.id() == 0) {
       Request r = p.isend(l, Bytes(1 << 16));
-      if (withdraw) EXPECT_TRUE(p.cancel(r));
+      if (withdraw) {
+        EXPECT_TRUE(p.cancel(r));
+      }
       return;
     }
     p.compute("cycle", 800'000);  // 10 ms: the 64 KB arrive in 7.6 ms
