@@ -13,6 +13,18 @@ void Kernel::add_chunk() {
   for (std::uint32_t i = kChunk; i-- > 0;) free_slots_.push_back(first + i);
 }
 
+// The hole at i moves towards the root while its parent is later than key, which then fills it.
+inline void Kernel::sift_up(std::size_t i, const Key& key) {
+  Key* h = heap_.data();
+  while (i > 0) {
+    const std::size_t parent = (i - 1) / kArity;
+    if (!(key < h[parent])) break;
+    h[i] = h[parent];
+    i = parent;
+  }
+  h[i] = key;
+}
+
 void Kernel::at(SimTime t, Action&& a) {
   if (t < now_) {
     throw std::logic_error("Kernel::at: event scheduled in the past (" + std::to_string(t) + " ps < now " +
@@ -20,17 +32,9 @@ void Kernel::at(SimTime t, Action&& a) {
   }
   const std::uint32_t slot = take_slot();
   action(slot) = std::move(a);
-  // Sift up: a hole moves towards the root while the parent is later.
   const Key key{t, seq_++, slot};
-  std::size_t i = heap_.size();
   heap_.push_back(key);
-  while (i > 0) {
-    const std::size_t parent = (i - 1) / kArity;
-    if (!(key < heap_[parent])) break;
-    heap_[i] = heap_[parent];
-    i = parent;
-  }
-  heap_[i] = key;
+  sift_up(heap_.size() - 1, key);
 }
 
 bool Kernel::step() {
@@ -57,13 +61,7 @@ bool Kernel::step() {
       h[i] = h[best];
       i = best;
     }
-    while (i > 0) {
-      const std::size_t parent = (i - 1) / kArity;
-      if (!(last < h[parent])) break;
-      h[i] = h[parent];
-      i = parent;
-    }
-    h[i] = last;
+    sift_up(i, last);
   }
   now_ = top.time;
   ++processed_;

@@ -47,6 +47,7 @@ class Kernel {
     }
   };
   static constexpr std::size_t kArity = 4;  // children per heap node
+  void sift_up(std::size_t i, const Key& key);
   static constexpr std::uint32_t kChunkBits = 10;
   static constexpr std::uint32_t kChunk = 1u << kChunkBits;
   Action& action(std::uint32_t slot) { return chunks_[slot >> kChunkBits][slot & (kChunk - 1)]; }

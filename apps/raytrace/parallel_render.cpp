@@ -183,7 +183,6 @@ void run_static(parix::Processor& p, NodeWork& work, Distribution d) {
 // 1/(4N) of what is left (at least one, at most kRunTiles). Early runs are long, so there are few messages and
 // neighbouring tiles share their row planes (2.2.1); the last runs are single tiles, so the
 // nodes finish together.
-// kRunTiles: long enough to share row planes, short enough to balance.
 
 struct Chunk {
   std::int32_t first = -1;  // -1: no more work

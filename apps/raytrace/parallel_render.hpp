@@ -31,7 +31,8 @@ class TilePrefetch;
 class Scene;
 
 enum class Distribution { static_blocks, interleaved, dynamic };
-// The longest run of consecutive tiles the dynamic distribution hands out.
+// The longest run of consecutive tiles the dynamic distribution hands out: long enough to share row
+// planes, short enough to balance.
 inline constexpr int kRunTiles = 4;
 std::optional<Distribution> parse_distribution(std::string_view s);  // static, interleaved, dynamic
 std::string_view name_of(Distribution d);

@@ -14,6 +14,10 @@ namespace gcsim::render {
 
 int sample_tile_stride(int tiles, int nodes) { return std::clamp(tiles / (16 * std::max(nodes, 1)), 1, 8); }
 
+int view_tile_count(const scene::SceneDescription& d) {
+  return raytrace::Tiling{d.image.width, d.image.height, raytrace::RenderSettings{}.tile}.count();
+}
+
 namespace {
 
 media::GridBuildCounts scaled(media::GridBuildCounts c, double f) {
@@ -92,8 +96,7 @@ MediaSample sample_media(const scene::SceneDescription& d, const Plan& plan, con
   const Sampler sampler(setup, plan, machine);
   const std::size_t n = o.photons, big = std::max<std::size_t>(1, n / std::size_t(std::max(o.photon_divisor, 1)));
   const double scale = double(n) / double(big);
-  const int tiles = raytrace::Tiling{d.image.width, d.image.height, raytrace::RenderSettings{}.tile}.count();  // the view's
-  const int stride = o.tile_stride > 0 ? o.tile_stride : sample_tile_stride(tiles, machine.config.nodes);
+  const int stride = o.tile_stride > 0 ? o.tile_stride : sample_tile_stride(view_tile_count(d), machine.config.nodes);
 
   MediaSample m;
   media.traced = big < n ? big : 0;

@@ -46,6 +46,8 @@ struct MediaSample {
 
 // The tile stride `gcsim plan` samples the view with: at most 8, and at least 16 tiles per node.
 int sample_tile_stride(int tiles, int nodes);
+// The tiles of d's image as the render's view cuts it (RenderSettings' tile size).
+int view_tile_count(const scene::SceneDescription& d);
 
 // machine: cut to the nodes of the estimate. file: for messages. Throws std::invalid_argument where
 // the render would refuse the scene (the plan then keeps the operation count).

@@ -86,7 +86,7 @@ PassCost estimate_pass(const PassPlan& pass, const SceneFacts& f, const machine:
   const double camera_rays = double(f.pixels) * f.samples_per_pixel;
   const double trace = traversal_cycles(op, f);
   PassCost c;
-  if (m.view_sampled && (pass.id == PassId::view || pass.id == PassId::specular || pass.id == PassId::shadows)) {
+  if (m.view_sampled && measured_by_view_sample(pass.id)) {
     const double s = pass.id == PassId::view ? m.view_seconds : pass.id == PassId::specular ? m.specular_seconds : m.shadow_seconds;
     return {s, m.view_bytes};  // measured: one pass on the machine, its scene and tree held once
   }

@@ -47,6 +47,11 @@ struct CostModel {
   int max_photon_events = 64;
 };
 
+// The passes a view sample measures (view_sample.hpp): the view and the rays it adds.
+inline bool measured_by_view_sample(PassId id) {
+  return id == PassId::view || id == PassId::specular || id == PassId::shadows;
+}
+
 struct PassCost {
   double seconds_per_node = 0.0;     // simulated compute time on the slowest node
   std::int64_t bytes_per_node = 0;   // the pass's data on one node

@@ -16,9 +16,8 @@ std::string needs(const PassPlan& p) {
 
 // Whether the pass's estimate came from a sample run on the simulated machine, not from counts.
 bool is_measured(const PassPlan& p, const CostModel& model) {
-  const bool view = p.id == PassId::view || p.id == PassId::specular || p.id == PassId::shadows;
   return (p.id == PassId::radiosity && model.radiosity_seconds_per_loop > 0) ||
-         (p.id == PassId::media && model.media_seconds > 0) || (view && model.view_sampled);
+         (p.id == PassId::media && model.media_seconds > 0) || (measured_by_view_sample(p.id) && model.view_sampled);
 }
 
 // Which figures ran on the simulated machine and which are operation counts.

@@ -4,8 +4,6 @@
 #include <chrono>
 #include <memory>
 
-#include "apps/raytrace/render.hpp"
-#include "apps/raytrace/render_settings.hpp"
 #include "apps/render/media_sample.hpp"
 #include "apps/render/render_setup.hpp"
 #include "apps/render/view_pass.hpp"
@@ -69,8 +67,7 @@ ViewSample sample_view(const scene::SceneDescription& d, const Plan& plan, const
   const bool media_pass = plan.pass(PassId::media).on;
   const RenderSetup setup = prepare_render(d, plan, file, {}, kDefaultPhotons, !media_pass);
   const std::vector<radiosity::Rgb> b = setup.radiosity ? emitted_radiosity(setup.mesh) : std::vector<radiosity::Rgb>{};
-  const int tiles = raytrace::Tiling{d.image.width, d.image.height, raytrace::RenderSettings{}.tile}.count();
-  const int stride = o.tile_stride > 0 ? o.tile_stride : view_tile_stride(tiles, machine.config.nodes);
+  const int stride = o.tile_stride > 0 ? o.tile_stride : view_tile_stride(view_tile_count(d), machine.config.nodes);
   const MediaSetup* media = setup.media.get();  // only an absorbing medium here (with_media false otherwise)
   const std::vector<radiosity::Rgb>* shown = setup.radiosity ? &b : nullptr;
 

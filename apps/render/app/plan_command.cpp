@@ -9,6 +9,7 @@
 #include "apps/common/scene/scene_file.hpp"
 #include "apps/pipeline/machine_options.hpp"
 #include "apps/pipeline/option_checks.hpp"
+#include "apps/raytrace/parallel_render.hpp"
 #include "apps/render/app/render_commands.hpp"
 #include "apps/render/plan_report.hpp"
 #include "apps/render/media_sample.hpp"
@@ -70,10 +71,10 @@ void measure_view(const PlanFlags& f, const scene::SceneDescription& d, const Pl
   if (plan.pass(PassId::specular).on) rows += ", specular";
   if (plan.pass(PassId::shadows).on) rows += ", shadows";
   model.view_measured = fmt::format(
-      "{}: one run of 4 tiles in {} of the view ({} of {}) traced on the simulated\n"
+      "{}: one run of {} tiles in {} of the view ({} of {}) traced on the simulated\n"
       "          machine{}, {} run{} adding one kind of ray at a time (the difference is the pass's); the\n"
       "          nodes' mean work scaled to every tile, their waiting kept; {:.2g} s of host time.",
-      rows, s.tile_stride, s.tiles_rendered, s.tiles, plan.pass(PassId::media).on ? " without the media" : "", s.runs,
+      rows, raytrace::kRunTiles, s.tile_stride, s.tiles_rendered, s.tiles, plan.pass(PassId::media).on ? " without the media" : "", s.runs,
       s.runs > 1 ? "s" : "", s.host_seconds);
 }
 
