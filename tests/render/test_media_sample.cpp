@@ -68,8 +68,8 @@ TEST(MediaSample, ASampleOfEveryPhotonAndTilePredictsThePassExactly) {
   }
 }
 
-// A real sample (1/8 and 1/16 of the photons, one tile in 2) lands within 25 % of the render's photons,
-// SH grid and view; the render afterwards is the render without a plan, pixel for pixel.
+// A real sample (1/8 and 1/16 of the photons, one run of tiles in 2) lands within 25 % of the
+// render's photons, SH grid and view; the render afterwards is the render without a plan, pixel for pixel.
 TEST(MediaSample, ASampleLandsNearThePassAndChangesNothingInTheRender) {
   const scene::SceneDescription d = small_scene();
   const Plan plan = make_plan(d);
