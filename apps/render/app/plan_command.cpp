@@ -100,9 +100,8 @@ void add_plan_command(pipeline::CommandGroups& g) {
   cmd->add_option("--sample-photons", f->sample_photons,
                   "D: the media pass is measured on the simulated machine by tracing 1/D and 1/(2D) of the\n"
                   "photons (the time taken as linear in them) and rendering the view's sample (--sample-tiles)\n"
-                  "with and without the media;\n"
-                  "1: every photon; 0: count operations instead (CORNELL-FOG, 8 nodes: 12.8 s counted\n"
-                  "against 7.1 s simulated)")
+                  "with and without the media; 1: every photon; 0: count operations instead (CORNELL-FOG,\n"
+                  "8 nodes: 12.8 s counted against 7.1 s simulated)")
       ->capture_default_str()
       ->check(CLI::Range(0, 1000));
   cmd->add_option("--sample-tiles", f->sample_tiles,
