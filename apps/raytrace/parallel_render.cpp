@@ -10,6 +10,7 @@
 #include "apps/raytrace/render.hpp"
 #include "apps/raytrace/scene.hpp"
 #include "apps/raytrace/tile_prefetch.hpp"
+#include "apps/raytrace/tile_sample.hpp"
 #include "apps/raytrace/tile_renderer.hpp"
 #include "parix/backend.hpp"
 #include "parix/collectives.hpp"
@@ -334,16 +335,11 @@ void ParallelRenderJob::program(parix::Processor& p, ParallelRender& out, TilePr
   else run_static(p, work, distribution_);
 }
 
-void ParallelRenderJob::sample_tiles(int stride, bool runs_as_whole) {
+void ParallelRenderJob::sample_tiles(int stride) {
   if (distribution_ != Distribution::dynamic) throw std::invalid_argument("raytrace: only a dynamic render samples tiles");
   const Tiling tiling{settings_.width, settings_.height, settings_.tile};
-  stride = std::max(stride, 1);
-  const int run = runs_as_whole ? kRunTiles : 1;
-  order_.clear();
-  for (int y = 0; y < tiling.tiles_y(); ++y)
-    for (int x = 0; x < tiling.tiles_x(); ++x)
-      if ((x / run + y) % stride == stride / 2 % stride) order_.push_back(y * tiling.tiles_x() + x);
-  schedule_scale_ = runs_as_whole && !order_.empty() ? double(tiling.count()) / double(order_.size()) : 1.0;
+  order_ = sampled_tiles(tiling, stride, kRunTiles);
+  schedule_scale_ = order_.empty() ? 1.0 : double(tiling.count()) / double(order_.size());
 }
 
 int ParallelRenderJob::tiles_rendered_per_run() const {

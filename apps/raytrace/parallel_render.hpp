@@ -74,14 +74,11 @@ class ParallelRenderJob {
   // For one simulated run on `nodes` with `host_threads` (--host-threads): null if 1, or for B1.
   std::unique_ptr<TilePrefetch> make_prefetch(int nodes, int host_threads) const;
   void finish(ParallelRender& out) const;      // sums the counters, merges the hit ids
-  // Renders only one tile in `stride` (dynamic distribution only), on diagonals so that every row
-  // and column of tiles is sampled alike: a sample of the view whose cost `gcsim plan` scales up
-  // (a medium covering a few rows is met as often as in the whole image). Other tiles stay black.
-  // runs_as_whole: one run of kRunTiles consecutive tiles in `stride` instead, handed out in runs
-  // as long as the whole image's at that point, so that a node's tiles share their row planes as
-  // often as in the whole image (single tiles rebuilt them for every tile: CORNELL, 8 nodes, one in
-  // 8: 2.9 times the whole image's plane work, 9 % of the view).
-  void sample_tiles(int stride, bool runs_as_whole = false);
+  // Renders only a sample of the tiles (dynamic distribution only): one run of kRunTiles in
+  // `stride`, on diagonals (tile_sample.hpp), handed out in runs as long as the whole image's at
+  // that point, so that a node's tiles share their row planes as often as in the whole image. A
+  // sample of the view whose cost `gcsim plan` scales up; other tiles stay black.
+  void sample_tiles(int stride);
   int tiles_rendered_per_run() const;          // the tiles one run renders (all, or the sample's)
 
   // Node memory, declared before the host allocates it: every node's scene and tree, the 8-bit

@@ -8,10 +8,11 @@
 //            which keeps a fixed part (latencies, the deposits' all-reduce) fixed.
 //   SH grid  built on the host from the sample's photons; its counts scaled to all photons (its
 //            voxels and their photons grow with the map, eq. 13), each node charged its share.
-//   marching one tile in k of the view, on diagonals (every row and column of tiles alike, so a
-//            small medium is met about as often as in the image: every k-th row of tiles put
-//            example.toml's marching at 2.9 s against 1.4 s), rendered with the media and without:
-//            the difference (the marching; the set-up cancels) times the tiles over those rendered.
+//   marching the view's sample as view_sample.hpp takes it (sampled_view.hpp: one run of 4 tiles in
+//            k, on diagonals, the nodes' mean CPU time scaled to every tile, the waiting kept),
+//            rendered with the media (from the sample's photons) and without: the difference (the
+//            set-up cancels). Single tiles, the whole time scaled, put example.toml's marching
+//            23 % high on 8 nodes (1.53 s against 1.25 s).
 // The radiosity pass reads what the photons leave on the walls: the sample's deposits, scaled to
 // all photons, go to its sample (radiosity_sample.hpp).
 #include <cstddef>
@@ -28,7 +29,7 @@ namespace gcsim::render {
 struct MediaSampleOptions {
   std::size_t photons = 50000;  // the render's (--photons); render_setup.hpp's kDefaultPhotons
   int photon_divisor = 8;       // the sample traces photons / this, and half of that; 1: every photon
-  int tile_stride = 0;          // one tile in k; 0: chosen (at most 8, at least 16 tiles a node)
+  int tile_stride = 0;          // one run of tiles in k; 0: chosen (sample_tile_stride); 1: every tile
 };
 
 struct MediaSample {
@@ -40,14 +41,10 @@ struct MediaSample {
   std::vector<radiosity::Rgb> wall_power;  // the deposits scaled to every photon (empty: none)
   std::size_t traced = 0;     // photons of the larger sample
   int tile_stride = 1, tiles_rendered = 0, tiles = 0;
+  std::vector<int> rendered_tiles;  // which (raytrace/tile_sample.hpp), in index order
   double host_seconds = 0;    // wall time the samples took
   double seconds() const { return photon_seconds + grid_seconds + march_seconds; }  // the plan's media pass
 };
-
-// The tile stride `gcsim plan` samples the view with: at most 8, and at least 16 tiles per node.
-int sample_tile_stride(int tiles, int nodes);
-// The tiles of d's image as the render's view cuts it (RenderSettings' tile size).
-int view_tile_count(const scene::SceneDescription& d);
 
 // machine: cut to the nodes of the estimate. file: for messages. Throws std::invalid_argument where
 // the render would refuse the scene (the plan then keeps the operation count).

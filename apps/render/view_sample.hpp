@@ -1,10 +1,9 @@
 #pragma once
 // The view pass's cost measured rather than counted, as media_sample.hpp does for the media: the
 // render's own view program (view_pass.hpp, the ray tracer's dynamic distribution over the nodes,
-// pixels to node 0) runs on the simulated machine on one run of 4 tiles in k, on diagonals (runs as
-// long as the distribution's, so row planes are shared as in the whole image); the nodes' mean CPU
-// time is scaled by the tiles over those rendered, the rest (waiting, the last tiles' imbalance,
-// messages) kept. The rows of `gcsim plan` are split by running the sample with the plan's rays
+// pixels to node 0) runs on the simulated machine on one run of 4 tiles in k, on diagonals, the
+// nodes' mean CPU time scaled by the tiles over those rendered, the rest kept (sampled_view.hpp, the
+// same tiles and scaling as the media's marching sample). The rows of `gcsim plan` are split by running the sample with the plan's rays
 // added one kind at a time:
 //   view      primary rays and their shading alone
 //   specular  what the reflected and refracted rays add (the plan's specular pass is on)
@@ -24,13 +23,8 @@
 namespace gcsim::render {
 
 struct ViewSampleOptions {
-  int tile_stride = 0;  // one run of tiles in k; 0: chosen (view_tile_stride); 1: every tile
+  int tile_stride = 0;  // one run of tiles in k; 0: chosen (sample_tile_stride); 1: every tile
 };
-
-// The stride `gcsim plan` samples the view with: at most 4, and at least 16 tiles a node. Mirrors and
-// glass sit in a few tiles: one in 8 put CORNELL-MIRROR-GLASS's specular rays 33 % low on 1 node
-// (one in 4: 4 %), while the view sample costs under 0.1 s of host time on the built-in scenes.
-int view_tile_stride(int tiles, int nodes);
 
 struct ViewSample {
   double view_seconds = 0;      // primary rays, scaled to every tile
@@ -38,6 +32,7 @@ struct ViewSample {
   double shadow_seconds = 0;    // added by shadow rays (0: off)
   std::int64_t bytes_per_node = 0;  // the largest node's memory in the view (scene, tree; node 0's image)
   int tile_stride = 1, tiles_rendered = 0, tiles = 0;
+  std::vector<int> rendered_tiles;  // which (raytrace/tile_sample.hpp), in index order
   int runs = 0;                 // sample runs on the simulated machine (one per kind of ray)
   double host_seconds = 0;      // wall time the runs took
   double seconds() const { return view_seconds + specular_seconds + shadow_seconds; }

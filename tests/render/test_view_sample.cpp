@@ -1,5 +1,5 @@
-// gcsim plan's view estimate by sampling: one tile in k of the view traced on the simulated machine
-// (the render's own program), one run per kind of ray, scaled to every tile. A sample of every tile
+// gcsim plan's view estimate by sampling: one run of 4 tiles in k of the view traced on the simulated
+// machine (the render's own program), one run per kind of ray, scaled to every tile. A sample of every tile
 // is the pass itself and predicts it exactly; a real sample lands near it; the same sample twice
 // gives the same figures; the plan reports the three rows as measured.
 #include <gtest/gtest.h>
@@ -7,6 +7,8 @@
 #include <filesystem>
 
 #include "apps/common/scene/scene_file.hpp"
+#include "apps/raytrace/parallel_render.hpp"
+#include "apps/raytrace/tile_sample.hpp"
 #include "apps/render/plan.hpp"
 #include "apps/render/plan_cost.hpp"
 #include "apps/render/plan_report.hpp"
@@ -82,6 +84,18 @@ TEST_F(ViewSampleTest, ASampleLandsNearThePass) {
     EXPECT_LT(s.tiles_rendered, s.tiles);
     EXPECT_NEAR(s.seconds(), all, 0.15 * all);
   }
+}
+
+// The tiles the sample renders are sampled_tiles' one run of 4 in k (the media's marching sample
+// takes the same: test_media_sample.cpp).
+TEST_F(ViewSampleTest, ItRendersOneRunOfFourTilesInK) {
+  const raytrace::Tiling tiling{d.image.width, d.image.height, raytrace::RenderSettings{}.tile};
+  const ViewSample s = sample_view(d, plan, kScene, published_machine(2), {.tile_stride = 3});
+  const std::vector<int> expected = raytrace::sampled_tiles(tiling, 3, raytrace::kRunTiles);
+  EXPECT_EQ(s.rendered_tiles, expected);
+  EXPECT_EQ(s.tiles_rendered, int(expected.size()));
+  ASSERT_GE(expected.size(), 4u);
+  EXPECT_EQ(expected[3], expected[0] + 3);  // a run, not single tiles
 }
 
 TEST_F(ViewSampleTest, TheSameSampleTwiceGivesTheSameFigures) {

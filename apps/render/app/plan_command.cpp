@@ -46,12 +46,12 @@ void measure_media(const PlanFlags& f, const scene::SceneDescription& d, const P
   model.media_seconds = s.seconds();
   model.media_bytes = s.map_bytes;
   model.media_measured = fmt::format(
-      "{} and {} of the {} photons traced, then one tile in {} of the view ({} of {})\n"
-      "          with and without the media, on the simulated machine: photons ~{:.3g} s (linear in the photons\n"
+      "{} and {} of the {} photons traced, then one run of {} tiles in {} of the view ({} of\n"
+      "          {}) with and without the media, on the simulated machine: photons ~{:.3g} s (linear in the photons\n"
       "          through the two), SH grid ~{:.3g} s (its counts scaled to every photon), marching ~{:.3g} s (the\n"
-      "          difference, scaled to every tile); the view with them ~{:.3g} s.",
-      s.traced / 2, s.traced, f.photons, s.tile_stride, s.tiles_rendered, s.tiles, s.photon_seconds, s.grid_seconds,
-      s.march_seconds, s.view_seconds);
+      "          difference, the nodes' mean work scaled to every tile); the view with them ~{:.3g} s.",
+      s.traced / 2, s.traced, f.photons, raytrace::kRunTiles, s.tile_stride, s.tiles_rendered, s.tiles, s.photon_seconds,
+      s.grid_seconds, s.march_seconds, s.view_seconds);
 }
 
 // The view, specular and shadows passes measured by view_sample.hpp, into the model; the operation
@@ -99,17 +99,16 @@ void add_plan_command(pipeline::CommandGroups& g) {
       ->check(CLI::Range(0, 1000));
   cmd->add_option("--sample-photons", f->sample_photons,
                   "D: the media pass is measured on the simulated machine by tracing 1/D and 1/(2D) of the\n"
-                  "photons (the time taken as linear in them) and rendering one tile in k of the view, on\n"
-                  "diagonals, with and without the media (k up to 8, at least 16 tiles a node);\n"
-                  "1: every photon; 0: count operations instead (CORNELL-FOG, 8 nodes: 12.8 s counted\n"
-                  "against 7.1 s simulated)")
+                  "photons (the time taken as linear in them) and rendering the view's sample (--sample-tiles)\n"
+                  "with and without the media; 1: every photon; 0: count operations instead (CORNELL-FOG,\n"
+                  "8 nodes: 12.8 s counted against 7.1 s simulated)")
       ->capture_default_str()
       ->check(CLI::Range(0, 1000));
   cmd->add_option("--sample-tiles", f->sample_tiles,
                   "K: the view (with specular and shadow rays when those passes are on) is measured on the\n"
                   "simulated machine by tracing one run of 4 tiles in K, on diagonals, and scaling up;\n"
-                  "default: K chosen (up to 4, at least 16 tiles a node; the media's sample up to 8);\n"
-                  "1: every tile (exact); 0: count operations instead. Also the media's K when given")
+                  "default: K chosen (up to 4, at least 16 tiles a node); 1: every tile (exact); 0: count\n"
+                  "operations instead. The media's marching is measured on the same tiles (K chosen when 0)")
       ->check(CLI::Range(0, 1000));
   cmd->add_option("--photons", f->photons, "photons the render will emit (gcsim render --photons)")
       ->capture_default_str()

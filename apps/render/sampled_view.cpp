@@ -1,0 +1,70 @@
+#include "apps/render/sampled_view.hpp"
+
+#include <algorithm>
+#include <memory>
+#include <numeric>
+
+#include "apps/raytrace/render.hpp"
+#include "apps/raytrace/render_settings.hpp"
+
+namespace gcsim::render {
+
+int view_tile_count(const scene::SceneDescription& d) {
+  return raytrace::Tiling{d.image.width, d.image.height, raytrace::RenderSettings{}.tile}.count();
+}
+
+int sample_tile_stride(int tiles, int nodes) { return std::clamp(tiles / (16 * std::max(nodes, 1)), 1, 4); }
+
+double SampledView::scaled() const {
+  const double tile_scale = double(tiles) / double(std::max(rendered, 1));
+  return seconds + (tile_scale - 1.0) * compute;
+}
+
+namespace {
+
+media::GridBuildCounts scaled_counts(media::GridBuildCounts c, double f) {
+  for (std::uint64_t* n : {&c.knn_queries, &c.knn_photons, &c.range_queries, &c.range_candidates, &c.projections,
+                           &c.photon_adds})
+    *n = std::uint64_t(double(*n) * f + 0.5);
+  return c;
+}
+
+std::vector<int> tiles_of(const raytrace::ParallelRender& r) {
+  std::vector<int> tiles;
+  for (const auto& node : r.node_prims)
+    for (const raytrace::TilePrims& t : node) tiles.push_back(t.tile);
+  std::sort(tiles.begin(), tiles.end());
+  return tiles;
+}
+
+}  // namespace
+
+SampledView run_sampled_view(const SampledViewInput& in, const parix::SimulationOptions& machine) {
+  const RenderSetup& s = *in.setup;
+  std::vector<double> start(std::size_t(machine.config.nodes), 0.0);
+  std::unique_ptr<ViewPass> v;
+  const parix::RunResult r = parix::run_simulated(machine, [&](parix::Processor& p) {
+    GatheredPhotons g;
+    if (in.media && !in.photons) g = photon_pass(p, *in.media);  // no photon pass: nothing charged, one empty list per medium
+    if (!v) {  // as the render: the first node here builds the view
+      v = make_view_pass(s.split.surfaces, s.mesh_or_null(), in.radiosity, in.view, p.count(), in.media,
+                         in.photons ? *in.photons : std::move(g.per_region));
+      v->job->sample_tiles(in.tile_stride);
+    }
+    if (v->medium) charge_grid_share(p, scaled_counts(v->medium->grid_build(), in.grid_scale));
+    start[std::size_t(p.id())] = p.now_seconds();
+    v->job->program(p, v->result, nullptr);
+  });
+  SampledView out;
+  out.grid_seconds = *std::max_element(start.begin(), start.end());
+  out.seconds = r.simulated_seconds() - out.grid_seconds;
+  // Before its view a node only computed (its SH grid share; an absorbing medium's photon pass is empty).
+  out.compute = r.mean_compute_seconds() - std::accumulate(start.begin(), start.end(), 0.0) / double(start.size());
+  out.peak = r.memory_peak;
+  out.tiles = v->result.tiles_total, out.rendered = v->job->tiles_rendered_per_run();
+  out.rendered_tiles = tiles_of(v->result);
+  out.exposure = v->exposure;
+  return out;
+}
+
+}  // namespace gcsim::render
