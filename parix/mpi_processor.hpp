@@ -62,6 +62,7 @@ class MpiProcessor final : public Processor {
   int count() const override { return rank_.size; }
   SimTime now() const override { return rank_.now(); }
   void compute(std::span<const OpCount> ops) override;
+  void compute_in_comm(std::span<const OpCount> ops) override { compute(ops); }
   void use_memory(std::int64_t bytes, std::string_view kind) override;
   Link connect(int peer, int tag) override;
   void send(Link& link, std::span<const std::byte> data) override;

@@ -191,6 +191,14 @@ class Processor {
   virtual void compute(std::span<const OpCount> ops) = 0;
   void compute(std::initializer_list<OpCount> ops) { compute(std::span(ops.begin(), ops.size())); }
   void compute(std::string_view op, std::int64_t count) { compute({OpCount{op, count}}); }
+  // Work the communication layer does on the node's CPU, such as merging the parts an exchange
+  // received inside the exchange routine: charged as compute() charges, counted as communication
+  // (where the thesis's timers put it). The MPI backend counts the operations, as compute() does.
+  virtual void compute_in_comm(std::span<const OpCount> ops) = 0;
+  void compute_in_comm(std::string_view op, std::int64_t count) {
+    const OpCount one{op, count};
+    compute_in_comm(std::span(&one, 1));
+  }
 
   // Declares memory of a kind ("scene", "hemicube", ...) the application holds on this node,
   // before the host allocates it (bytes may be negative to release). Throws OutOfMemoryError when

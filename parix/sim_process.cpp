@@ -49,7 +49,11 @@ bool SimProcess::wait_for_activity(Activity& a, const char* call, int peer) {
   return true;
 }
 
-void SimProcess::compute(std::span<const OpCount> ops) {
+void SimProcess::compute(std::span<const OpCount> ops) { charge_ops(ops, false); }
+
+void SimProcess::compute_in_comm(std::span<const OpCount> ops) { charge_ops(ops, true); }
+
+void SimProcess::charge_ops(std::span<const OpCount> ops, bool as_comm) {
   machine::SimTime duration = 0;
   auto& s = sim_.stats[id_];
   for (const OpCount& op : ops) {
@@ -65,7 +69,7 @@ void SimProcess::compute(std::span<const OpCount> ops) {
   }
   if (duration == 0) return;
   if (!occupy_cpu(duration, ops.size() == 1 ? ops[0].op : std::string_view("compute"))) return;
-  s.compute += duration;
+  (as_comm ? s.comm : s.compute) += duration;
 }
 
 bool SimProcess::occupy_cpu(machine::SimTime duration, std::string_view label) {

@@ -76,6 +76,7 @@ class SimProcess final : public Processor, public Waiter {
   int count() const override;
   SimTime now() const override;
   void compute(std::span<const OpCount> ops) override;
+  void compute_in_comm(std::span<const OpCount> ops) override;
   void use_memory(std::int64_t bytes, std::string_view kind) override;
   Link connect(int peer, int tag) override;
   void send(Link& link, std::span<const std::byte> data) override;
@@ -114,6 +115,8 @@ class SimProcess final : public Processor, public Waiter {
   // Holds one of the node's CPUs for `duration` (compute and the CPU side of communication share
   // them); false when the run was abandoned meanwhile.
   bool occupy_cpu(machine::SimTime duration, std::string_view label);
+  // compute() and compute_in_comm(): the same charge, counted as compute or as communication.
+  void charge_ops(std::span<const OpCount> ops, bool as_comm);
   // The machine's [comm_cpu] cost of one operation: `fixed` plus the copy of `bytes`, as
   // communication time.
   bool charge_comm_cpu(machine::SimTime fixed, std::int64_t bytes, std::string_view label);

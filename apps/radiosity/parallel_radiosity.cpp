@@ -153,12 +153,12 @@ class RadiosityNode {
     if (o_.aggregate) {
       parix::Bytes w;
       for (std::size_t k = 0; k < shooters.size(); ++k) compute_share(shooters, k, w);
-      exchange(w, -1);
+      exchange(w, -1, int(shooters.size()));
     } else {
       for (std::size_t k = 0; k < shooters.size(); ++k) {
         parix::Bytes w;
         compute_share(shooters, k, w);
-        exchange(w, patch_mode ? shooters[k] % n_ : -1);
+        exchange(w, patch_mode ? shooters[k] % n_ : -1, 1);
       }
     }
   }
@@ -180,14 +180,17 @@ class RadiosityNode {
   }
 
   // owner >= 0 (patch partition): the shooter's owner has the whole row and broadcasts it.
-  void exchange(parix::Bytes& w, int owner) {
+  // Otherwise every node's part of `shooters` shooters, merged as o_.merge says.
+  void exchange(parix::Bytes& w, int owner, int shooters) {
     exchanged_ += std::int64_t(w.size());
     ops_.charge(p_);
     if (owner >= 0) {
       received_.absorb(parix::broadcast(p_, owner, owner == id_ ? std::move(w) : parix::Bytes{}, coll_));
-    } else {
-      received_.absorb(parix::allgather_views(p_, w, coll_));
+      return;
     }
+    received_.absorb(parix::allgather_views(p_, w, coll_));
+    if (const std::int64_t adds = merge_additions(o_.merge, n_, cells_, ne_); adds > 0)
+      p_.compute_in_comm("form_factor_merge", adds * shooters);
   }
 
   // 4. Every node assembles the rows, adding cells in the fixed cell order, and shoots.

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "apps/radiosity/cell_prefetch.hpp"
+#include "apps/radiosity/form_factor_merge.hpp"
 #include "apps/radiosity/progressive_solver.hpp"
 #include "apps/radiosity/projection_cache.hpp"
 #include "parix/backend.hpp"
@@ -43,6 +44,7 @@ struct ParallelOptions {
   bool keep_links = false;      // reuse links between exchanges instead of connecting per message
   int hierarchical_levels = 3;  // for hemicube-hierarchical
   CellAssignment cell_assignment = CellAssignment::cyclic;  // which cells each node computes
+  FormFactorMerge merge = FormFactorMerge::own_cells;       // how the received parts are added up
   std::vector<int> snapshot_loops;  // processor 0 keeps the radiosities after these loops
   std::function<void(int loop, double shot_fraction)> on_loop;  // processor 0 calls it after every loop (progress)
   // Computation sampling (projection_cache.hpp): the replicas of one simulated run share each

@@ -84,6 +84,20 @@ TEST(CommCpu, CommunicationCompetesWithComputeForTheCpus) {
   EXPECT_EQ(received, 2 * machine::kMillisecond + 50 * kMicrosecond);
 }
 
+// Work an exchange does on the CPU (compute_in_comm: an application merging what it received) is
+// charged as compute() is, holds a CPU the same way, and counts as communication. 8000 cycles at the
+// published 80 MHz: 100 us.
+TEST(CommCpu, WorkInsideAnExchangeCountsAsCommunication) {
+  const RunResult r = run_simulated(with_costs(0, 0, 0, 0), [&](Processor& p) {
+    p.compute("cycle", 8000);
+    p.compute_in_comm("cycle", 8000);
+  });
+  EXPECT_EQ(r.processors[1].compute, 100 * kMicrosecond);
+  EXPECT_EQ(r.processors[1].comm, 100 * kMicrosecond);
+  EXPECT_EQ(r.processors[1].finish, 200 * kMicrosecond);
+  EXPECT_EQ(r.processors[1].ops.at("cycle"), 16000);
+}
+
 TEST(CommCpu, MachineFileKeysAreReadAndChecked) {
   const std::string base(machine::default_machine_config_text());
   auto with_table = [&](const std::string& table) {

@@ -35,6 +35,7 @@ struct PredictFlags {
   int hemicube = 256;
   double energy = 0.999;
   std::string cell_assignment = "block";
+  std::string merge = "whole-hemicube";
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 };
 
@@ -53,6 +54,12 @@ void add_predict_options(CLI::App* cmd, PredictFlags& f) {
                   "radiosity cells better than cyclic: README, Calibration) or cyclic (`gcsim run radiosity`'s default)")
       ->check(CLI::IsMember({"cyclic", "block"}))
       ->capture_default_str();
+  cmd->add_option("--ff-merge", f.merge,
+                  "Radiosity tables: how each node adds up the exchanged form factors: whole-hemicube (each of the N "
+                  "parts over every cell and element, counted as communication: what tables 4.5 and 4.8 imply together; "
+                  "README, Calibration) or own-cells (`gcsim run radiosity`'s default)")
+      ->check(CLI::IsMember({"own-cells", "whole-hemicube"}))
+      ->capture_default_str();
   cmd->add_option("--jobs", f.jobs, "Simulations run side by side on this many host threads")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
@@ -64,6 +71,7 @@ cal::PredictionSettings settings(const PredictFlags& f) {
   s.hemicube = f.hemicube;
   s.energy = f.energy;
   s.cell_assignment = radiosity::parse_cell_assignment(f.cell_assignment);
+  s.merge = radiosity::parse_form_factor_merge(f.merge);
   s.jobs = f.jobs;
   return s;
 }

@@ -65,6 +65,13 @@ void add_solve_options(CLI::App* cmd, SolveFlags& f) {
                   "whose region sees most of the scene sets the pace). Same radiosities either way")
       ->check(CLI::IsMember({"cyclic", "block"}))
       ->capture_default_str();
+  cmd->add_option("--ff-merge", f.merge,
+                  "How a node adds up the form factors the exchange brought: own-cells (each part over the cells it "
+                  "holds) or whole-hemicube (each of the N parts over every cell and element, inside the exchange, "
+                  "so it counts as communication: the reading of the thesis's tables 4.5 and 4.8, "
+                  "apps/radiosity/form_factor_merge.hpp). Same radiosities either way")
+      ->check(CLI::IsMember({"own-cells", "whole-hemicube"}))
+      ->capture_default_str();
   cmd->add_option("--near-field-ratio", f.near_field_ratio,
                   "Near field: a shooter splits into n x n parts (each shooting its own hemicube of resolution / n) "
                   "until each part is at most this times its centre's distance to the nearest receiver. At the "
@@ -114,6 +121,7 @@ ParallelOptions parallel_options(const SolveFlags& f) {
   o.keep_links = f.keep_links;
   o.hierarchical_levels = f.levels;
   o.cell_assignment = parse_cell_assignment(f.cell_assignment);
+  o.merge = parse_form_factor_merge(f.merge);
   // Fail early, with the reason, on an impossible hemicube / partition combination.
   HemicubeOptions check = o.solver.hemicube;
   if (o.algorithm == ParallelAlgorithm::hemicube_hierarchical) check.hierarchical_levels = f.levels;

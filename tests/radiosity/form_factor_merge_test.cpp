@@ -1,0 +1,74 @@
+// How the received form factors are merged (form_factor_merge.hpp): the whole-hemicube merge adds
+// N x cells x elements per shooter on every node, inside the exchange (communication time), and
+// changes nothing else: the same radiosities, the same compute, every node later by exactly the
+// merges' time.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "apps/radiosity/form_factor_merge.hpp"
+#include "apps/radiosity/parallel_radiosity.hpp"
+#include "machine/machine_config.hpp"
+#include "parix/backend.hpp"
+#include "tests/support/published_machine.hpp"
+#include "test_scenes.hpp"
+
+namespace gcsim::radiosity {
+namespace {
+
+TEST(FormFactorMerge, AdditionsCountEveryPartOverTheWholeHemicube) {
+  EXPECT_EQ(merge_additions(FormFactorMerge::own_cells, 8, 192, 166), 0);
+  EXPECT_EQ(merge_additions(FormFactorMerge::whole_hemicube, 1, 192, 166), 0);  // one node: no exchange
+  EXPECT_EQ(merge_additions(FormFactorMerge::whole_hemicube, 8, 192, 166), 8LL * 192 * 166);
+  EXPECT_EQ(merge_additions(FormFactorMerge::whole_hemicube, 65536, 512 * 512 * 3, 100000),
+            65536LL * 512 * 512 * 3 * 100000);  // no int overflow
+  EXPECT_EQ(parse_form_factor_merge("whole-hemicube"), FormFactorMerge::whole_hemicube);
+  EXPECT_STREQ(to_string(FormFactorMerge::own_cells), "own-cells");
+  EXPECT_THROW(parse_form_factor_merge("whole"), std::invalid_argument);
+}
+
+struct MergeRun {
+  ParallelOutcome out;
+  parix::RunResult result;
+};
+
+MergeRun run_with(const Scene& scene, FormFactorMerge merge, parix::BcastAlgo bcast, int nodes) {
+  ParallelOptions o;
+  o.solver.hemicube.resolution = 32;
+  o.solver.hemicube.cells_per_side = 4;  // 16 + 4 x 8 = 48 cells
+  o.solver.energy = 0.9;
+  o.bcast = bcast;
+  o.merge = merge;
+  MergeRun r;
+  r.result = parix::run({"simulated", test_support::published_machine(nodes)},
+                        [&](parix::Processor& p) { radiosity_program(p, scene, o, &r.out); });
+  return r;
+}
+
+TEST(FormFactorMerge, WholeHemicubeAddsExactlyItsTimeAsCommunicationAndChangesNoRadiosity) {
+  const Scene scene = testing::lit_room();
+  const int cells = 48, elements = int(scene.elements.size());
+  const machine::MachineConfig machine = machine::default_machine_config();
+  for (parix::BcastAlgo bcast : {parix::BcastAlgo::sequential, parix::BcastAlgo::tree}) {
+    const int nodes = 4;
+    const MergeRun own = run_with(scene, FormFactorMerge::own_cells, bcast, nodes);
+    const MergeRun whole = run_with(scene, FormFactorMerge::whole_hemicube, bcast, nodes);
+    ASSERT_EQ(whole.out.element_radiosity, own.out.element_radiosity);
+    std::int64_t shots = 0;
+    for (const StepRecord& s : whole.out.steps) shots += std::int64_t(s.shooters.size());
+    ASSERT_GT(shots, 2);
+    const std::int64_t adds = shots * nodes * cells * elements;
+    const machine::SimTime merge = machine::op_time(machine, "form_factor_merge", std::int64_t(nodes) * cells * elements);
+    for (int i = 0; i < nodes; ++i) {
+      const parix::ProcessorStats &a = own.result.processors[std::size_t(i)], &b = whole.result.processors[std::size_t(i)];
+      EXPECT_EQ(b.ops.at("form_factor_merge"), adds) << i;
+      EXPECT_FALSE(a.ops.count("form_factor_merge"));
+      EXPECT_EQ(b.compute, a.compute) << i;
+      EXPECT_EQ(b.comm - a.comm, shots * merge) << i;
+      EXPECT_EQ(b.finish - a.finish, shots * merge) << i;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace gcsim::radiosity
