@@ -33,12 +33,16 @@ void Kernel::at(SimTime t, Action&& a) {
   const std::uint32_t slot = take_slot();
   action(slot) = std::move(a);
   const Key key{t, seq_++, slot};
+  // seq grows, so a key not earlier than the run's last is later than every key in the run.
+  if (in_order_.empty() || t >= in_order_.back().time) {
+    in_order_.push_back(key);
+    return;
+  }
   heap_.push_back(key);
   sift_up(heap_.size() - 1, key);
 }
 
-bool Kernel::step() {
-  if (heap_.empty()) return false;
+inline Kernel::Key Kernel::pop_heap() {
   const Key top = heap_.front();
   const Key last = heap_.back();
   heap_.pop_back();
@@ -62,6 +66,19 @@ bool Kernel::step() {
       i = best;
     }
     sift_up(i, last);
+  }
+  return top;
+}
+
+bool Kernel::step() {
+  Key top;
+  if (!in_order_.empty() && (heap_.empty() || in_order_.front() < heap_.front())) {
+    top = in_order_.front();
+    in_order_.pop_front();
+  } else if (!heap_.empty()) {
+    top = pop_heap();
+  } else {
+    return false;
   }
   now_ = top.time;
   ++processed_;
