@@ -287,6 +287,14 @@ void SimProcess::recv(Link& link, Bytes& into) {
 }
 
 void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {
+  if (!r.running()) {  // over before the wait (a delivered isend): no time passes, nothing to trace
+    if (!r.cancelled()) charge_receive_cpu(r);
+    return;
+  }
+  wait_for_running(r, call, kind);
+}
+
+void SimProcess::wait_for_running(RequestState& r, const char* call, TraceKind kind) {
   const machine::SimTime start = sim_.kernel.now();
   if (!wait_for_activity(r, call, r.peer)) return;
   const machine::SimTime end = sim_.kernel.now();
@@ -300,6 +308,10 @@ void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {
 
 void SimProcess::charge_receive_cpu(RequestState& r) {
   if (!sim_.charges_comm_cpu || !r.is_receive || r.cpu_charged) return;  // the first test: per message
+  charge_receive_cpu_now(r);
+}
+
+void SimProcess::charge_receive_cpu_now(RequestState& r) {
   r.cpu_charged = true;
   charge_comm_cpu(sim_.config.comm_cpu.recv, static_cast<std::int64_t>(r.data.size()), "recv_cpu");
 }

@@ -110,14 +110,18 @@ class SimProcess final : public Processor, public Waiter {
  private:
   Request post_send(Link& link, std::span<const std::byte> data, bool synchronous);
   LinkEnd& end_of(const Link& link, const char* call);
+  // A request that is over already (a delivered isend) costs a test; waiting for one still
+  // running is out of line.
   void wait_for(RequestState& r, const char* call, TraceKind kind);
+  void wait_for_running(RequestState& r, const char* call, TraceKind kind);
   // Holds one of the node's CPUs for `duration` (compute and the CPU side of communication share
   // them); false when the run was abandoned meanwhile.
   bool occupy_cpu(machine::SimTime duration, std::string_view label);
   // The machine's [comm_cpu] cost of one operation: `fixed` plus the copy of `bytes`, as
   // communication time.
   bool charge_comm_cpu(machine::SimTime fixed, std::int64_t bytes, std::string_view label);
-  void charge_receive_cpu(RequestState& r);
+  void charge_receive_cpu(RequestState& r);  // its tests inline (the same unit), the charge not
+  void charge_receive_cpu_now(RequestState& r);
   Simulation& sim_;
   int id_;
   int thread_;
