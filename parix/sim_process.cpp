@@ -186,7 +186,7 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   // the kernel to store inline, which keeps the per-message cost free of extra allocations.
   const std::int64_t slot = sim_.take_slot();
   Message& m = sim_.in_flight[slot];
-  m.data = sim_.payloads.copy(data);
+  sim_.payloads.copy_into(m.data, data);
   m.send = req;
   m.synchronous = synchronous;
   m.id = sim_.next_message++;
