@@ -25,21 +25,36 @@ inline void Kernel::sift_up(std::size_t i, const Key& key) {
   h[i] = key;
 }
 
+// The common case in line, without a call before the action's move, so that it saves few
+// registers: a free slot and a key that extends the in-order run, which has room.
 void Kernel::at(SimTime t, Action&& a) {
+  if (t < now_ || free_slots_.empty() || in_order_.full() || (!in_order_.empty() && t < in_order_.back().time))
+      [[unlikely]] {
+    return at_slow(t, std::move(a));
+  }
+  const std::uint32_t slot = free_slots_.back();
+  free_slots_.pop_back();
+  in_order_.push_back({t, seq_++, slot});
+  action(slot) = std::move(a);
+}
+
+void Kernel::at_slow(SimTime t, Action&& a) {
   if (t < now_) {
     throw std::logic_error("Kernel::at: event scheduled in the past (" + std::to_string(t) + " ps < now " +
                            std::to_string(now_) + " ps)");
   }
   const std::uint32_t slot = take_slot();
   action(slot) = std::move(a);
-  const Key key{t, seq_++, slot};
-  // seq grows, so a key not earlier than the run's last is later than every key in the run.
-  if (in_order_.empty() || t >= in_order_.back().time) {
-    in_order_.push_back(key);
-    return;
+  // seq grows, so a key not earlier than the run's last is later than every key in the run. A
+  // key earlier than the last ones moves them to the heap instead of going there itself: the
+  // run keeps the common delay of a flow, the heap takes the few later ones it would block.
+  while (!in_order_.empty() && t < in_order_.back().time) {
+    const Key later = in_order_.back();
+    in_order_.pop_back();
+    heap_.push_back(later);
+    sift_up(heap_.size() - 1, later);
   }
-  heap_.push_back(key);
-  sift_up(heap_.size() - 1, key);
+  in_order_.push_back({t, seq_++, slot});
 }
 
 inline Kernel::Key Kernel::pop_heap() {

@@ -51,6 +51,7 @@ class Kernel {
     }
   };
   static constexpr std::size_t kArity = 4;  // children per heap node
+  void at_slow(SimTime t, Action&& action);  // a new slot chunk, the heap, or a time in the past
   void sift_up(std::size_t i, const Key& key);
   Key pop_heap();
   static constexpr std::uint32_t kChunkBits = 10;

@@ -15,14 +15,16 @@ class RingBuffer {
  public:
   bool empty() const { return size_ == 0; }
   std::size_t size() const { return size_; }
-  std::size_t capacity() const { return items_.size(); }
+  std::size_t capacity() const { return mask_ + (items_.empty() ? 0 : 1); }
+  bool full() const { return size_ == capacity(); }
   const T& front() const { return items_[head_]; }
   const T& back() const { return items_[(head_ + size_ - 1) & mask_]; }
   void push_back(const T& v) {
-    if (size_ == items_.size()) grow();
+    if (full()) grow();
     items_[(head_ + size_) & mask_] = v;
     ++size_;
   }
+  void pop_back() { --size_; }
   void pop_front() {
     head_ = (head_ + 1) & mask_;
     --size_;
