@@ -15,6 +15,7 @@ class AnalyticNetwork final : public NetworkModel {
   void settle() override;
 
  private:
+  void transfer_slow(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival);
   // A traced run records every channel of every message as it goes: routed each time.
   void transfer_traced(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival);
   // Untraced runs add a message's bytes and busy time to its pair's entry only (no route walk).

@@ -8,6 +8,7 @@
 //
 // Direct-mapped: a pair lives in the one entry its hash names, so a lookup is a multiplication and
 // a comparison; a pair colliding with another evicts it (flushing its sums first).
+#include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -20,7 +21,7 @@ namespace gcsim::machine {
 
 class RouteCache {
  public:
-  struct Entry {
+  struct alignas(64) Entry {  // one cache line; indexing is a shift
     int src = -1;  // -1: empty
     int dst = -1;
     int hops = 0;
@@ -33,7 +34,7 @@ class RouteCache {
   explicit RouteCache(const Routing& routing, std::size_t max_entries = 4096) : routing_(routing) {
     const auto n = static_cast<std::size_t>(routing.nodes());
     std::size_t want = n > 0 && n * n < max_entries ? n * n : max_entries;
-    entries_.resize(std::bit_ceil(want));
+    entries_.resize(std::bit_ceil(std::max<std::size_t>(want, 2)));  // 2+: the hash's shift stays below 64
     shift_ = 64 - std::countr_zero(entries_.size());
   }
 
@@ -44,6 +45,11 @@ class RouteCache {
     if (e.src != src || e.dst != dst) [[unlikely]] fill(e, src, dst, bytes_out, busy_out);
     return e;
   }
+  // The entry of src -> dst if it holds that pair, else null (nothing changes).
+  Entry* lookup(int src, int dst) {
+    Entry& e = entries_[index(src, dst)];
+    return e.src == src && e.dst == dst ? &e : nullptr;
+  }
   // Adds every entry's pending sums to the channels.
   void flush(std::vector<std::int64_t>& bytes_out, std::vector<SimTime>& busy_out) {
     for (Entry& e : entries_) flush(e, bytes_out, busy_out);
@@ -53,7 +59,7 @@ class RouteCache {
  private:
   std::size_t index(int src, int dst) const {
     const std::uint64_t key = std::uint64_t(std::uint32_t(src)) << 32 | std::uint32_t(dst);
-    return shift_ >= 64 ? 0 : static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift_);
+    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift_);
   }
   static void flush(Entry& e, std::vector<std::int64_t>& bytes_out, std::vector<SimTime>& busy_out) {
     if (e.bytes == 0 && e.busy == 0) return;
@@ -75,7 +81,7 @@ class RouteCache {
 
   const Routing& routing_;
   std::vector<Entry> entries_;
-  int shift_ = 64;  // 64 - log2(entries)
+  int shift_ = 63;  // 64 - log2(entries)
 };
 
 }  // namespace gcsim::machine
