@@ -253,7 +253,10 @@ void SimProcess::send(Link& link, std::span<const std::byte> data) {
   wait_for(*r.state(), "send", TraceKind::send);
 }
 
-Request SimProcess::irecv(Link& link) {
+Request SimProcess::irecv(Link& link) { return post_receive(link); }
+
+// Inline into recv as well as irecv: a blocking receive is the common case.
+[[gnu::always_inline]] inline Request SimProcess::post_receive(Link& link) {
   LinkEnd& e = end_of(link, "recv");
   Request req = sim_.requests.take();
   RequestState& s = *req.state();
@@ -281,9 +284,12 @@ Bytes SimProcess::recv(Link& link) {
 }
 
 void SimProcess::recv(Link& link, Bytes& into) {
-  Request r = irecv(link);
-  wait_for(*r.state(), "recv", TraceKind::recv);
-  r.take_into(into);
+  Request r = post_receive(link);
+  RequestState& s = *r.state();
+  wait_for(s, "recv", TraceKind::recv);
+  // Request::take_into, with the pool known: into's old storage goes back to it.
+  into.swap(s.data);
+  sim_.payloads.give(std::move(s.data));
 }
 
 void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {

@@ -109,6 +109,7 @@ class SimProcess final : public Processor, public Waiter {
 
  private:
   Request post_send(Link& link, std::span<const std::byte> data, bool synchronous);
+  Request post_receive(Link& link);
   LinkEnd& end_of(const Link& link, const char* call);
   // A request that is over already (a delivered isend) costs a test; waiting for one still
   // running is out of line.
