@@ -35,7 +35,7 @@ void Kernel::at(SimTime t, Action&& a) {
   const std::uint32_t slot = free_slots_.back();
   free_slots_.pop_back();
   in_order_.push_back({t, seq_++, slot});
-  action(slot) = std::move(a);
+  action(slot).fill(std::move(a));  // free slots are empty (reset by step)
 }
 
 void Kernel::at_slow(SimTime t, Action&& a) {
@@ -44,7 +44,7 @@ void Kernel::at_slow(SimTime t, Action&& a) {
                            std::to_string(now_) + " ps)");
   }
   const std::uint32_t slot = take_slot();
-  action(slot) = std::move(a);
+  action(slot).fill(std::move(a));  // free slots are empty (reset by step)
   // seq grows, so a key not earlier than the run's last is later than every key in the run. A
   // key earlier than the last ones moves them to the heap instead of going there itself: the
   // run keeps the common delay of a flow, the heap takes the few later ones it would block.

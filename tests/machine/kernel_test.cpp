@@ -167,6 +167,18 @@ TEST(KernelAction, MovesLeaveTheSourceEmpty) {
   EXPECT_EQ(seen, 7);
   b.reset();
   EXPECT_EQ(token.use_count(), 1);
+  // fill: into an empty action, both for an owning callable (moved by its manager) and a plain one.
+  KernelAction c;
+  c.fill(KernelAction([&seen, token] { seen = *token + 1; }));
+  EXPECT_EQ(token.use_count(), 2);
+  c();
+  EXPECT_EQ(seen, 8);
+  KernelAction d;
+  d.fill(KernelAction([&seen] { seen = 9; }));
+  d();
+  EXPECT_EQ(seen, 9);
+  c.reset();
+  EXPECT_EQ(token.use_count(), 1);
 }
 
 TEST(SimTime, ConversionsRoundCostsUp) {
