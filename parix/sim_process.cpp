@@ -167,7 +167,8 @@ inline LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
   return *found;
 }
 
-Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool synchronous) {
+// Inline into isend and send: one call per message less.
+[[gnu::always_inline]] inline Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool synchronous) {
   if (sim_.charges_comm_cpu) {
     end_of(link, "send");  // checked before the CPU is spent on it
     // The CPU hands the message to the communication processors before it travels (copying it).
