@@ -209,7 +209,7 @@ inline LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
 
 void Simulation::deliver(std::int64_t slot) {
   Message& m = in_flight[slot];  // stays put: nothing parks a message during a delivery
-  if (!m.data.empty()) declare_memory(m.src, -static_cast<std::int64_t>(m.data.size()), in_flight_kind);  // releasing never fails
+  if (!m.data.empty()) release_memory(m.src, static_cast<std::int64_t>(m.data.size()), in_flight_kind);
   const std::int64_t end = m.dst_end;  // its pair is not reused while a message travels to it
   LinkEnd& e = links.at(end);
   const std::int64_t seq = m.link_seq;
@@ -273,7 +273,7 @@ Request SimProcess::irecv(Link& link) { return post_receive(link); }
   if (!e.arrived.empty()) {
     Message m = std::move(e.arrived.front());
     e.arrived.pop_front();
-    if (!m.data.empty()) sim_.declare_memory(id_, -static_cast<std::int64_t>(m.data.size()), sim_.received_kind);
+    if (!m.data.empty()) sim_.release_memory(id_, static_cast<std::int64_t>(m.data.size()), sim_.received_kind);
     s.data = std::move(m.data);
     s.complete();
     if (m.synchronous) sim_.complete(m.send);
