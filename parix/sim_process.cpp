@@ -12,6 +12,9 @@ using machine::TraceKind;
 
 // ---- SimProcess ------------------------------------------------------------------------------
 
+SimProcess::SimProcess(Simulation& sim, int id, int thread)
+    : sim_(sim), id_(id), thread_(thread), stats_(sim.stats.at(id)), node_(sim.node_of.at(id)) {}
+
 int SimProcess::id() const { return id_; }
 int SimProcess::count() const { return sim_.config.nodes; }
 SimTime SimProcess::now() const { return sim_.kernel.now(); }
@@ -51,7 +54,7 @@ bool SimProcess::wait_for_activity(Activity& a, const char* call, int peer) {
 
 void SimProcess::compute(std::span<const OpCount> ops) {
   machine::SimTime duration = 0;
-  auto& s = sim_.stats[id_];
+  auto& s = stats_;
   for (const OpCount& op : ops) {
     if (op.count < 0) throw ParixError("compute: negative count for operation '" + std::string(op.op) + "'");
     try {
@@ -71,7 +74,7 @@ void SimProcess::compute(std::span<const OpCount> ops) {
 bool SimProcess::occupy_cpu(machine::SimTime duration, std::string_view label) {
   const machine::SimTime start = sim_.kernel.now();
   Activity work;
-  sim_.nodes[sim_.node_of[id_]].compute(duration, [&work] { work.complete(); });
+  sim_.nodes[node_].compute(duration, [&work] { work.complete(); });
   if (!wait_for_activity(work, "compute", -1)) return false;
   if (sim_.trace.enabled()) sim_.trace.record({TraceKind::compute, id_, -1, start, sim_.kernel.now(), 0, -1, label, thread_});
   return true;
@@ -84,7 +87,7 @@ bool SimProcess::charge_comm_cpu(machine::SimTime fixed, std::int64_t bytes, std
   if (d == 0) return true;  // no event at all, so timings stay as they were
   const machine::SimTime start = sim_.kernel.now();
   if (!occupy_cpu(d, label)) return false;
-  sim_.stats[id_].comm += sim_.kernel.now() - start;
+  stats_.comm += sim_.kernel.now() - start;
   return true;
 }
 
@@ -115,7 +118,7 @@ Link SimProcess::connect(int peer, int tag) {
     LinkEnd& eb = sim_.links.at(b);
     ea.owner = id_, ea.peer = peer;
     eb.owner = peer, eb.peer = id_;
-    const machine::SimTime up = sim_.connections.set_up(sim_.node_of[id_], sim_.node_of[peer], start);
+    const machine::SimTime up = sim_.connections.set_up(node_, sim_.node_of[peer], start);
     std::int64_t* theirs = other.result;
     SimProcess* them = other.who;
     const machine::SimTime their_start = other.since;
@@ -128,7 +131,7 @@ Link SimProcess::connect(int peer, int tag) {
     if (!wait_for_activity(set_up, "connect", peer)) return {};
     mine = a;
     sim_.stats[peer].connections += 1;
-    sim_.stats[id_].connections += 1;
+    stats_.connections += 1;
     if (sim_.trace.enabled()) {
       sim_.trace.record({TraceKind::connect, peer, id_, their_start, up, 0, -1, "connect", them->thread()});
       sim_.trace.record({TraceKind::connect, id_, peer, start, up, 0, -1, "connect", thread_});
@@ -138,8 +141,8 @@ Link SimProcess::connect(int peer, int tag) {
   }
   if (!charge_comm_cpu(sim_.config.comm_cpu.connect, 0, "connect_cpu")) return {};
   const machine::SimTime took = sim_.kernel.now() - start;
-  sim_.stats[id_].comm += took;
-  sim_.stats[id_].connect += took;
+  stats_.comm += took;
+  stats_.connect += took;
   return Link(this, peer, tag, mine);
 }
 
@@ -200,10 +203,10 @@ inline LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
   m.src = id_;
   m.sent = sim_.kernel.now();
   m.dst_end = e.peer_end;
-  auto& s = sim_.stats[id_];
+  auto& s = stats_;
   ++s.messages_sent;
   s.bytes_sent += bytes;
-  sim_.network->transfer(sim_.node_of[id_], sim_.node_of[e.peer], bytes, [sim = &sim_, slot] { sim->deliver(slot); });
+  sim_.network->transfer(node_, sim_.node_of[e.peer], bytes, [sim = &sim_, slot] { sim->deliver(slot); });
   return req;
 }
 
@@ -310,7 +313,7 @@ void SimProcess::wait_for_running(RequestState& r, const char* call, TraceKind k
   const machine::SimTime start = sim_.kernel.now();
   if (!wait_for_activity(r, call, r.peer)) return;
   const machine::SimTime end = sim_.kernel.now();
-  sim_.stats[id_].comm += end - start;
+  stats_.comm += end - start;
   if (r.cancelled()) return;  // withdrawn (before the wait, or by another thread meanwhile)
   if (sim_.trace.enabled() && end > start) {
     sim_.trace.record({kind, id_, r.peer, start, end, static_cast<std::int64_t>(r.data.size()), -1, call, thread_});
@@ -361,7 +364,7 @@ std::size_t SimProcess::wait_any(std::span<Request* const> rs) {
     if (sim_.cancelling) return 0;
   }
   const machine::SimTime end = sim_.kernel.now();
-  sim_.stats[id_].comm += end - start;
+  stats_.comm += end - start;
   if (sim_.trace.enabled() && end > start) {
     sim_.trace.record({TraceKind::wait, id_, rs[i]->state()->peer, start, end, 0, -1, "wait_any", thread_});
   }

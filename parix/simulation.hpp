@@ -69,7 +69,7 @@ struct LinkEnd {
 
 class SimProcess final : public Processor, public Waiter {
  public:
-  SimProcess(Simulation& sim, int id, int thread) : sim_(sim), id_(id), thread_(thread) {}
+  SimProcess(Simulation& sim, int id, int thread);
   ~SimProcess() override { drop_persistent_links(); }
 
   int id() const override;
@@ -126,6 +126,10 @@ class SimProcess final : public Processor, public Waiter {
   Simulation& sim_;
   int id_;
   int thread_;
+  // This processor's statistics and node, looked up once: the simulation sizes both tables
+  // before any process exists and never resizes them.
+  ProcessorStats& stats_;
+  int node_;
 };
 
 // options.placement checked to be a permutation of 0..nodes-1; identity when empty.
