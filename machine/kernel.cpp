@@ -25,20 +25,39 @@ inline void Kernel::sift_up(std::size_t i, const Key& key) {
   h[i] = key;
 }
 
+// The common case in line, without a call before the action's move, so that it saves few
+// registers: a free slot and a key that extends the in-order run, which has room.
 void Kernel::at(SimTime t, Action&& a) {
+  if (t < now_ || free_slots_.empty() || in_order_.full() || (!in_order_.empty() && t < in_order_.back().time))
+      [[unlikely]] {
+    return at_slow(t, std::move(a));
+  }
+  const std::uint32_t slot = free_slots_.back();
+  free_slots_.pop_back();
+  in_order_.push_back({t, seq_++, slot});
+  action(slot).fill(std::move(a));  // free slots are empty (reset by step)
+}
+
+void Kernel::at_slow(SimTime t, Action&& a) {
   if (t < now_) {
     throw std::logic_error("Kernel::at: event scheduled in the past (" + std::to_string(t) + " ps < now " +
                            std::to_string(now_) + " ps)");
   }
   const std::uint32_t slot = take_slot();
-  action(slot) = std::move(a);
-  const Key key{t, seq_++, slot};
-  heap_.push_back(key);
-  sift_up(heap_.size() - 1, key);
+  action(slot).fill(std::move(a));  // free slots are empty (reset by step)
+  // seq grows, so a key not earlier than the run's last is later than every key in the run. A
+  // key earlier than the last ones moves them to the heap instead of going there itself: the
+  // run keeps the common delay of a flow, the heap takes the few later ones it would block.
+  while (!in_order_.empty() && t < in_order_.back().time) {
+    const Key later = in_order_.back();
+    in_order_.pop_back();
+    heap_.push_back(later);
+    sift_up(heap_.size() - 1, later);
+  }
+  in_order_.push_back({t, seq_++, slot});
 }
 
-bool Kernel::step() {
-  if (heap_.empty()) return false;
+inline Kernel::Key Kernel::pop_heap() {
   const Key top = heap_.front();
   const Key last = heap_.back();
   heap_.pop_back();
@@ -62,6 +81,19 @@ bool Kernel::step() {
       i = best;
     }
     sift_up(i, last);
+  }
+  return top;
+}
+
+bool Kernel::step() {
+  Key top;
+  if (!in_order_.empty() && (heap_.empty() || in_order_.front() < heap_.front())) {
+    top = in_order_.front();
+    in_order_.pop_front();
+  } else if (!heap_.empty()) {
+    top = pop_heap();
+  } else {
+    return false;
   }
   now_ = top.time;
   ++processed_;

@@ -1,14 +1,18 @@
 #pragma once
 // The discrete-event kernel: a clock and a queue of actions ordered by (time, sequence number).
 // Ties at equal times run in the order they were scheduled, so a run is deterministic.
-// The queue is a 4-ary heap of small (time, sequence, slot) keys; the actions themselves stay
-// in place in a pool of fixed-size chunks whose slots are reused, so scheduling an event
-// allocates nothing once the pool has grown to the run's peak number of pending events.
+// The queue holds small (time, sequence, slot) keys in two parts: a run of keys scheduled in
+// nondecreasing time (a FIFO: most events of a steady message flow, where each message takes the
+// same time, come in order) and a 4-ary heap for the others; a step pops the earlier of the two
+// fronts, so the order is the same as one heap's. The actions themselves stay in place in a pool
+// of fixed-size chunks whose slots are reused, so scheduling an event allocates nothing once the
+// pool has grown to the run's peak number of pending events.
 #include <cstdint>
 #include <memory>
 #include <vector>
 
 #include "machine/kernel_action.hpp"
+#include "machine/ring_buffer.hpp"
 #include "machine/sim_time.hpp"
 
 namespace gcsim::machine {
@@ -19,8 +23,8 @@ class Kernel {
 
   SimTime now() const { return now_; }
   std::uint64_t events_processed() const { return processed_; }
-  bool idle() const { return heap_.empty(); }
-  std::size_t pending() const { return heap_.size(); }
+  bool idle() const { return heap_.empty() && in_order_.empty(); }
+  std::size_t pending() const { return heap_.size() + in_order_.size(); }
 
   // Schedules action at absolute time t (t >= now()).
   void at(SimTime t, Action&& action);  // by reference: moved once, into its slot
@@ -47,7 +51,9 @@ class Kernel {
     }
   };
   static constexpr std::size_t kArity = 4;  // children per heap node
+  void at_slow(SimTime t, Action&& action);  // a new slot chunk, the heap, or a time in the past
   void sift_up(std::size_t i, const Key& key);
+  Key pop_heap();
   static constexpr std::uint32_t kChunkBits = 10;
   static constexpr std::uint32_t kChunk = 1u << kChunkBits;
   Action& action(std::uint32_t slot) { return chunks_[slot >> kChunkBits][slot & (kChunk - 1)]; }
@@ -60,7 +66,8 @@ class Kernel {
   }
   void add_chunk();
 
-  std::vector<Key> heap_;  // min-heap on (time, seq)
+  RingBuffer<Key> in_order_;  // keys later than or equal to their predecessor, in (time, seq) order
+  std::vector<Key> heap_;     // min-heap on (time, seq) of the keys that came out of order
   // Chunks never move, so an action runs in place even if it schedules more events.
   std::vector<std::unique_ptr<Action[]>> chunks_;
   std::vector<std::uint32_t> free_slots_;

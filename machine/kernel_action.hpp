@@ -52,6 +52,10 @@ class KernelAction {
   KernelAction& operator=(const KernelAction&) = delete;
   ~KernelAction() { reset(); }
 
+  // Moves o's callable into this action, which must be empty (o is left empty): assignment
+  // without first destroying what is known to be nothing (the kernel's free slots).
+  void fill(KernelAction&& o) noexcept { take(o); }
+
   explicit operator bool() const { return invoke_ != nullptr; }
   // const, as std::function's: a lambda that is not mutable calls its captured actions.
   void operator()() const { invoke_(const_cast<unsigned char*>(buffer_)); }

@@ -6,12 +6,6 @@
 
 namespace gcsim::machine {
 
-SimTime NetworkModel::latency(int hops) const {
-  const MachineConfig& c = ctx_.config;
-  if (hops <= 0) return c.message_setup;
-  return c.message_setup + c.network_latency + SimTime(hops - 1) * c.hop_latency;
-}
-
 SimTime NetworkModel::serialization(std::int64_t bytes) const {
   if (bytes <= 0) return 0;
   return from_seconds(static_cast<double>(bytes) / ctx_.config.channel_bandwidth());

@@ -35,18 +35,32 @@ class NetworkModel {
   virtual void transfer(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival) = 0;
 
   // Set-up plus latency for a message over `hops` hops (zero hops: set-up only).
-  SimTime latency(int hops) const;
+  // Inline: the analytic model asks it once per message.
+  SimTime latency(int hops) const {
+    const MachineConfig& c = ctx_.config;
+    if (hops <= 0) return c.message_setup;
+    return c.message_setup + c.network_latency + SimTime(hops - 1) * c.hop_latency;
+  }
   // Time to push bytes through one channel at full bandwidth.
   SimTime serialization(std::int64_t bytes) const;
   // What a message alone on the network takes.
   SimTime uncontended_time(int hops, std::int64_t bytes) const { return latency(hops) + (hops > 0 ? serialization(bytes) : 0); }
 
   std::uint64_t messages() const { return messages_; }
-  // Bytes and busy time per mesh channel (indexed like Mesh channels).
-  const std::vector<std::int64_t>& channel_bytes() const { return channel_bytes_; }
-  const std::vector<SimTime>& channel_busy() const { return channel_busy_; }
+  // Bytes and busy time per mesh channel (indexed like Mesh channels); a model that defers its
+  // accounting settles it first.
+  const std::vector<std::int64_t>& channel_bytes() {
+    settle();
+    return channel_bytes_;
+  }
+  const std::vector<SimTime>& channel_busy() {
+    settle();
+    return channel_busy_;
+  }
 
  protected:
+  // Adds what the model holds back to channel_bytes_ and channel_busy_.
+  virtual void settle() {}
   void account(const std::vector<int>& route, std::int64_t bytes, SimTime start, SimTime end);
   NetworkContext ctx_;
   std::uint64_t messages_ = 0;

@@ -19,11 +19,13 @@ class Fifo {
   T& front() { return items_[head_]; }
   void push_back(T value) { items_.push_back(std::move(value)); }
   void pop_front() {
-    items_[head_] = T{};  // releases what the slot held (a payload, a request) at once
-    if (++head_ == items_.size()) {
+    if (head_ + 1 == items_.size()) {  // the last one: clear() releases it
       items_.clear();
       head_ = 0;
-    } else if (head_ * 2 >= items_.size()) {
+      return;
+    }
+    items_[head_] = T{};  // releases what the slot held (a payload, a request) at once
+    if (++head_ * 2 >= items_.size()) {
       items_.erase(items_.begin(), items_.begin() + static_cast<std::ptrdiff_t>(head_));
       head_ = 0;
     }

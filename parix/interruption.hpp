@@ -2,6 +2,7 @@
 // Stopping a run from outside (SIGINT, SIGTERM): a signal handler may only set a lock-free atomic,
 // so the request is a flag that the simulation loop polls (parix/simulation.cpp). The run then
 // unwinds every processor, closes its trace and throws Interrupted with what it had reached.
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
@@ -10,8 +11,13 @@
 namespace gcsim::parix {
 
 // Async-signal-safe: sets the flag only.
+namespace detail {
+// Inline, so that the simulation's loop reads it without a call once per event.
+inline std::atomic<bool> interruption_flag{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "a signal handler may only touch lock-free atomics");
+}  // namespace detail
 void request_interruption() noexcept;
-bool interruption_requested() noexcept;
+inline bool interruption_requested() noexcept { return detail::interruption_flag.load(std::memory_order_relaxed); }
 // For tests and for a process that runs again after reporting an interruption.
 void clear_interruption() noexcept;
 

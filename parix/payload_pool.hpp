@@ -30,10 +30,24 @@ class PayloadPool {
   // A vector holding a copy of data; its storage is recycled when some that fits is free.
   // Inline, as give(): both run once per message.
   Bytes copy(std::span<const std::byte> data) {
-    if (data.empty()) return {};
-    Bytes b = take(data.size());
-    b.assign(data.begin(), data.end());
+    Bytes b;
+    copy_into(b, data);
     return b;
+  }
+  // The same into out, in place (a message's slot): no vector moved through a temporary. The
+  // storage is the last vector given back in its class when it fits (always, for equal-sized
+  // messages), else take_elsewhere's. out's own storage, if any, is freed.
+  void copy_into(Bytes& out, std::span<const std::byte> data) {
+    if (data.empty()) return out.clear();
+    std::vector<Bytes>& list = free_[capacity_class(data.size())];
+    if (!list.empty() && list.back().capacity() >= data.size()) {
+      out.swap(list.back());
+      list.pop_back();
+      kept_bytes_ -= out.capacity();
+    } else {
+      out = take_elsewhere(data.size());
+    }
+    out.assign(data.begin(), data.end());
   }
   // Takes back b's storage (its contents are dropped); b is left empty.
   void give(Bytes&& b) {
@@ -56,13 +70,6 @@ class PayloadPool {
  private:
   static constexpr int kClasses = 64;
   static int capacity_class(std::size_t bytes) { return std::bit_width(bytes) - 1; }  // floor(log2), bytes > 0
-  // Storage for at least `bytes` bytes, empty: the last vector given back in its class when it
-  // fits (always, for equal-sized messages), else take_elsewhere.
-  Bytes take(std::size_t bytes) {
-    std::vector<Bytes>& list = free_[capacity_class(bytes)];
-    if (list.empty() || list.back().capacity() < bytes) return take_elsewhere(bytes);
-    return pop(list);
-  }
   Bytes take_elsewhere(std::size_t bytes);
   [[gnu::noinline, gnu::cold]] void keep_growing(std::vector<Bytes>& list, Bytes&& b);
   Bytes pop(std::vector<Bytes>& list) {

@@ -12,6 +12,9 @@ using machine::TraceKind;
 
 // ---- SimProcess ------------------------------------------------------------------------------
 
+SimProcess::SimProcess(Simulation& sim, int id, int thread)
+    : sim_(sim), id_(id), thread_(thread), stats_(sim.stats.at(id)), node_(sim.node_of.at(id)) {}
+
 int SimProcess::id() const { return id_; }
 int SimProcess::count() const { return sim_.config.nodes; }
 SimTime SimProcess::now() const { return sim_.kernel.now(); }
@@ -55,7 +58,7 @@ void SimProcess::compute_in_comm(std::span<const OpCount> ops) { charge_ops(ops,
 
 void SimProcess::charge_ops(std::span<const OpCount> ops, bool as_comm) {
   machine::SimTime duration = 0;
-  auto& s = sim_.stats[id_];
+  auto& s = stats_;
   for (const OpCount& op : ops) {
     if (op.count < 0) throw ParixError("compute: negative count for operation '" + std::string(op.op) + "'");
     try {
@@ -75,7 +78,7 @@ void SimProcess::charge_ops(std::span<const OpCount> ops, bool as_comm) {
 bool SimProcess::occupy_cpu(machine::SimTime duration, std::string_view label) {
   const machine::SimTime start = sim_.kernel.now();
   Activity work;
-  sim_.nodes[sim_.node_of[id_]].compute(duration, [&work] { work.complete(); });
+  sim_.nodes[node_].compute(duration, [&work] { work.complete(); });
   if (!wait_for_activity(work, "compute", -1)) return false;
   if (sim_.trace.enabled()) sim_.trace.record({TraceKind::compute, id_, -1, start, sim_.kernel.now(), 0, -1, label, thread_});
   return true;
@@ -88,7 +91,7 @@ bool SimProcess::charge_comm_cpu(machine::SimTime fixed, std::int64_t bytes, std
   if (d == 0) return true;  // no event at all, so timings stay as they were
   const machine::SimTime start = sim_.kernel.now();
   if (!occupy_cpu(d, label)) return false;
-  sim_.stats[id_].comm += sim_.kernel.now() - start;
+  stats_.comm += sim_.kernel.now() - start;
   return true;
 }
 
@@ -119,7 +122,7 @@ Link SimProcess::connect(int peer, int tag) {
     LinkEnd& eb = sim_.links.at(b);
     ea.owner = id_, ea.peer = peer;
     eb.owner = peer, eb.peer = id_;
-    const machine::SimTime up = sim_.connections.set_up(sim_.node_of[id_], sim_.node_of[peer], start);
+    const machine::SimTime up = sim_.connections.set_up(node_, sim_.node_of[peer], start);
     std::int64_t* theirs = other.result;
     SimProcess* them = other.who;
     const machine::SimTime their_start = other.since;
@@ -132,7 +135,7 @@ Link SimProcess::connect(int peer, int tag) {
     if (!wait_for_activity(set_up, "connect", peer)) return {};
     mine = a;
     sim_.stats[peer].connections += 1;
-    sim_.stats[id_].connections += 1;
+    stats_.connections += 1;
     if (sim_.trace.enabled()) {
       sim_.trace.record({TraceKind::connect, peer, id_, their_start, up, 0, -1, "connect", them->thread()});
       sim_.trace.record({TraceKind::connect, id_, peer, start, up, 0, -1, "connect", thread_});
@@ -142,8 +145,8 @@ Link SimProcess::connect(int peer, int tag) {
   }
   if (!charge_comm_cpu(sim_.config.comm_cpu.connect, 0, "connect_cpu")) return {};
   const machine::SimTime took = sim_.kernel.now() - start;
-  sim_.stats[id_].comm += took;
-  sim_.stats[id_].connect += took;
+  stats_.comm += took;
+  stats_.connect += took;
   return Link(this, peer, tag, mine);
 }
 
@@ -158,6 +161,11 @@ namespace {
   throw ParixError(fmt::format("processor {}: {} on a link owned by processor {}", processor, call, found->owner));
 }
 
+// The same for a request that holds nothing: wait() then needs no stack frame for the message.
+[[noreturn, gnu::noinline, gnu::cold]] void throw_empty_request(int processor, const char* call) {
+  throw ParixError(fmt::format("processor {}: {} on an empty request", processor, call));
+}
+
 }  // namespace
 
 inline LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
@@ -166,7 +174,8 @@ inline LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
   return *found;
 }
 
-Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool synchronous) {
+// Inline into isend and send: one call per message less.
+[[gnu::always_inline]] inline Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool synchronous) {
   if (sim_.charges_comm_cpu) {
     end_of(link, "send");  // checked before the CPU is spent on it
     // The CPU hands the message to the communication processors before it travels (copying it).
@@ -190,7 +199,7 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   // the kernel to store inline, which keeps the per-message cost free of extra allocations.
   const std::int64_t slot = sim_.take_slot();
   Message& m = sim_.in_flight[slot];
-  m.data = sim_.payloads.copy(data);
+  sim_.payloads.copy_into(m.data, data);
   m.send = req;
   m.synchronous = synchronous;
   m.id = sim_.next_message++;
@@ -198,16 +207,16 @@ Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool 
   m.src = id_;
   m.sent = sim_.kernel.now();
   m.dst_end = e.peer_end;
-  auto& s = sim_.stats[id_];
+  auto& s = stats_;
   ++s.messages_sent;
   s.bytes_sent += bytes;
-  sim_.network->transfer(sim_.node_of[id_], sim_.node_of[e.peer], bytes, [sim = &sim_, slot] { sim->deliver(slot); });
+  sim_.network->transfer(node_, sim_.node_of[e.peer], bytes, [sim = &sim_, slot] { sim->deliver(slot); });
   return req;
 }
 
 void Simulation::deliver(std::int64_t slot) {
   Message& m = in_flight[slot];  // stays put: nothing parks a message during a delivery
-  if (!m.data.empty()) declare_memory(m.src, -static_cast<std::int64_t>(m.data.size()), in_flight_kind);  // releasing never fails
+  if (!m.data.empty()) release_memory(m.src, static_cast<std::int64_t>(m.data.size()), in_flight_kind);
   const std::int64_t end = m.dst_end;  // its pair is not reused while a message travels to it
   LinkEnd& e = links.at(end);
   const std::int64_t seq = m.link_seq;
@@ -257,7 +266,10 @@ void SimProcess::send(Link& link, std::span<const std::byte> data) {
   wait_for(*r.state(), "send", TraceKind::send);
 }
 
-Request SimProcess::irecv(Link& link) {
+Request SimProcess::irecv(Link& link) { return post_receive(link); }
+
+// Inline into recv as well as irecv: a blocking receive is the common case.
+[[gnu::always_inline]] inline Request SimProcess::post_receive(Link& link) {
   LinkEnd& e = end_of(link, "recv");
   Request req = sim_.requests.take();
   RequestState& s = *req.state();
@@ -268,7 +280,7 @@ Request SimProcess::irecv(Link& link) {
   if (!e.arrived.empty()) {
     Message m = std::move(e.arrived.front());
     e.arrived.pop_front();
-    if (!m.data.empty()) sim_.declare_memory(id_, -static_cast<std::int64_t>(m.data.size()), sim_.received_kind);
+    if (!m.data.empty()) sim_.release_memory(id_, static_cast<std::int64_t>(m.data.size()), sim_.received_kind);
     s.data = std::move(m.data);
     s.complete();
     if (m.synchronous) sim_.complete(m.send);
@@ -285,16 +297,27 @@ Bytes SimProcess::recv(Link& link) {
 }
 
 void SimProcess::recv(Link& link, Bytes& into) {
-  Request r = irecv(link);
-  wait_for(*r.state(), "recv", TraceKind::recv);
-  r.take_into(into);
+  Request r = post_receive(link);
+  RequestState& s = *r.state();
+  wait_for(s, "recv", TraceKind::recv);
+  // Request::take_into, with the pool known: into's old storage goes back to it.
+  into.swap(s.data);
+  sim_.payloads.give(std::move(s.data));
 }
 
 void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {
+  if (!r.running()) {  // over before the wait (a delivered isend): no time passes, nothing to trace
+    if (!r.cancelled()) charge_receive_cpu(r);
+    return;
+  }
+  wait_for_running(r, call, kind);
+}
+
+void SimProcess::wait_for_running(RequestState& r, const char* call, TraceKind kind) {
   const machine::SimTime start = sim_.kernel.now();
   if (!wait_for_activity(r, call, r.peer)) return;
   const machine::SimTime end = sim_.kernel.now();
-  sim_.stats[id_].comm += end - start;
+  stats_.comm += end - start;
   if (r.cancelled()) return;  // withdrawn (before the wait, or by another thread meanwhile)
   if (sim_.trace.enabled() && end > start) {
     sim_.trace.record({kind, id_, r.peer, start, end, static_cast<std::int64_t>(r.data.size()), -1, call, thread_});
@@ -304,12 +327,17 @@ void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {
 
 void SimProcess::charge_receive_cpu(RequestState& r) {
   if (!sim_.charges_comm_cpu || !r.is_receive || r.cpu_charged) return;  // the first test: per message
+  charge_receive_cpu_now(r);
+}
+
+// Out of line: its callers run once per message, and a published machine never charges.
+[[gnu::noinline]] void SimProcess::charge_receive_cpu_now(RequestState& r) {
   r.cpu_charged = true;
   charge_comm_cpu(sim_.config.comm_cpu.recv, static_cast<std::int64_t>(r.data.size()), "recv_cpu");
 }
 
 void SimProcess::wait(Request& r) {
-  if (!r.valid()) throw ParixError(fmt::format("processor {}: wait on an empty request", id_));
+  if (!r.valid()) [[unlikely]] throw_empty_request(id_, "wait");
   wait_for(*r.state(), "wait", TraceKind::wait);
 }
 
@@ -340,7 +368,7 @@ std::size_t SimProcess::wait_any(std::span<Request* const> rs) {
     if (sim_.cancelling) return 0;
   }
   const machine::SimTime end = sim_.kernel.now();
-  sim_.stats[id_].comm += end - start;
+  stats_.comm += end - start;
   if (sim_.trace.enabled() && end > start) {
     sim_.trace.record({TraceKind::wait, id_, rs[i]->state()->peer, start, end, 0, -1, "wait_any", thread_});
   }
@@ -349,7 +377,7 @@ std::size_t SimProcess::wait_any(std::span<Request* const> rs) {
 }
 
 bool SimProcess::cancel(Request& r) {
-  if (!r.valid()) throw ParixError(fmt::format("processor {}: cancel on an empty request", id_));
+  if (!r.valid()) throw_empty_request(id_, "cancel");
   RequestState& s = *r.state();
   if (!s.running()) return s.cancelled();
   if (s.is_receive) {

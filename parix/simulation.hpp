@@ -69,7 +69,7 @@ struct LinkEnd {
 
 class SimProcess final : public Processor, public Waiter {
  public:
-  SimProcess(Simulation& sim, int id, int thread) : sim_(sim), id_(id), thread_(thread) {}
+  SimProcess(Simulation& sim, int id, int thread);
   ~SimProcess() override { drop_persistent_links(); }
 
   int id() const override;
@@ -110,8 +110,12 @@ class SimProcess final : public Processor, public Waiter {
 
  private:
   Request post_send(Link& link, std::span<const std::byte> data, bool synchronous);
+  Request post_receive(Link& link);
   LinkEnd& end_of(const Link& link, const char* call);
+  // A request that is over already (a delivered isend) costs a test; waiting for one still
+  // running is out of line.
   void wait_for(RequestState& r, const char* call, TraceKind kind);
+  void wait_for_running(RequestState& r, const char* call, TraceKind kind);
   // Holds one of the node's CPUs for `duration` (compute and the CPU side of communication share
   // them); false when the run was abandoned meanwhile.
   bool occupy_cpu(machine::SimTime duration, std::string_view label);
@@ -120,10 +124,15 @@ class SimProcess final : public Processor, public Waiter {
   // The machine's [comm_cpu] cost of one operation: `fixed` plus the copy of `bytes`, as
   // communication time.
   bool charge_comm_cpu(machine::SimTime fixed, std::int64_t bytes, std::string_view label);
-  void charge_receive_cpu(RequestState& r);
+  void charge_receive_cpu(RequestState& r);  // its tests inline (the same unit), the charge not
+  void charge_receive_cpu_now(RequestState& r);
   Simulation& sim_;
   int id_;
   int thread_;
+  // This processor's statistics and node, looked up once: the simulation sizes both tables
+  // before any process exists and never resizes them.
+  ProcessorStats& stats_;
+  int node_;
 };
 
 // options.placement checked to be a permutation of 0..nodes-1; identity when empty.
@@ -203,6 +212,11 @@ class Simulation {
     if (!memory.use(bytes, kind)) return false;
     if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, memory.kind_name(kind));
     return true;
+  }
+  // Gives back bytes declared before. Never fails, and needs no warning: a node over its memory
+  // got there by a declare_memory, which kept the first warning.
+  void release_memory(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
+    memory_of[processor]->use(-bytes, kind);
   }
   std::string refusal(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) const {
     const machine::NodeMemory& memory = *memory_of[processor];

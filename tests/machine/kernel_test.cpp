@@ -1,10 +1,12 @@
 #include "machine/kernel.hpp"
+#include "machine/ring_buffer.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <functional>
 #include <limits>
+#include <utility>
 #include <memory>
 #include <vector>
 
@@ -102,6 +104,58 @@ TEST(Kernel, ActionsOfEverySizeRunOnceAndAreReleased) {
   EXPECT_EQ(order, expected);
 }
 
+// Events scheduled from within events, in long in-order stretches (a steady message flow: the
+// kernel's FIFO run) broken by earlier ones (its heap), still run in (time, scheduling order),
+// the order a plain sort of every (time, sequence) gives.
+TEST(Kernel, MixedInOrderAndOutOfOrderEventsRunInTimeThenSchedulingOrder) {
+  Kernel k;
+  std::vector<std::pair<SimTime, int>> scheduled;  // (time, sequence) of every event
+  std::vector<int> ran;
+  std::uint32_t rng = 12345;
+  auto next = [&rng] { return rng = rng * 1664525u + 1013904223u, rng >> 8; };
+  std::function<void(int)> event = [&](int id) {
+    ran.push_back(id);
+    if (scheduled.size() >= 20000) return;
+    const int children = 1 + static_cast<int>(next() % 2);
+    for (int c = 0; c < children && scheduled.size() < 20000; ++c) {
+      // Mostly the same delay (in order), sometimes shorter or zero (out of order, or a tie).
+      const std::uint32_t r = next() % 10;
+      const SimTime delay = r < 7 ? 1000 : r < 9 ? static_cast<SimTime>(next() % 1000) : 0;
+      const int child = static_cast<int>(scheduled.size());
+      scheduled.push_back({k.now() + delay, child});
+      k.after(delay, [&event, child] { event(child); });
+    }
+  };
+  for (int i = 0; i < 64; ++i) {
+    scheduled.push_back({static_cast<SimTime>(next() % 500), i});
+    k.at(scheduled.back().first, [&event, i] { event(i); });
+  }
+  k.run();
+  std::vector<std::pair<SimTime, int>> expected = scheduled;
+  std::sort(expected.begin(), expected.end());
+  ASSERT_EQ(ran.size(), expected.size());
+  for (std::size_t i = 0; i < ran.size(); ++i) ASSERT_EQ(ran[i], expected[i].second) << "at position " << i;
+  EXPECT_TRUE(k.idle());
+  EXPECT_EQ(k.pending(), 0u);
+}
+
+TEST(RingBuffer, KeepsFifoOrderAcrossWrapsAndGrowth) {
+  RingBuffer<int> q;
+  int pushed = 0, popped = 0;
+  for (int round = 0; round < 200; ++round) {
+    // Push more than pop for a while (growth while wrapped), then drain partly.
+    const int in = round < 100 ? 7 : 3, out = round < 100 ? 5 : 5;
+    for (int i = 0; i < in; ++i) q.push_back(pushed++);
+    ASSERT_EQ(q.back(), pushed - 1);
+    for (int i = 0; i < out && !q.empty(); ++i) {
+      ASSERT_EQ(q.front(), popped++);
+      q.pop_front();
+    }
+    ASSERT_EQ(q.size(), static_cast<std::size_t>(pushed - popped));
+  }
+  EXPECT_EQ(q.capacity() & (q.capacity() - 1), 0u);  // a power of two
+}
+
 TEST(KernelAction, MovesLeaveTheSourceEmpty) {
   auto token = std::make_shared<int>(7);
   int seen = 0;
@@ -112,6 +166,18 @@ TEST(KernelAction, MovesLeaveTheSourceEmpty) {
   b();
   EXPECT_EQ(seen, 7);
   b.reset();
+  EXPECT_EQ(token.use_count(), 1);
+  // fill: into an empty action, both for an owning callable (moved by its manager) and a plain one.
+  KernelAction c;
+  c.fill(KernelAction([&seen, token] { seen = *token + 1; }));
+  EXPECT_EQ(token.use_count(), 2);
+  c();
+  EXPECT_EQ(seen, 8);
+  KernelAction d;
+  d.fill(KernelAction([&seen] { seen = 9; }));
+  d();
+  EXPECT_EQ(seen, 9);
+  c.reset();
   EXPECT_EQ(token.use_count(), 1);
 }
 

@@ -26,6 +26,22 @@ TEST(PayloadPool, ACopyReusesStorageGivenBack) {
   EXPECT_EQ(pool.kept(), 0u);
 }
 
+// copy_into fills a message's slot in place with recycled storage, replacing what it held.
+TEST(PayloadPool, ACopyIntoReusesStorageInPlace) {
+  PayloadPool pool;
+  Bytes given = filled(64);
+  const std::byte* storage = given.data();
+  pool.give(std::move(given));
+  Bytes slot = filled(3, std::byte{5});  // old contents: dropped
+  pool.copy_into(slot, filled(64, std::byte{9}));
+  EXPECT_EQ(slot.data(), storage);
+  EXPECT_EQ(slot, filled(64, std::byte{9}));
+  EXPECT_EQ(pool.kept(), 0u);
+  EXPECT_EQ(pool.kept_bytes(), 0u);
+  pool.copy_into(slot, {});
+  EXPECT_TRUE(slot.empty());
+}
+
 TEST(PayloadPool, ACopyGetsStorageThatFits) {
   PayloadPool pool;
   Bytes small;
