@@ -116,7 +116,7 @@ TEST_F(Inheritance, ShippedFilesEqualTheirOldFullCopies) {
   fitted.connect_base = calibrated.connect_base;
   fitted.connect_per_hop = calibrated.connect_per_hop;
   fitted.link_bandwidth = calibrated.link_bandwidth;
-  for (const char* op : {"polygon_project", "hemicube_pixel"}) fitted.cycles_per_op[op] = calibrated.cycles_per_op.at(op);
+  for (const char* op : {"hemicube_pixel", "form_factor_merge"}) fitted.cycles_per_op[op] = calibrated.cycles_per_op.at(op);
   expect_same_machine(calibrated, fitted);
   EXPECT_EQ(calibrated.calibrated_on, (std::vector<std::string>{"4.6", "4.3@1+8+CORNELL+PICROOM"}));
   MachineConfig big = gc;

@@ -154,7 +154,6 @@ void add_calibrate(CommandGroups& g) {
     const std::vector<cal::MeasuredTable> tables = cal::tables_from_specs(f->fit);
     const std::vector<std::string> free = cal::split_list(f->free);
     for (const auto& k : free) file.check_free_key(k);
-    write_json_file(f->out, nlohmann::json::object());  // fail now, not after the fit, if it cannot be written
     cal::Predictor predictor(settings(f->predict));
     const std::string command = "gcsim calibrate --fit " + f->fit + " --free " + f->free +
                                 (f->config.empty() ? "" : " --config " + f->config) + " --out " + f->out;
