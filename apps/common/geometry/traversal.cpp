@@ -1,5 +1,7 @@
 #include "apps/common/geometry/traversal.hpp"
 
+#include "apps/common/geometry/triangle_reject.hpp"
+
 #include <algorithm>
 #include <cmath>
 #if defined(__SSE2__)
@@ -66,6 +68,26 @@ inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, f
 }
 #endif
 
+// test_primitive and occludes with the SSE rejection in front of the triangle test: the same
+// tally and the same hits, fewer instructions for the many triangles a ray misses.
+inline void test_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, const TriangleRejectRay& reject,
+                         Hit& hit, TestTally& tally) {
+  if (!prims.is_sphere(prim) && triangle_surely_missed(prims.triangle(prim), reject)) {
+    ++tally.triangles;
+    return;
+  }
+  test_primitive(prims, prim, ray, hit, tally);
+}
+
+inline bool occludes_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, const TriangleRejectRay& reject,
+                             float tmax, TestTally& tally) {
+  if (!prims.is_sphere(prim) && triangle_surely_missed(prims.triangle(prim), reject)) {
+    ++tally.triangles;
+    return false;
+  }
+  return occludes(prims, prim, ray, tmax, tally);
+}
+
 }  // namespace
 
 namespace {
@@ -103,8 +125,9 @@ bool walk_depth_first(const PackedTree& tree, const Ray& ray, float tmax, TestTa
 }  // namespace
 
 void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+  const TriangleRejectRay reject(ray);
   walk_depth_first(tree, ray, kInfinity, tally, [&](int p) {
-    test_primitive(prims, p, ray, hit, tally);
+    test_quickly(prims, p, ray, reject, hit, tally);
     return false;
   });
 }
@@ -122,6 +145,7 @@ void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, cons
   ++tally.boxes;
   if (!intersect_box(tree.root_box, ray, hit.t, &entry)) return;
   const SlabRay slab(ray);
+  const TriangleRejectRay reject(ray);
   stack[top++] = {tree.root, entry};
   while (top > 0) {
     const Entry e = stack[--top];
@@ -131,8 +155,8 @@ void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, cons
     int count = 0;
     // Primitive children first: their hits tighten the distance the boxes are tested against.
     const bool prim0 = is_primitive(n.child[0]), prim1 = is_primitive(n.child[1]);
-    if (prim0) test_primitive(prims, primitive_of(n.child[0]), ray, hit, tally);
-    if (prim1) test_primitive(prims, primitive_of(n.child[1]), ray, hit, tally);
+    if (prim0) test_quickly(prims, primitive_of(n.child[0]), ray, reject, hit, tally);
+    if (prim1) test_quickly(prims, primitive_of(n.child[1]), ray, reject, hit, tally);
     if (!(prim0 && prim1)) {
       float entries[2];
       const unsigned mask = both_children(n, slab, ray.tmin, hit.t, entries);
@@ -156,7 +180,9 @@ void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, cons
 }
 
 bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally) {
-  return walk_depth_first(tree, ray, tmax, tally, [&](int p) { return occludes(prims, p, ray, tmax, tally); });
+  const TriangleRejectRay reject(ray);
+  return walk_depth_first(tree, ray, tmax, tally,
+                          [&](int p) { return occludes_quickly(prims, p, ray, reject, tmax, tally); });
 }
 
 void intersect_brute_force(const PrimitiveArrays& prims, const Ray& ray, Hit& hit, TestTally& tally) {
