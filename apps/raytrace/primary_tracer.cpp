@@ -59,6 +59,8 @@ void PrimaryTracer::trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>&
   if (algorithm_ == Algorithm::A4 && !subtree_.empty) {
     Region r{x0, y0, w, &hits, std::vector<char>(std::size_t(w) * h, 0)};
     trace_uniform_regions(r, x0, y0, x1 - 1, y1 - 1, tally, counters);
+  } else if (uses_subtree(algorithm_) && subtree_.empty) {
+    // Nothing meets the subregion: every pixel keeps its empty hit, and no ray is even made.
   } else {
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) trace_pixel(x, y, hits[std::size_t(y - y0) * w + (x - x0)], tally, counters);

@@ -132,7 +132,9 @@ void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, co
   });
 }
 
-void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+namespace {
+
+inline void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
   if (tree.empty) return;
   if (is_primitive(tree.root)) {
     test_primitive(prims, primitive_of(tree.root), ray, hit, tally);
@@ -177,6 +179,14 @@ void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, cons
       stack[top++] = found[0];
     }
   }
+}
+
+}  // namespace
+
+void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+  TestTally local = tally;  // kept in registers: the caller's may alias what the tests write
+  ordered(prims, tree, ray, hit, local);
+  tally = local;
 }
 
 bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally) {
