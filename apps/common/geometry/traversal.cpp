@@ -29,15 +29,26 @@ struct SlabRay {
   }
 };
 
+// Bit a of kSigns: the ray runs towards -axis a; -1: read from the ray at run time. The
+// closest-hit walk is compiled for each of the eight octants, so the near/far choice per axis
+// costs nothing inside the loop.
+template <int kSigns>
+inline bool negative_axis(const SlabRay& r, int a) {
+  if constexpr (kSigns < 0) return r.negative[a];
+  else return (kSigns >> a) & 1;
+}
+
 #if defined(__SSE2__)
+template <int kSigns>
 inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, float tmax, float entry[2]) {
   __m128 t0 = _mm_set1_ps(tmin), t1 = _mm_set1_ps(kInfinity);
   for (int a = 0; a < 3; ++a) {
     // (lo0, lo1, hi0, hi1) -> distances; the near pair is in the low or high half.
     const __m128 t = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.bounds[a]), _mm_set1_ps(r.o[a])), _mm_set1_ps(r.inv[a]));
     const __m128 swapped = _mm_movehl_ps(t, t);
-    const __m128 tn = r.negative[a] ? swapped : t;
-    const __m128 tf = r.negative[a] ? t : swapped;
+    const bool negative = negative_axis<kSigns>(r, a);
+    const __m128 tn = negative ? swapped : t;
+    const __m128 tf = negative ? t : swapped;
     t0 = _mm_max_ps(tn, t0);
     t1 = _mm_min_ps(tf, t1);
   }
@@ -50,6 +61,7 @@ inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, f
   return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(t0, far))) & 3u;
 }
 #else
+template <int kSigns>
 inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, float tmax, float entry[2]) {
   unsigned mask = 0;
   for (int c = 0; c < 2; ++c) {
@@ -57,7 +69,7 @@ inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, f
     for (int a = 0; a < 3; ++a) {
       float tn = (n.bounds[a][c] - r.o[a]) * r.inv[a];
       float tf = (n.bounds[a][2 + c] - r.o[a]) * r.inv[a];
-      if (r.negative[a]) std::swap(tn, tf);
+      if (negative_axis<kSigns>(r, a)) std::swap(tn, tf);
       t0 = tn > t0 ? tn : t0;
       t1 = tf < t1 ? tf : t1;
     }
@@ -108,7 +120,7 @@ bool walk_depth_first(const PackedTree& tree, const Ray& ray, float tmax, TestTa
   while (top > 0) {
     const PairNode& n = tree.nodes[stack[--top]];
     float entries[2];
-    const unsigned mask = both_children(n, slab, ray.tmin, tmax, entries);
+    const unsigned mask = both_children<-1>(n, slab, ray.tmin, tmax, entries);
     for (int i = 1; i >= 0; --i) {  // push the second child first: the first is visited first
       const NodeRef c = n.child[i];
       if (is_primitive(c)) {
@@ -134,7 +146,8 @@ void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, co
 
 namespace {
 
-inline void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+template <int kSigns>
+void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
   if (tree.empty) return;
   if (is_primitive(tree.root)) {
     test_primitive(prims, primitive_of(tree.root), ray, hit, tally);
@@ -161,7 +174,7 @@ inline void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const 
     if (prim1) test_quickly(prims, primitive_of(n.child[1]), ray, reject, hit, tally);
     if (!(prim0 && prim1)) {
       float entries[2];
-      const unsigned mask = both_children(n, slab, ray.tmin, hit.t, entries);
+      const unsigned mask = both_children<kSigns>(n, slab, ray.tmin, hit.t, entries);
       for (int i = 0; i < 2; ++i) {
         if (i == 0 ? prim0 : prim1) continue;
         ++tally.boxes;
@@ -184,8 +197,13 @@ inline void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const 
 }  // namespace
 
 void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+  using Walk = void (*)(const PrimitiveArrays&, const PackedTree&, const Ray&, Hit&, TestTally&);
+  static constexpr Walk kByOctant[8] = {ordered<0>, ordered<1>, ordered<2>, ordered<3>,
+                                        ordered<4>, ordered<5>, ordered<6>, ordered<7>};
+  const SlabRay slab(ray);
+  const int octant = slab.negative[0] | slab.negative[1] << 1 | slab.negative[2] << 2;
   TestTally local = tally;  // kept in registers: the caller's may alias what the tests write
-  ordered(prims, tree, ray, hit, local);
+  kByOctant[octant](prims, tree, ray, hit, local);
   tally = local;
 }
 
