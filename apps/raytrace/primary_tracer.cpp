@@ -5,6 +5,7 @@
 
 #include "apps/common/geometry/traversal.hpp"
 #include "apps/raytrace/geometry_names.hpp"
+#include "apps/raytrace/plane_classification4.hpp"
 
 namespace gcsim::raytrace {
 
@@ -170,13 +171,14 @@ bool PrimaryTracer::nothing_in_front(int prim, float max_distance, int rx0, int 
     }
   }
   // The pyramid of the region's own corner rays (pixel centres), tighter than the subtree's.
-  const Plane region[4] = {camera_.column_plane_at(rx0 + 0.5f), flipped(camera_.column_plane_at(rx1 + 0.5f)),
-                           camera_.row_plane_at(ry0 + 0.5f), flipped(camera_.row_plane_at(ry1 + 0.5f))};
+  const FourPlanes region({camera_.column_plane_at(rx0 + 0.5f), flipped(camera_.column_plane_at(rx1 + 0.5f)),
+                           camera_.row_plane_at(ry0 + 0.5f), flipped(camera_.row_plane_at(ry1 + 0.5f))});
+  // |normal| of the plane once, and each box's centre once for its five classifications.
+  const glm::vec3 behind_abs = behind ? abs_components(behind->normal) : glm::vec3(0.0f);
   auto cannot_occlude = [&](const Bounds3& box) {
-    if (box.distance_to(eye) > max_distance || (behind && classify(box, *behind) == Side::inside)) return true;
-    for (const Plane& pl : region)
-      if (classify(box, pl) == Side::outside) return true;
-    return false;
+    if (box.distance_to(eye) > max_distance) return true;
+    const BoxCentre b(box);
+    return (behind && classify(b, *behind, behind_abs) == Side::inside) || region.any_outside(b);
   };
   auto triangle_behind = [&](int q) {
     if (scene_.is_sphere(q) || scene_.is_sphere(prim)) return false;
