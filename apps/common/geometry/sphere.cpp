@@ -4,11 +4,11 @@
 
 namespace gcsim::geometry {
 
-bool intersect_sphere(const Sphere& s, const Ray& ray, float tmax, float* t_hit) {
-  const glm::dvec3 d(ray.direction);
-  const glm::dvec3 f = glm::dvec3(ray.origin) - glm::dvec3(s.center);
+bool intersect_sphere(const Sphere& s, const SphereRay& ray, float tmax, float* t_hit) {
+  const glm::dvec3& d = ray.direction;
+  const glm::dvec3 f = ray.origin - glm::dvec3(s.center);
   const double r = s.radius;
-  const double a = glm::dot(d, d);
+  const double a = ray.a;
   const double b = glm::dot(f, d);            // half of the usual b
   const glm::dvec3 v = f - (b / a) * d;       // f minus its projection on d
   const double disc = a * (r * r - glm::dot(v, v));

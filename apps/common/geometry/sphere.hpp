@@ -19,7 +19,19 @@ struct Sphere {
   }
 };
 
+// The ray's part of the sphere test, converted to double once per ray rather than per sphere.
+struct SphereRay {
+  glm::dvec3 origin, direction;
+  double a;  // |direction|^2
+  float tmin;
+  explicit SphereRay(const Ray& r)
+      : origin(r.origin), direction(r.direction), a(glm::dot(direction, direction)), tmin(r.tmin) {}
+};
+
 // The smallest root t with ray.tmin < t <= tmax, if any.
-bool intersect_sphere(const Sphere& s, const Ray& ray, float tmax, float* t_hit);
+bool intersect_sphere(const Sphere& s, const SphereRay& ray, float tmax, float* t_hit);
+inline bool intersect_sphere(const Sphere& s, const Ray& ray, float tmax, float* t_hit) {
+  return intersect_sphere(s, SphereRay(ray), tmax, t_hit);
+}
 
 }  // namespace gcsim::geometry

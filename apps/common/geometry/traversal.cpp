@@ -80,20 +80,43 @@ inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, f
 }
 #endif
 
-// test_primitive and occludes with the SSE rejection in front of the triangle test: the same
-// tally and the same hits, fewer instructions for the many triangles a ray misses.
-inline void test_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, const TriangleRejectRay& reject,
-                         Hit& hit, TestTally& tally) {
-  if (!prims.is_sphere(prim) && triangle_surely_missed(prims.triangle(prim), reject)) {
+// What the primitive tests need of a ray, prepared once per ray.
+struct QuickRay {
+  TriangleRejectRay reject;
+  SphereRay sphere;
+  explicit QuickRay(const Ray& r) : reject(r), sphere(r) {}
+};
+
+// test_primitive and occludes with the ray prepared, and the SSE rejection in front of the
+// triangle test: the same tally and the same hits, fewer instructions.
+inline void test_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, const QuickRay& quick, Hit& hit,
+                         TestTally& tally) {
+  if (prims.is_sphere(prim)) {
+    ++tally.spheres;
+    float t;
+    if (intersect_sphere(prims.spheres[prim], quick.sphere, hit.t, &t) && hit.improved_by(t, prim)) {
+      hit.t = t;
+      hit.prim = prim;
+      hit.b1 = 0;
+      hit.b2 = 0;
+    }
+    return;
+  }
+  if (triangle_surely_missed(prims.triangle(prim), quick.reject)) {
     ++tally.triangles;
     return;
   }
   test_primitive(prims, prim, ray, hit, tally);
 }
 
-inline bool occludes_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, const TriangleRejectRay& reject,
-                             float tmax, TestTally& tally) {
-  if (!prims.is_sphere(prim) && triangle_surely_missed(prims.triangle(prim), reject)) {
+inline bool occludes_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, const QuickRay& quick, float tmax,
+                             TestTally& tally) {
+  if (prims.is_sphere(prim)) {
+    ++tally.spheres;
+    float t;
+    return intersect_sphere(prims.spheres[prim], quick.sphere, tmax, &t) && t < tmax;
+  }
+  if (triangle_surely_missed(prims.triangle(prim), quick.reject)) {
     ++tally.triangles;
     return false;
   }
@@ -137,9 +160,9 @@ bool walk_depth_first(const PackedTree& tree, const Ray& ray, float tmax, TestTa
 }  // namespace
 
 void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
-  const TriangleRejectRay reject(ray);
+  const QuickRay quick(ray);
   walk_depth_first(tree, ray, kInfinity, tally, [&](int p) {
-    test_quickly(prims, p, ray, reject, hit, tally);
+    test_quickly(prims, p, ray, quick, hit, tally);
     return false;
   });
 }
@@ -160,7 +183,7 @@ void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ra
   ++tally.boxes;
   if (!intersect_box(tree.root_box, ray, hit.t, &entry)) return;
   const SlabRay slab(ray);
-  const TriangleRejectRay reject(ray);
+  const QuickRay quick(ray);
   stack[top++] = {tree.root, entry};
   while (top > 0) {
     const Entry e = stack[--top];
@@ -170,8 +193,8 @@ void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ra
     int count = 0;
     // Primitive children first: their hits tighten the distance the boxes are tested against.
     const bool prim0 = is_primitive(n.child[0]), prim1 = is_primitive(n.child[1]);
-    if (prim0) test_quickly(prims, primitive_of(n.child[0]), ray, reject, hit, tally);
-    if (prim1) test_quickly(prims, primitive_of(n.child[1]), ray, reject, hit, tally);
+    if (prim0) test_quickly(prims, primitive_of(n.child[0]), ray, quick, hit, tally);
+    if (prim1) test_quickly(prims, primitive_of(n.child[1]), ray, quick, hit, tally);
     if (!(prim0 && prim1)) {
       float entries[2];
       const unsigned mask = both_children<kSigns>(n, slab, ray.tmin, hit.t, entries);
@@ -208,9 +231,9 @@ void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, cons
 }
 
 bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally) {
-  const TriangleRejectRay reject(ray);
+  const QuickRay quick(ray);
   return walk_depth_first(tree, ray, tmax, tally,
-                          [&](int p) { return occludes_quickly(prims, p, ray, reject, tmax, tally); });
+                          [&](int p) { return occludes_quickly(prims, p, ray, quick, tmax, tally); });
 }
 
 void intersect_brute_force(const PrimitiveArrays& prims, const Ray& ray, Hit& hit, TestTally& tally) {
