@@ -21,6 +21,10 @@ void check(const Triangle& tri, const Ray& ray, Agreement& a) {
   float t, b1, b2;
   const bool hit = intersect_triangle(tri, ray, kInfinity, &t, &b1, &b2);
   const bool rejected = triangle_surely_missed(tri, TriangleRejectRay(ray));
+  // With the range check skipped for a box holding the triangle (a tree's root box): the same.
+  TriangleRejectRay within(ray);
+  within.assume_within(union_of(tri.bounds(), Bounds3{ray.origin + 0.5f, ray.origin + 2.0f}));
+  ASSERT_EQ(triangle_surely_missed(tri, within), rejected);
   hit ? ++a.hits : ++a.misses;
   a.rejected += rejected;
   ASSERT_FALSE(hit && rejected) << "rejected a hit: ray (" << ray.origin.x << ", " << ray.origin.y << ", "

@@ -84,7 +84,8 @@ inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, f
 struct QuickRay {
   TriangleRejectRay reject;
   SphereRay sphere;
-  explicit QuickRay(const Ray& r) : reject(r), sphere(r) {}
+  // Every primitive tested lies in `box` (the tree's root box).
+  QuickRay(const Ray& r, const Bounds3& box) : reject(r), sphere(r) { reject.assume_within(box); }
 };
 
 // test_primitive and occludes with the ray prepared, and the SSE rejection in front of the
@@ -160,7 +161,7 @@ bool walk_depth_first(const PackedTree& tree, const Ray& ray, float tmax, TestTa
 }  // namespace
 
 void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
-  const QuickRay quick(ray);
+  const QuickRay quick(ray, tree.root_box);
   walk_depth_first(tree, ray, kInfinity, tally, [&](int p) {
     test_quickly(prims, p, ray, quick, hit, tally);
     return false;
@@ -183,7 +184,7 @@ void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ra
   ++tally.boxes;
   if (!intersect_box(tree.root_box, ray, hit.t, &entry)) return;
   const SlabRay slab(ray);
-  const QuickRay quick(ray);
+  const QuickRay quick(ray, tree.root_box);
   stack[top++] = {tree.root, entry};
   while (top > 0) {
     const Entry e = stack[--top];
@@ -231,7 +232,7 @@ void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, cons
 }
 
 bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally) {
-  const QuickRay quick(ray);
+  const QuickRay quick(ray, tree.root_box);
   return walk_depth_first(tree, ray, tmax, tally,
                           [&](int p) { return occludes_quickly(prims, p, ray, quick, tmax, tally); });
 }

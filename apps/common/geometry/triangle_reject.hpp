@@ -5,8 +5,10 @@
 // so it rejects exactly the triangles the scalar test rejects there. Whenever the scalar test
 // would take another path (coordinates outside float's safe range, an edge function exactly 0)
 // it answers "not sure" and the caller runs the full test.
+#include <cmath>
 #include <cstddef>
 
+#include "apps/common/geometry/bounds.hpp"
 #include "apps/common/geometry/ray.hpp"
 #include "apps/common/geometry/triangle.hpp"
 
@@ -27,9 +29,28 @@ struct TriangleRejectRay {
   __m128 o[3];
   __m128 shear_x, shear_y;
   int kx, ky, kz;
+  bool in_range = false;  // every triangle tested passes the float range check
   explicit TriangleRejectRay(const Ray& r)
       : o{_mm_set1_ps(r.origin.x), _mm_set1_ps(r.origin.y), _mm_set1_ps(r.origin.z)},
-        shear_x(_mm_set1_ps(r.shear_x)), shear_y(_mm_set1_ps(r.shear_y)), kx(r.kx), ky(r.ky), kz(r.kz) {}
+        shear_x(_mm_set1_ps(r.shear_x)), shear_y(_mm_set1_ps(r.shear_y)), kx(r.kx), ky(r.ky), kz(r.kz),
+        origin(r.origin) {}
+
+  // Skips the range check for triangles whose vertices lie in `box` (a tree's root box) when the
+  // whole box passes it: float subtraction is monotonic, so a vertex's |p - o| per axis is at
+  // most the larger of |lo - o| and |hi - o|, and on an axis where the box lies wholly 1e-12 or
+  // more to one side of the origin, every vertex has a coordinate at least that large.
+  void assume_within(const Bounds3& box) {
+    bool below = true, above = false;
+    for (int a = 0; a < 3; ++a) {
+      const float l = box.lo[a] - origin[a], h = box.hi[a] - origin[a];
+      below = below && std::fabs(l) <= 1e12f && std::fabs(h) <= 1e12f;
+      above = above || l >= 1e-12f || h <= -1e-12f;
+    }
+    in_range = below && above;
+  }
+
+ private:
+  glm::vec3 origin;
 };
 
 // True only if intersect_triangle(tri, ray, ...) surely returns false for any tmax.
@@ -43,11 +64,14 @@ inline bool triangle_surely_missed(const Triangle& tri, const TriangleRejectRay&
   const __m128 v[3] = {_mm_sub_ps(r0, r.o[0]), _mm_sub_ps(r1, r.o[1]), _mm_sub_ps(r2, r.o[2])};
 
   // The scalar test runs in float only if the largest |coordinate| is within [1e-12, 1e12].
-  const __m128 sign = _mm_set1_ps(-0.0f), big = _mm_set1_ps(1e12f), small = _mm_set1_ps(1e-12f);
-  const __m128 m0 = _mm_andnot_ps(sign, v[0]), m1 = _mm_andnot_ps(sign, v[1]), m2 = _mm_andnot_ps(sign, v[2]);
-  const __m128 below = _mm_and_ps(_mm_and_ps(_mm_cmple_ps(m0, big), _mm_cmple_ps(m1, big)), _mm_cmple_ps(m2, big));
-  const __m128 above = _mm_or_ps(_mm_or_ps(_mm_cmpge_ps(m0, small), _mm_cmpge_ps(m1, small)), _mm_cmpge_ps(m2, small));
-  if (_mm_movemask_ps(below) != 15 || _mm_movemask_ps(above) == 0) return false;
+  if (!r.in_range) {
+    const __m128 sign = _mm_set1_ps(-0.0f), big = _mm_set1_ps(1e12f), small = _mm_set1_ps(1e-12f);
+    const __m128 m0 = _mm_andnot_ps(sign, v[0]), m1 = _mm_andnot_ps(sign, v[1]), m2 = _mm_andnot_ps(sign, v[2]);
+    const __m128 below = _mm_and_ps(_mm_and_ps(_mm_cmple_ps(m0, big), _mm_cmple_ps(m1, big)), _mm_cmple_ps(m2, big));
+    const __m128 above =
+        _mm_or_ps(_mm_or_ps(_mm_cmpge_ps(m0, small), _mm_cmpge_ps(m1, small)), _mm_cmpge_ps(m2, small));
+    if (_mm_movemask_ps(below) != 15 || _mm_movemask_ps(above) == 0) return false;
+  }
 
   // Permute and shear (ax = a[kx] + sx * a[kz], ...), then e_i = x_j y_k - y_j x_k over the
   // cyclic rotations (j, k) = (b, c), (c, a), (a, b).
@@ -58,7 +82,9 @@ inline bool triangle_surely_missed(const Triangle& tri, const TriangleRejectRay&
   const __m128 y1 = _mm_shuffle_ps(y, y, _MM_SHUFFLE(3, 0, 2, 1)), y2 = _mm_shuffle_ps(y, y, _MM_SHUFFLE(3, 1, 0, 2));
   const __m128 e = _mm_sub_ps(_mm_mul_ps(x1, y2), _mm_mul_ps(y1, x2));
   const __m128 zero = _mm_setzero_ps();
-  if (_mm_movemask_ps(_mm_cmpeq_ps(e, zero)) & 7) return false;  // the scalar test retries in double
+  // An edge function exactly 0: the scalar test retries in double; NaN (a NaN vertex, which no
+  // box bounds): leave it to the scalar test too.
+  if (_mm_movemask_ps(_mm_or_ps(_mm_cmpeq_ps(e, zero), _mm_cmpunord_ps(e, e))) & 7) return false;
   const int negative = _mm_movemask_ps(_mm_cmplt_ps(e, zero)) & 7;
   const int positive = _mm_movemask_ps(_mm_cmpgt_ps(e, zero)) & 7;
   return negative != 0 && positive != 0;
@@ -68,6 +94,7 @@ inline bool triangle_surely_missed(const Triangle& tri, const TriangleRejectRay&
 
 struct TriangleRejectRay {
   explicit TriangleRejectRay(const Ray&) {}
+  void assume_within(const Bounds3&) {}
 };
 inline bool triangle_surely_missed(const Triangle&, const TriangleRejectRay&) { return false; }
 
