@@ -84,8 +84,10 @@ inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, f
 struct QuickRay {
   TriangleRejectRay reject;
   SphereRay sphere;
-  // Every primitive tested lies in `box` (the tree's root box).
-  QuickRay(const Ray& r, const Bounds3& box) : reject(r), sphere(r) { reject.assume_within(box); }
+  // Every primitive tested lies in `box` (the tree's root box); only triangles use it.
+  QuickRay(const Ray& r, const Bounds3& box, bool triangles) : reject(r), sphere(r) {
+    if (triangles) reject.assume_within(box);
+  }
 };
 
 // test_primitive and occludes with the ray prepared, and the SSE rejection in front of the
@@ -161,7 +163,7 @@ bool walk_depth_first(const PackedTree& tree, const Ray& ray, float tmax, TestTa
 }  // namespace
 
 void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
-  const QuickRay quick(ray, tree.root_box);
+  const QuickRay quick(ray, tree.root_box, !prims.triangles.empty());
   walk_depth_first(tree, ray, kInfinity, tally, [&](int p) {
     test_quickly(prims, p, ray, quick, hit, tally);
     return false;
@@ -184,7 +186,7 @@ void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ra
   ++tally.boxes;
   if (!intersect_box(tree.root_box, ray, hit.t, &entry)) return;
   const SlabRay slab(ray);
-  const QuickRay quick(ray, tree.root_box);
+  const QuickRay quick(ray, tree.root_box, !prims.triangles.empty());
   stack[top++] = {tree.root, entry};
   while (top > 0) {
     const Entry e = stack[--top];
@@ -232,7 +234,7 @@ void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, cons
 }
 
 bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally) {
-  const QuickRay quick(ray, tree.root_box);
+  const QuickRay quick(ray, tree.root_box, !prims.triangles.empty());
   return walk_depth_first(tree, ray, tmax, tally,
                           [&](int p) { return occludes_quickly(prims, p, ray, quick, tmax, tally); });
 }
