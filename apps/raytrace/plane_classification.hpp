@@ -14,16 +14,25 @@ enum class Side { inside, outside, crossing };
 
 // Only "outside" drops anything, so it alone carries a margin against rounding; calling a
 // crossing box "inside" merely keeps primitives that could have been dropped.
-inline Side classify(const Bounds3& b, const Plane& p) {
-  const glm::vec3 c = b.center();
-  const glm::vec3 h = 0.5f * b.extent();
-  const float s = glm::dot(p.normal, c) - p.offset;
-  const float r = glm::dot(abs_components(p.normal), h);
+// A box as classify reads it, for boxes classified against many planes (a row's subtrees).
+struct BoxCentre {
+  glm::vec3 centre{0.0f}, half{0.0f}, abs_centre{0.0f};
+  BoxCentre() = default;
+  explicit BoxCentre(const Bounds3& b)
+      : centre(b.center()), half(0.5f * b.extent()), abs_centre(abs_components(b.center())) {}
+};
+
+// classify() with the box prepared and the plane's |normal| given: the same arithmetic.
+inline Side classify(const BoxCentre& b, const Plane& p, glm::vec3 abs_normal) {
+  const float s = glm::dot(p.normal, b.centre) - p.offset;
+  const float r = glm::dot(abs_normal, b.half);
   if (s - r > 0.0f) return Side::inside;
-  const float margin = 1e-5f * (std::abs(p.offset) + glm::dot(abs_components(p.normal), abs_components(c)) + r);
+  const float margin = 1e-5f * (std::abs(p.offset) + glm::dot(abs_normal, b.abs_centre) + r);
   if (s + r < -margin) return Side::outside;
   return Side::crossing;
 }
+
+inline Side classify(const Bounds3& b, const Plane& p) { return classify(BoxCentre(b), p, abs_components(p.normal)); }
 
 inline Plane flipped(const Plane& p) { return {-p.normal, -p.offset}; }
 

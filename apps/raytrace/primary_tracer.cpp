@@ -5,6 +5,7 @@
 
 #include "apps/common/geometry/traversal.hpp"
 #include "apps/raytrace/geometry_names.hpp"
+#include "apps/raytrace/plane_classification4.hpp"
 
 namespace gcsim::raytrace {
 
@@ -59,6 +60,8 @@ void PrimaryTracer::trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>&
   if (algorithm_ == Algorithm::A4 && !subtree_.empty) {
     Region r{x0, y0, w, &hits, std::vector<char>(std::size_t(w) * h, 0)};
     trace_uniform_regions(r, x0, y0, x1 - 1, y1 - 1, tally, counters);
+  } else if (uses_subtree(algorithm_) && subtree_.empty) {
+    // Nothing meets the subregion: every pixel keeps its empty hit, and no ray is even made.
   } else {
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) trace_pixel(x, y, hits[std::size_t(y - y0) * w + (x - x0)], tally, counters);
@@ -168,13 +171,14 @@ bool PrimaryTracer::nothing_in_front(int prim, float max_distance, int rx0, int 
     }
   }
   // The pyramid of the region's own corner rays (pixel centres), tighter than the subtree's.
-  const Plane region[4] = {camera_.column_plane_at(rx0 + 0.5f), flipped(camera_.column_plane_at(rx1 + 0.5f)),
-                           camera_.row_plane_at(ry0 + 0.5f), flipped(camera_.row_plane_at(ry1 + 0.5f))};
+  const FourPlanes region({camera_.column_plane_at(rx0 + 0.5f), flipped(camera_.column_plane_at(rx1 + 0.5f)),
+                           camera_.row_plane_at(ry0 + 0.5f), flipped(camera_.row_plane_at(ry1 + 0.5f))});
+  // |normal| of the plane once, and each box's centre once for its five classifications.
+  const glm::vec3 behind_abs = behind ? abs_components(behind->normal) : glm::vec3(0.0f);
   auto cannot_occlude = [&](const Bounds3& box) {
-    if (box.distance_to(eye) > max_distance || (behind && classify(box, *behind) == Side::inside)) return true;
-    for (const Plane& pl : region)
-      if (classify(box, pl) == Side::outside) return true;
-    return false;
+    if (box.distance_to(eye) > max_distance) return true;
+    const BoxCentre b(box);
+    return (behind && classify(b, *behind, behind_abs) == Side::inside) || region.any_outside(b);
   };
   auto triangle_behind = [&](int q) {
     if (scene_.is_sphere(q) || scene_.is_sphere(prim)) return false;

@@ -13,15 +13,16 @@ struct FilterPass {
 
   // Returns the entry index, or -1 when r lies outside a plane.
   int visit(NodeRef r, std::uint8_t inside) {
+    const BoxCentre b(box(r));
     for (int i = 0; i < 2; ++i) {
       if (inside & (1u << i)) continue;
       ++tests;
-      const Side s = classify(box(r), planes[i]);
+      const Side s = classify(b, planes[i], abs_components(planes[i].normal));
       if (s == Side::outside) return -1;
       if (s == Side::inside) inside |= (1u << i);
     }
     const int at = static_cast<int>(out.entries.size());
-    out.entries.push_back({r, inside, {-1, -1}});
+    out.entries.push_back({r, inside, {-1, -1}, b});
     if (!is_primitive(r)) {
       const int c0 = visit(bvh.nodes[r].child[0], inside);
       const int c1 = visit(bvh.nodes[r].child[1], inside);
@@ -42,8 +43,7 @@ struct SubtreePass {
   const Plane* planes;  // two
   Subtree& out;
   std::int64_t tests = 0;
-
-  const Bounds3& box(NodeRef r) const { return is_primitive(r) ? bvh.prim_bounds[primitive_of(r)] : bvh.nodes[r].box; }
+  glm::vec3 abs_normal[2] = {abs_components(planes[0].normal), abs_components(planes[1].normal)};
 
   // Returns true and sets *ref when something of entry e lies inside both planes.
   bool visit(int e, std::uint8_t inside, NodeRef* ref) {
@@ -51,7 +51,7 @@ struct SubtreePass {
     for (int i = 0; i < 2; ++i) {
       if (inside & (1u << i)) continue;
       ++tests;
-      const Side s = classify(box(entry.ref), planes[i]);
+      const Side s = classify(entry.box, planes[i], abs_normal[i]);
       if (s == Side::outside) return false;
       if (s == Side::inside) inside |= (1u << i);
     }

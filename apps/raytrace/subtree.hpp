@@ -38,6 +38,7 @@ class PlaneFilteredTree {
     NodeRef ref;            // BVH node or primitive
     std::uint8_t inside;    // bit i: entirely inside plane i
     std::int32_t child[2];  // entries; -1 where the child was dropped
+    BoxCentre box;          // its box, prepared: every subregion of the row classifies it
   };
   std::vector<Entry> entries;
   int root = -1;  // -1: nothing survives

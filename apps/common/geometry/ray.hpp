@@ -5,6 +5,9 @@
 #include <utility>
 
 #include <glm/glm.hpp>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 
 #include "apps/common/geometry/float_util.hpp"
 
@@ -27,7 +30,14 @@ struct Ray {
 
   void prepare() {
     // 1/0 gives +-inf, which the slab test handles; the sign of zero is kept.
+#if defined(__SSE2__)
+    // One vector division instead of three dependent scalar ones (each lane rounds the same).
+    alignas(16) float inv[4];
+    _mm_store_ps(inv, _mm_div_ps(_mm_set1_ps(1.0f), _mm_set_ps(1.0f, direction.z, direction.y, direction.x)));
+    inv_direction = glm::vec3(inv[0], inv[1], inv[2]);
+#else
     inv_direction = glm::vec3(1.0f / direction.x, 1.0f / direction.y, 1.0f / direction.z);
+#endif
     const glm::vec3 a = abs_components(direction);
     kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
     kx = kz == 2 ? 0 : kz + 1;

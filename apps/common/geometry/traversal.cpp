@@ -1,5 +1,7 @@
 #include "apps/common/geometry/traversal.hpp"
 
+#include "apps/common/geometry/triangle_reject.hpp"
+
 #include <algorithm>
 #include <cmath>
 #if defined(__SSE2__)
@@ -27,15 +29,26 @@ struct SlabRay {
   }
 };
 
+// Bit a of kSigns: the ray runs towards -axis a; -1: read from the ray at run time. The
+// closest-hit walk is compiled for each of the eight octants, so the near/far choice per axis
+// costs nothing inside the loop.
+template <int kSigns>
+inline bool negative_axis(const SlabRay& r, int a) {
+  if constexpr (kSigns < 0) return r.negative[a];
+  else return (kSigns >> a) & 1;
+}
+
 #if defined(__SSE2__)
+template <int kSigns>
 inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, float tmax, float entry[2]) {
   __m128 t0 = _mm_set1_ps(tmin), t1 = _mm_set1_ps(kInfinity);
   for (int a = 0; a < 3; ++a) {
     // (lo0, lo1, hi0, hi1) -> distances; the near pair is in the low or high half.
     const __m128 t = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.bounds[a]), _mm_set1_ps(r.o[a])), _mm_set1_ps(r.inv[a]));
     const __m128 swapped = _mm_movehl_ps(t, t);
-    const __m128 tn = r.negative[a] ? swapped : t;
-    const __m128 tf = r.negative[a] ? t : swapped;
+    const bool negative = negative_axis<kSigns>(r, a);
+    const __m128 tn = negative ? swapped : t;
+    const __m128 tf = negative ? t : swapped;
     t0 = _mm_max_ps(tn, t0);
     t1 = _mm_min_ps(tf, t1);
   }
@@ -48,6 +61,7 @@ inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, f
   return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(t0, far))) & 3u;
 }
 #else
+template <int kSigns>
 inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, float tmax, float entry[2]) {
   unsigned mask = 0;
   for (int c = 0; c < 2; ++c) {
@@ -55,7 +69,7 @@ inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, f
     for (int a = 0; a < 3; ++a) {
       float tn = (n.bounds[a][c] - r.o[a]) * r.inv[a];
       float tf = (n.bounds[a][2 + c] - r.o[a]) * r.inv[a];
-      if (r.negative[a]) std::swap(tn, tf);
+      if (negative_axis<kSigns>(r, a)) std::swap(tn, tf);
       t0 = tn > t0 ? tn : t0;
       t1 = tf < t1 ? tf : t1;
     }
@@ -65,6 +79,52 @@ inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, f
   return mask;
 }
 #endif
+
+// What the primitive tests need of a ray, prepared once per ray.
+struct QuickRay {
+  TriangleRejectRay reject;
+  SphereRay sphere;
+  // Every primitive tested lies in `box` (the tree's root box); only triangles use it.
+  QuickRay(const Ray& r, const Bounds3& box, bool triangles) : reject(r), sphere(r) {
+    if (triangles) reject.assume_within(box);
+  }
+};
+
+// test_primitive and occludes with the ray prepared, and the SSE rejection in front of the
+// triangle test: the same tally and the same hits, fewer instructions.
+inline void test_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, const QuickRay& quick, Hit& hit,
+                         TestTally& tally) {
+  if (prims.is_sphere(prim)) {
+    ++tally.spheres;
+    float t;
+    if (intersect_sphere(prims.spheres[prim], quick.sphere, hit.t, &t) && hit.improved_by(t, prim)) {
+      hit.t = t;
+      hit.prim = prim;
+      hit.b1 = 0;
+      hit.b2 = 0;
+    }
+    return;
+  }
+  if (triangle_surely_missed(prims.triangle(prim), quick.reject)) {
+    ++tally.triangles;
+    return;
+  }
+  test_primitive(prims, prim, ray, hit, tally);
+}
+
+inline bool occludes_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, const QuickRay& quick, float tmax,
+                             TestTally& tally) {
+  if (prims.is_sphere(prim)) {
+    ++tally.spheres;
+    float t;
+    return intersect_sphere(prims.spheres[prim], quick.sphere, tmax, &t) && t < tmax;
+  }
+  if (triangle_surely_missed(prims.triangle(prim), quick.reject)) {
+    ++tally.triangles;
+    return false;
+  }
+  return occludes(prims, prim, ray, tmax, tally);
+}
 
 }  // namespace
 
@@ -86,7 +146,7 @@ bool walk_depth_first(const PackedTree& tree, const Ray& ray, float tmax, TestTa
   while (top > 0) {
     const PairNode& n = tree.nodes[stack[--top]];
     float entries[2];
-    const unsigned mask = both_children(n, slab, ray.tmin, tmax, entries);
+    const unsigned mask = both_children<-1>(n, slab, ray.tmin, tmax, entries);
     for (int i = 1; i >= 0; --i) {  // push the second child first: the first is visited first
       const NodeRef c = n.child[i];
       if (is_primitive(c)) {
@@ -103,13 +163,17 @@ bool walk_depth_first(const PackedTree& tree, const Ray& ray, float tmax, TestTa
 }  // namespace
 
 void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+  const QuickRay quick(ray, tree.root_box, !prims.triangles.empty());
   walk_depth_first(tree, ray, kInfinity, tally, [&](int p) {
-    test_primitive(prims, p, ray, hit, tally);
+    test_quickly(prims, p, ray, quick, hit, tally);
     return false;
   });
 }
 
-void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+namespace {
+
+template <int kSigns>
+void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
   if (tree.empty) return;
   if (is_primitive(tree.root)) {
     test_primitive(prims, primitive_of(tree.root), ray, hit, tally);
@@ -122,6 +186,7 @@ void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, cons
   ++tally.boxes;
   if (!intersect_box(tree.root_box, ray, hit.t, &entry)) return;
   const SlabRay slab(ray);
+  const QuickRay quick(ray, tree.root_box, !prims.triangles.empty());
   stack[top++] = {tree.root, entry};
   while (top > 0) {
     const Entry e = stack[--top];
@@ -131,11 +196,11 @@ void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, cons
     int count = 0;
     // Primitive children first: their hits tighten the distance the boxes are tested against.
     const bool prim0 = is_primitive(n.child[0]), prim1 = is_primitive(n.child[1]);
-    if (prim0) test_primitive(prims, primitive_of(n.child[0]), ray, hit, tally);
-    if (prim1) test_primitive(prims, primitive_of(n.child[1]), ray, hit, tally);
+    if (prim0) test_quickly(prims, primitive_of(n.child[0]), ray, quick, hit, tally);
+    if (prim1) test_quickly(prims, primitive_of(n.child[1]), ray, quick, hit, tally);
     if (!(prim0 && prim1)) {
       float entries[2];
-      const unsigned mask = both_children(n, slab, ray.tmin, hit.t, entries);
+      const unsigned mask = both_children<kSigns>(n, slab, ray.tmin, hit.t, entries);
       for (int i = 0; i < 2; ++i) {
         if (i == 0 ? prim0 : prim1) continue;
         ++tally.boxes;
@@ -155,8 +220,23 @@ void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, cons
   }
 }
 
+}  // namespace
+
+void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+  using Walk = void (*)(const PrimitiveArrays&, const PackedTree&, const Ray&, Hit&, TestTally&);
+  static constexpr Walk kByOctant[8] = {ordered<0>, ordered<1>, ordered<2>, ordered<3>,
+                                        ordered<4>, ordered<5>, ordered<6>, ordered<7>};
+  const SlabRay slab(ray);
+  const int octant = slab.negative[0] | slab.negative[1] << 1 | slab.negative[2] << 2;
+  TestTally local = tally;  // kept in registers: the caller's may alias what the tests write
+  kByOctant[octant](prims, tree, ray, hit, local);
+  tally = local;
+}
+
 bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally) {
-  return walk_depth_first(tree, ray, tmax, tally, [&](int p) { return occludes(prims, p, ray, tmax, tally); });
+  const QuickRay quick(ray, tree.root_box, !prims.triangles.empty());
+  return walk_depth_first(tree, ray, tmax, tally,
+                          [&](int p) { return occludes_quickly(prims, p, ray, quick, tmax, tally); });
 }
 
 void intersect_brute_force(const PrimitiveArrays& prims, const Ray& ray, Hit& hit, TestTally& tally) {

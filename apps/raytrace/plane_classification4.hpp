@@ -1,0 +1,65 @@
+#pragma once
+// classify() of one box against four planes at once (the uniformity test's region pyramid): the
+// same float operations in the same order per plane, one plane per SSE lane, so the answer
+// "outside one of them" is exactly that of four scalar classify() calls.
+#include <array>
+
+#include "apps/raytrace/plane_classification.hpp"
+
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
+namespace gcsim::raytrace {
+
+#if defined(__SSE2__)
+
+class FourPlanes {
+ public:
+  explicit FourPlanes(const std::array<Plane, 4>& p) {
+    alignas(16) float v[8][4];
+    for (int i = 0; i < 4; ++i) {
+      const glm::vec3 a = abs_components(p[i].normal);
+      const float f[8] = {p[i].normal.x, p[i].normal.y, p[i].normal.z, p[i].offset, a.x, a.y, a.z, std::abs(p[i].offset)};
+      for (int k = 0; k < 8; ++k) v[k][i] = f[k];
+    }
+    for (int k = 0; k < 8; ++k) lanes_[k] = _mm_load_ps(v[k]);
+  }
+
+  // True if classify(b, plane) == Side::outside for one of the four planes.
+  bool any_outside(const BoxCentre& b) const {
+    const auto dot = [](__m128 x, __m128 y, __m128 z, glm::vec3 v) {  // (x v.x + y v.y) + z v.z, as glm::dot
+      return _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, _mm_set1_ps(v.x)), _mm_mul_ps(y, _mm_set1_ps(v.y))),
+                        _mm_mul_ps(z, _mm_set1_ps(v.z)));
+    };
+    const __m128 s = _mm_sub_ps(dot(lanes_[0], lanes_[1], lanes_[2], b.centre), lanes_[3]);
+    const __m128 r = dot(lanes_[4], lanes_[5], lanes_[6], b.half);
+    const __m128 inside = _mm_cmpgt_ps(_mm_sub_ps(s, r), _mm_setzero_ps());
+    const __m128 sum = _mm_add_ps(_mm_add_ps(lanes_[7], dot(lanes_[4], lanes_[5], lanes_[6], b.abs_centre)), r);
+    const __m128 margin = _mm_mul_ps(_mm_set1_ps(1e-5f), sum);
+    const __m128 outside = _mm_cmplt_ps(_mm_add_ps(s, r), _mm_xor_ps(margin, _mm_set1_ps(-0.0f)));
+    return _mm_movemask_ps(_mm_andnot_ps(inside, outside)) != 0;
+  }
+
+ private:
+  __m128 lanes_[8];  // normal x, y, z, offset, |normal| x, y, z, |offset|
+};
+
+#else
+
+class FourPlanes {
+ public:
+  explicit FourPlanes(const std::array<Plane, 4>& p) : planes_(p) {}
+  bool any_outside(const BoxCentre& b) const {
+    for (const Plane& pl : planes_)
+      if (classify(b, pl, abs_components(pl.normal)) == Side::outside) return true;
+    return false;
+  }
+
+ private:
+  std::array<Plane, 4> planes_;
+};
+
+#endif
+
+}  // namespace gcsim::raytrace

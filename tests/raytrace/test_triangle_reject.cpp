@@ -1,0 +1,105 @@
+// The SSE rejection in front of the watertight triangle test must never reject a triangle the
+// full test hits, on the hard cases: rays through vertices and along shared edges, axis-parallel
+// and grazing rays, degenerate triangles, coordinates near float's safe range.
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "apps/common/geometry/triangle_reject.hpp"
+#include "apps/common/rng.hpp"
+#include "apps/raytrace/geometry_names.hpp"
+
+namespace gcsim::raytrace {
+namespace {
+
+struct Agreement {
+  int hits = 0, misses = 0, rejected = 0;
+};
+
+// Checks one ray against one triangle; returns through `a` how often each outcome happened.
+void check(const Triangle& tri, const Ray& ray, Agreement& a) {
+  float t, b1, b2;
+  const bool hit = intersect_triangle(tri, ray, kInfinity, &t, &b1, &b2);
+  const bool rejected = triangle_surely_missed(tri, TriangleRejectRay(ray));
+  // With the range check skipped for a box holding the triangle (a tree's root box): the same.
+  TriangleRejectRay within(ray);
+  within.assume_within(union_of(tri.bounds(), Bounds3{ray.origin + 0.5f, ray.origin + 2.0f}));
+  ASSERT_EQ(triangle_surely_missed(tri, within), rejected);
+  hit ? ++a.hits : ++a.misses;
+  a.rejected += rejected;
+  ASSERT_FALSE(hit && rejected) << "rejected a hit: ray (" << ray.origin.x << ", " << ray.origin.y << ", "
+                                << ray.origin.z << ") dir (" << ray.direction.x << ", " << ray.direction.y << ", "
+                                << ray.direction.z << ")";
+}
+
+std::vector<Triangle> hard_triangles(apps::Rng& rng, float scale) {
+  auto p = [&] { return scale * glm::vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)); };
+  std::vector<Triangle> out = {
+      {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},      // axis-aligned
+      {{0, 0, 0}, {1, 0, 0}, {1, 0, 0}},      // two equal vertices
+      {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}},      // collinear
+      {{0, 0, 0}, {0, 0, 1}, {0, 1, 0}},      // in a coordinate plane
+  };
+  for (auto& t : out) t = {t.p0 * scale, t.p1 * scale, t.p2 * scale};
+  for (int i = 0; i < 40; ++i) out.push_back({p(), p(), p()});
+  return out;
+}
+
+TEST(TriangleReject, NeverRejectsAHitOnHardCases) {
+  apps::Rng rng(11);
+  Agreement a;
+  for (float scale : {1.0f, 1e-13f, 1e-6f, 1e5f, 1e12f, 3e12f}) {
+    for (const Triangle& tri : hard_triangles(rng, scale)) {
+      const glm::vec3 verts[3] = {tri.p0, tri.p1, tri.p2};
+      for (int i = 0; i < 30; ++i) {
+        const glm::vec3 o = scale * glm::vec3(rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-4, 4));
+        const float s = rng.uniform();
+        const glm::vec3 targets[] = {verts[i % 3], glm::mix(verts[i % 3], verts[(i + 1) % 3], s),
+                                     glm::mix(verts[0], glm::mix(verts[1], verts[2], s), rng.uniform()),
+                                     verts[i % 3] + scale * glm::vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), 0)};
+        for (const glm::vec3& target : targets) {
+          if (target == o) continue;
+          check(tri, Ray(o, target - o), a);
+          // Axis-parallel (with negative zeros), and grazing: in the plane of an edge.
+          const glm::vec3 d = target - o;
+          const int k = i % 3;
+          glm::vec3 axis(-0.0f);
+          axis[k] = d[k] < 0 ? -1.0f : 1.0f;
+          check(tri, Ray(target - axis * scale, axis), a);
+          check(tri, Ray(verts[k] - (verts[(k + 1) % 3] - verts[k]), verts[(k + 1) % 3] - verts[k]), a);
+          if (HasFatalFailure()) return;
+        }
+      }
+    }
+  }
+  // The rejection is in use (many misses here are degenerate, edge-on, behind the origin or out of
+  // float's safe range, which only the full test rejects).
+  EXPECT_GT(a.hits, 1000);
+  EXPECT_GT(a.rejected, a.misses / 8);
+}
+
+TEST(TriangleReject, SharedEdgesOfAGridAreNeverRejectedBoth) {
+  // Straight down onto every vertex and edge midpoint of a grid of quads: some triangle is hit,
+  // and every triangle the full test hits passes the rejection.
+  const int n = 8;
+  std::vector<Triangle> tris;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const glm::vec3 p00(x / float(n), y / float(n), 0), p10((x + 1) / float(n), y / float(n), 0);
+      const glm::vec3 p01(x / float(n), (y + 1) / float(n), 0), p11((x + 1) / float(n), (y + 1) / float(n), 0);
+      tris.push_back({p00, p10, p11});
+      tris.push_back({p00, p11, p01});
+    }
+  Agreement a;
+  for (int y = 1; y < 2 * n; ++y)
+    for (int x = 1; x < 2 * n; ++x) {
+      const Ray r({x / float(2 * n), y / float(2 * n), 1.0f}, {0.0f, -0.0f, -1.0f});
+      const int before = a.hits;
+      for (const Triangle& t : tris) check(t, r, a);
+      ASSERT_FALSE(HasFatalFailure());
+      EXPECT_GT(a.hits, before) << x << "," << y;
+    }
+}
+
+}  // namespace
+}  // namespace gcsim::raytrace
