@@ -145,7 +145,7 @@ void add_calibrate(CommandGroups& g) {
       "\n\nExample (the shipped configs/gc-powerplus-calibrated.toml):\n"
       "  cd configs && gcsim calibrate --fit 4.6,4.3@1+8+CORNELL+PICROOM \\\n"
       "      --free network.connect_base_us,network.connect_per_hop_us,network.link_bandwidth_mbps,"
-      "ops.polygon_project,ops.hemicube_pixel \\\n"
+      "ops.hemicube_pixel,ops.form_factor_merge \\\n"
       "      --config gc-powerplus-mechanisms.toml --out gc-powerplus-calibrated.toml");
   cmd->callback([f] {
     for (const auto& [path, option] : {std::pair{f->out, "--out"}, {f->json, "--json"}, {f->csv, "--csv"}})
