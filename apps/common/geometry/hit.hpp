@@ -16,6 +16,11 @@ struct Hit {
   bool valid() const { return prim >= 0; }
   // Would a hit at distance t on primitive id replace this one?
   bool improved_by(float t_new, std::int32_t id) const { return t_new < t || (t_new == t && id < prim); }
+  // Takes the hit at t_new on primitive id if it improves this one.
+  void offer(float t_new, std::int32_t id, float b1_new = 0, float b2_new = 0) {
+    if (!improved_by(t_new, id)) return;
+    t = t_new, prim = id, b1 = b1_new, b2 = b2_new;
+  }
 };
 
 }  // namespace gcsim::geometry

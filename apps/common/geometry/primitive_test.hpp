@@ -26,12 +26,7 @@ inline void test_primitive(const PrimitiveArrays& prims, int prim, const Ray& ra
     ++tally.triangles;
     found = intersect_triangle(prims.triangle(prim), ray, hit.t, &t, &b1, &b2);
   }
-  if (found && hit.improved_by(t, prim)) {
-    hit.t = t;
-    hit.prim = prim;
-    hit.b1 = b1;
-    hit.b2 = b2;
-  }
+  if (found) hit.offer(t, prim, b1, b2);
 }
 
 // Any hit closer than tmax (shadow rays).

@@ -97,12 +97,7 @@ inline void test_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray,
   if (prims.is_sphere(prim)) {
     ++tally.spheres;
     float t;
-    if (intersect_sphere(prims.spheres[prim], quick.sphere, hit.t, &t) && hit.improved_by(t, prim)) {
-      hit.t = t;
-      hit.prim = prim;
-      hit.b1 = 0;
-      hit.b2 = 0;
-    }
+    if (intersect_sphere(prims.spheres[prim], quick.sphere, hit.t, &t)) hit.offer(t, prim);
     return;
   }
   if (triangle_surely_missed(prims.triangle(prim), quick.reject)) {
@@ -173,7 +168,8 @@ void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, co
 namespace {
 
 template <int kSigns>
-void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, const SlabRay& slab, Hit& hit,
+             TestTally& tally) {
   if (tree.empty) return;
   if (is_primitive(tree.root)) {
     test_primitive(prims, primitive_of(tree.root), ray, hit, tally);
@@ -185,7 +181,6 @@ void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ra
   float entry;
   ++tally.boxes;
   if (!intersect_box(tree.root_box, ray, hit.t, &entry)) return;
-  const SlabRay slab(ray);
   const QuickRay quick(ray, tree.root_box, !prims.triangles.empty());
   stack[top++] = {tree.root, entry};
   while (top > 0) {
@@ -223,13 +218,13 @@ void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ra
 }  // namespace
 
 void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
-  using Walk = void (*)(const PrimitiveArrays&, const PackedTree&, const Ray&, Hit&, TestTally&);
+  using Walk = void (*)(const PrimitiveArrays&, const PackedTree&, const Ray&, const SlabRay&, Hit&, TestTally&);
   static constexpr Walk kByOctant[8] = {ordered<0>, ordered<1>, ordered<2>, ordered<3>,
                                         ordered<4>, ordered<5>, ordered<6>, ordered<7>};
   const SlabRay slab(ray);
   const int octant = slab.negative[0] | slab.negative[1] << 1 | slab.negative[2] << 2;
   TestTally local = tally;  // kept in registers: the caller's may alias what the tests write
-  kByOctant[octant](prims, tree, ray, hit, local);
+  kByOctant[octant](prims, tree, ray, slab, hit, local);
   tally = local;
 }
 
