@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -43,7 +45,7 @@ TEST(Calibrate, RecoversTheMachineThatProducedTheFigures) {
   Predictor predictor(PredictionSettings{});
   MeasuredTable table = thesis_table("4.6");
   const Grid produced = predictor.predict({table}, file.with(truth))[0];
-  const auto csv = std::filesystem::temp_directory_path() / "gcsim_calibration_truth.csv";
+  const auto csv = std::filesystem::temp_directory_path() / fmt::format("gcsim_calibration_truth_{}.csv", ::getpid());
   {
     std::ofstream out(csv);
     out << "nodes,connect_only,1KB,4KB,16KB\n";
@@ -54,6 +56,7 @@ TEST(Calibrate, RecoversTheMachineThatProducedTheFigures) {
   const CalibrationResult res = calibrate(file, {table_from_spec(csv.string() + ":4.6")},
                                           {"network.connect_base_us", "network.connect_per_hop_us", "network.link_bandwidth_mbps"},
                                           predictor);
+  std::filesystem::remove(csv);
   ASSERT_TRUE(res.fit.converged) << res.fit.reason;
   for (const auto& p : res.parameters) EXPECT_NEAR(p.value / truth.at(p.key), 1.0, 1e-3) << p.key;
   for (const auto& c : res.cells) EXPECT_LT(std::abs(c.error()), 1e-4) << c.nodes << " " << c.column;
