@@ -144,13 +144,12 @@ class RadiosityNode {
     return shooters;
   }
 
-  // 2. This node's share of the form factors, and 3. the all-node exchange. Unaggregated, as in
-  // the thesis, every shooter's delta form factors are exchanged on their own; aggregated, one
-  // exchange carries every shooter's.
+  // 2. This node's share of the form factors, and 3. the all-node exchange: every shooter's delta
+  // form factors on their own, or (aggregated, or exchanged together) one exchange for all.
   void exchange_form_factors(const std::vector<int>& shooters) {
     received_.reset(int(shooters.size()), cells_);
     const bool patch_mode = o_.algorithm == ParallelAlgorithm::patch;
-    if (o_.aggregate) {
+    if (o_.aggregate || o_.ff_exchange == FormFactorExchange::together) {
       parix::Bytes w;
       for (std::size_t k = 0; k < shooters.size(); ++k) compute_share(shooters, k, w);
       exchange(w, -1, int(shooters.size()));

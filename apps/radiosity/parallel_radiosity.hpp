@@ -10,8 +10,9 @@
 //                               into four, recursively).
 //   patch (4.2.2)               patches belong to nodes (p mod N); the owner of a shooter computes
 //                               its whole hemicube; the rows are exchanged. The conventional baseline.
-// Unaggregated, a loop has K + 1 all-node exchanges as in the thesis: the proposals, then each
-// shooter's delta form factors (for the patch partition: a broadcast from the shooter's owner).
+// Unaggregated, a loop has K + 1 all-node exchanges: the proposals, then each shooter's delta form
+// factors (for the patch partition: a broadcast from the shooter's owner); with ff_exchange
+// together, 2: the proposals, then every shooter's form factors in one exchange.
 // --aggregate (4.4.3, unfinished in the thesis) makes it one exchange of larger messages: the
 // proposals are dropped (every replica can select the shooters itself) and all shooters' form
 // factors travel together. keep_links reuses one link per peer instead of a connection per message.
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "apps/radiosity/cell_prefetch.hpp"
+#include "apps/radiosity/form_factor_exchange.hpp"
 #include "apps/radiosity/form_factor_merge.hpp"
 #include "apps/radiosity/progressive_solver.hpp"
 #include "apps/radiosity/projection_cache.hpp"
@@ -45,6 +47,7 @@ struct ParallelOptions {
   int hierarchical_levels = 3;  // for hemicube-hierarchical
   CellAssignment cell_assignment = CellAssignment::cyclic;  // which cells each node computes
   FormFactorMerge merge = FormFactorMerge::own_cells;       // how the received parts are added up
+  FormFactorExchange ff_exchange = FormFactorExchange::per_shooter;  // one exchange per shooter, or one for all
   std::vector<int> snapshot_loops;  // processor 0 keeps the radiosities after these loops
   std::function<void(int loop, double shot_fraction)> on_loop;  // processor 0 calls it after every loop (progress)
   // Computation sampling (projection_cache.hpp): the replicas of one simulated run share each

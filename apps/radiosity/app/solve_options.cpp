@@ -72,6 +72,12 @@ void add_solve_options(CLI::App* cmd, SolveFlags& f) {
                   "apps/radiosity/form_factor_merge.hpp). Same radiosities either way")
       ->check(CLI::IsMember({"own-cells", "whole-hemicube"}))
       ->capture_default_str();
+  cmd->add_option("--ff-exchange", f.ff_exchange,
+                  "How a loop's form factors travel: per-shooter (one all-node exchange per shooter after the "
+                  "proposals: K + 1 per loop) or together (one exchange carries every shooter's: 2 per loop, the "
+                  "thesis's 4.4.1 reading, apps/radiosity/form_factor_exchange.hpp). Same radiosities either way")
+      ->check(CLI::IsMember({"per-shooter", "together"}))
+      ->capture_default_str();
   cmd->add_option("--near-field-ratio", f.near_field_ratio,
                   "Near field: a shooter splits into n x n parts (each shooting its own hemicube of resolution / n) "
                   "until each part is at most this times its centre's distance to the nearest receiver. At the "
@@ -122,6 +128,7 @@ ParallelOptions parallel_options(const SolveFlags& f) {
   o.hierarchical_levels = f.levels;
   o.cell_assignment = parse_cell_assignment(f.cell_assignment);
   o.merge = parse_form_factor_merge(f.merge);
+  o.ff_exchange = parse_form_factor_exchange(f.ff_exchange);
   // Fail early, with the reason, on an impossible hemicube / partition combination.
   HemicubeOptions check = o.solver.hemicube;
   if (o.algorithm == ParallelAlgorithm::hemicube_hierarchical) check.hierarchical_levels = f.levels;

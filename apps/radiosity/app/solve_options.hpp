@@ -22,6 +22,7 @@ struct SolveFlags {
   int cells = 8;
   std::string cell_assignment = "cyclic";
   std::string merge = "own-cells";
+  std::string ff_exchange = "per-shooter";
   int near_field_samples = 2;   // HemicubeOptions::max_shooter_samples
   double near_field_ratio = 1.0;
   bool each_node_projects = false;  // ParallelOptions::share_projections off
