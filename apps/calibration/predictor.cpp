@@ -116,6 +116,7 @@ void Predictor::run_radiosity(const std::vector<RunKey>& keys, const machine::Ma
     o.solver.energy = settings_.energy;
     o.cell_assignment = settings_.cell_assignment;
     o.merge = settings_.merge;
+    o.ff_exchange = settings_.ff_exchange;
     o.bcast = tree ? parix::BcastAlgo::tree : parix::BcastAlgo::sequential;
     radiosity::ParallelOutcome outcome;
     o = radiosity::with_shared_projections(o);

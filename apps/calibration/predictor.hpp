@@ -11,6 +11,7 @@
 
 #include "apps/calibration/measured_table.hpp"
 #include "apps/radiosity/cell_assignment.hpp"
+#include "apps/radiosity/form_factor_exchange.hpp"
 #include "apps/radiosity/form_factor_merge.hpp"
 #include "machine/machine_config.hpp"
 
@@ -23,6 +24,7 @@ struct PredictionSettings {
   double energy = 0.999; //                 shot fraction at which a run stops (the thesis: 99.9%)
   radiosity::CellAssignment cell_assignment = radiosity::CellAssignment::block;  // the thesis's figure 4.1
   radiosity::FormFactorMerge merge = radiosity::FormFactorMerge::whole_hemicube;  // tables 4.5 and 4.8 together
+  radiosity::FormFactorExchange ff_exchange = radiosity::FormFactorExchange::together;  // 4.4.1: two exchanges per loop
   int jobs = 1;          // simulations run side by side on this many host threads
 };
 

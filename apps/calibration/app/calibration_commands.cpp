@@ -36,6 +36,7 @@ struct PredictFlags {
   double energy = 0.999;
   std::string cell_assignment = "block";
   std::string merge = "whole-hemicube";
+  std::string ff_exchange = "together";
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 };
 
@@ -60,9 +61,29 @@ void add_predict_options(CLI::App* cmd, PredictFlags& f) {
                   "README, Calibration) or own-cells (`gcsim run radiosity`'s default)")
       ->check(CLI::IsMember({"own-cells", "whole-hemicube"}))
       ->capture_default_str();
+  cmd->add_option("--ff-exchange", f.ff_exchange,
+                  "Radiosity tables: together (2 exchanges per loop: the proposals, then every shooter's form factors "
+                  "in one, the thesis's 4.4.1 \"two synchronizations per loop\"; README, Calibration) or per-shooter "
+                  "(K + 1: each shooter's form factors on their own, `gcsim run radiosity`'s default)")
+      ->check(CLI::IsMember({"per-shooter", "together"}))
+      ->capture_default_str();
   cmd->add_option("--jobs", f.jobs, "Simulations run side by side on this many host threads")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
+}
+
+// The prediction flags that differ from their defaults, as a command line would give them, so that
+// a fitted file's header names everything that reproduces the fit.
+std::string non_default_flags(const PredictFlags& f) {
+  const PredictFlags d;
+  std::string out;
+  if (f.model != d.model) out += " --model " + f.model;
+  if (f.hemicube != d.hemicube) out += fmt::format(" --hemicube {}", f.hemicube);
+  if (f.energy != d.energy) out += fmt::format(" --energy {}", f.energy);
+  if (f.cell_assignment != d.cell_assignment) out += " --cell-assignment " + f.cell_assignment;
+  if (f.merge != d.merge) out += " --ff-merge " + f.merge;
+  if (f.ff_exchange != d.ff_exchange) out += " --ff-exchange " + f.ff_exchange;
+  return out;
 }
 
 cal::PredictionSettings settings(const PredictFlags& f) {
@@ -72,6 +93,7 @@ cal::PredictionSettings settings(const PredictFlags& f) {
   s.energy = f.energy;
   s.cell_assignment = radiosity::parse_cell_assignment(f.cell_assignment);
   s.merge = radiosity::parse_form_factor_merge(f.merge);
+  s.ff_exchange = radiosity::parse_form_factor_exchange(f.ff_exchange);
   s.jobs = f.jobs;
   return s;
 }
@@ -156,7 +178,8 @@ void add_calibrate(CommandGroups& g) {
     for (const auto& k : free) file.check_free_key(k);
     cal::Predictor predictor(settings(f->predict));
     const std::string command = "gcsim calibrate --fit " + f->fit + " --free " + f->free +
-                                (f->config.empty() ? "" : " --config " + f->config) + " --out " + f->out;
+                                (f->config.empty() ? "" : " --config " + f->config) + non_default_flags(f->predict) +
+                                " --out " + f->out;
     fmt::print("fitting {} to table(s) {} on {} ...\n", f->free, f->fit, file.source());
     std::fflush(stdout);
     FitProgress progress;
