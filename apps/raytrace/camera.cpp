@@ -48,10 +48,11 @@ Plane Camera::row_plane_at(float j) const {
 void Camera::pixel_rays(const int* x, const int* y, int n, Ray* out) const {
   for (int first = 0; first < n; first += 4) {
     const int m = std::min(4, n - first);
-    alignas(16) int xi[4] = {}, yi[4] = {};
-    for (int i = 0; i < m; ++i) xi[i] = x[first + i], yi[i] = y[first + i];
-    const __m128 sx = _mm_add_ps(_mm_cvtepi32_ps(_mm_load_si128(reinterpret_cast<const __m128i*>(xi))), _mm_set1_ps(0.5f));
-    const __m128 sy = _mm_add_ps(_mm_cvtepi32_ps(_mm_load_si128(reinterpret_cast<const __m128i*>(yi))), _mm_set1_ps(0.5f));
+    // Set from registers, not stored and reloaded: a vector load of four scalar stores stalls.
+    float xf[4] = {}, yf[4] = {};
+    for (int i = 0; i < m; ++i) xf[i] = float(x[first + i]), yf[i] = float(y[first + i]);
+    const __m128 sx = _mm_add_ps(_mm_setr_ps(xf[0], xf[1], xf[2], xf[3]), _mm_set1_ps(0.5f));
+    const __m128 sy = _mm_add_ps(_mm_setr_ps(yf[0], yf[1], yf[2], yf[3]), _mm_set1_ps(0.5f));
     const __m128 u = _mm_mul_ps(_mm_sub_ps(_mm_mul_ps(sx, _mm_set1_ps(two_over_width_)), _mm_set1_ps(1.0f)), _mm_set1_ps(half_w_));
     const __m128 v = _mm_mul_ps(_mm_sub_ps(_mm_set1_ps(1.0f), _mm_mul_ps(sy, _mm_set1_ps(two_over_height_))), _mm_set1_ps(half_h_));
     __m128 d[3];

@@ -1,6 +1,8 @@
 #include "apps/raytrace/primary_tracer.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <optional>
 
 #include "apps/common/geometry/packet_traversal.hpp"
@@ -22,7 +24,6 @@ void in_blocks(int x0, int y0, int x1, int y1, F&& f) {
         for (int x = bx; x < std::min(bx + 4, x1); ++x) f(x, y);
 }
 
-constexpr char kPending = 2;  // Region::traced: a corner to trace at this level
 
 }  // namespace
 
@@ -142,18 +143,33 @@ void PrimaryTracer::trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>&
 void PrimaryTracer::trace_uniform_regions(Region& r, int rx0, int ry0, int rx1, int ry1, TestTally& tally,
                                           TraceCounters& counters) {
   level_.assign(1, Rect{rx0, ry0, rx1, ry1});
+  // A level's new corners as bits, 64 pixels of a row to a word: read out in 4 x 2 blocks (64
+  // is a multiple of 4, so no block straddles two words).
+  const int words = (rx1 - rx0) / 64 + 1, rows = ry1 - ry0 + 1;
+  pending_.assign(std::size_t(words) * (rows + 1), 0);  // a spare zero row below the last
+  auto row = [&](int y) { return &pending_[std::size_t(y - ry0) * words]; };
   while (!level_.empty()) {
     for (const Rect& q : level_) {
       const int cx[4] = {q.x0, q.x1, q.x0, q.x1}, cy[4] = {q.y0, q.y0, q.y1, q.y1};
-      for (int i = 0; i < 4; ++i)
-        if (!r.done(cx[i], cy[i])) r.done(cx[i], cy[i]) = kPending;
+      for (int i = 0; i < 4; ++i) {
+        if (r.done(cx[i], cy[i])) continue;
+        r.done(cx[i], cy[i]) = 1;
+        row(cy[i])[(cx[i] - rx0) >> 6] |= std::uint64_t(1) << ((cx[i] - rx0) & 63);
+      }
     }
     pixels_.clear();  // the new corners, neighbours next to each other for the packets
-    in_blocks(rx0, ry0, rx1 + 1, ry1 + 1, [&](int x, int y) {
-      if (r.done(x, y) != kPending) return;
-      r.done(x, y) = 1;
-      pixels_.push_back({x, y});
-    });
+    for (int y = ry0; y <= ry1; y += 2)
+      for (int w = 0; w < words; ++w) {
+        std::uint64_t& a = row(y)[w];
+        std::uint64_t& b = row(y + 1)[w];
+        for (std::uint64_t m = a | b; m;) {
+          const std::uint64_t block = std::uint64_t(15) << (std::countr_zero(m) & ~3);
+          for (std::uint64_t k = a & block; k; k &= k - 1) pixels_.push_back({rx0 + 64 * w + std::countr_zero(k), y});
+          for (std::uint64_t k = b & block; k; k &= k - 1) pixels_.push_back({rx0 + 64 * w + std::countr_zero(k), y + 1});
+          m &= ~block;
+        }
+        a = b = 0;
+      }
     trace_pixels(pixels_, r.x0, r.y0, r.width, *r.hits, tally, counters);
     next_.clear();
     for (const Rect& q : level_)

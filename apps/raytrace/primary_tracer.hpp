@@ -2,6 +2,7 @@
 // Nearest hits of the primary rays of one subregion (tile) with any of the paper's algorithms.
 // A tracer keeps per-row state (the two planes shared along a row of subregions, 2.2.1) and the
 // subtree of the last subregion, so tiles should be traced row by row, left to right.
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -57,6 +58,7 @@ class PrimaryTracer {
   std::unique_ptr<RayClassifier> classifier_;
   std::vector<Pixel> pixels_;      // scratch: the pixels a tile or a level of regions traces
   std::vector<Rect> level_, next_;  // scratch: A4's regions, a level at a time
+  std::vector<std::uint64_t> pending_;  // scratch: A4's corners to trace at this level, as bits
 };
 
 }  // namespace gcsim::raytrace
