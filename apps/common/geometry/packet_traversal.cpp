@@ -188,16 +188,28 @@ GCSIM_AVX2 void test_lanes(const PrimitiveArrays& prims, int prim, const Ray ray
 
 // Both children's slab tests for every lane (both_children of traversal.cpp, with each lane's
 // own near and far planes): the lanes whose box is hit within their nearest hit, and entries.
-GCSIM_AVX2 unsigned child_box(const PairNode& n, int c, const Lanes& l, __m256 tmax, __m256& near) {
+// kOctant >= 0: every lane runs towards that octant (bit a: -axis a), so the near plane of each
+// axis is known without a per-lane blend; -1: mixed octants, blended per lane.
+template <int kOctant>
+GCSIM_AVX2 inline unsigned child_box(const PairNode& n, int c, const Lanes& l, __m256 tmax, __m256& near) {
   __m256 t0 = _mm256_load_ps(l.tmin), t1 = _mm256_set1_ps(kInfinity);
   for (int a = 0; a < 3; ++a) {
     const __m256 o = _mm256_load_ps(l.o[a]), inv = _mm256_load_ps(l.inv[a]);
-    const __m256 neg = _mm256_castsi256_ps(_mm256_load_si256(reinterpret_cast<const __m256i*>(l.negative[a])));
-    const __m256 tl = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(n.bounds[a][c]), o), inv);
-    const __m256 th = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(n.bounds[a][2 + c]), o), inv);
+    __m256 tn, tf;
+    if constexpr (kOctant >= 0) {
+      const bool negative = (kOctant >> a) & 1;
+      tn = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(n.bounds[a][negative ? 2 + c : c]), o), inv);
+      tf = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(n.bounds[a][negative ? c : 2 + c]), o), inv);
+    } else {
+      const __m256 neg = _mm256_castsi256_ps(_mm256_load_si256(reinterpret_cast<const __m256i*>(l.negative[a])));
+      const __m256 tl = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(n.bounds[a][c]), o), inv);
+      const __m256 th = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(n.bounds[a][2 + c]), o), inv);
+      tn = _mm256_blendv_ps(tl, th, neg);
+      tf = _mm256_blendv_ps(th, tl, neg);
+    }
     // max/min return their second operand when one is NaN, as the single-ray test relies on.
-    t0 = _mm256_max_ps(_mm256_blendv_ps(tl, th, neg), t0);
-    t1 = _mm256_min_ps(_mm256_blendv_ps(th, tl, neg), t1);
+    t0 = _mm256_max_ps(tn, t0);
+    t1 = _mm256_min_ps(tf, t1);
   }
   const __m256 far = _mm256_min_ps(_mm256_mul_ps(t1, _mm256_set1_ps(1.0f + 2.0f * gamma(3))), tmax);
   near = _mm256_mul_ps(t0, _mm256_set1_ps(1.0f - 2.0f * gamma(3)));
@@ -253,8 +265,9 @@ GCSIM_AVX2 inline bool push(Entry* stack, int& top, NodeRef node, unsigned lanes
 
 // The walk of ordered<> in traversal.cpp for all lanes at once; false (nothing written) when it
 // would need more stack than the single-ray walk has.
-GCSIM_AVX2 bool walk(const PrimitiveArrays& prims, const PackedTree& tree, const Ray rays[], unsigned lanes, Hit hits[],
-                     TestTally tallies[]) {
+template <int kOctant>
+GCSIM_AVX2 bool walk(const PrimitiveArrays& prims, const PackedTree& tree, const Ray rays[], unsigned lanes,
+                     const Lanes& l, Hit hits[], TestTally tallies[]) {
   State s;
   unsigned live = 0;
   alignas(32) float root_entry[8] = {};
@@ -265,8 +278,6 @@ GCSIM_AVX2 bool walk(const PrimitiveArrays& prims, const PackedTree& tree, const
     ++s.boxes[i];
     if (intersect_box(tree.root_box, rays[i], s.t[i], &root_entry[i])) live |= 1u << i;
   }
-  Lanes l;
-  prepare_lanes(prims, tree, rays, lanes, l);
   thread_local Entry stack[kStackSize];  // fiber stacks are small
   int top = 0;
   push(stack, top, tree.root, live, _mm256_load_ps(root_entry));
@@ -284,8 +295,8 @@ GCSIM_AVX2 bool walk(const PrimitiveArrays& prims, const PackedTree& tree, const
     if (prim0 && prim1) continue;
     const __m256 tmax = _mm256_load_ps(s.t);
     __m256 near0 = tmax, near1 = tmax;
-    const unsigned hit0 = prim0 ? 0u : child_box(n, 0, l, tmax, near0) & active;
-    const unsigned hit1 = prim1 ? 0u : child_box(n, 1, l, tmax, near1) & active;
+    const unsigned hit0 = prim0 ? 0u : child_box<kOctant>(n, 0, l, tmax, near0) & active;
+    const unsigned hit1 = prim1 ? 0u : child_box<kOctant>(n, 1, l, tmax, near1) & active;
     if (!prim0) count(s.boxes, active);
     if (!prim1) count(s.boxes, active);
     const unsigned both = hit0 & hit1, only0 = hit0 & ~both, only1 = hit1 & ~both;
@@ -315,6 +326,31 @@ GCSIM_AVX2 bool walk(const PrimitiveArrays& prims, const PackedTree& tree, const
   return true;
 }
 
+// The walk compiled for the packet's octant when all lanes share one.
+GCSIM_AVX2 bool walk_packet(const PrimitiveArrays& prims, const PackedTree& tree, const Ray rays[], unsigned lanes,
+                            Hit hits[], TestTally tallies[]) {
+  Lanes l;
+  prepare_lanes(prims, tree, rays, lanes, l);
+  int octant = 0;
+  for (int a = 0; a < 3; ++a) {
+    const unsigned negative = lanes & unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(
+                                          _mm256_load_si256(reinterpret_cast<const __m256i*>(l.negative[a])))));
+    if (negative != 0 && negative != lanes) octant = -1;
+    if (octant >= 0 && negative) octant |= 1 << a;
+  }
+  switch (octant) {
+    case 0: return walk<0>(prims, tree, rays, lanes, l, hits, tallies);
+    case 1: return walk<1>(prims, tree, rays, lanes, l, hits, tallies);
+    case 2: return walk<2>(prims, tree, rays, lanes, l, hits, tallies);
+    case 3: return walk<3>(prims, tree, rays, lanes, l, hits, tallies);
+    case 4: return walk<4>(prims, tree, rays, lanes, l, hits, tallies);
+    case 5: return walk<5>(prims, tree, rays, lanes, l, hits, tallies);
+    case 6: return walk<6>(prims, tree, rays, lanes, l, hits, tallies);
+    case 7: return walk<7>(prims, tree, rays, lanes, l, hits, tallies);
+    default: return walk<-1>(prims, tree, rays, lanes, l, hits, tallies);
+  }
+}
+
 bool host_has_avx2() {
   static const bool yes = __builtin_cpu_supports("avx2");
   return yes;
@@ -338,7 +374,8 @@ void traverse_ordered_packet(const PrimitiveArrays& prims, const PackedTree& tre
   if (!lanes) return;
 #if defined(GCSIM_PACKET_AVX2)
   // An empty tree or a lone primitive: nothing to share between the lanes.
-  if (!tree.empty && !is_primitive(tree.root) && host_has_avx2() && walk(prims, tree, rays, lanes, hits, tallies))
+  if (!tree.empty && !is_primitive(tree.root) && host_has_avx2() &&
+      walk_packet(prims, tree, rays, lanes, hits, tallies))
     return;
 #endif
   one_by_one(prims, tree, rays, lanes, hits, tallies);
