@@ -88,13 +88,16 @@ GCSIM_AVX2 inline __m256 largest(const __m256 v[3]) {
 GCSIM_AVX2 unsigned intersect_lanes(const Triangle& tri, int prim, const Lanes& l, const Lanes::Axes& ax,
                                     unsigned lanes, State& s) {
   const unsigned group = lanes & ax.lanes;
-  const glm::vec3* p[3] = {&tri.p0, &tri.p1, &tri.p2};
+  // The nine coordinates as floats in a row (glm's operator[] with a run-time index is a switch).
+  static_assert(sizeof(Triangle) == 9 * sizeof(float));
+  const float* p = &tri.p0.x;
   __m256 x[3], y[3], z[3];
   const __m256 sx = _mm256_load_ps(l.shear_x), sy = _mm256_load_ps(l.shear_y);
+  const __m256 ox = _mm256_load_ps(l.o[ax.kx]), oy = _mm256_load_ps(l.o[ax.ky]), oz = _mm256_load_ps(l.o[ax.kz]);
   for (int v = 0; v < 3; ++v) {
-    z[v] = _mm256_sub_ps(_mm256_set1_ps((*p[v])[ax.kz]), _mm256_load_ps(l.o[ax.kz]));
-    const __m256 vx = _mm256_sub_ps(_mm256_set1_ps((*p[v])[ax.kx]), _mm256_load_ps(l.o[ax.kx]));
-    const __m256 vy = _mm256_sub_ps(_mm256_set1_ps((*p[v])[ax.ky]), _mm256_load_ps(l.o[ax.ky]));
+    z[v] = _mm256_sub_ps(_mm256_set1_ps(p[3 * v + ax.kz]), oz);
+    const __m256 vx = _mm256_sub_ps(_mm256_set1_ps(p[3 * v + ax.kx]), ox);
+    const __m256 vy = _mm256_sub_ps(_mm256_set1_ps(p[3 * v + ax.ky]), oy);
     x[v] = _mm256_add_ps(vx, _mm256_mul_ps(sx, z[v]));
     y[v] = _mm256_add_ps(vy, _mm256_mul_ps(sy, z[v]));
   }
