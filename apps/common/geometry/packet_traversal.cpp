@@ -13,6 +13,7 @@
 // The kernel alone is compiled for AVX2 (no FMA: contracted products would round differently
 // from the scalar tests they must match); it runs only where the CPU reports AVX2.
 #define GCSIM_AVX2 __attribute__((target("avx2")))
+#define GCSIM_AVX2_INLINE __attribute__((target("avx2"), always_inline)) inline
 #endif
 
 namespace gcsim::geometry {
@@ -43,6 +44,8 @@ struct Lanes {
   Axes axes[kPacketLanes];  // lanes grouped by the triangle test's axis permutation
   int axes_count = 0;
   SphereRay spheres[kPacketLanes];
+  int sphere_count = 0;                // primitive ids below are spheres
+  const Triangle* triangles = nullptr;  // primitive sphere_count + k is triangles[k]
 };
 
 struct alignas(32) Entry {
@@ -74,6 +77,12 @@ GCSIM_AVX2 inline void offer(State& s, int lane, float t, int prim, float b1 = 0
   s.t[lane] = s.hit[lane].t;
 }
 
+// The full scalar test for one lane (outside float's safe range, or an edge function exactly 0).
+GCSIM_AVX2 void scalar_triangle(const Triangle& tri, int prim, const Ray rays[], int i, State& s) {
+  float t, b1 = 0, b2 = 0;
+  if (intersect_triangle(tri, rays[i], s.t[i], &t, &b1, &b2)) offer(s, i, t, prim, b1, b2);
+}
+
 // max(|v0|, |v1|, |v2|) per lane.
 GCSIM_AVX2 inline __m256 largest(const __m256 v[3]) {
   const __m256 sign = _mm256_set1_ps(-0.0f);
@@ -85,7 +94,7 @@ GCSIM_AVX2 inline __m256 largest(const __m256 v[3]) {
 // with the scalar test's float operations in its order, so each lane rounds as it would alone.
 // Hits are offered; returns the lanes the scalar test must decide: outside the float range, or
 // with an edge function exactly 0 (it retries those in double).
-GCSIM_AVX2 unsigned intersect_lanes(const Triangle& tri, int prim, const Lanes& l, const Lanes::Axes& ax,
+GCSIM_AVX2_INLINE unsigned intersect_lanes(const Triangle& tri, int prim, const Lanes& l, const Lanes::Axes& ax,
                                     unsigned lanes, State& s) {
   const unsigned group = lanes & ax.lanes;
   // The nine coordinates as floats in a row (glm's operator[] with a run-time index is a switch).
@@ -165,32 +174,32 @@ GCSIM_AVX2 unsigned intersect_lanes(const Triangle& tri, int prim, const Lanes& 
   return scalar;
 }
 
-// One primitive for the lanes of `lanes`, counted per lane as test_quickly counts it.
-GCSIM_AVX2 void test_lanes(const PrimitiveArrays& prims, int prim, const Ray rays[], const Lanes& l, unsigned lanes,
-                           State& s) {
-  if (prims.is_sphere(prim)) {
-    count(s.spheres, lanes);
-    for (unsigned m = lanes; m; m &= m - 1) {
-      const int i = std::countr_zero(m);
-      float t;
-      if (intersect_sphere(prims.spheres[prim], l.spheres[i], s.t[i], &t)) offer(s, i, t, prim);
-    }
-    return;
-  }
-  count(s.triangles, lanes);
-  const Triangle& tri = prims.triangle(prim);
-  unsigned scalar = 0;
-  for (int g = 0; g < l.axes_count; ++g)
-    if (l.axes[g].lanes & lanes) scalar |= intersect_lanes(tri, prim, l, l.axes[g], lanes, s);
-  for (; scalar; scalar &= scalar - 1) {
-    const int i = std::countr_zero(scalar);
-    float t, b1 = 0, b2 = 0;
-    if (intersect_triangle(tri, rays[i], s.t[i], &t, &b1, &b2)) offer(s, i, t, prim, b1, b2);
+// One sphere for the lanes of `lanes`, in double as intersect_sphere does, lane by lane.
+GCSIM_AVX2 void test_sphere_lanes(const Sphere& sphere, int prim, const Lanes& l, unsigned lanes, State& s) {
+  for (unsigned m = lanes; m; m &= m - 1) {
+    const int i = std::countr_zero(m);
+    float t;
+    if (intersect_sphere(sphere, l.spheres[i], s.t[i], &t)) offer(s, i, t, prim);
   }
 }
 
-// Both children's slab tests for every lane (both_children of traversal.cpp, with each lane's
-// own near and far planes): the lanes whose box is hit within their nearest hit, and entries.
+// One primitive for the lanes of `lanes`, counted per lane as test_quickly counts it. Inline in
+// the walk: most node visits test a triangle.
+GCSIM_AVX2_INLINE void test_lanes(const PrimitiveArrays& prims, int prim, const Ray rays[], const Lanes& l,
+                                  unsigned lanes, State& s) {
+  if (prim < l.sphere_count) {
+    count(s.spheres, lanes);
+    test_sphere_lanes(prims.spheres[prim], prim, l, lanes, s);
+    return;
+  }
+  count(s.triangles, lanes);
+  const Triangle& tri = l.triangles[prim - l.sphere_count];
+  unsigned scalar = l.axes_count == 1 ? intersect_lanes(tri, prim, l, l.axes[0], lanes, s) : 0u;
+  for (int g = 0; g < l.axes_count && l.axes_count > 1; ++g)
+    if (l.axes[g].lanes & lanes) scalar |= intersect_lanes(tri, prim, l, l.axes[g], lanes, s);
+  for (; scalar; scalar &= scalar - 1) scalar_triangle(tri, prim, rays, std::countr_zero(scalar), s);
+}
+
 // kOctant >= 0: every lane runs towards that octant (bit a: -axis a), so the near plane of each
 // axis is known without a per-lane blend; -1: mixed octants, blended per lane.
 template <int kOctant>
@@ -221,6 +230,8 @@ GCSIM_AVX2 inline unsigned child_box(const PairNode& n, int c, const Lanes& l, _
 
 GCSIM_AVX2 void prepare_lanes(const PrimitiveArrays& prims, const PackedTree& tree, const Ray rays[], unsigned lanes,
                               Lanes& l) {
+  l.sphere_count = prims.sphere_count();
+  l.triangles = prims.triangles.data();
   for (int i = 0; i < kPacketLanes; ++i) {
     const Ray& r = rays[lanes >> i & 1u ? i : std::countr_zero(lanes)];  // idle lanes copy a live one
     for (int a = 0; a < 3; ++a) {
