@@ -111,6 +111,18 @@ TEST(PacketTraversal, GrazingRaysMixedOctantsAndMaskedLanes) {
       o[axis] = c[axis] - d[axis] * reach[axis];  // in the box's other two slab planes
       rays.emplace_back(o, d);
     }
+  // In the root box's own face planes (the packet tests the root box apart), and from inside it.
+  const Bounds3& root = bvh.packed.root_box;
+  for (int i = 0; i < 64; ++i) {
+    const int axis = i % 3, along = (i / 3) % 3;
+    if (axis == along) continue;
+    glm::vec3 o = c + 0.3f * (b.hi - b.lo) * glm::vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+    o[axis] = i % 2 ? root.lo[axis] : root.hi[axis];
+    glm::vec3 d(0.0f);
+    d[along] = i % 4 < 2 ? 1.0f : -1.0f;
+    rays.emplace_back(o, d);
+    rays.emplace_back(c, glm::normalize(glm::vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1))));
+  }
   int hit_lanes = 0;
   for (std::size_t first = 0; first + 8 <= rays.size(); first += 8) {
     const unsigned lanes = first % 3 == 0 ? 0xffu : (rng.next_u32() & 0xffu);

@@ -228,6 +228,25 @@ GCSIM_AVX2 inline unsigned child_box(const PairNode& n, int c, const Lanes& l, _
   return unsigned(_mm256_movemask_ps(_mm256_cmp_ps(t0, far, _CMP_LE_OQ)));
 }
 
+// intersect_box (bounds.hpp) for every lane: the same per-axis swap, scaling and comparisons; a
+// lane that fails on one axis fails whatever the later axes compute.
+GCSIM_AVX2 unsigned root_box(const Bounds3& b, const Lanes& l, __m256 tmax, __m256& entry) {
+  __m256 t0 = _mm256_load_ps(l.tmin), t1 = tmax, miss = _mm256_setzero_ps();
+  for (int a = 0; a < 3; ++a) {
+    const __m256 o = _mm256_load_ps(l.o[a]), inv = _mm256_load_ps(l.inv[a]);
+    const __m256 lo = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(b.lo[a]), o), inv);
+    const __m256 hi = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(b.hi[a]), o), inv);
+    const __m256 swap = _mm256_cmp_ps(lo, hi, _CMP_GT_OQ);
+    const __m256 tn = _mm256_blendv_ps(lo, hi, swap);
+    const __m256 tf = _mm256_mul_ps(_mm256_blendv_ps(hi, lo, swap), _mm256_set1_ps(1.0f + 2.0f * gamma(3)));
+    t0 = _mm256_blendv_ps(t0, tn, _mm256_cmp_ps(tn, t0, _CMP_GT_OQ));
+    t1 = _mm256_blendv_ps(t1, tf, _mm256_cmp_ps(tf, t1, _CMP_LT_OQ));
+    miss = _mm256_or_ps(miss, _mm256_cmp_ps(t0, t1, _CMP_GT_OQ));
+  }
+  entry = _mm256_mul_ps(t0, _mm256_set1_ps(1.0f - 2.0f * gamma(3)));
+  return ~unsigned(_mm256_movemask_ps(miss)) & 0xffu;
+}
+
 GCSIM_AVX2 void prepare_lanes(const PrimitiveArrays& prims, const PackedTree& tree, const Ray rays[], unsigned lanes,
                               Lanes& l) {
   l.sphere_count = prims.sphere_count();
@@ -283,18 +302,16 @@ template <int kOctant>
 GCSIM_AVX2 bool walk(const PrimitiveArrays& prims, const PackedTree& tree, const Ray rays[], unsigned lanes,
                      const Lanes& l, Hit hits[], TestTally tallies[]) {
   State s;
-  unsigned live = 0;
-  alignas(32) float root_entry[8] = {};
   for (int i = 0; i < kPacketLanes; ++i) {
     s.hit[i] = lanes >> i & 1u ? hits[i] : Hit{};
     s.t[i] = s.hit[i].t;
-    if (!(lanes >> i & 1u)) continue;
-    ++s.boxes[i];
-    if (intersect_box(tree.root_box, rays[i], s.t[i], &root_entry[i])) live |= 1u << i;
   }
+  count(s.boxes, lanes);
+  __m256 root_entry;
+  const unsigned live = lanes & root_box(tree.root_box, l, _mm256_load_ps(s.t), root_entry);
   thread_local Entry stack[kStackSize];  // fiber stacks are small
   int top = 0;
-  push(stack, top, tree.root, live, _mm256_load_ps(root_entry));
+  push(stack, top, tree.root, live, root_entry);
   while (top > 0) {
     const Entry& e = stack[--top];  // read before anything is pushed over it
     const __m256 t = _mm256_load_ps(s.t);
