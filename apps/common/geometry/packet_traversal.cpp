@@ -58,7 +58,6 @@ struct alignas(32) Entry {
 struct State {
   alignas(32) float t[8];
   Hit hit[kPacketLanes];
-  alignas(32) std::int32_t boxes[8] = {}, spheres[8] = {}, triangles[8] = {}, sorts[8] = {};
 };
 
 GCSIM_AVX2 inline __m256i lane_mask(unsigned lanes) {
@@ -66,11 +65,14 @@ GCSIM_AVX2 inline __m256i lane_mask(unsigned lanes) {
   return _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(lanes)), bit), bit);
 }
 
+// Each lane's counts, one 32-bit element per lane: kept apart from State, which the out-of-line
+// tests see, so that they can stay in registers through the walk.
+struct Counts {
+  __m256i boxes, spheres, triangles, sorts;
+};
+
 // counter[i] += 1 for every lane i of `lanes`.
-GCSIM_AVX2 inline void count(std::int32_t* counter, unsigned lanes) {
-  const __m256i c = _mm256_load_si256(reinterpret_cast<const __m256i*>(counter));
-  _mm256_store_si256(reinterpret_cast<__m256i*>(counter), _mm256_sub_epi32(c, lane_mask(lanes)));
-}
+GCSIM_AVX2 inline void count(__m256i& counter, unsigned lanes) { counter = _mm256_sub_epi32(counter, lane_mask(lanes)); }
 
 GCSIM_AVX2 inline void offer(State& s, int lane, float t, int prim, float b1 = 0, float b2 = 0) {
   s.hit[lane].offer(t, prim, b1, b2);
@@ -186,13 +188,13 @@ GCSIM_AVX2 void test_sphere_lanes(const Sphere& sphere, int prim, const Lanes& l
 // One primitive for the lanes of `lanes`, counted per lane as test_quickly counts it. Inline in
 // the walk: most node visits test a triangle.
 GCSIM_AVX2_INLINE void test_lanes(const PrimitiveArrays& prims, int prim, const Ray rays[], const Lanes& l,
-                                  unsigned lanes, State& s) {
+                                  unsigned lanes, State& s, Counts& k) {
   if (prim < l.sphere_count) {
-    count(s.spheres, lanes);
+    count(k.spheres, lanes);
     test_sphere_lanes(prims.spheres[prim], prim, l, lanes, s);
     return;
   }
-  count(s.triangles, lanes);
+  count(k.triangles, lanes);
   const Triangle& tri = l.triangles[prim - l.sphere_count];
   unsigned scalar = l.axes_count == 1 ? intersect_lanes(tri, prim, l, l.axes[0], lanes, s) : 0u;
   for (int g = 0; g < l.axes_count && l.axes_count > 1; ++g)
@@ -306,7 +308,8 @@ GCSIM_AVX2 bool walk(const PrimitiveArrays& prims, const PackedTree& tree, const
     s.hit[i] = lanes >> i & 1u ? hits[i] : Hit{};
     s.t[i] = s.hit[i].t;
   }
-  count(s.boxes, lanes);
+  Counts k{_mm256_setzero_si256(), _mm256_setzero_si256(), _mm256_setzero_si256(), _mm256_setzero_si256()};
+  count(k.boxes, lanes);
   __m256 root_entry;
   const unsigned live = lanes & root_box(tree.root_box, l, _mm256_load_ps(s.t), root_entry);
   thread_local Entry stack[kStackSize];  // fiber stacks are small
@@ -321,17 +324,17 @@ GCSIM_AVX2 bool walk(const PrimitiveArrays& prims, const PackedTree& tree, const
     if (!active) continue;
     const PairNode& n = tree.nodes[e.node];
     const bool prim0 = is_primitive(n.child[0]), prim1 = is_primitive(n.child[1]);
-    if (prim0) test_lanes(prims, primitive_of(n.child[0]), rays, l, active, s);
-    if (prim1) test_lanes(prims, primitive_of(n.child[1]), rays, l, active, s);
+    if (prim0) test_lanes(prims, primitive_of(n.child[0]), rays, l, active, s, k);
+    if (prim1) test_lanes(prims, primitive_of(n.child[1]), rays, l, active, s, k);
     if (prim0 && prim1) continue;
     const __m256 tmax = _mm256_load_ps(s.t);
     __m256 near0 = tmax, near1 = tmax;
     const unsigned hit0 = prim0 ? 0u : child_box<kOctant>(n, 0, l, tmax, near0) & active;
     const unsigned hit1 = prim1 ? 0u : child_box<kOctant>(n, 1, l, tmax, near1) & active;
-    if (!prim0) count(s.boxes, active);
-    if (!prim1) count(s.boxes, active);
+    if (!prim0) count(k.boxes, active);
+    if (!prim1) count(k.boxes, active);
     const unsigned both = hit0 & hit1, only0 = hit0 & ~both, only1 = hit1 & ~both;
-    count(s.sorts, both);
+    count(k.sorts, both);
     // traverse_ordered visits child 0 first only when its entry is strictly nearer.
     const unsigned first0 = both & unsigned(_mm256_movemask_ps(_mm256_cmp_ps(near0, near1, _CMP_LT_OQ)));
     const unsigned first1 = both & ~first0;
@@ -346,13 +349,18 @@ GCSIM_AVX2 bool walk(const PrimitiveArrays& prims, const PackedTree& tree, const
     }
     if (!ok) return false;
   }
+  alignas(32) std::int32_t boxes[8], spheres[8], triangles[8], sorts[8];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(boxes), k.boxes);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(spheres), k.spheres);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(triangles), k.triangles);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(sorts), k.sorts);
   for (unsigned m = lanes; m; m &= m - 1) {
     const int i = std::countr_zero(m);
     hits[i] = s.hit[i];
-    tallies[i].boxes += s.boxes[i];
-    tallies[i].spheres += s.spheres[i];
-    tallies[i].triangles += s.triangles[i];
-    tallies[i].sorts += s.sorts[i];
+    tallies[i].boxes += boxes[i];
+    tallies[i].spheres += spheres[i];
+    tallies[i].triangles += triangles[i];
+    tallies[i].sorts += sorts[i];
   }
   return true;
 }
