@@ -1,5 +1,6 @@
 #pragma once
-// classify() of one box against four planes at once (the uniformity test's region pyramid): the
+// classify() of one box against four planes at once (the uniformity test's region pyramid, or a
+// subtree's two planes twice over): the
 // same float operations in the same order per plane, one plane per SSE lane, so the answer
 // "outside one of them" is exactly that of four scalar classify() calls.
 #include <array>
@@ -28,6 +29,13 @@ class FourPlanes {
 
   // True if classify(b, plane) == Side::outside for one of the four planes.
   bool any_outside(const BoxCentre& b) const {
+    unsigned inside, outside;
+    sides(b, inside, outside);
+    return outside != 0;
+  }
+
+  // Bit i set where classify(b, plane i) is Side::inside, resp. Side::outside (neither: crossing).
+  void sides(const BoxCentre& b, unsigned& inside_bits, unsigned& outside_bits) const {
     const auto dot = [](__m128 x, __m128 y, __m128 z, glm::vec3 v) {  // (x v.x + y v.y) + z v.z, as glm::dot
       return _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, _mm_set1_ps(v.x)), _mm_mul_ps(y, _mm_set1_ps(v.y))),
                         _mm_mul_ps(z, _mm_set1_ps(v.z)));
@@ -38,7 +46,8 @@ class FourPlanes {
     const __m128 sum = _mm_add_ps(_mm_add_ps(lanes_[7], dot(lanes_[4], lanes_[5], lanes_[6], b.abs_centre)), r);
     const __m128 margin = _mm_mul_ps(_mm_set1_ps(1e-5f), sum);
     const __m128 outside = _mm_cmplt_ps(_mm_add_ps(s, r), _mm_xor_ps(margin, _mm_set1_ps(-0.0f)));
-    return _mm_movemask_ps(_mm_andnot_ps(inside, outside)) != 0;
+    inside_bits = unsigned(_mm_movemask_ps(inside));
+    outside_bits = unsigned(_mm_movemask_ps(_mm_andnot_ps(inside, outside)));
   }
 
  private:
@@ -54,6 +63,14 @@ class FourPlanes {
     for (const Plane& pl : planes_)
       if (classify(b, pl, abs_components(pl.normal)) == Side::outside) return true;
     return false;
+  }
+  void sides(const BoxCentre& b, unsigned& inside_bits, unsigned& outside_bits) const {
+    inside_bits = outside_bits = 0;
+    for (int i = 0; i < 4; ++i) {
+      const Side s = classify(b, planes_[i], abs_components(planes_[i].normal));
+      inside_bits |= unsigned(s == Side::inside) << i;
+      outside_bits |= unsigned(s == Side::outside) << i;
+    }
   }
 
  private:

@@ -1,13 +1,31 @@
 #include "apps/raytrace/primary_tracer.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <optional>
 
+#include "apps/common/geometry/packet_traversal.hpp"
 #include "apps/common/geometry/traversal.hpp"
 #include "apps/raytrace/geometry_names.hpp"
 #include "apps/raytrace/plane_classification4.hpp"
 
 namespace gcsim::raytrace {
+
+namespace {
+
+// f(x, y) for the pixels of [x0, x1) x [y0, y1) in 4 x 2 blocks, row-major within and between
+// them: the order that makes neighbours of a packet.
+template <class F>
+void in_blocks(int x0, int y0, int x1, int y1, F&& f) {
+  for (int by = y0; by < y1; by += 2)
+    for (int bx = x0; bx < x1; bx += 4)
+      for (int y = by; y < std::min(by + 2, y1); ++y)
+        for (int x = bx; x < std::min(bx + 4, x1); ++x) f(x, y);
+}
+
+
+}  // namespace
 
 // Hits of one tile while the uniformity test fills it in (A4).
 struct PrimaryTracer::Region {
@@ -41,6 +59,42 @@ void PrimaryTracer::trace_pixel(int x, int y, Hit& hit, TestTally& tally, TraceC
   }
 }
 
+const PackedTree* PrimaryTracer::packet_tree() const {
+  switch (algorithm_) {
+    case Algorithm::A2: return &bvh_.packed;
+    case Algorithm::A3:
+    case Algorithm::A4: return &subtree_.packed;
+    default: return nullptr;
+  }
+}
+
+void PrimaryTracer::trace_pixels(const std::vector<Pixel>& pixels, int x0, int y0, int width, std::vector<Hit>& hits,
+                                 TestTally& tally, TraceCounters& counters) {
+  auto hit_of = [&](const Pixel& p) -> Hit& { return hits[std::size_t(p.y - y0) * width + (p.x - x0)]; };
+  const PackedTree* tree = packet_tree();
+  if (!tree) {
+    for (const Pixel& p : pixels) trace_pixel(p.x, p.y, hit_of(p), tally, counters);
+    return;
+  }
+  Ray rays[kPacketLanes];
+  TestTally lane_tallies[kPacketLanes];  // only their sum is needed: summed once at the end
+  for (std::size_t first = 0; first < pixels.size(); first += kPacketLanes) {
+    const int n = int(std::min<std::size_t>(kPacketLanes, pixels.size() - first));
+    Hit lane_hits[kPacketLanes];
+    int xs[kPacketLanes], ys[kPacketLanes];
+    for (int i = 0; i < n; ++i) xs[i] = pixels[first + i].x, ys[i] = pixels[first + i].y;
+    camera_.pixel_rays(xs, ys, n, rays);
+    traverse_ordered_packet(scene_, *tree, rays, (1u << n) - 1, lane_hits, lane_tallies);
+    for (int i = 0; i < n; ++i) hit_of(pixels[first + i]) = lane_hits[i];
+  }
+  for (const TestTally& t : lane_tallies) {
+    tally.boxes += t.boxes;
+    tally.spheres += t.spheres;
+    tally.triangles += t.triangles;
+    tally.sorts += t.sorts;
+  }
+}
+
 void PrimaryTracer::trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>& hits, TraceCounters& counters,
                                TraceCounters* row_counters) {
   const int w = x1 - x0, h = y1 - y0;
@@ -63,8 +117,14 @@ void PrimaryTracer::trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>&
   } else if (uses_subtree(algorithm_) && subtree_.empty) {
     // Nothing meets the subregion: every pixel keeps its empty hit, and no ray is even made.
   } else {
-    for (int y = y0; y < y1; ++y)
-      for (int x = x0; x < x1; ++x) trace_pixel(x, y, hits[std::size_t(y - y0) * w + (x - x0)], tally, counters);
+    pixels_.clear();
+    if (packet_tree()) {
+      in_blocks(x0, y0, x1, y1, [&](int x, int y) { pixels_.push_back({x, y}); });
+    } else {  // B1's beams grow with the rays traced: keep its order
+      for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) pixels_.push_back({x, y});
+    }
+    trace_pixels(pixels_, x0, y0, w, hits, tally, counters);
   }
   counters.primary_rays += std::int64_t(w) * h;
   counters.primary_box_tests += tally.boxes;
@@ -77,49 +137,91 @@ void PrimaryTracer::trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>&
 // Section 2.2.3 on the pixel rectangle with corner pixels (rx0, ry0) and (rx1, ry1), inclusive.
 // The corner rays are traced; if they all hit the same primitive P and nothing in the subtree can
 // lie in front of P inside the region, every pixel sees P. Otherwise the region is halved along its
-// longer side, down to regions whose pixels are all corners.
+// longer side, down to regions whose pixels are all corners. The halves are taken a level at a
+// time, not depth first: which pixels get traced, and what each counts, does not depend on the
+// order (sibling regions share no pixel), and a level's new corners are traced in packets.
 void PrimaryTracer::trace_uniform_regions(Region& r, int rx0, int ry0, int rx1, int ry1, TestTally& tally,
                                           TraceCounters& counters) {
-  const int cx[4] = {rx0, rx1, rx0, rx1}, cy[4] = {ry0, ry0, ry1, ry1};
-  for (int i = 0; i < 4; ++i) {
-    if (!r.done(cx[i], cy[i])) {
-      trace_pixel(cx[i], cy[i], r.at(cx[i], cy[i]), tally, counters);
-      r.done(cx[i], cy[i]) = 1;
+  level_.assign(1, Rect{rx0, ry0, rx1, ry1});
+  // A level's new corners as bits, 64 pixels of a row to a word: read out in 4 x 2 blocks (64
+  // is a multiple of 4, so no block straddles two words).
+  const int words = (rx1 - rx0) / 64 + 1, rows = ry1 - ry0 + 1;
+  pending_.assign(std::size_t(words) * (rows + 1), 0);  // a spare zero row below the last
+  auto row = [&](int y) { return &pending_[std::size_t(y - ry0) * words]; };
+  while (!level_.empty()) {
+    for (const Rect& q : level_) {
+      const int cx[4] = {q.x0, q.x1, q.x0, q.x1}, cy[4] = {q.y0, q.y0, q.y1, q.y1};
+      for (int i = 0; i < 4; ++i) {
+        if (r.done(cx[i], cy[i])) continue;
+        r.done(cx[i], cy[i]) = 1;
+        row(cy[i])[(cx[i] - rx0) >> 6] |= std::uint64_t(1) << ((cx[i] - rx0) & 63);
+      }
     }
+    pixels_.clear();  // the new corners, neighbours next to each other for the packets
+    for (int y = ry0; y <= ry1; y += 2)
+      for (int w = 0; w < words; ++w) {
+        std::uint64_t& a = row(y)[w];
+        std::uint64_t& b = row(y + 1)[w];
+        for (std::uint64_t m = a | b; m;) {
+          const std::uint64_t block = std::uint64_t(15) << (std::countr_zero(m) & ~3);
+          for (std::uint64_t k = a & block; k; k &= k - 1) pixels_.push_back({rx0 + 64 * w + std::countr_zero(k), y});
+          for (std::uint64_t k = b & block; k; k &= k - 1) pixels_.push_back({rx0 + 64 * w + std::countr_zero(k), y + 1});
+          m &= ~block;
+        }
+        a = b = 0;
+      }
+    trace_pixels(pixels_, r.x0, r.y0, r.width, *r.hits, tally, counters);
+    next_.clear();
+    for (const Rect& q : level_)
+      if (!fill_if_uniform(r, q, tally, counters)) split(q, next_);
+    std::swap(level_, next_);
   }
+}
+
+// Appends the halves of q, along its longer side, unless every pixel of q is a corner.
+void PrimaryTracer::split(const Rect& q, std::vector<Rect>& out) {
+  const int w = q.x1 - q.x0 + 1, h = q.y1 - q.y0 + 1;
+  if (w <= 2 && h <= 2) return;
+  if (w >= h) {
+    const int mid = q.x0 + (w - 1) / 2;
+    out.push_back({q.x0, q.y0, mid, q.y1});
+    out.push_back({mid + 1, q.y0, q.x1, q.y1});
+  } else {
+    const int mid = q.y0 + (h - 1) / 2;
+    out.push_back({q.x0, q.y0, q.x1, mid});
+    out.push_back({q.x0, mid + 1, q.x1, q.y1});
+  }
+}
+
+// The uniformity test of q, whose corners are traced; fills q in when it is uniform.
+bool PrimaryTracer::fill_if_uniform(Region& r, const Rect& q, TestTally& tally, TraceCounters& counters) {
+  const int rx0 = q.x0, ry0 = q.y0, rx1 = q.x1, ry1 = q.y1;
   const int w = rx1 - rx0 + 1, h = ry1 - ry0 + 1;
-  if (w <= 2 && h <= 2) return;  // every pixel is a corner
+  if (w <= 2 && h <= 2) return false;  // every pixel is a corner
+  const int cx[4] = {rx0, rx1, rx0, rx1}, cy[4] = {ry0, ry0, ry1, ry1};
   ++counters.uniformity_tests;
   const int p = r.at(rx0, ry0).prim;
   bool same = p >= 0;
   for (int i = 1; i < 4 && same; ++i) same = r.at(cx[i], cy[i]).prim == p;
-  if (same && nothing_in_front(p, farthest_possible_hit(p, r, rx0, ry0, rx1, ry1), rx0, ry0, rx1, ry1, counters.uniformity_box_checks)) {
-    ++counters.uniform_regions;
-    for (int y = ry0; y <= ry1; ++y)
-      for (int x = rx0; x <= rx1; ++x) {
-        if (r.done(x, y)) continue;
-        // Only P needs testing; its hit gives the distance and barycentrics for shading.
-        const Ray ray = camera_.pixel_ray(x, y);
-        Hit& hit = r.at(x, y);
-        hit = Hit{};
-        test_primitive(scene_, p, ray, hit, tally);
-        // Within rounding distance of P's edge a neighbour may tie or win in float: trace fully.
-        const bool near_edge = !scene_.is_sphere(p) && std::min({hit.b1, hit.b2, 1.0f - hit.b1 - hit.b2}) < 1e-4f;
-        if (!hit.valid() || near_edge) trace_pixel(x, y, hit, tally, counters);
-        else ++counters.uniform_pixels;
-        r.done(x, y) = 1;
-      }
-    return;
-  }
-  if (w >= h) {
-    const int mid = rx0 + (w - 1) / 2;
-    trace_uniform_regions(r, rx0, ry0, mid, ry1, tally, counters);
-    trace_uniform_regions(r, mid + 1, ry0, rx1, ry1, tally, counters);
-  } else {
-    const int mid = ry0 + (h - 1) / 2;
-    trace_uniform_regions(r, rx0, ry0, rx1, mid, tally, counters);
-    trace_uniform_regions(r, rx0, mid + 1, rx1, ry1, tally, counters);
-  }
+  if (!same || !nothing_in_front(p, farthest_possible_hit(p, r, rx0, ry0, rx1, ry1), rx0, ry0, rx1, ry1,
+                                 counters.uniformity_box_checks))
+    return false;
+  ++counters.uniform_regions;
+  for (int y = ry0; y <= ry1; ++y)
+    for (int x = rx0; x <= rx1; ++x) {
+      if (r.done(x, y)) continue;
+      // Only P needs testing; its hit gives the distance and barycentrics for shading.
+      const Ray ray = camera_.pixel_ray(x, y);
+      Hit& hit = r.at(x, y);
+      hit = Hit{};
+      test_primitive(scene_, p, ray, hit, tally);
+      // Within rounding distance of P's edge a neighbour may tie or win in float: trace fully.
+      const bool near_edge = !scene_.is_sphere(p) && std::min({hit.b1, hit.b2, 1.0f - hit.b1 - hit.b2}) < 1e-4f;
+      if (!hit.valid() || near_edge) trace_pixel(x, y, hit, tally, counters);
+      else ++counters.uniform_pixels;
+      r.done(x, y) = 1;
+    }
+  return true;
 }
 
 // An upper bound of the distance at which any ray of the region meets P. For a triangle the hits

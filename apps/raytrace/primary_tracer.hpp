@@ -2,6 +2,7 @@
 // Nearest hits of the primary rays of one subregion (tile) with any of the paper's algorithms.
 // A tracer keeps per-row state (the two planes shared along a row of subregions, 2.2.1) and the
 // subtree of the last subregion, so tiles should be traced row by row, left to right.
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -31,8 +32,18 @@ class PrimaryTracer {
 
  private:
   struct Region;
+  struct Pixel { int x, y; };
+  struct Rect { int x0, y0, x1, y1; };  // corner pixels, inclusive
   void trace_pixel(int x, int y, Hit& hit, TestTally& tally, TraceCounters& counters);
+  // The ordered traversal's tree (A2, A3, A4), or null: the algorithms traced in packets.
+  const PackedTree* packet_tree() const;
+  // trace_pixel for each pixel, the hit stored at (y - y0) * width + (x - x0) of `hits`; in
+  // packets of eight in the order given where the algorithm allows (same hits and counts).
+  void trace_pixels(const std::vector<Pixel>& pixels, int x0, int y0, int width, std::vector<Hit>& hits, TestTally& tally,
+                    TraceCounters& counters);
   void trace_uniform_regions(Region& r, int rx0, int ry0, int rx1, int ry1, TestTally& tally, TraceCounters& counters);
+  static void split(const Rect& q, std::vector<Rect>& out);
+  bool fill_if_uniform(Region& r, const Rect& q, TestTally& tally, TraceCounters& counters);
   bool nothing_in_front(int prim, float max_distance, int rx0, int ry0, int rx1, int ry1, std::int64_t& checks) const;
   float farthest_possible_hit(int prim, const Region& r, int rx0, int ry0, int rx1, int ry1) const;
 
@@ -45,6 +56,9 @@ class PrimaryTracer {
   PlaneFilteredTree row_;
   Subtree subtree_;
   std::unique_ptr<RayClassifier> classifier_;
+  std::vector<Pixel> pixels_;      // scratch: the pixels a tile or a level of regions traces
+  std::vector<Rect> level_, next_;  // scratch: A4's regions, a level at a time
+  std::vector<std::uint64_t> pending_;  // scratch: A4's corners to trace at this level, as bits
 };
 
 }  // namespace gcsim::raytrace

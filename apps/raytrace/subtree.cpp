@@ -1,5 +1,7 @@
 #include "apps/raytrace/subtree.hpp"
 
+#include "apps/raytrace/plane_classification4.hpp"
+
 namespace gcsim::raytrace {
 namespace {
 
@@ -43,17 +45,21 @@ struct SubtreePass {
   const Plane* planes;  // two
   Subtree& out;
   std::int64_t tests = 0;
-  glm::vec3 abs_normal[2] = {abs_components(planes[0].normal), abs_components(planes[1].normal)};
+  // Both planes classified in one pass (lanes 2 and 3 repeat them); counted as one at a time.
+  FourPlanes both{{planes[0], planes[1], planes[0], planes[1]}};
 
   // Returns true and sets *ref when something of entry e lies inside both planes.
   bool visit(int e, std::uint8_t inside, NodeRef* ref) {
     const auto& entry = row.entries[e];
-    for (int i = 0; i < 2; ++i) {
-      if (inside & (1u << i)) continue;
-      ++tests;
-      const Side s = classify(entry.box, planes[i], abs_normal[i]);
-      if (s == Side::outside) return false;
-      if (s == Side::inside) inside |= (1u << i);
+    if ((inside & 3u) != 3u) {
+      unsigned in, out_bits;
+      both.sides(entry.box, in, out_bits);
+      for (int i = 0; i < 2; ++i) {
+        if (inside & (1u << i)) continue;
+        ++tests;
+        if (out_bits >> i & 1u) return false;  // plane 1 is not tested after plane 0 drops the box
+        if (in >> i & 1u) inside |= (1u << i);
+      }
     }
     if (is_primitive(entry.ref)) {
       *ref = entry.ref;

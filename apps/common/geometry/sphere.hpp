@@ -27,6 +27,7 @@ struct SphereRay {
   glm::dvec3 origin, direction;
   double a;  // |direction|^2
   float tmin;
+  SphereRay() = default;  // for arrays filled later (packet lanes)
   explicit SphereRay(const Ray& r)
       : origin(r.origin), direction(r.direction), a(glm::dot(direction, direction)), tmin(r.tmin) {}
 };

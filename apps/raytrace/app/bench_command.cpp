@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "apps/common/geometry/packet_traversal.hpp"
 #include "apps/pipeline/command_groups.hpp"
 #include "apps/raytrace/algorithm.hpp"
 #include "apps/raytrace/app/commands.hpp"
@@ -58,6 +59,10 @@ void add_bench_command(pipeline::CommandGroups& g) {
     const double rays = double(size) * size;
     fmt::print("bench     {} on {}x{}, {}x{} tiles: {:.3f} ms per frame, {:.2f} Mrays/s (one thread, best of {})\n",
                paper_name_of(a), size, size, o->render.tile, o->render.tile, best * 1e3, rays / best / 1e6, o->repeat);
+    if (a == Algorithm::A2 || a == Algorithm::A3 || a == Algorithm::A4)
+      fmt::print("kernel    {}\n", geometry::packet_kernel_vectorized()
+                                        ? "packets of 4 x 2 pixels, eight AVX2 lanes (same counts as single rays)"
+                                        : "packets traced one ray at a time (this host has no AVX2)");
     std::int64_t hits = 0;
     {
       PrimaryTracer tracer(scene, bvh, camera, a);

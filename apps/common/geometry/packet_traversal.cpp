@@ -1,0 +1,423 @@
+#include "apps/common/geometry/packet_traversal.hpp"
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "apps/common/geometry/traversal.hpp"
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#define GCSIM_PACKET_AVX2 1
+#include <immintrin.h>
+// The kernel alone is compiled for AVX2 (no FMA: contracted products would round differently
+// from the scalar tests they must match); it runs only where the CPU reports AVX2.
+#define GCSIM_AVX2 __attribute__((target("avx2")))
+#define GCSIM_AVX2_INLINE __attribute__((target("avx2"), always_inline)) inline
+#endif
+
+namespace gcsim::geometry {
+namespace {
+
+void one_by_one(const PrimitiveArrays& prims, const PackedTree& tree, const Ray rays[], unsigned lanes, Hit hits[],
+                TestTally tallies[]) {
+  for (int i = 0; i < kPacketLanes; ++i)
+    if (lanes >> i & 1u) traverse_ordered(prims, tree, rays[i], hits[i], tallies[i]);
+}
+
+#if defined(GCSIM_PACKET_AVX2)
+
+constexpr int kStackSize = 256;  // traverse_ordered's: a deeper walk falls back to it
+
+// The per-lane constants, one array of eight per quantity (lane i in element i).
+struct Lanes {
+  alignas(32) float o[3][8];
+  alignas(32) float inv[3][8];
+  alignas(32) std::int32_t negative[3][8];  // all bits set where the lane runs towards -axis
+  alignas(32) float tmin[8];
+  alignas(32) float shear_x[8], shear_y[8], shear_z[8];
+  unsigned in_range = 0;  // lanes whose triangle tests may skip the float range check
+  struct Axes {
+    int kx, ky, kz;
+    unsigned lanes;
+  };
+  Axes axes[kPacketLanes];  // lanes grouped by the triangle test's axis permutation
+  int axes_count = 0;
+  SphereRay spheres[kPacketLanes];
+  int sphere_count = 0;                // primitive ids below are spheres
+  const Triangle* triangles = nullptr;  // primitive sphere_count + k is triangles[k]
+};
+
+struct alignas(32) Entry {
+  float entry[8];  // each lane's lower bound of its entry distance
+  NodeRef node;
+  unsigned lanes;
+};
+
+// Lanes of the packet that may have a nearest hit to update: their t, kept as an array to load.
+struct State {
+  alignas(32) float t[8];
+  Hit hit[kPacketLanes];
+};
+
+GCSIM_AVX2 inline __m256i lane_mask(unsigned lanes) {
+  const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+  return _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(lanes)), bit), bit);
+}
+
+// Each lane's counts, one 32-bit element per lane: kept apart from State, which the out-of-line
+// tests see, so that they can stay in registers through the walk.
+struct Counts {
+  __m256i boxes, spheres, triangles, sorts;
+};
+
+// counter[i] += 1 for every lane i of `lanes`.
+GCSIM_AVX2 inline void count(__m256i& counter, unsigned lanes) { counter = _mm256_sub_epi32(counter, lane_mask(lanes)); }
+
+GCSIM_AVX2 inline void offer(State& s, int lane, float t, int prim, float b1 = 0, float b2 = 0) {
+  s.hit[lane].offer(t, prim, b1, b2);
+  s.t[lane] = s.hit[lane].t;
+}
+
+// The full scalar test for one lane (outside float's safe range, or an edge function exactly 0).
+GCSIM_AVX2 void scalar_triangle(const Triangle& tri, int prim, const Ray rays[], int i, State& s) {
+  float t, b1 = 0, b2 = 0;
+  if (intersect_triangle(tri, rays[i], s.t[i], &t, &b1, &b2)) offer(s, i, t, prim, b1, b2);
+}
+
+// max(|v0|, |v1|, |v2|) per lane.
+GCSIM_AVX2 inline __m256 largest(const __m256 v[3]) {
+  const __m256 sign = _mm256_set1_ps(-0.0f);
+  return _mm256_max_ps(_mm256_max_ps(_mm256_andnot_ps(sign, v[0]), _mm256_andnot_ps(sign, v[1])),
+                       _mm256_andnot_ps(sign, v[2]));
+}
+
+// The watertight test of triangle.cpp (its float path) for the lanes of one axis permutation,
+// with the scalar test's float operations in its order, so each lane rounds as it would alone.
+// Hits are offered; returns the lanes the scalar test must decide: outside the float range, or
+// with an edge function exactly 0 (it retries those in double).
+GCSIM_AVX2_INLINE unsigned intersect_lanes(const Triangle& tri, int prim, const Lanes& l, const Lanes::Axes& ax,
+                                    unsigned lanes, State& s) {
+  const unsigned group = lanes & ax.lanes;
+  // The nine coordinates as floats in a row (glm's operator[] with a run-time index is a switch).
+  static_assert(sizeof(Triangle) == 9 * sizeof(float));
+  const float* p = &tri.p0.x;
+  __m256 x[3], y[3], z[3];
+  const __m256 sx = _mm256_load_ps(l.shear_x), sy = _mm256_load_ps(l.shear_y);
+  const __m256 ox = _mm256_load_ps(l.o[ax.kx]), oy = _mm256_load_ps(l.o[ax.ky]), oz = _mm256_load_ps(l.o[ax.kz]);
+  for (int v = 0; v < 3; ++v) {
+    z[v] = _mm256_sub_ps(_mm256_set1_ps(p[3 * v + ax.kz]), oz);
+    const __m256 vx = _mm256_sub_ps(_mm256_set1_ps(p[3 * v + ax.kx]), ox);
+    const __m256 vy = _mm256_sub_ps(_mm256_set1_ps(p[3 * v + ax.ky]), oy);
+    x[v] = _mm256_add_ps(vx, _mm256_mul_ps(sx, z[v]));
+    y[v] = _mm256_add_ps(vy, _mm256_mul_ps(sy, z[v]));
+  }
+  const __m256 e[3] = {_mm256_sub_ps(_mm256_mul_ps(x[1], y[2]), _mm256_mul_ps(y[1], x[2])),
+                       _mm256_sub_ps(_mm256_mul_ps(x[2], y[0]), _mm256_mul_ps(y[2], x[0])),
+                       _mm256_sub_ps(_mm256_mul_ps(x[0], y[1]), _mm256_mul_ps(y[0], x[1]))};
+  const __m256 zero = _mm256_setzero_ps();
+  __m256 unsure = zero, negative = zero, positive = zero;
+  for (const __m256& f : e) {
+    unsure = _mm256_or_ps(unsure, _mm256_cmp_ps(f, zero, _CMP_EQ_UQ));  // 0 or NaN
+    negative = _mm256_or_ps(negative, _mm256_cmp_ps(f, zero, _CMP_LT_OQ));
+    positive = _mm256_or_ps(positive, _mm256_cmp_ps(f, zero, _CMP_GT_OQ));
+  }
+  const unsigned scalar = group & ~(l.in_range & ~unsigned(_mm256_movemask_ps(unsure)));
+  const unsigned inside = group & ~scalar & ~unsigned(_mm256_movemask_ps(_mm256_and_ps(negative, positive)));
+  if (!inside) return scalar;
+
+  const __m256 det = _mm256_add_ps(_mm256_add_ps(e[0], e[1]), e[2]);
+  const __m256 sz = _mm256_load_ps(l.shear_z);
+  const __m256 zs[3] = {_mm256_mul_ps(z[0], sz), _mm256_mul_ps(z[1], sz), _mm256_mul_ps(z[2], sz)};
+  const __m256 t_scaled = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(e[0], zs[0]), _mm256_mul_ps(e[1], zs[1])),
+                                        _mm256_mul_ps(e[2], zs[2]));
+  const __m256 tmax = _mm256_load_ps(s.t), tmin = _mm256_load_ps(l.tmin);
+  const __m256 t0 = _mm256_mul_ps(tmin, det);
+  const __m256 t1 = _mm256_mul_ps(_mm256_mul_ps(tmax, _mm256_set1_ps(1 + 4.0f * std::numeric_limits<float>::epsilon())), det);
+  // det < 0: t_scaled in (t1 det, t0 det); det > 0: in (t0 det, t1 det]; det 0 or NaN: no hit.
+  const __m256 below = _mm256_andnot_ps(
+      _mm256_or_ps(_mm256_cmp_ps(t_scaled, t0, _CMP_GE_OQ), _mm256_cmp_ps(t_scaled, t1, _CMP_LT_OQ)),
+      _mm256_cmp_ps(det, zero, _CMP_LT_OQ));
+  const __m256 above = _mm256_andnot_ps(
+      _mm256_or_ps(_mm256_cmp_ps(t_scaled, t0, _CMP_LE_OQ), _mm256_cmp_ps(t_scaled, t1, _CMP_GT_OQ)),
+      _mm256_cmp_ps(det, zero, _CMP_GT_OQ));
+  unsigned hit = inside & unsigned(_mm256_movemask_ps(_mm256_or_ps(below, above)));
+  if (!hit) return scalar;
+  const __m256 inv_det = _mm256_div_ps(_mm256_set1_ps(1.0f), det);
+  const __m256 t = _mm256_mul_ps(t_scaled, inv_det);
+  // The rounding bound on t, term by term as triangle.cpp writes it.
+  const __m256 sign = _mm256_set1_ps(-0.0f);
+  const __m256 max_z = largest(zs), max_x = largest(x), max_y = largest(y), max_e = largest(e);
+  const __m256 g2 = _mm256_set1_ps(gamma_of<float>(2)), g3 = _mm256_set1_ps(gamma_of<float>(3)),
+               g5 = _mm256_set1_ps(gamma_of<float>(5));
+  const __m256 dz = _mm256_mul_ps(g3, max_z);
+  const __m256 dx = _mm256_mul_ps(g5, _mm256_add_ps(max_x, max_z));
+  const __m256 dy = _mm256_mul_ps(g5, _mm256_add_ps(max_y, max_z));
+  const __m256 de = _mm256_mul_ps(
+      _mm256_set1_ps(2.0f),
+      _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(_mm256_mul_ps(g2, max_x), max_y), _mm256_mul_ps(dy, max_x)),
+                    _mm256_mul_ps(dx, max_y)));
+  const __m256 dt = _mm256_mul_ps(
+      _mm256_mul_ps(_mm256_set1_ps(3.0f),
+                    _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(_mm256_mul_ps(g3, max_e), max_z), _mm256_mul_ps(de, max_z)),
+                                  _mm256_mul_ps(dz, max_e))),
+      _mm256_andnot_ps(sign, inv_det));
+  const __m256 ok = _mm256_andnot_ps(_mm256_cmp_ps(t, dt, _CMP_LE_OQ),
+                                     _mm256_and_ps(_mm256_cmp_ps(t, tmin, _CMP_GT_OQ), _mm256_cmp_ps(t, tmax, _CMP_LE_OQ)));
+  hit &= unsigned(_mm256_movemask_ps(ok));
+  alignas(32) float tv[8], b1[8], b2[8];
+  _mm256_store_ps(tv, t);
+  _mm256_store_ps(b1, _mm256_mul_ps(e[1], inv_det));
+  _mm256_store_ps(b2, _mm256_mul_ps(e[2], inv_det));
+  for (; hit; hit &= hit - 1) {
+    const int i = std::countr_zero(hit);
+    offer(s, i, tv[i], prim, b1[i], b2[i]);
+  }
+  return scalar;
+}
+
+// One sphere for the lanes of `lanes`, in double as intersect_sphere does, lane by lane.
+GCSIM_AVX2 void test_sphere_lanes(const Sphere& sphere, int prim, const Lanes& l, unsigned lanes, State& s) {
+  for (unsigned m = lanes; m; m &= m - 1) {
+    const int i = std::countr_zero(m);
+    float t;
+    if (intersect_sphere(sphere, l.spheres[i], s.t[i], &t)) offer(s, i, t, prim);
+  }
+}
+
+// One primitive for the lanes of `lanes`, counted per lane as test_quickly counts it. Inline in
+// the walk: most node visits test a triangle.
+GCSIM_AVX2_INLINE void test_lanes(const PrimitiveArrays& prims, int prim, const Ray rays[], const Lanes& l,
+                                  unsigned lanes, State& s, Counts& k) {
+  if (prim < l.sphere_count) {
+    count(k.spheres, lanes);
+    test_sphere_lanes(prims.spheres[prim], prim, l, lanes, s);
+    return;
+  }
+  count(k.triangles, lanes);
+  const Triangle& tri = l.triangles[prim - l.sphere_count];
+  unsigned scalar = l.axes_count == 1 ? intersect_lanes(tri, prim, l, l.axes[0], lanes, s) : 0u;
+  for (int g = 0; g < l.axes_count && l.axes_count > 1; ++g)
+    if (l.axes[g].lanes & lanes) scalar |= intersect_lanes(tri, prim, l, l.axes[g], lanes, s);
+  for (; scalar; scalar &= scalar - 1) scalar_triangle(tri, prim, rays, std::countr_zero(scalar), s);
+}
+
+// kOctant >= 0: every lane runs towards that octant (bit a: -axis a), so the near plane of each
+// axis is known without a per-lane blend; -1: mixed octants, blended per lane.
+template <int kOctant>
+GCSIM_AVX2 inline unsigned child_box(const PairNode& n, int c, const Lanes& l, __m256 tmax, __m256& near) {
+  __m256 t0 = _mm256_load_ps(l.tmin), t1 = _mm256_set1_ps(kInfinity);
+  for (int a = 0; a < 3; ++a) {
+    const __m256 o = _mm256_load_ps(l.o[a]), inv = _mm256_load_ps(l.inv[a]);
+    __m256 tn, tf;
+    if constexpr (kOctant >= 0) {
+      const bool negative = (kOctant >> a) & 1;
+      tn = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(n.bounds[a][negative ? 2 + c : c]), o), inv);
+      tf = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(n.bounds[a][negative ? c : 2 + c]), o), inv);
+    } else {
+      const __m256 neg = _mm256_castsi256_ps(_mm256_load_si256(reinterpret_cast<const __m256i*>(l.negative[a])));
+      const __m256 tl = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(n.bounds[a][c]), o), inv);
+      const __m256 th = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(n.bounds[a][2 + c]), o), inv);
+      tn = _mm256_blendv_ps(tl, th, neg);
+      tf = _mm256_blendv_ps(th, tl, neg);
+    }
+    // max/min return their second operand when one is NaN, as the single-ray test relies on.
+    t0 = _mm256_max_ps(tn, t0);
+    t1 = _mm256_min_ps(tf, t1);
+  }
+  const __m256 far = _mm256_min_ps(_mm256_mul_ps(t1, _mm256_set1_ps(1.0f + 2.0f * gamma(3))), tmax);
+  near = _mm256_mul_ps(t0, _mm256_set1_ps(1.0f - 2.0f * gamma(3)));
+  return unsigned(_mm256_movemask_ps(_mm256_cmp_ps(t0, far, _CMP_LE_OQ)));
+}
+
+// intersect_box (bounds.hpp) for every lane: the same per-axis swap, scaling and comparisons; a
+// lane that fails on one axis fails whatever the later axes compute.
+GCSIM_AVX2 unsigned root_box(const Bounds3& b, const Lanes& l, __m256 tmax, __m256& entry) {
+  __m256 t0 = _mm256_load_ps(l.tmin), t1 = tmax, miss = _mm256_setzero_ps();
+  for (int a = 0; a < 3; ++a) {
+    const __m256 o = _mm256_load_ps(l.o[a]), inv = _mm256_load_ps(l.inv[a]);
+    const __m256 lo = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(b.lo[a]), o), inv);
+    const __m256 hi = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(b.hi[a]), o), inv);
+    const __m256 swap = _mm256_cmp_ps(lo, hi, _CMP_GT_OQ);
+    const __m256 tn = _mm256_blendv_ps(lo, hi, swap);
+    const __m256 tf = _mm256_mul_ps(_mm256_blendv_ps(hi, lo, swap), _mm256_set1_ps(1.0f + 2.0f * gamma(3)));
+    t0 = _mm256_blendv_ps(t0, tn, _mm256_cmp_ps(tn, t0, _CMP_GT_OQ));
+    t1 = _mm256_blendv_ps(t1, tf, _mm256_cmp_ps(tf, t1, _CMP_LT_OQ));
+    miss = _mm256_or_ps(miss, _mm256_cmp_ps(t0, t1, _CMP_GT_OQ));
+  }
+  entry = _mm256_mul_ps(t0, _mm256_set1_ps(1.0f - 2.0f * gamma(3)));
+  return ~unsigned(_mm256_movemask_ps(miss)) & 0xffu;
+}
+
+GCSIM_AVX2 void prepare_lanes(const PrimitiveArrays& prims, const PackedTree& tree, const Ray rays[], unsigned lanes,
+                              Lanes& l) {
+  l.sphere_count = prims.sphere_count();
+  l.triangles = prims.triangles.data();
+  for (int i = 0; i < kPacketLanes; ++i) {
+    const Ray& r = rays[lanes >> i & 1u ? i : std::countr_zero(lanes)];  // idle lanes copy a live one
+    for (int a = 0; a < 3; ++a) {
+      l.o[a][i] = r.origin[a];
+      l.inv[a][i] = r.inv_direction[a];
+      l.negative[a][i] = std::signbit(r.inv_direction[a]) ? -1 : 0;
+    }
+    l.tmin[i] = r.tmin;
+    l.shear_x[i] = r.shear_x;
+    l.shear_y[i] = r.shear_y;
+    l.shear_z[i] = r.shear_z;
+    if (!(lanes >> i & 1u)) continue;
+    if (!prims.spheres.empty()) l.spheres[i] = SphereRay(r);
+    int g = 0;
+    while (g < l.axes_count && !(l.axes[g].kx == r.kx && l.axes[g].ky == r.ky && l.axes[g].kz == r.kz)) ++g;
+    if (g == l.axes_count) l.axes[l.axes_count++] = {r.kx, r.ky, r.kz, 0u};
+    l.axes[g].lanes |= 1u << i;
+  }
+  // TriangleRejectRay::assume_within for every lane: the root box in float's safe range as seen
+  // from the lane's origin, so every triangle below it is.
+  __m256 below = _mm256_castsi256_ps(_mm256_set1_epi32(-1)), above = _mm256_setzero_ps();
+  const __m256 sign = _mm256_set1_ps(-0.0f), big = _mm256_set1_ps(1e12f), small = _mm256_set1_ps(1e-12f);
+  for (int a = 0; a < 3; ++a) {
+    const __m256 o = _mm256_load_ps(l.o[a]);
+    const __m256 lo = _mm256_sub_ps(_mm256_set1_ps(tree.root_box.lo[a]), o);
+    const __m256 hi = _mm256_sub_ps(_mm256_set1_ps(tree.root_box.hi[a]), o);
+    below = _mm256_and_ps(below, _mm256_and_ps(_mm256_cmp_ps(_mm256_andnot_ps(sign, lo), big, _CMP_LE_OQ),
+                                               _mm256_cmp_ps(_mm256_andnot_ps(sign, hi), big, _CMP_LE_OQ)));
+    above = _mm256_or_ps(above, _mm256_or_ps(_mm256_cmp_ps(lo, small, _CMP_GE_OQ),
+                                             _mm256_cmp_ps(hi, _mm256_set1_ps(-1e-12f), _CMP_LE_OQ)));
+  }
+  l.in_range = lanes & unsigned(_mm256_movemask_ps(_mm256_and_ps(below, above)));
+}
+
+// Pushes a child for `lanes` with their entries; false when the single-ray stack would be full.
+GCSIM_AVX2 inline bool push(Entry* stack, int& top, NodeRef node, unsigned lanes, __m256 near) {
+  if (!lanes) return true;
+  if (top >= kStackSize) return false;
+  Entry& e = stack[top++];
+  _mm256_store_ps(e.entry, near);
+  e.node = node;
+  e.lanes = lanes;
+  return true;
+}
+
+// The walk of ordered<> in traversal.cpp for all lanes at once; false (nothing written) when it
+// would need more stack than the single-ray walk has.
+template <int kOctant>
+GCSIM_AVX2 bool walk(const PrimitiveArrays& prims, const PackedTree& tree, const Ray rays[], unsigned lanes,
+                     const Lanes& l, Hit hits[], TestTally tallies[]) {
+  State s;
+  for (int i = 0; i < kPacketLanes; ++i) {
+    s.hit[i] = lanes >> i & 1u ? hits[i] : Hit{};
+    s.t[i] = s.hit[i].t;
+  }
+  Counts k{_mm256_setzero_si256(), _mm256_setzero_si256(), _mm256_setzero_si256(), _mm256_setzero_si256()};
+  count(k.boxes, lanes);
+  __m256 root_entry;
+  const unsigned live = lanes & root_box(tree.root_box, l, _mm256_load_ps(s.t), root_entry);
+  thread_local Entry stack[kStackSize];  // fiber stacks are small
+  int top = 0;
+  push(stack, top, tree.root, live, root_entry);
+  while (top > 0) {
+    const Entry& e = stack[--top];  // read before anything is pushed over it
+    const __m256 t = _mm256_load_ps(s.t);
+    // figure 3: lanes that found a nearer primitive meanwhile prune the node.
+    const unsigned active =
+        e.lanes & ~unsigned(_mm256_movemask_ps(_mm256_cmp_ps(_mm256_load_ps(e.entry), t, _CMP_GT_OQ)));
+    if (!active) continue;
+    const PairNode& n = tree.nodes[e.node];
+    const bool prim0 = is_primitive(n.child[0]), prim1 = is_primitive(n.child[1]);
+    if (prim0) test_lanes(prims, primitive_of(n.child[0]), rays, l, active, s, k);
+    if (prim1) test_lanes(prims, primitive_of(n.child[1]), rays, l, active, s, k);
+    if (prim0 && prim1) continue;
+    const __m256 tmax = _mm256_load_ps(s.t);
+    __m256 near0 = tmax, near1 = tmax;
+    const unsigned hit0 = prim0 ? 0u : child_box<kOctant>(n, 0, l, tmax, near0) & active;
+    const unsigned hit1 = prim1 ? 0u : child_box<kOctant>(n, 1, l, tmax, near1) & active;
+    if (!prim0) count(k.boxes, active);
+    if (!prim1) count(k.boxes, active);
+    const unsigned both = hit0 & hit1, only0 = hit0 & ~both, only1 = hit1 & ~both;
+    count(k.sorts, both);
+    // traverse_ordered visits child 0 first only when its entry is strictly nearer.
+    const unsigned first0 = both & unsigned(_mm256_movemask_ps(_mm256_cmp_ps(near0, near1, _CMP_LT_OQ)));
+    const unsigned first1 = both & ~first0;
+    const NodeRef c0 = n.child[0], c1 = n.child[1];
+    bool ok;
+    if (std::popcount(first0) >= std::popcount(first1)) {  // popped: c0, c1, then c0 for first1
+      ok = push(stack, top, c0, first1, near0) && push(stack, top, c1, both | only1, near1) &&
+           push(stack, top, c0, first0 | only0, near0);
+    } else {  // popped: c1, c0, then c1 for first0
+      ok = push(stack, top, c1, first0, near1) && push(stack, top, c0, both | only0, near0) &&
+           push(stack, top, c1, first1 | only1, near1);
+    }
+    if (!ok) return false;
+  }
+  alignas(32) std::int32_t boxes[8], spheres[8], triangles[8], sorts[8];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(boxes), k.boxes);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(spheres), k.spheres);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(triangles), k.triangles);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(sorts), k.sorts);
+  for (unsigned m = lanes; m; m &= m - 1) {
+    const int i = std::countr_zero(m);
+    hits[i] = s.hit[i];
+    tallies[i].boxes += boxes[i];
+    tallies[i].spheres += spheres[i];
+    tallies[i].triangles += triangles[i];
+    tallies[i].sorts += sorts[i];
+  }
+  return true;
+}
+
+// The walk compiled for the packet's octant when all lanes share one.
+GCSIM_AVX2 bool walk_packet(const PrimitiveArrays& prims, const PackedTree& tree, const Ray rays[], unsigned lanes,
+                            Hit hits[], TestTally tallies[]) {
+  Lanes l;
+  prepare_lanes(prims, tree, rays, lanes, l);
+  int octant = 0;
+  for (int a = 0; a < 3; ++a) {
+    const unsigned negative = lanes & unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(
+                                          _mm256_load_si256(reinterpret_cast<const __m256i*>(l.negative[a])))));
+    if (negative != 0 && negative != lanes) octant = -1;
+    if (octant >= 0 && negative) octant |= 1 << a;
+  }
+  switch (octant) {
+    case 0: return walk<0>(prims, tree, rays, lanes, l, hits, tallies);
+    case 1: return walk<1>(prims, tree, rays, lanes, l, hits, tallies);
+    case 2: return walk<2>(prims, tree, rays, lanes, l, hits, tallies);
+    case 3: return walk<3>(prims, tree, rays, lanes, l, hits, tallies);
+    case 4: return walk<4>(prims, tree, rays, lanes, l, hits, tallies);
+    case 5: return walk<5>(prims, tree, rays, lanes, l, hits, tallies);
+    case 6: return walk<6>(prims, tree, rays, lanes, l, hits, tallies);
+    case 7: return walk<7>(prims, tree, rays, lanes, l, hits, tallies);
+    default: return walk<-1>(prims, tree, rays, lanes, l, hits, tallies);
+  }
+}
+
+bool host_has_avx2() {
+  static const bool yes = __builtin_cpu_supports("avx2");
+  return yes;
+}
+
+#endif
+
+}  // namespace
+
+bool packet_kernel_vectorized() {
+#if defined(GCSIM_PACKET_AVX2)
+  return host_has_avx2();
+#else
+  return false;
+#endif
+}
+
+void traverse_ordered_packet(const PrimitiveArrays& prims, const PackedTree& tree, const Ray rays[kPacketLanes],
+                             unsigned lanes, Hit hits[kPacketLanes], TestTally tallies[kPacketLanes]) {
+  lanes &= (1u << kPacketLanes) - 1;
+  if (!lanes) return;
+#if defined(GCSIM_PACKET_AVX2)
+  // An empty tree or a lone primitive: nothing to share between the lanes.
+  if (!tree.empty && !is_primitive(tree.root) && host_has_avx2() &&
+      walk_packet(prims, tree, rays, lanes, hits, tallies))
+    return;
+#endif
+  one_by_one(prims, tree, rays, lanes, hits, tallies);
+}
+
+}  // namespace gcsim::geometry
