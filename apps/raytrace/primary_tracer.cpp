@@ -60,6 +60,7 @@ void PrimaryTracer::trace_pixel(int x, int y, Hit& hit, TestTally& tally, TraceC
 }
 
 const PackedTree* PrimaryTracer::packet_tree() const {
+  if (!packets_) return nullptr;
   switch (algorithm_) {
     case Algorithm::A2: return &bvh_.packed;
     case Algorithm::A3:

@@ -29,6 +29,9 @@ class PrimaryTracer {
                   TraceCounters* row_counters = nullptr);
 
   Algorithm algorithm() const { return algorithm_; }
+  // false: every ray walks alone (traverse_ordered), for measuring the single-ray core; the same
+  // hits and counts either way.
+  void use_packets(bool packets) { packets_ = packets; }
 
  private:
   struct Region;
@@ -51,6 +54,7 @@ class PrimaryTracer {
   const Bvh& bvh_;
   const Camera& camera_;
   Algorithm algorithm_;
+  bool packets_ = true;
   int row_y0_ = -1, row_y1_ = -1;
   TraceCounters row_cost_;  // what filtering the current row by its two planes counted
   PlaneFilteredTree row_;
