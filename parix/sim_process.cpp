@@ -268,10 +268,15 @@ void SimProcess::send(Link& link, std::span<const std::byte> data) {
 
 Request SimProcess::irecv(Link& link) { return post_receive(link); }
 
-// Inline into recv as well as irecv: a blocking receive is the common case.
-[[gnu::always_inline]] inline Request SimProcess::post_receive(Link& link) {
-  LinkEnd& e = end_of(link, "recv");
+Request SimProcess::post_receive(Link& link) {
   Request req = sim_.requests.take();
+  post_receive(req, link);
+  return req;
+}
+
+// Inline into recv as well as irecv: a blocking receive is the common case.
+[[gnu::always_inline]] inline void SimProcess::post_receive(Request& req, Link& link) {
+  LinkEnd& e = end_of(link, "recv");
   RequestState& s = *req.state();
   s.is_receive = true;
   s.payloads = &sim_.payloads;
@@ -287,17 +292,31 @@ Request SimProcess::irecv(Link& link) { return post_receive(link); }
   } else {
     e.receives.push_back(req);
   }
-  return req;
+}
+
+// A receive that completed (or was withdrawn while the run was abandoned) left its link's queue,
+// so only this process holds it; one still queued (the run abandoned) is left there and replaced.
+[[gnu::always_inline]] inline Request& SimProcess::blocking_receive() {
+  if (blocking_receive_.unique()) [[likely]] {
+    RequestState& s = *blocking_receive_.state();
+    s.rearm();
+    s.cpu_charged = false;
+  } else {
+    blocking_receive_ = sim_.requests.take();
+  }
+  return blocking_receive_;
 }
 
 Bytes SimProcess::recv(Link& link) {
-  Request r = irecv(link);
+  Request& r = blocking_receive();
+  post_receive(r, link);
   wait_for(*r.state(), "recv", TraceKind::recv);
   return r.take();
 }
 
 void SimProcess::recv(Link& link, Bytes& into) {
-  Request r = post_receive(link);
+  Request& r = blocking_receive();
+  post_receive(r, link);
   RequestState& s = *r.state();
   wait_for(s, "recv", TraceKind::recv);
   // Request::take_into, with the pool known: into's old storage goes back to it.

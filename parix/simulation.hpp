@@ -111,6 +111,11 @@ class SimProcess final : public Processor, public Waiter {
  private:
   Request post_send(Link& link, std::span<const std::byte> data, bool synchronous);
   Request post_receive(Link& link);
+  // Posts a receive on link's end with req (fresh or rearmed) and matches it with an arrived message.
+  void post_receive(Request& req, Link& link);
+  // The request a blocking receive waits on, reused from one receive to the next: once it is over
+  // only this process holds it, and it needs neither the pool nor a reset of every field.
+  Request& blocking_receive();
   LinkEnd& end_of(const Link& link, const char* call);
   // A request that is over already (a delivered isend) costs a test; waiting for one still
   // running is out of line.
@@ -133,6 +138,7 @@ class SimProcess final : public Processor, public Waiter {
   // before any process exists and never resizes them.
   ProcessorStats& stats_;
   int node_;
+  Request blocking_receive_;  // empty until the first blocking receive; see blocking_receive()
 };
 
 // options.placement checked to be a permutation of 0..nodes-1; identity when empty.
