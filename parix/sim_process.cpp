@@ -214,21 +214,19 @@ inline LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
   return req;
 }
 
-void Simulation::deliver(std::int64_t slot) {
-  Message& m = in_flight[slot];  // stays put: nothing parks a message during a delivery
-  if (!m.data.empty()) release_memory(m.src, static_cast<std::int64_t>(m.data.size()), in_flight_kind);
-  const std::int64_t end = m.dst_end;  // its pair is not reused while a message travels to it
-  LinkEnd& e = links.at(end);
-  const std::int64_t seq = m.link_seq;
-  e.order.arrive(seq, std::move(m), [this, &e](Message&& next) { accept(e, std::move(next)); });
-  // Its payload went on (to a receive, the link's queue, the held messages or the pool); the
-  // request it keeps alive must not wait for the slot's reuse.
-  m.send = Request();
-  free_slots.push_back(slot);
-  if (!e.open) links.release_if_done(end);  // the last message to a closed link may free it
+// Inline into deliver: the common arrival, a receive waiting for it, untraced. The rest (a
+// withdrawn message, a trace, no receive yet) is out of line, so deliver saves few registers.
+[[gnu::always_inline]] inline void Simulation::accept(LinkEnd& e, Message&& m) {
+  if (m.send.cancelled() || trace.enabled() || e.receives.empty()) [[unlikely]] return accept_slow(e, std::move(m));
+  if (!m.synchronous) complete(m.send);
+  Request r = std::move(e.receives.front());
+  e.receives.pop_front();
+  r.state()->data = std::move(m.data);
+  if (m.synchronous) complete(m.send);
+  complete(r);
 }
 
-void Simulation::accept(LinkEnd& e, Message&& m) {
+void Simulation::accept_slow(LinkEnd& e, Message&& m) {
   // Withdrawn by its sender (SimProcess::cancel) while it travelled: the link drops it, after the
   // network and the in-order delivery have finished with it.
   if (m.send.cancelled()) {
@@ -257,6 +255,20 @@ void Simulation::accept(LinkEnd& e, Message&& m) {
     }
     e.arrived.push_back(std::move(m));
   }
+}
+
+void Simulation::deliver(std::int64_t slot) {
+  Message& m = in_flight[slot];  // stays put: nothing parks a message during a delivery
+  if (!m.data.empty()) release_memory(m.src, static_cast<std::int64_t>(m.data.size()), in_flight_kind);
+  const std::int64_t end = m.dst_end;  // its pair is not reused while a message travels to it
+  LinkEnd& e = links.at(end);
+  const std::int64_t seq = m.link_seq;
+  e.order.arrive(seq, std::move(m), [this, &e](Message&& next) { accept(e, std::move(next)); });
+  // Its payload went on (to a receive, the link's queue, the held messages or the pool); the
+  // request it keeps alive must not wait for the slot's reuse.
+  m.send = Request();
+  free_slots.push_back(slot);
+  if (!e.open) links.release_if_done(end);  // the last message to a closed link may free it
 }
 
 Request SimProcess::isend(Link& link, std::span<const std::byte> data) { return post_send(link, data, false); }
