@@ -39,7 +39,9 @@ void SimProcess::wake() {
   fiber.resume();
 }
 
-bool SimProcess::wait_for_activity(Activity& a, const char* call, int peer) {
+bool SimProcess::wait_for_activity(Activity& a, const char* call, int peer) { return wait_in_line(a, call, peer); }
+
+[[gnu::always_inline]] inline bool SimProcess::wait_in_line(Activity& a, const char* call, int peer) {
   while (a.running()) {
     a.waiter = this;
     block(call, peer);
@@ -319,23 +321,6 @@ Request SimProcess::post_receive(Link& link) {
   return blocking_receive_;
 }
 
-Bytes SimProcess::recv(Link& link) {
-  Request& r = blocking_receive();
-  post_receive(r, link);
-  wait_for(*r.state(), "recv", TraceKind::recv);
-  return r.take();
-}
-
-void SimProcess::recv(Link& link, Bytes& into) {
-  Request& r = blocking_receive();
-  post_receive(r, link);
-  RequestState& s = *r.state();
-  wait_for(s, "recv", TraceKind::recv);
-  // Request::take_into, with the pool known: into's old storage goes back to it.
-  into.swap(s.data);
-  sim_.payloads.give(std::move(s.data));
-}
-
 void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {
   if (!r.running()) {  // over before the wait (a delivered isend): no time passes, nothing to trace
     if (!r.cancelled()) charge_receive_cpu(r);
@@ -344,16 +329,46 @@ void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {
   wait_for_running(r, call, kind);
 }
 
-void SimProcess::wait_for_running(RequestState& r, const char* call, TraceKind kind) {
+void SimProcess::wait_for_running(RequestState& r, const char* call, TraceKind kind) { wait_running(r, call, kind); }
+
+[[gnu::always_inline]] inline void SimProcess::wait_for_receive(RequestState& r) {
+  if (!r.running()) {  // the message was there already
+    if (!r.cancelled()) charge_receive_cpu(r);
+    return;
+  }
+  wait_running(r, "recv", TraceKind::recv);
+}
+
+[[gnu::always_inline]] inline void SimProcess::wait_running(RequestState& r, const char* call, TraceKind kind) {
   const machine::SimTime start = sim_.kernel.now();
-  if (!wait_for_activity(r, call, r.peer)) return;
+  if (!wait_in_line(r, call, r.peer)) return;
   const machine::SimTime end = sim_.kernel.now();
   stats_.comm += end - start;
   if (r.cancelled()) return;  // withdrawn (before the wait, or by another thread meanwhile)
-  if (sim_.trace.enabled() && end > start) {
-    sim_.trace.record({kind, id_, r.peer, start, end, static_cast<std::int64_t>(r.data.size()), -1, call, thread_});
-  }
+  if (sim_.trace.enabled() && end > start) [[unlikely]] trace_wait(r, call, kind, start);
   charge_receive_cpu(r);
+}
+
+// Out of line: the record is built on the stack, which the waits in line need not reserve.
+void SimProcess::trace_wait(const RequestState& r, const char* call, TraceKind kind, machine::SimTime start) {
+  sim_.trace.record({kind, id_, r.peer, start, sim_.kernel.now(), static_cast<std::int64_t>(r.data.size()), -1, call, thread_});
+}
+
+Bytes SimProcess::recv(Link& link) {
+  Request& r = blocking_receive();
+  post_receive(r, link);
+  wait_for_receive(*r.state());
+  return r.take();
+}
+
+void SimProcess::recv(Link& link, Bytes& into) {
+  Request& r = blocking_receive();
+  post_receive(r, link);
+  RequestState& s = *r.state();
+  wait_for_receive(s);
+  // Request::take_into, with the pool known: into's old storage goes back to it.
+  into.swap(s.data);
+  sim_.payloads.give(std::move(s.data));
 }
 
 void SimProcess::charge_receive_cpu(RequestState& r) {

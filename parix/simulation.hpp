@@ -95,6 +95,7 @@ class SimProcess final : public Processor, public Waiter {
   // Blocks while a is running (until it is done or cancelled); false when the run was abandoned
   // meanwhile (a is then cancelled).
   bool wait_for_activity(Activity& a, const char* call, int peer);
+  bool wait_in_line(Activity& a, const char* call, int peer);  // the same, inline (a receive's wait)
 
   int thread() const { return thread_; }
   bool finished = false;
@@ -121,6 +122,11 @@ class SimProcess final : public Processor, public Waiter {
   // running is out of line.
   void wait_for(RequestState& r, const char* call, TraceKind kind);
   void wait_for_running(RequestState& r, const char* call, TraceKind kind);
+  // The same wait in line, for a blocking receive, which usually has to wait: no call, no
+  // second frame.
+  void wait_for_receive(RequestState& r);
+  void wait_running(RequestState& r, const char* call, TraceKind kind);
+  [[gnu::noinline]] void trace_wait(const RequestState& r, const char* call, TraceKind kind, machine::SimTime start);
   // Holds one of the node's CPUs for `duration` (compute and the CPU side of communication share
   // them); false when the run was abandoned meanwhile.
   bool occupy_cpu(machine::SimTime duration, std::string_view label);
