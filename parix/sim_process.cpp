@@ -176,17 +176,22 @@ inline LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
   return *found;
 }
 
+// The CPU hands the message to the communication processors before it travels (copying it); out
+// of line, as the published machine charges nothing. False when the run was abandoned meanwhile.
+bool SimProcess::charge_send_cpu(Link& link, std::size_t bytes) {
+  end_of(link, "send");  // checked before the CPU is spent on it
+  return charge_comm_cpu(sim_.config.comm_cpu.send, static_cast<std::int64_t>(bytes), "send_cpu");
+}
+
+Request SimProcess::abandoned_send() {
+  Request abandoned = sim_.requests.take();
+  abandoned.state()->complete();
+  return abandoned;
+}
+
 // Inline into isend and send: one call per message less.
 [[gnu::always_inline]] inline Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool synchronous) {
-  if (sim_.charges_comm_cpu) {
-    end_of(link, "send");  // checked before the CPU is spent on it
-    // The CPU hands the message to the communication processors before it travels (copying it).
-    if (!charge_comm_cpu(sim_.config.comm_cpu.send, static_cast<std::int64_t>(data.size()), "send_cpu")) {
-      Request abandoned = sim_.requests.take();
-      abandoned.state()->complete();
-      return abandoned;
-    }
-  }
+  if (sim_.charges_comm_cpu && !charge_send_cpu(link, data.size())) [[unlikely]] return abandoned_send();
   LinkEnd& e = end_of(link, "send");  // after the CPU time: links may have grown meanwhile
   Request req = sim_.requests.take();
   req.state()->link = link.handle();

@@ -111,6 +111,8 @@ class SimProcess final : public Processor, public Waiter {
 
  private:
   Request post_send(Link& link, std::span<const std::byte> data, bool synchronous);
+  [[gnu::noinline]] bool charge_send_cpu(Link& link, std::size_t bytes);
+  [[gnu::noinline, gnu::cold]] Request abandoned_send();
   Request post_receive(Link& link);
   // Posts a receive on link's end with req (fresh or rearmed) and matches it with an arrived message.
   void post_receive(Request& req, Link& link);
