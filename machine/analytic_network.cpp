@@ -8,7 +8,7 @@ void AnalyticNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Act
   RouteCache::Entry* r = routes_.lookup(src, dst);
   if (ctx_.trace || !r || bytes != last_bytes_) [[unlikely]] return transfer_slow(src, dst, bytes, std::move(on_arrival));
   ++messages_;
-  SimTime end = ctx_.kernel.now() + latency(r->hops);
+  SimTime end = ctx_.kernel.now() + r->latency;
   if (r->hops > 0) {
     end += last_serialization_;  // uncontended_time, latency reused
     if (bytes > 0) {
@@ -26,7 +26,8 @@ void AnalyticNetwork::transfer_slow(int src, int dst, std::int64_t bytes, Kernel
     channel_bytes_.assign(ctx_.mesh.channel_count(), 0);
     channel_busy_.assign(ctx_.mesh.channel_count(), 0);
   }
-  routes_.find(src, dst, channel_bytes_, channel_busy_);
+  RouteCache::Entry& r = routes_.find(src, dst, channel_bytes_, channel_busy_);
+  r.latency = latency(r.hops);  // the pair may be new
   last_bytes_ = bytes;
   last_serialization_ = serialization(bytes);
   transfer(src, dst, bytes, std::move(on_arrival));

@@ -25,19 +25,6 @@ inline void Kernel::sift_up(std::size_t i, const Key& key) {
   h[i] = key;
 }
 
-// The common case in line, without a call before the action's move, so that it saves few
-// registers: a free slot and a key that extends the in-order run, which has room.
-void Kernel::at(SimTime t, Action&& a) {
-  if (t < now_ || free_slots_.empty() || in_order_.full() || (!in_order_.empty() && t < in_order_.back().time))
-      [[unlikely]] {
-    return at_slow(t, std::move(a));
-  }
-  const std::uint32_t slot = free_slots_.back();
-  free_slots_.pop_back();
-  in_order_.push_back({t, seq_++, slot});
-  action(slot).fill(std::move(a));  // free slots are empty (reset by step)
-}
-
 void Kernel::at_slow(SimTime t, Action&& a) {
   if (t < now_) {
     throw std::logic_error("Kernel::at: event scheduled in the past (" + std::to_string(t) + " ps < now " +
@@ -57,7 +44,7 @@ void Kernel::at_slow(SimTime t, Action&& a) {
   in_order_.push_back({t, seq_++, slot});
 }
 
-inline Kernel::Key Kernel::pop_heap() {
+Kernel::Key Kernel::pop_heap() {
   const Key top = heap_.front();
   const Key last = heap_.back();
   heap_.pop_back();
@@ -83,33 +70,6 @@ inline Kernel::Key Kernel::pop_heap() {
     sift_up(i, last);
   }
   return top;
-}
-
-bool Kernel::step() {
-  Key top;
-  if (!in_order_.empty() && (heap_.empty() || in_order_.front() < heap_.front())) {
-    top = in_order_.front();
-    in_order_.pop_front();
-  } else if (!heap_.empty()) {
-    top = pop_heap();
-  } else {
-    return false;
-  }
-  now_ = top.time;
-  ++processed_;
-  Action& a = action(top.slot);
-  // The slot is released only after the action ran: it may schedule events, which must not reuse it.
-  struct Release {
-    Kernel& k;
-    Action& a;
-    std::uint32_t slot;
-    ~Release() {
-      a.reset();
-      k.free_slots_.push_back(slot);
-    }
-  } release{*this, a, top.slot};
-  a();
-  return true;
 }
 
 }  // namespace gcsim::machine

@@ -53,7 +53,7 @@ class Kernel {
   static constexpr std::size_t kArity = 4;  // children per heap node
   void at_slow(SimTime t, Action&& action);  // a new slot chunk, the heap, or a time in the past
   void sift_up(std::size_t i, const Key& key);
-  Key pop_heap();
+  [[gnu::noinline]] Key pop_heap();  // out of line: step() inlines into the simulation's loop
   static constexpr std::uint32_t kChunkBits = 10;
   static constexpr std::uint32_t kChunk = 1u << kChunkBits;
   Action& action(std::uint32_t slot) { return chunks_[slot >> kChunkBits][slot & (kChunk - 1)]; }
@@ -75,5 +75,48 @@ class Kernel {
   std::uint64_t seq_ = 0;
   std::uint64_t processed_ = 0;
 };
+
+// at() and step() are inline: each runs once per event, called from the network models and the
+// simulation's loop; the rare cases are out of line.
+
+// The common case in line, without a call before the action's move, so that it saves few
+// registers: a free slot and a key that extends the in-order run, which has room.
+inline void Kernel::at(SimTime t, Action&& a) {
+  if (t < now_ || free_slots_.empty() || in_order_.full() || (!in_order_.empty() && t < in_order_.back().time))
+      [[unlikely]] {
+    return at_slow(t, std::move(a));
+  }
+  const std::uint32_t slot = free_slots_.back();
+  free_slots_.pop_back();
+  in_order_.push_back({t, seq_++, slot});
+  action(slot).fill(std::move(a));  // free slots are empty (reset by step)
+}
+
+inline bool Kernel::step() {
+  Key top;
+  if (!in_order_.empty() && (heap_.empty() || in_order_.front() < heap_.front())) {
+    top = in_order_.front();
+    in_order_.pop_front();
+  } else if (!heap_.empty()) {
+    top = pop_heap();
+  } else {
+    return false;
+  }
+  now_ = top.time;
+  ++processed_;
+  Action& a = action(top.slot);
+  // The slot is released only after the action ran: it may schedule events, which must not reuse it.
+  struct Release {
+    Kernel& k;
+    Action& a;
+    std::uint32_t slot;
+    ~Release() {
+      a.reset();
+      k.free_slots_.push_back(slot);
+    }
+  } release{*this, a, top.slot};
+  a();
+  return true;
+}
 
 }  // namespace gcsim::machine

@@ -25,6 +25,7 @@ class RouteCache {
     int src = -1;  // -1: empty
     int dst = -1;
     int hops = 0;
+    SimTime latency = 0;  // the user's (the analytic model's) latency for hops, kept with them
     std::int64_t bytes = 0;  // not yet added to the route's channels
     SimTime busy = 0;
     std::vector<int> route;

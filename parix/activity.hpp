@@ -42,6 +42,9 @@ class Activity {
     state_ = State::cancelled;
     if (waiter) waiter->wake();  // a waiter (another thread of the process) stops waiting
   }
+  // Running again: only for an activity that is over and that nothing else refers to any more, so
+  // no event can still end it (a process's blocking receive, reused for the next one).
+  void rearm() { state_ = State::running; }
 
  private:
   State state_ = State::running;

@@ -19,9 +19,9 @@ class Fifo {
   T& front() { return items_[head_]; }
   void push_back(T value) { items_.push_back(std::move(value)); }
   void pop_front() {
-    if (head_ + 1 == items_.size()) {  // the last one: clear() releases it
-      items_.clear();
-      head_ = 0;
+    if (head_ + 1 == items_.size()) {  // the last one, also the back: the queue empties
+      items_.pop_back();
+      if (head_ != 0) items_.clear(), head_ = 0;  // the slots before it hold nothing
       return;
     }
     items_[head_] = T{};  // releases what the slot held (a payload, a request) at once

@@ -28,7 +28,6 @@ Bytes PayloadPool::take_elsewhere(std::size_t bytes) {
 // give() when its class's list is full: kept the same way, after the list grows.
 void PayloadPool::keep_growing(std::vector<Bytes>& list, Bytes&& b) {
   kept_bytes_ += b.capacity();
-  b.clear();
   list.push_back(std::move(b));
 }
 

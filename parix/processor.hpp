@@ -138,6 +138,8 @@ class Request {
   // that reuses one Bytes receives without allocating. into is left empty for a cancelled receive.
   void take_into(Bytes& into);
   RequestState* state() const { return state_; }
+  // Whether this is the only Request holding its state (a backend may then reuse the state).
+  bool unique() const { return state_ && state_->refs_ == 1; }
 
  private:
   static void release(RequestState* s) noexcept {

@@ -2,8 +2,8 @@
 // Request states for the simulated runtime without a malloc per send and receive: states are made
 // in chunks and kept on a free list; a Request's last reference hands its state back here
 // (RequestHome), which resets it for the next send or receive. The pool lives in the Simulation and
-// must outlive every request of its run (they are held by the run's fibers and messages, all gone
-// before it ends).
+// must outlive every request of its run (they are held by the run's fibers, processes -- each keeps
+// its blocking receive's for reuse -- and messages, all gone before it ends).
 #include <cstddef>
 #include <memory>
 #include <vector>

@@ -39,7 +39,9 @@ void SimProcess::wake() {
   fiber.resume();
 }
 
-bool SimProcess::wait_for_activity(Activity& a, const char* call, int peer) {
+bool SimProcess::wait_for_activity(Activity& a, const char* call, int peer) { return wait_in_line(a, call, peer); }
+
+[[gnu::always_inline]] inline bool SimProcess::wait_in_line(Activity& a, const char* call, int peer) {
   while (a.running()) {
     a.waiter = this;
     block(call, peer);
@@ -107,49 +109,6 @@ std::string Simulation::use_memory(int processor, std::int64_t bytes, machine::N
   return declare_memory(processor, bytes, kind) ? std::string() : refusal(processor, bytes, kind);
 }
 
-Link SimProcess::connect(int peer, int tag) {
-  if (peer < 0 || peer >= count()) {
-    throw ParixError(fmt::format("processor {}: connect to processor {}, which does not exist (0..{})", id_, peer, count() - 1));
-  }
-  if (peer == id_) throw ParixError(fmt::format("processor {}: connect to itself; a link needs two processors", id_));
-  const machine::SimTime start = sim_.kernel.now();
-  std::int64_t mine = -1;
-  Activity set_up;  // completed by the set-up event, whichever side schedules it
-  if (auto paired = sim_.connect_matcher.match_or_wait(id_, peer, tag, {this, &mine, &set_up, start})) {
-    const Simulation::PendingConnect other = *paired;
-    const auto [a, b] = sim_.links.open_pair();
-    LinkEnd& ea = sim_.links.at(a);
-    LinkEnd& eb = sim_.links.at(b);
-    ea.owner = id_, ea.peer = peer;
-    eb.owner = peer, eb.peer = id_;
-    const machine::SimTime up = sim_.connections.set_up(node_, sim_.node_of[peer], start);
-    std::int64_t* theirs = other.result;
-    SimProcess* them = other.who;
-    const machine::SimTime their_start = other.since;
-    // Both ends' set-ups complete at once; the waiting end wakes first.
-    sim_.kernel.at(up, [theirs, their_set_up = other.set_up, &set_up, b] {
-      *theirs = b;
-      their_set_up->complete();
-      set_up.complete();
-    });
-    if (!wait_for_activity(set_up, "connect", peer)) return {};
-    mine = a;
-    sim_.stats[peer].connections += 1;
-    stats_.connections += 1;
-    if (sim_.trace.enabled()) {
-      sim_.trace.record({TraceKind::connect, peer, id_, their_start, up, 0, -1, "connect", them->thread()});
-      sim_.trace.record({TraceKind::connect, id_, peer, start, up, 0, -1, "connect", thread_});
-    }
-  } else if (!wait_for_activity(set_up, "connect", peer)) {
-    return {};
-  }
-  if (!charge_comm_cpu(sim_.config.comm_cpu.connect, 0, "connect_cpu")) return {};
-  const machine::SimTime took = sim_.kernel.now() - start;
-  stats_.comm += took;
-  stats_.connect += took;
-  return Link(this, peer, tag, mine);
-}
-
 void SimProcess::close_link(std::int64_t handle) { sim_.links.close(handle); }
 
 namespace {
@@ -174,17 +133,22 @@ inline LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
   return *found;
 }
 
+// The CPU hands the message to the communication processors before it travels (copying it); out
+// of line, as the published machine charges nothing. False when the run was abandoned meanwhile.
+bool SimProcess::charge_send_cpu(Link& link, std::size_t bytes) {
+  end_of(link, "send");  // checked before the CPU is spent on it
+  return charge_comm_cpu(sim_.config.comm_cpu.send, static_cast<std::int64_t>(bytes), "send_cpu");
+}
+
+Request SimProcess::abandoned_send() {
+  Request abandoned = sim_.requests.take();
+  abandoned.state()->complete();
+  return abandoned;
+}
+
 // Inline into isend and send: one call per message less.
 [[gnu::always_inline]] inline Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool synchronous) {
-  if (sim_.charges_comm_cpu) {
-    end_of(link, "send");  // checked before the CPU is spent on it
-    // The CPU hands the message to the communication processors before it travels (copying it).
-    if (!charge_comm_cpu(sim_.config.comm_cpu.send, static_cast<std::int64_t>(data.size()), "send_cpu")) {
-      Request abandoned = sim_.requests.take();
-      abandoned.state()->complete();
-      return abandoned;
-    }
-  }
+  if (sim_.charges_comm_cpu && !charge_send_cpu(link, data.size())) [[unlikely]] return abandoned_send();
   LinkEnd& e = end_of(link, "send");  // after the CPU time: links may have grown meanwhile
   Request req = sim_.requests.take();
   req.state()->link = link.handle();
@@ -214,21 +178,19 @@ inline LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
   return req;
 }
 
-void Simulation::deliver(std::int64_t slot) {
-  Message& m = in_flight[slot];  // stays put: nothing parks a message during a delivery
-  if (!m.data.empty()) release_memory(m.src, static_cast<std::int64_t>(m.data.size()), in_flight_kind);
-  const std::int64_t end = m.dst_end;  // its pair is not reused while a message travels to it
-  LinkEnd& e = links.at(end);
-  const std::int64_t seq = m.link_seq;
-  e.order.arrive(seq, std::move(m), [this, &e](Message&& next) { accept(e, std::move(next)); });
-  // Its payload went on (to a receive, the link's queue, the held messages or the pool); the
-  // request it keeps alive must not wait for the slot's reuse.
-  m.send = Request();
-  free_slots.push_back(slot);
-  if (!e.open) links.release_if_done(end);  // the last message to a closed link may free it
+// Inline into deliver: the common arrival, a receive waiting for it, untraced. The rest (a
+// withdrawn message, a trace, no receive yet) is out of line, so deliver saves few registers.
+[[gnu::always_inline]] inline void Simulation::accept(LinkEnd& e, Message&& m) {
+  if (m.send.cancelled() || trace.enabled() || e.receives.empty()) [[unlikely]] return accept_slow(e, std::move(m));
+  if (!m.synchronous) complete(m.send);
+  Request r = std::move(e.receives.front());
+  e.receives.pop_front();
+  r.state()->data = std::move(m.data);
+  if (m.synchronous) complete(m.send);
+  complete(r);
 }
 
-void Simulation::accept(LinkEnd& e, Message&& m) {
+void Simulation::accept_slow(LinkEnd& e, Message&& m) {
   // Withdrawn by its sender (SimProcess::cancel) while it travelled: the link drops it, after the
   // network and the in-order delivery have finished with it.
   if (m.send.cancelled()) {
@@ -259,6 +221,20 @@ void Simulation::accept(LinkEnd& e, Message&& m) {
   }
 }
 
+void Simulation::deliver(std::int64_t slot) {
+  Message& m = in_flight[slot];  // stays put: nothing parks a message during a delivery
+  if (!m.data.empty()) release_memory(m.src, static_cast<std::int64_t>(m.data.size()), in_flight_kind);
+  const std::int64_t end = m.dst_end;  // its pair is not reused while a message travels to it
+  LinkEnd& e = links.at(end);
+  const std::int64_t seq = m.link_seq;
+  e.order.arrive(seq, std::move(m), [this, &e](Message&& next) { accept(e, std::move(next)); });
+  // Its payload went on (to a receive, the link's queue, the held messages or the pool); the
+  // request it keeps alive must not wait for the slot's reuse.
+  m.send = Request();
+  free_slots.push_back(slot);
+  if (!e.open) links.release_if_done(end);  // the last message to a closed link may free it
+}
+
 Request SimProcess::isend(Link& link, std::span<const std::byte> data) { return post_send(link, data, false); }
 
 void SimProcess::send(Link& link, std::span<const std::byte> data) {
@@ -268,10 +244,15 @@ void SimProcess::send(Link& link, std::span<const std::byte> data) {
 
 Request SimProcess::irecv(Link& link) { return post_receive(link); }
 
-// Inline into recv as well as irecv: a blocking receive is the common case.
-[[gnu::always_inline]] inline Request SimProcess::post_receive(Link& link) {
-  LinkEnd& e = end_of(link, "recv");
+Request SimProcess::post_receive(Link& link) {
   Request req = sim_.requests.take();
+  post_receive(req, link);
+  return req;
+}
+
+// Inline into recv as well as irecv: a blocking receive is the common case.
+[[gnu::always_inline]] inline void SimProcess::post_receive(Request& req, Link& link) {
+  LinkEnd& e = end_of(link, "recv");
   RequestState& s = *req.state();
   s.is_receive = true;
   s.payloads = &sim_.payloads;
@@ -287,22 +268,19 @@ Request SimProcess::irecv(Link& link) { return post_receive(link); }
   } else {
     e.receives.push_back(req);
   }
-  return req;
 }
 
-Bytes SimProcess::recv(Link& link) {
-  Request r = irecv(link);
-  wait_for(*r.state(), "recv", TraceKind::recv);
-  return r.take();
-}
-
-void SimProcess::recv(Link& link, Bytes& into) {
-  Request r = post_receive(link);
-  RequestState& s = *r.state();
-  wait_for(s, "recv", TraceKind::recv);
-  // Request::take_into, with the pool known: into's old storage goes back to it.
-  into.swap(s.data);
-  sim_.payloads.give(std::move(s.data));
+// A receive that completed (or was withdrawn while the run was abandoned) left its link's queue,
+// so only this process holds it; one still queued (the run abandoned) is left there and replaced.
+[[gnu::always_inline]] inline Request& SimProcess::blocking_receive() {
+  if (blocking_receive_.unique()) [[likely]] {
+    RequestState& s = *blocking_receive_.state();
+    s.rearm();
+    s.cpu_charged = false;
+  } else {
+    blocking_receive_ = sim_.requests.take();
+  }
+  return blocking_receive_;
 }
 
 void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {
@@ -313,16 +291,46 @@ void SimProcess::wait_for(RequestState& r, const char* call, TraceKind kind) {
   wait_for_running(r, call, kind);
 }
 
-void SimProcess::wait_for_running(RequestState& r, const char* call, TraceKind kind) {
+void SimProcess::wait_for_running(RequestState& r, const char* call, TraceKind kind) { wait_running(r, call, kind); }
+
+[[gnu::always_inline]] inline void SimProcess::wait_for_receive(RequestState& r) {
+  if (!r.running()) {  // the message was there already
+    if (!r.cancelled()) charge_receive_cpu(r);
+    return;
+  }
+  wait_running(r, "recv", TraceKind::recv);
+}
+
+[[gnu::always_inline]] inline void SimProcess::wait_running(RequestState& r, const char* call, TraceKind kind) {
   const machine::SimTime start = sim_.kernel.now();
-  if (!wait_for_activity(r, call, r.peer)) return;
+  if (!wait_in_line(r, call, r.peer)) return;
   const machine::SimTime end = sim_.kernel.now();
   stats_.comm += end - start;
   if (r.cancelled()) return;  // withdrawn (before the wait, or by another thread meanwhile)
-  if (sim_.trace.enabled() && end > start) {
-    sim_.trace.record({kind, id_, r.peer, start, end, static_cast<std::int64_t>(r.data.size()), -1, call, thread_});
-  }
+  if (sim_.trace.enabled() && end > start) [[unlikely]] trace_wait(r, call, kind, start);
   charge_receive_cpu(r);
+}
+
+// Out of line: the record is built on the stack, which the waits in line need not reserve.
+void SimProcess::trace_wait(const RequestState& r, const char* call, TraceKind kind, machine::SimTime start) {
+  sim_.trace.record({kind, id_, r.peer, start, sim_.kernel.now(), static_cast<std::int64_t>(r.data.size()), -1, call, thread_});
+}
+
+Bytes SimProcess::recv(Link& link) {
+  Request& r = blocking_receive();
+  post_receive(r, link);
+  wait_for_receive(*r.state());
+  return r.take();
+}
+
+void SimProcess::recv(Link& link, Bytes& into) {
+  Request& r = blocking_receive();
+  post_receive(r, link);
+  RequestState& s = *r.state();
+  wait_for_receive(s);
+  // Request::take_into, with the pool known: into's old storage goes back to it.
+  into.swap(s.data);
+  sim_.payloads.give(std::move(s.data));
 }
 
 void SimProcess::charge_receive_cpu(RequestState& r) {

@@ -95,6 +95,7 @@ class SimProcess final : public Processor, public Waiter {
   // Blocks while a is running (until it is done or cancelled); false when the run was abandoned
   // meanwhile (a is then cancelled).
   bool wait_for_activity(Activity& a, const char* call, int peer);
+  bool wait_in_line(Activity& a, const char* call, int peer);  // the same, inline (a receive's wait)
 
   int thread() const { return thread_; }
   bool finished = false;
@@ -110,12 +111,24 @@ class SimProcess final : public Processor, public Waiter {
 
  private:
   Request post_send(Link& link, std::span<const std::byte> data, bool synchronous);
+  [[gnu::noinline]] bool charge_send_cpu(Link& link, std::size_t bytes);
+  [[gnu::noinline, gnu::cold]] Request abandoned_send();
   Request post_receive(Link& link);
+  // Posts a receive on link's end with req (fresh or rearmed) and matches it with an arrived message.
+  void post_receive(Request& req, Link& link);
+  // The request a blocking receive waits on, reused from one receive to the next: once it is over
+  // only this process holds it, and it needs neither the pool nor a reset of every field.
+  Request& blocking_receive();
   LinkEnd& end_of(const Link& link, const char* call);
   // A request that is over already (a delivered isend) costs a test; waiting for one still
   // running is out of line.
   void wait_for(RequestState& r, const char* call, TraceKind kind);
   void wait_for_running(RequestState& r, const char* call, TraceKind kind);
+  // The same wait in line, for a blocking receive, which usually has to wait: no call, no
+  // second frame.
+  void wait_for_receive(RequestState& r);
+  void wait_running(RequestState& r, const char* call, TraceKind kind);
+  [[gnu::noinline]] void trace_wait(const RequestState& r, const char* call, TraceKind kind, machine::SimTime start);
   // Holds one of the node's CPUs for `duration` (compute and the CPU side of communication share
   // them); false when the run was abandoned meanwhile.
   bool occupy_cpu(machine::SimTime duration, std::string_view label);
@@ -133,6 +146,7 @@ class SimProcess final : public Processor, public Waiter {
   // before any process exists and never resizes them.
   ProcessorStats& stats_;
   int node_;
+  Request blocking_receive_;  // empty until the first blocking receive; see blocking_receive()
 };
 
 // options.placement checked to be a permutation of 0..nodes-1; identity when empty.
@@ -199,7 +213,9 @@ class Simulation {
     free_slots.pop_back();
     return slot;
   }
+  // A message delivered in order to its link end: to a waiting receive, else to the end's queue.
   void accept(LinkEnd& e, Message&& m);
+  [[gnu::noinline]] void accept_slow(LinkEnd& e, Message&& m);
   // Declares memory on the node of `processor` (negative: releases). Returns "" when granted,
   // else the out-of-memory report to raise; the first overrun of a run that only warns is kept
   // in memory_warning.
