@@ -215,7 +215,7 @@ struct PrimView {
   const Triangle* triangles;
   int sphere_count;
   explicit PrimView(const PrimitiveArrays& p)
-      : prims(p), triangles(p.triangles.data() - p.sphere_count()), sphere_count(p.sphere_count()) {}
+      : prims(p), triangles(p.triangles.data()), sphere_count(p.sphere_count()) {}
 };
 
 template <int kSigns, int kZ>
@@ -227,7 +227,7 @@ template <int kSigns, int kZ>
     return;
   }
   ++tally.triangles;
-  if (!triangle_surely_missed<kx_of<kSigns, kZ>(), ky_of<kSigns, kZ>(), kZ>(view.triangles[prim], quick.reject))
+  if (!triangle_surely_missed<kx_of<kSigns, kZ>(), ky_of<kSigns, kZ>(), kZ>(view.triangles[prim - view.sphere_count], quick.reject))
     full_triangle_test(view.prims, prim, ray, hit);
 }
 
