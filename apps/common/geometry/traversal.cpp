@@ -302,10 +302,12 @@ void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, cons
   const int octant = slab.negative[0] | slab.negative[1] << 1 | slab.negative[2] << 2;
   // The octant's sign of the dominant axis decides kx and ky as Ray::prepare does, except for a
   // direction of -0 or NaN there: such a ray takes the generic walk.
+  static constexpr int kAxes[2][3][2] = {{{1, 2}, {2, 0}, {0, 1}}, {{2, 1}, {0, 2}, {1, 0}}};  // [negative][kz]: kx, ky
   const int kz = ray.kz;
-  const bool negative = (octant >> kz) & 1;
-  const int kx = negative ? (kz + 2) % 3 : (kz + 1) % 3, ky = negative ? (kz + 1) % 3 : (kz + 2) % 3;
-  if (kx == ray.kx && ky == ray.ky) kByOctantAndAxis[octant][kz](prims, tree, ray, slab, hit, tally);
+  const int* axes = kAxes[(octant >> kz) & 1][kz];
+  // Without triangles the axes are never read: one walk per octant keeps fewer walks warm.
+  if (prims.triangles.empty()) kByOctantAndAxis[octant][2](prims, tree, ray, slab, hit, tally);
+  else if (axes[0] == ray.kx && axes[1] == ray.ky) kByOctantAndAxis[octant][kz](prims, tree, ray, slab, hit, tally);
   else ordered<-1, -1>(prims, tree, ray, slab, hit, tally);
 }
 
