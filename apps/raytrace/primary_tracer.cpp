@@ -59,6 +59,10 @@ void PrimaryTracer::trace_pixel(int x, int y, Hit& hit, TestTally& tally, TraceC
   }
 }
 
+namespace {
+bool packet_capable(Algorithm a) { return a == Algorithm::A2 || a == Algorithm::A3 || a == Algorithm::A4; }
+}  // namespace
+
 const PackedTree* PrimaryTracer::packet_tree() const {
   if (!packets_) return nullptr;
   switch (algorithm_) {
@@ -73,6 +77,23 @@ void PrimaryTracer::trace_pixels(const std::vector<Pixel>& pixels, int x0, int y
                                  TestTally& tally, TraceCounters& counters) {
   auto hit_of = [&](const Pixel& p) -> Hit& { return hits[std::size_t(p.y - y0) * width + (p.x - x0)]; };
   const PackedTree* tree = packet_tree();
+  if (!tree && !packets_ && packet_capable(algorithm_)) {
+    // One ray at a time, the rays still made four at once (the same rays as pixel_ray).
+    const PackedTree& single = algorithm_ == Algorithm::A2 ? bvh_.packed : subtree_.packed;
+    Ray rays[kPacketLanes];
+    int xs[kPacketLanes], ys[kPacketLanes];
+    for (std::size_t first = 0; first < pixels.size(); first += kPacketLanes) {
+      const int n = int(std::min<std::size_t>(kPacketLanes, pixels.size() - first));
+      for (int i = 0; i < n; ++i) xs[i] = pixels[first + i].x, ys[i] = pixels[first + i].y;
+      camera_.pixel_rays(xs, ys, n, rays);
+      for (int i = 0; i < n; ++i) {
+        Hit& hit = hit_of(pixels[first + i]);
+        hit = Hit{};
+        traverse_ordered(scene_, single, rays[i], hit, tally);
+      }
+    }
+    return;
+  }
   if (!tree) {
     for (const Pixel& p : pixels) trace_pixel(p.x, p.y, hit_of(p), tally, counters);
     return;

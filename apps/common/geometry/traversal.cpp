@@ -39,14 +39,25 @@ inline bool negative_axis(const SlabRay& r, int a) {
 }
 
 #if defined(__SSE2__)
+// The ray's slab constants broadcast once per ray, not once per node.
+struct SlabLanes {
+  const SlabRay& ray;
+  __m128 o[3], inv[3], tmin;
+  SlabLanes(const SlabRay& r, float t0)
+      : ray(r),
+        o{_mm_set1_ps(r.o[0]), _mm_set1_ps(r.o[1]), _mm_set1_ps(r.o[2])},
+        inv{_mm_set1_ps(r.inv[0]), _mm_set1_ps(r.inv[1]), _mm_set1_ps(r.inv[2])},
+        tmin(_mm_set1_ps(t0)) {}
+};
+
 template <int kSigns>
-inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, float tmax, float entry[2]) {
-  __m128 t0 = _mm_set1_ps(tmin), t1 = _mm_set1_ps(kInfinity);
+inline unsigned both_children(const PairNode& n, const SlabLanes& r, float tmax, float entry[2]) {
+  __m128 t0 = r.tmin, t1 = _mm_set1_ps(kInfinity);
   for (int a = 0; a < 3; ++a) {
     // (lo0, lo1, hi0, hi1) -> distances; the near pair is in the low or high half.
-    const __m128 t = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.bounds[a]), _mm_set1_ps(r.o[a])), _mm_set1_ps(r.inv[a]));
+    const __m128 t = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.bounds[a]), r.o[a]), r.inv[a]);
     const __m128 swapped = _mm_movehl_ps(t, t);
-    const bool negative = negative_axis<kSigns>(r, a);
+    const bool negative = negative_axis<kSigns>(r.ray, a);
     const __m128 tn = negative ? swapped : t;
     const __m128 tf = negative ? t : swapped;
     t0 = _mm_max_ps(tn, t0);
@@ -54,18 +65,23 @@ inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, f
   }
   const __m128 far = _mm_min_ps(_mm_mul_ps(t1, _mm_set1_ps(1.0f + 2.0f * gamma(3))), _mm_set1_ps(tmax));
   const __m128 near = _mm_mul_ps(t0, _mm_set1_ps(1.0f - 2.0f * gamma(3)));
-  alignas(16) float e[4];
-  _mm_store_ps(e, near);
-  entry[0] = e[0];
-  entry[1] = e[1];
+  entry[0] = _mm_cvtss_f32(near);
+  entry[1] = _mm_cvtss_f32(_mm_shuffle_ps(near, near, _MM_SHUFFLE(1, 1, 1, 1)));
   return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(t0, far))) & 3u;
 }
 #else
+struct SlabLanes {
+  const SlabRay& ray;
+  float tmin;
+  SlabLanes(const SlabRay& r, float t0) : ray(r), tmin(t0) {}
+};
+
 template <int kSigns>
-inline unsigned both_children(const PairNode& n, const SlabRay& r, float tmin, float tmax, float entry[2]) {
+inline unsigned both_children(const PairNode& n, const SlabLanes& lanes, float tmax, float entry[2]) {
+  const SlabRay& r = lanes.ray;
   unsigned mask = 0;
   for (int c = 0; c < 2; ++c) {
-    float t0 = tmin, t1 = kInfinity;
+    float t0 = lanes.tmin, t1 = kInfinity;
     for (int a = 0; a < 3; ++a) {
       float tn = (n.bounds[a][c] - r.o[a]) * r.inv[a];
       float tf = (n.bounds[a][2 + c] - r.o[a]) * r.inv[a];
@@ -135,13 +151,14 @@ bool walk_depth_first(const PackedTree& tree, const Ray& ray, float tmax, TestTa
   ++tally.boxes;
   if (!intersect_box(tree.root_box, ray, tmax, &entry)) return false;
   const SlabRay slab(ray);
+  const SlabLanes lanes(slab, ray.tmin);
   NodeRef stack[kStackSize];
   int top = 0;
   stack[top++] = tree.root;
   while (top > 0) {
     const PairNode& n = tree.nodes[stack[--top]];
     float entries[2];
-    const unsigned mask = both_children<-1>(n, slab, ray.tmin, tmax, entries);
+    const unsigned mask = both_children<-1>(n, lanes, tmax, entries);
     for (int i = 1; i >= 0; --i) {  // push the second child first: the first is visited first
       const NodeRef c = n.child[i];
       if (is_primitive(c)) {
@@ -167,65 +184,131 @@ void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, co
 
 namespace {
 
-template <int kSigns>
-void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, const SlabRay& slab, Hit& hit,
-             TestTally& tally) {
-  if (tree.empty) return;
-  if (is_primitive(tree.root)) {
-    test_primitive(prims, primitive_of(tree.root), ray, hit, tally);
+// The rare and long parts of a primitive test, out of line so that the walk's loop keeps its
+// registers: a sphere, and a triangle the SSE rejection could not rule out. The caller counts.
+[[gnu::noinline]] void sphere_test(const PrimitiveArrays& prims, int prim, const SphereRay& ray, Hit& hit) {
+  float t;
+  if (intersect_sphere(prims.spheres[prim], ray, hit.t, &t)) hit.offer(t, prim);
+}
+
+[[gnu::noinline]] void full_triangle_test(const PrimitiveArrays& prims, int prim, const Ray& ray, Hit& hit) {
+  float t, b1 = 0, b2 = 0;
+  if (intersect_triangle(prims.triangle(prim), ray, hit.t, &t, &b1, &b2)) hit.offer(t, prim, b1, b2);
+}
+
+// test_quickly with the counts in the walk's own locals and only the rejection inline.
+struct OrderedTally {
+  std::int64_t boxes = 0, spheres = 0, triangles = 0, sorts = 0;
+};
+
+// The ray's triangle axes (Ray::prepare) for octant kSigns when kZ is the dominant axis; -1 for
+// the generic walk, which reads them from the ray.
+template <int kSigns, int kZ>
+constexpr int kx_of() { return kZ < 0 ? -1 : ((kSigns >> kZ) & 1) ? (kZ + 2) % 3 : (kZ + 1) % 3; }
+template <int kSigns, int kZ>
+constexpr int ky_of() { return kZ < 0 ? -1 : ((kSigns >> kZ) & 1) ? (kZ + 1) % 3 : (kZ + 2) % 3; }
+
+// The arrays' pointers read once per ray: the out-of-line tests might, for all the compiler
+// knows, change the vectors.
+struct PrimView {
+  const PrimitiveArrays& prims;
+  const Triangle* triangles;
+  int sphere_count;
+  explicit PrimView(const PrimitiveArrays& p)
+      : prims(p), triangles(p.triangles.data()), sphere_count(p.sphere_count()) {}
+};
+
+template <int kSigns, int kZ>
+[[gnu::always_inline]] inline void test_in_walk(const PrimView& view, int prim, const Ray& ray, const QuickRay& quick,
+                                                Hit& hit, OrderedTally& tally) {
+  if (prim < view.sphere_count) {
+    ++tally.spheres;
+    sphere_test(view.prims, prim, quick.sphere, hit);
     return;
   }
+  ++tally.triangles;
+  if (!triangle_surely_missed<kx_of<kSigns, kZ>(), ky_of<kSigns, kZ>(), kZ>(view.triangles[prim - view.sphere_count], quick.reject))
+    full_triangle_test(view.prims, prim, ray, hit);
+}
+
+template <int kSigns, int kZ>
+void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, const SlabRay& slab, Hit& hit,
+             TestTally& counts) {
+  if (tree.empty) return;
+  if (is_primitive(tree.root)) {
+    test_primitive(prims, primitive_of(tree.root), ray, hit, counts);
+    return;
+  }
+  OrderedTally tally;  // locals: the primitive tests cannot alias them
   struct Entry { NodeRef node; float entry; };
   Entry stack[kStackSize];
   int top = 0;
   float entry;
   ++tally.boxes;
-  if (!intersect_box(tree.root_box, ray, hit.t, &entry)) return;
-  const QuickRay quick(ray, tree.root_box, !prims.triangles.empty());
-  stack[top++] = {tree.root, entry};
-  while (top > 0) {
-    const Entry e = stack[--top];
-    if (e.entry > hit.t) continue;  // figure 3: a nearer primitive was found meanwhile
-    const PairNode& n = tree.nodes[e.node];
-    Entry found[2];
-    int count = 0;
-    // Primitive children first: their hits tighten the distance the boxes are tested against.
-    const bool prim0 = is_primitive(n.child[0]), prim1 = is_primitive(n.child[1]);
-    if (prim0) test_quickly(prims, primitive_of(n.child[0]), ray, quick, hit, tally);
-    if (prim1) test_quickly(prims, primitive_of(n.child[1]), ray, quick, hit, tally);
-    if (!(prim0 && prim1)) {
-      float entries[2];
-      const unsigned mask = both_children<kSigns>(n, slab, ray.tmin, hit.t, entries);
-      for (int i = 0; i < 2; ++i) {
-        if (i == 0 ? prim0 : prim1) continue;
-        ++tally.boxes;
-        if (mask >> i & 1u) found[count++] = {n.child[i], entries[i]};
+  if (intersect_box(tree.root_box, ray, hit.t, &entry)) {
+    const QuickRay quick(ray, tree.root_box, !prims.triangles.empty());
+    const SlabLanes lanes(slab, ray.tmin);
+    const PrimView view(prims);
+    stack[top++] = {tree.root, entry};
+    while (top > 0) {
+      const Entry e = stack[--top];
+      if (e.entry > hit.t) continue;  // figure 3: a nearer primitive was found meanwhile
+      const PairNode& n = tree.nodes[e.node];
+      Entry found[2];
+      int count = 0;
+      // Primitive children first: their hits tighten the distance the boxes are tested against.
+      const bool prim0 = is_primitive(n.child[0]), prim1 = is_primitive(n.child[1]);
+      if (prim0) test_in_walk<kSigns, kZ>(view, primitive_of(n.child[0]), ray, quick, hit, tally);
+      if (prim1) test_in_walk<kSigns, kZ>(view, primitive_of(n.child[1]), ray, quick, hit, tally);
+      if (!(prim0 && prim1)) {
+        float entries[2];
+        const unsigned mask = both_children<kSigns>(n, lanes, hit.t, entries);
+        for (int i = 0; i < 2; ++i) {
+          if (i == 0 ? prim0 : prim1) continue;
+          ++tally.boxes;
+          if (mask >> i & 1u) found[count++] = {n.child[i], entries[i]};
+        }
       }
-    }
-    if (count == 2) {
-      ++tally.sorts;  // a binary tree sorts its children with one comparison (2.2.2)
-      if (found[0].entry < found[1].entry) std::swap(found[0], found[1]);
-      if (top + 2 <= kStackSize) {
-        stack[top++] = found[0];  // farther, visited second
-        stack[top++] = found[1];
+      if (count == 2) {
+        ++tally.sorts;  // a binary tree sorts its children with one comparison (2.2.2)
+        if (found[0].entry < found[1].entry) std::swap(found[0], found[1]);
+        if (top + 2 <= kStackSize) {
+          stack[top++] = found[0];  // farther, visited second
+          stack[top++] = found[1];
+        }
+      } else if (count == 1 && top < kStackSize) {
+        stack[top++] = found[0];
       }
-    } else if (count == 1 && top < kStackSize) {
-      stack[top++] = found[0];
     }
   }
+  counts.boxes += tally.boxes;
+  counts.spheres += tally.spheres;
+  counts.triangles += tally.triangles;
+  counts.sorts += tally.sorts;
 }
 
 }  // namespace
 
 void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+  // One walk per ray octant and dominant axis, so that neither the slab test's near/far choice
+  // nor the triangle rejection's axis permutation is read at run time.
   using Walk = void (*)(const PrimitiveArrays&, const PackedTree&, const Ray&, const SlabRay&, Hit&, TestTally&);
-  static constexpr Walk kByOctant[8] = {ordered<0>, ordered<1>, ordered<2>, ordered<3>,
-                                        ordered<4>, ordered<5>, ordered<6>, ordered<7>};
+#define GCSIM_OCTANT(s) ordered<s, 0>, ordered<s, 1>, ordered<s, 2>
+  static constexpr Walk kByOctantAndAxis[8][3] = {{GCSIM_OCTANT(0)}, {GCSIM_OCTANT(1)}, {GCSIM_OCTANT(2)},
+                                                  {GCSIM_OCTANT(3)}, {GCSIM_OCTANT(4)}, {GCSIM_OCTANT(5)},
+                                                  {GCSIM_OCTANT(6)}, {GCSIM_OCTANT(7)}};
+#undef GCSIM_OCTANT
   const SlabRay slab(ray);
   const int octant = slab.negative[0] | slab.negative[1] << 1 | slab.negative[2] << 2;
-  TestTally local = tally;  // kept in registers: the caller's may alias what the tests write
-  kByOctant[octant](prims, tree, ray, slab, hit, local);
-  tally = local;
+  // The octant's sign of the dominant axis decides kx and ky as Ray::prepare does, except for a
+  // direction of -0 or NaN there: such a ray takes the generic walk.
+  static constexpr int kAxes[2][3][2] = {{{1, 2}, {2, 0}, {0, 1}}, {{2, 1}, {0, 2}, {1, 0}}};  // [negative][kz]: kx, ky
+  const int kz = ray.kz;
+  const int* axes = kAxes[(octant >> kz) & 1][kz];
+  // Without triangles the axes are never read: one walk per octant keeps fewer walks warm.
+  if (prims.triangles.empty()) kByOctantAndAxis[octant][2](prims, tree, ray, slab, hit, tally);
+  else if (axes[0] == ray.kx && axes[1] == ray.ky) kByOctantAndAxis[octant][kz](prims, tree, ray, slab, hit, tally);
+  else ordered<-1, -1>(prims, tree, ray, slab, hit, tally);
 }
 
 bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally) {

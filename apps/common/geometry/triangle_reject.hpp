@@ -53,7 +53,10 @@ struct TriangleRejectRay {
   glm::vec3 origin;
 };
 
-// True only if intersect_triangle(tri, ray, ...) surely returns false for any tmax.
+// True only if intersect_triangle(tri, ray, ...) surely returns false for any tmax. kX, kY, kZ:
+// the ray's kx, ky, kz when the caller knows them at compile time (the vertex rows then stay in
+// registers), -1 to read them from r.
+template <int kX = -1, int kY = -1, int kZ = -1>
 inline bool triangle_surely_missed(const Triangle& tri, const TriangleRejectRay& r) {
   const float* p = &tri.p0.x;
   // Rows p0, p1, p2 (lane 3 unused), all loads inside the 36 bytes of the triangle.
@@ -75,9 +78,9 @@ inline bool triangle_surely_missed(const Triangle& tri, const TriangleRejectRay&
 
   // Permute and shear (ax = a[kx] + sx * a[kz], ...), then e_i = x_j y_k - y_j x_k over the
   // cyclic rotations (j, k) = (b, c), (c, a), (a, b).
-  const __m128 z = v[r.kz];
-  const __m128 x = _mm_add_ps(v[r.kx], _mm_mul_ps(r.shear_x, z));
-  const __m128 y = _mm_add_ps(v[r.ky], _mm_mul_ps(r.shear_y, z));
+  const __m128 z = v[kZ < 0 ? r.kz : kZ];
+  const __m128 x = _mm_add_ps(v[kX < 0 ? r.kx : kX], _mm_mul_ps(r.shear_x, z));
+  const __m128 y = _mm_add_ps(v[kY < 0 ? r.ky : kY], _mm_mul_ps(r.shear_y, z));
   const __m128 x1 = _mm_shuffle_ps(x, x, _MM_SHUFFLE(3, 0, 2, 1)), x2 = _mm_shuffle_ps(x, x, _MM_SHUFFLE(3, 1, 0, 2));
   const __m128 y1 = _mm_shuffle_ps(y, y, _MM_SHUFFLE(3, 0, 2, 1)), y2 = _mm_shuffle_ps(y, y, _MM_SHUFFLE(3, 1, 0, 2));
   const __m128 e = _mm_sub_ps(_mm_mul_ps(x1, y2), _mm_mul_ps(y1, x2));
@@ -96,6 +99,7 @@ struct TriangleRejectRay {
   explicit TriangleRejectRay(const Ray&) {}
   void assume_within(const Bounds3&) {}
 };
+template <int kX = -1, int kY = -1, int kZ = -1>
 inline bool triangle_surely_missed(const Triangle&, const TriangleRejectRay&) { return false; }
 
 #endif
