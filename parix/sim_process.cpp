@@ -184,7 +184,7 @@ Request SimProcess::abandoned_send() {
   if (m.send.cancelled() || trace.enabled() || e.receives.empty()) [[unlikely]] return accept_slow(e, std::move(m));
   if (!m.synchronous) complete(m.send);
   Request r = std::move(e.receives.front());
-  e.receives.pop_front();
+  e.receives.drop_front();
   r.state()->data = std::move(m.data);
   if (m.synchronous) complete(m.send);
   complete(r);
@@ -204,7 +204,7 @@ void Simulation::accept_slow(LinkEnd& e, Message&& m) {
   if (!m.synchronous) complete(m.send);
   if (!e.receives.empty()) {
     Request r = std::move(e.receives.front());
-    e.receives.pop_front();
+    e.receives.drop_front();
     r.state()->data = std::move(m.data);
     if (m.synchronous) complete(m.send);
     complete(r);
@@ -259,12 +259,14 @@ Request SimProcess::post_receive(Link& link) {
   s.link = link.handle();
   s.peer = e.peer;
   if (!e.arrived.empty()) {
-    Message m = std::move(e.arrived.front());
-    e.arrived.pop_front();
+    // Taken in its slot, not moved out: the slot keeps an empty payload and a null request.
+    Message& m = e.arrived.front();
     if (!m.data.empty()) sim_.release_memory(id_, static_cast<std::int64_t>(m.data.size()), sim_.received_kind);
     s.data = std::move(m.data);
     s.complete();
     if (m.synchronous) sim_.complete(m.send);
+    m.send = Request();
+    e.arrived.drop_front();
   } else {
     e.receives.push_back(req);
   }
