@@ -20,12 +20,12 @@ class Fifo {
   std::size_t slots() const { return items_.size(); }  // storage held: 0 until first used, then its peak
   T& front() { return items_[head_]; }
   void push_back(T&& value) {
-    if (size_ == items_.size()) [[unlikely]] grow();
+    if (size_ == capacity_) [[unlikely]] grow();
     items_[(head_ + size_) & mask_] = std::move(value);
     ++size_;
   }
   void push_back(const T& value) {
-    if (size_ == items_.size()) [[unlikely]] grow();
+    if (size_ == capacity_) [[unlikely]] grow();
     items_[(head_ + size_) & mask_] = value;
     ++size_;
   }
@@ -58,11 +58,13 @@ class Fifo {
     for (std::size_t i = 0; i < size_; ++i) bigger[i] = std::move(items_[(head_ + i) & mask_]);
     items_.swap(bigger);
     head_ = 0;
-    mask_ = items_.size() - 1;
+    capacity_ = items_.size();
+    mask_ = capacity_ - 1;
   }
   std::vector<T> items_;
   std::size_t head_ = 0;
   std::size_t size_ = 0;
+  std::size_t capacity_ = 0;  // items_.size(), kept: the vector's size divides by sizeof(T)
   std::size_t mask_ = 0;
 };
 

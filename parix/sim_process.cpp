@@ -221,7 +221,7 @@ void Simulation::hold(LinkEnd& e, Message&& m) {
       failure = std::make_exception_ptr(OutOfMemoryError(refusal(e.owner, bytes, received_kind)));
     }
   }
-  e.arrived.push_back(std::move(m));
+  e.arrived.push_back({std::move(m.data), std::move(m.send), m.synchronous});
 }
 
 void Simulation::deliver(std::int64_t slot) {
@@ -263,7 +263,7 @@ Request SimProcess::post_receive(Link& link) {
   s.peer = e.peer;
   if (!e.arrived.empty()) {
     // Taken in its slot, not moved out: the slot keeps an empty payload and a null request.
-    Message& m = e.arrived.front();
+    HeldMessage& m = e.arrived.front();
     if (!m.data.empty()) sim_.release_memory(id_, static_cast<std::int64_t>(m.data.size()), sim_.received_kind);
     s.data = std::move(m.data);
     s.complete();

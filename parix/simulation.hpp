@@ -51,6 +51,14 @@ struct Message {
   machine::SimTime sent = 0;
 };
 
+// A message waiting in its link end's queue: what a receive needs of it, half a Message, which
+// the queue moves in and, while it grows, around.
+struct HeldMessage {
+  Bytes data;
+  Request send;  // completed when received, if synchronous (else it was on arrival)
+  bool synchronous = false;
+};
+
 // One end of a virtual link.
 struct LinkEnd {
   int owner = -1;
@@ -59,7 +67,7 @@ struct LinkEnd {
   bool open = true;
   std::int64_t sent = 0;                                 // messages sent from this end
   InOrderDelivery<Message> order;                        // holds messages that overtook a predecessor
-  Fifo<Message> arrived;                                 // delivered, not yet received
+  Fifo<HeldMessage> arrived;                             // delivered, not yet received
   Fifo<Request> receives;                                // posted, waiting for a message
   // Nothing the peer sent is still travelling or held, and nothing waits here: the slot may go.
   bool idle(const LinkEnd& peer) const {
