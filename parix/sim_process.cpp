@@ -178,9 +178,21 @@ Request SimProcess::abandoned_send() {
   return req;
 }
 
+// Inline into accept: costs the 64-node ring 1 instruction a message, saves the 4096-node one 16.
+inline void Simulation::hold(LinkEnd& e, Message&& m) {
+  // Held by the receiver's node until a receive takes it. A node out of memory here fails the
+  // run as soon as this event is over (the kernel's loop stops on a failure).
+  if (!m.data.empty()) {
+    const auto bytes = static_cast<std::int64_t>(m.data.size());
+    if (!declare_memory(e.owner, bytes, received_kind) && !failure) [[unlikely]] {
+      failure = std::make_exception_ptr(OutOfMemoryError(refusal(e.owner, bytes, received_kind)));
+    }
+  }
+  e.arrived.push_back({std::move(m.data), std::move(m.send), m.synchronous});
+}
+
 // Inline into deliver: an untraced arrival, to a receive waiting for it or to the queue (a large
-// ring's messages mostly arrive first). A withdrawn message or a trace is out of line, and so is
-// the queueing itself, so deliver saves few registers.
+// ring's messages mostly arrive first). A withdrawn message or a trace is out of line.
 [[gnu::always_inline]] inline void Simulation::accept(LinkEnd& e, Message&& m) {
   if (m.send.cancelled() || trace.enabled()) [[unlikely]] return accept_slow(e, std::move(m));
   if (!m.synchronous) complete(m.send);
@@ -210,18 +222,6 @@ void Simulation::accept_slow(LinkEnd& e, Message&& m) {
   r.state()->data = std::move(m.data);
   if (m.synchronous) complete(m.send);
   complete(r);
-}
-
-void Simulation::hold(LinkEnd& e, Message&& m) {
-  // Held by the receiver's node until a receive takes it. A node out of memory here fails the
-  // run as soon as this event is over (the kernel's loop stops on a failure).
-  if (!m.data.empty()) {
-    const auto bytes = static_cast<std::int64_t>(m.data.size());
-    if (!declare_memory(e.owner, bytes, received_kind) && !failure) [[unlikely]] {
-      failure = std::make_exception_ptr(OutOfMemoryError(refusal(e.owner, bytes, received_kind)));
-    }
-  }
-  e.arrived.push_back({std::move(m.data), std::move(m.send), m.synchronous});
 }
 
 void Simulation::deliver(std::int64_t slot) {

@@ -225,7 +225,7 @@ class Simulation {
   void accept(LinkEnd& e, Message&& m);
   [[gnu::noinline]] void accept_slow(LinkEnd& e, Message&& m);  // withdrawn or traced
   // Queues m at e until a receive takes it (its send, if asynchronous, completed already).
-  [[gnu::noinline]] void hold(LinkEnd& e, Message&& m);
+  [[gnu::always_inline]] inline void hold(LinkEnd& e, Message&& m);
   // Declares memory on the node of `processor` (negative: releases). Returns "" when granted,
   // else the out-of-memory report to raise; the first overrun of a run that only warns is kept
   // in memory_warning.
