@@ -29,6 +29,12 @@ class Fifo {
     items_[(head_ + size_) & mask_] = value;
     ++size_;
   }
+  // A new back slot, holding a moved-from value or a default one, for the caller to fill in place
+  // (no temporary to move in).
+  T& append() {
+    if (size_ == capacity_) [[unlikely]] grow();
+    return items_[(head_ + size_++) & mask_];
+  }
   // Removes the front, whose contents the caller has moved out (or released): its slot keeps the
   // moved-from value until a push_back overwrites it.
   void drop_front() {

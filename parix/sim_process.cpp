@@ -188,7 +188,10 @@ inline void Simulation::hold(LinkEnd& e, Message&& m) {
       failure = std::make_exception_ptr(OutOfMemoryError(refusal(e.owner, bytes, received_kind)));
     }
   }
-  e.arrived.push_back({std::move(m.data), std::move(m.send), m.synchronous});
+  HeldMessage& held = e.arrived.append();
+  held.data = std::move(m.data);
+  held.send = std::move(m.send);
+  held.synchronous = m.synchronous;
 }
 
 // Inline into deliver: an untraced arrival, to a receive waiting for it or to the queue (a large
