@@ -124,6 +124,7 @@ class SimProcess final : public Processor, public Waiter {
   Request post_receive(Link& link);
   // Posts a receive on link's end with req (fresh or rearmed) and matches it with an arrived message.
   void post_receive(Request& req, Link& link);
+  void post_receive(Request& req, LinkEnd& e, const Link& link);  // e: link's end, checked
   // The request a blocking receive waits on, reused from one receive to the next: once it is over
   // only this process holds it, and it needs neither the pool nor a reset of every field.
   Request& blocking_receive();
@@ -249,6 +250,18 @@ class Simulation {
     return memory.report(processor, bytes, memory.kind_name(kind));
   }
   void complete(const Request& r) { r.state()->complete(); }
+  // A blocking receive by processor `receiver` that finds e's front message there: what the
+  // receive's request would do with it, without the request (SimProcess::post_receive, then
+  // Request::take_into). into's old storage goes back to the pool.
+  void take_held(LinkEnd& e, int receiver, Bytes& into) {
+    HeldMessage& m = e.arrived.front();
+    if (!m.data.empty()) release_memory(receiver, static_cast<std::int64_t>(m.data.size()), received_kind);
+    into.swap(m.data);
+    if (m.synchronous) complete(m.send);
+    m.send = Request();
+    e.arrived.drop_front();
+    payloads.give(std::move(m.data));  // leaves the slot's payload empty
+  }
 
 
   std::string deadlock_report() const;
