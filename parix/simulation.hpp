@@ -51,6 +51,14 @@ struct Message {
   machine::SimTime sent = 0;
 };
 
+// A message waiting in its link end's queue: what a receive needs of it, half a Message, which
+// the queue moves in and, while it grows, around.
+struct HeldMessage {
+  Bytes data;
+  Request send;  // completed when received, if synchronous (else it was on arrival)
+  bool synchronous = false;
+};
+
 // One end of a virtual link.
 struct LinkEnd {
   int owner = -1;
@@ -59,7 +67,7 @@ struct LinkEnd {
   bool open = true;
   std::int64_t sent = 0;                                 // messages sent from this end
   InOrderDelivery<Message> order;                        // holds messages that overtook a predecessor
-  Fifo<Message> arrived;                                 // delivered, not yet received
+  Fifo<HeldMessage> arrived;                             // delivered, not yet received
   Fifo<Request> receives;                                // posted, waiting for a message
   // Nothing the peer sent is still travelling or held, and nothing waits here: the slot may go.
   bool idle(const LinkEnd& peer) const {
@@ -116,6 +124,7 @@ class SimProcess final : public Processor, public Waiter {
   Request post_receive(Link& link);
   // Posts a receive on link's end with req (fresh or rearmed) and matches it with an arrived message.
   void post_receive(Request& req, Link& link);
+  void post_receive(Request& req, LinkEnd& e, const Link& link);  // e: link's end, checked
   // The request a blocking receive waits on, reused from one receive to the next: once it is over
   // only this process holds it, and it needs neither the pool nor a reset of every field.
   Request& blocking_receive();
@@ -215,7 +224,9 @@ class Simulation {
   }
   // A message delivered in order to its link end: to a waiting receive, else to the end's queue.
   void accept(LinkEnd& e, Message&& m);
-  [[gnu::noinline]] void accept_slow(LinkEnd& e, Message&& m);
+  [[gnu::noinline]] void accept_slow(LinkEnd& e, Message&& m);  // withdrawn or traced
+  // Queues m at e until a receive takes it (its send, if asynchronous, completed already).
+  [[gnu::always_inline]] inline void hold(LinkEnd& e, Message&& m);
   // Declares memory on the node of `processor` (negative: releases). Returns "" when granted,
   // else the out-of-memory report to raise; the first overrun of a run that only warns is kept
   // in memory_warning.
@@ -239,6 +250,18 @@ class Simulation {
     return memory.report(processor, bytes, memory.kind_name(kind));
   }
   void complete(const Request& r) { r.state()->complete(); }
+  // A blocking receive by processor `receiver` that finds e's front message there: what the
+  // receive's request would do with it, without the request (SimProcess::post_receive, then
+  // Request::take_into). into's old storage goes back to the pool.
+  void take_held(LinkEnd& e, int receiver, Bytes& into) {
+    HeldMessage& m = e.arrived.front();
+    if (!m.data.empty()) release_memory(receiver, static_cast<std::int64_t>(m.data.size()), received_kind);
+    into.swap(m.data);
+    if (m.synchronous) complete(m.send);
+    m.send = Request();
+    e.arrived.drop_front();
+    payloads.give(std::move(m.data));  // leaves the slot's payload empty
+  }
 
 
   std::string deadlock_report() const;

@@ -88,7 +88,7 @@ TEST(Fifo, KeepsOrderAndHoldsNothingUntilUsed) {
     q.pop_front();
   }
   EXPECT_EQ(next_out, next_in);
-  EXPECT_EQ(q.slots(), 0u);
+  EXPECT_EQ(q.slots(), 8u);  // kept for the next use: its peak of 5, rounded up to a power of two
 }
 
 TEST(Fifo, AQueueThatNeverEmptiesStaysBounded) {
@@ -117,7 +117,29 @@ TEST(Fifo, EraseIfKeepsTheOthersInOrder) {
   q.push_back(1);
   q.erase_if([](int) { return true; });
   EXPECT_TRUE(q.empty());
-  EXPECT_EQ(q.slots(), 0u);
+  q.push_back(11);  // the slots are reused, from wherever the front stands
+  q.push_back(12);
+  EXPECT_EQ(q.front(), 11);
+  q.pop_front();
+  EXPECT_EQ(q.front(), 12);
+  EXPECT_EQ(q.slots(), 16u);
+}
+
+TEST(Fifo, KeepsOrderWhenItGrowsWrappedAround) {
+  Fifo<std::unique_ptr<int>> q;
+  int next_in = 0, next_out = 0;
+  for (int round = 0; round < 20; ++round) {  // the front moves on while the queue deepens
+    for (int k = 0; k < 3; ++k) q.push_back(std::make_unique<int>(next_in++));
+    ASSERT_EQ(*q.front(), next_out++);
+    q.pop_front();
+  }
+  while (!q.empty()) {
+    ASSERT_EQ(*q.front(), next_out++);
+    q.front().reset();  // moved out (here: released) by the caller, then dropped
+    q.drop_front();
+  }
+  EXPECT_EQ(next_out, next_in);
+  EXPECT_EQ(q.slots(), 64u);  // the peak of 40, rounded up
 }
 
 TEST(DeadlockReport, NamesEachBlockedProcessCallAndPeer) {
