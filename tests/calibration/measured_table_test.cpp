@@ -9,12 +9,17 @@
 #include <utility>
 #include <vector>
 #include <fstream>
+#include "tests/support/scratch_path.hpp"
 
 namespace gcsim::calibration {
 namespace {
 
 std::filesystem::path write_temp(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / "gcsim_calibration_test";
+  static const struct Dir {  // removed when the test program exits
+    std::filesystem::path path = test_support::scratch_path("gcsim_calibration_test");
+    ~Dir() { std::filesystem::remove_all(path); }
+  } scratch;
+  const auto& dir = scratch.path;
   std::filesystem::create_directories(dir);
   std::ofstream(dir / name) << text;
   return dir / name;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "apps/common/scene/scene_file.hpp"
+#include "tests/support/scratch_path.hpp"
 
 namespace gcsim::scene {
 namespace {
@@ -17,8 +18,8 @@ namespace fs = std::filesystem;
 class SceneFileTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("gcsim-scene-file-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir_ = test_support::scratch_path("gcsim-scene-file-" +
+                                      std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "machine/machine_config.hpp"
+#include "tests/support/scratch_path.hpp"
 
 namespace gcsim::machine {
 namespace {
@@ -18,8 +19,8 @@ namespace fs = std::filesystem;
 class Inheritance : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("gcsim_inherit_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir_ = test_support::scratch_path("gcsim_inherit_" +
+                                      std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

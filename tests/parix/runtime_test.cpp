@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include "tests/support/scratch_path.hpp"
 
 namespace gcsim::parix {
 namespace {
@@ -290,7 +291,7 @@ std::string slurp(const std::string& path) {
 }
 
 TEST(Runtime, IdenticalRunsGiveIdenticalResultsAndTraces) {
-  const auto dir = std::filesystem::temp_directory_path() / "gcsim_runtime_test";
+  const auto dir = test_support::scratch_path("gcsim_runtime_test");
   std::filesystem::create_directories(dir);
   RunResult r[2];
   for (int i = 0; i < 2; ++i) {
@@ -305,6 +306,7 @@ TEST(Runtime, IdenticalRunsGiveIdenticalResultsAndTraces) {
   EXPECT_GT(a.size(), 1000u);
   EXPECT_EQ(a, b);
   EXPECT_EQ(slurp((dir / "run0.csv").string()), slurp((dir / "run1.csv").string()));
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Runtime, ReportsStatsPerProcessor) {

@@ -17,6 +17,7 @@
 #include "parix/backend.hpp"
 #include "tests/support/published_machine.hpp"
 #include "test_scenes.hpp"
+#include "tests/support/scratch_path.hpp"
 
 namespace gcsim::radiosity {
 namespace {
@@ -133,7 +134,7 @@ std::string file_bytes(const std::filesystem::path& p) {
 TEST(HostThreads, TracesAreTheSameByteForByte) {
   const Scene scene = testing::lit_room();
   ParallelOptions o = small_options(kVariants[0]);
-  const auto dir = std::filesystem::temp_directory_path() / "gcsim_host_threads_trace";
+  const auto dir = test_support::scratch_path("gcsim_host_threads_trace");
   std::filesystem::create_directories(dir);
   for (int threads : {1, 4}) {
     o.host_threads = threads;

@@ -8,6 +8,7 @@
 #include "apps/radiosity/builtin_scenes.hpp"
 #include "apps/radiosity/progressive_solver.hpp"
 #include "apps/common/scene/world_loader.hpp"
+#include "tests/support/scratch_path.hpp"
 
 namespace gcsim::radiosity {
 namespace {
@@ -144,7 +145,7 @@ TEST(WorldParser, WorldErrorsNameTheFile) {
             "bad.wld:5: expected entity file name, COMMENT, CAMERA or 'END_FILE', found end of file");
   EXPECT_EQ(err("WORLD w\nEND_FILE\n"), "bad.wld:2: world has no instances");
   // An error inside an entity names the entity file.
-  auto dir = std::filesystem::temp_directory_path() / "gcsim_radiosity_parser_test";
+  auto dir = test_support::scratch_path("gcsim_radiosity_parser_test");
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "broken.ent") << "ENTITY b\nVERTEX\n< 0 0 0\nEND_VERT\n";
   try {

@@ -14,6 +14,7 @@
 #include "apps/raytrace/camera.hpp"
 #include "apps/raytrace/framing.hpp"
 #include "apps/raytrace/lower_scene.hpp"
+#include "tests/support/scratch_path.hpp"
 
 namespace gcsim::raytrace {
 namespace {
@@ -182,7 +183,7 @@ TEST(BuiltinDescriptions, WhittedFromATomlFileIsTheBuiltInBarItsTeapot) {
 
 // One path: a .toml or .obj path given to load_scene is the description lowered.
 TEST(BuiltinDescriptions, LoadSceneTakesBuiltInsObjAndTomlFiles) {
-  const fs::path dir = fs::temp_directory_path() / "gcsim-raytrace-load-scene";
+  const fs::path dir = test_support::scratch_path("gcsim-raytrace-load-scene");
   fs::create_directories(dir);
   std::ofstream(dir / "w.toml") << kWhittedToml;
   std::ofstream(dir / "tri.OBJ") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
