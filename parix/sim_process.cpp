@@ -194,10 +194,7 @@ inline void Simulation::hold(LinkEnd& e, Message&& m) {
   held.synchronous = m.synchronous;
 }
 
-// Inline into deliver: an untraced arrival, to a receive waiting for it or to the queue (a large
-// ring's messages mostly arrive first). A withdrawn message or a trace is out of line.
-[[gnu::always_inline]] inline void Simulation::accept(LinkEnd& e, Message&& m) {
-  if (m.send.cancelled() || trace.enabled()) [[unlikely]] return accept_slow(e, std::move(m));
+inline void Simulation::hand_over(LinkEnd& e, Message&& m) {
   if (!m.synchronous) complete(m.send);
   if (e.receives.empty()) return hold(e, std::move(m));
   Request r = std::move(e.receives.front());
@@ -205,6 +202,13 @@ inline void Simulation::hold(LinkEnd& e, Message&& m) {
   r.state()->data = std::move(m.data);
   if (m.synchronous) complete(m.send);
   complete(r);
+}
+
+// Inline into deliver: an untraced arrival, to a receive waiting for it or to the queue (a large
+// ring's messages mostly arrive first). A withdrawn message or a trace is out of line.
+[[gnu::always_inline]] inline void Simulation::accept(LinkEnd& e, Message&& m) {
+  if (m.send.cancelled() || trace.enabled()) [[unlikely]] return accept_slow(e, std::move(m));
+  hand_over(e, std::move(m));
 }
 
 void Simulation::accept_slow(LinkEnd& e, Message&& m) {
@@ -218,13 +222,7 @@ void Simulation::accept_slow(LinkEnd& e, Message&& m) {
     trace.record({TraceKind::message, m.src, e.owner, m.sent, kernel.now(), static_cast<std::int64_t>(m.data.size()),
                   m.id, "message"});
   }
-  if (!m.synchronous) complete(m.send);
-  if (e.receives.empty()) return hold(e, std::move(m));
-  Request r = std::move(e.receives.front());
-  e.receives.drop_front();
-  r.state()->data = std::move(m.data);
-  if (m.synchronous) complete(m.send);
-  complete(r);
+  hand_over(e, std::move(m));
 }
 
 void Simulation::deliver(std::int64_t slot) {

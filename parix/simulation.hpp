@@ -225,6 +225,8 @@ class Simulation {
   // A message delivered in order to its link end: to a waiting receive, else to the end's queue.
   void accept(LinkEnd& e, Message&& m);
   [[gnu::noinline]] void accept_slow(LinkEnd& e, Message&& m);  // withdrawn or traced
+  // Completes an asynchronous send, then gives m to e's first waiting receive, or holds it.
+  [[gnu::always_inline]] inline void hand_over(LinkEnd& e, Message&& m);
   // Queues m at e until a receive takes it (its send, if asynchronous, completed already).
   [[gnu::always_inline]] inline void hold(LinkEnd& e, Message&& m);
   // Declares memory on the node of `processor` (negative: releases). Returns "" when granted,

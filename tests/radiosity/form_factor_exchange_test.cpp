@@ -9,8 +9,6 @@
 
 #include "apps/radiosity/form_factor_exchange.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
-#include "parix/backend.hpp"
-#include "tests/support/published_machine.hpp"
 #include "test_scenes.hpp"
 
 namespace gcsim::radiosity {
@@ -22,30 +20,18 @@ TEST(FormFactorExchange, NamesParseBackAndUnknownOnesAreRefused) {
   EXPECT_THROW(parse_form_factor_exchange("joint"), std::invalid_argument);
 }
 
-struct ExchangeRun {
-  ParallelOutcome out;
-  parix::RunResult result;
-};
-
-ExchangeRun run_with(const Scene& scene, FormFactorExchange exchange, parix::BcastAlgo bcast, int nodes) {
-  ParallelOptions o;
-  o.solver.hemicube.resolution = 32;
-  o.solver.hemicube.cells_per_side = 4;
-  o.solver.energy = 0.9;
-  o.bcast = bcast;
+testing::SimulatedRun run_with(const Scene& scene, FormFactorExchange exchange, parix::BcastAlgo bcast, int nodes) {
+  ParallelOptions o = testing::quick_parallel_options(bcast);
   o.ff_exchange = exchange;
-  ExchangeRun r;
-  r.result = parix::run({"simulated", test_support::published_machine(nodes)},
-                        [&](parix::Processor& p) { radiosity_program(p, scene, o, &r.out); });
-  return r;
+  return testing::run_published(scene, o, nodes);
 }
 
 TEST(FormFactorExchange, TogetherSavesOneExchangeInThreeAndChangesNoRadiosity) {
   const Scene scene = testing::lit_room();
   for (parix::BcastAlgo bcast : {parix::BcastAlgo::sequential, parix::BcastAlgo::tree}) {
     const int nodes = 4;
-    const ExchangeRun apart = run_with(scene, FormFactorExchange::per_shooter, bcast, nodes);
-    const ExchangeRun together = run_with(scene, FormFactorExchange::together, bcast, nodes);
+    const testing::SimulatedRun apart = run_with(scene, FormFactorExchange::per_shooter, bcast, nodes);
+    const testing::SimulatedRun together = run_with(scene, FormFactorExchange::together, bcast, nodes);
     ASSERT_EQ(together.out.element_radiosity, apart.out.element_radiosity);
     ASSERT_EQ(together.out.exchanged_bytes, apart.out.exchanged_bytes);
     // A loop of s shooters: 1 + s exchanges apart, 2 together. An all-node exchange (sequential or

@@ -9,8 +9,6 @@
 #include "apps/radiosity/form_factor_merge.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "machine/machine_config.hpp"
-#include "parix/backend.hpp"
-#include "tests/support/published_machine.hpp"
 #include "test_scenes.hpp"
 
 namespace gcsim::radiosity {
@@ -27,22 +25,10 @@ TEST(FormFactorMerge, AdditionsCountEveryPartOverTheWholeHemicube) {
   EXPECT_THROW(parse_form_factor_merge("whole"), std::invalid_argument);
 }
 
-struct MergeRun {
-  ParallelOutcome out;
-  parix::RunResult result;
-};
-
-MergeRun run_with(const Scene& scene, FormFactorMerge merge, parix::BcastAlgo bcast, int nodes) {
-  ParallelOptions o;
-  o.solver.hemicube.resolution = 32;
-  o.solver.hemicube.cells_per_side = 4;  // 16 + 4 x 8 = 48 cells
-  o.solver.energy = 0.9;
-  o.bcast = bcast;
+testing::SimulatedRun run_with(const Scene& scene, FormFactorMerge merge, parix::BcastAlgo bcast, int nodes) {
+  ParallelOptions o = testing::quick_parallel_options(bcast);
   o.merge = merge;
-  MergeRun r;
-  r.result = parix::run({"simulated", test_support::published_machine(nodes)},
-                        [&](parix::Processor& p) { radiosity_program(p, scene, o, &r.out); });
-  return r;
+  return testing::run_published(scene, o, nodes);
 }
 
 TEST(FormFactorMerge, WholeHemicubeAddsExactlyItsTimeAsCommunicationAndChangesNoRadiosity) {
@@ -51,8 +37,8 @@ TEST(FormFactorMerge, WholeHemicubeAddsExactlyItsTimeAsCommunicationAndChangesNo
   const machine::MachineConfig machine = machine::default_machine_config();
   for (parix::BcastAlgo bcast : {parix::BcastAlgo::sequential, parix::BcastAlgo::tree}) {
     const int nodes = 4;
-    const MergeRun own = run_with(scene, FormFactorMerge::own_cells, bcast, nodes);
-    const MergeRun whole = run_with(scene, FormFactorMerge::whole_hemicube, bcast, nodes);
+    const testing::SimulatedRun own = run_with(scene, FormFactorMerge::own_cells, bcast, nodes);
+    const testing::SimulatedRun whole = run_with(scene, FormFactorMerge::whole_hemicube, bcast, nodes);
     ASSERT_EQ(whole.out.element_radiosity, own.out.element_radiosity);
     std::int64_t shots = 0;
     for (const StepRecord& s : whole.out.steps) shots += std::int64_t(s.shooters.size());

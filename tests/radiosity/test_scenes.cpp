@@ -1,6 +1,8 @@
 #include "test_scenes.hpp"
 
 #include "apps/radiosity/entity_builder.hpp"
+#include "parix/backend.hpp"
+#include "tests/support/published_machine.hpp"
 
 namespace gcsim::radiosity::testing {
 
@@ -27,6 +29,22 @@ Scene lit_room(double s, double gap, double rho) {
   w.entities.push_back(b.take());
   w.instances.push_back({0, {}});
   return flatten(w);
+}
+
+ParallelOptions quick_parallel_options(parix::BcastAlgo bcast) {
+  ParallelOptions o;
+  o.solver.hemicube.resolution = 32;
+  o.solver.hemicube.cells_per_side = 4;
+  o.solver.energy = 0.9;
+  o.bcast = bcast;
+  return o;
+}
+
+SimulatedRun run_published(const Scene& scene, const ParallelOptions& o, int nodes) {
+  SimulatedRun r;
+  r.result = parix::run({"simulated", test_support::published_machine(nodes)},
+                        [&](parix::Processor& p) { radiosity_program(p, scene, o, &r.out); });
+  return r;
 }
 
 }  // namespace gcsim::radiosity::testing

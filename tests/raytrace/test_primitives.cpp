@@ -9,6 +9,7 @@
 #include "apps/common/geometry/sphere.hpp"
 #include "apps/common/geometry/triangle.hpp"
 #include "apps/raytrace/geometry_names.hpp"
+#include "tests/raytrace/triangle_grid.hpp"
 
 namespace gcsim::raytrace {
 namespace {
@@ -53,15 +54,8 @@ TEST(Watertight, RaysThroughSharedVerticesAndEdgesNeverMiss) {
 }
 
 TEST(Watertight, GridOfQuadsHasNoCracksForAxisParallelRays) {
-  std::vector<Triangle> tris;
   const int n = 16;
-  for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x) {
-      const glm::vec3 p00(x / float(n), y / float(n), 0), p10((x + 1) / float(n), y / float(n), 0);
-      const glm::vec3 p01(x / float(n), (y + 1) / float(n), 0), p11((x + 1) / float(n), (y + 1) / float(n), 0);
-      tris.push_back({p00, p10, p11});
-      tris.push_back({p00, p11, p01});
-    }
+  const std::vector<Triangle> tris = testing::unit_square_grid(n);
   // Straight down onto every vertex and edge midpoint: direction (0, 0, -1) has two zero components.
   for (int y = 1; y < 2 * n; ++y)
     for (int x = 1; x < 2 * n; ++x) {

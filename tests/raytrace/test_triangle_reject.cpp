@@ -8,6 +8,7 @@
 #include "apps/common/geometry/triangle_reject.hpp"
 #include "apps/common/rng.hpp"
 #include "apps/raytrace/geometry_names.hpp"
+#include "tests/raytrace/triangle_grid.hpp"
 
 namespace gcsim::raytrace {
 namespace {
@@ -82,14 +83,7 @@ TEST(TriangleReject, SharedEdgesOfAGridAreNeverRejectedBoth) {
   // Straight down onto every vertex and edge midpoint of a grid of quads: some triangle is hit,
   // and every triangle the full test hits passes the rejection.
   const int n = 8;
-  std::vector<Triangle> tris;
-  for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x) {
-      const glm::vec3 p00(x / float(n), y / float(n), 0), p10((x + 1) / float(n), y / float(n), 0);
-      const glm::vec3 p01(x / float(n), (y + 1) / float(n), 0), p11((x + 1) / float(n), (y + 1) / float(n), 0);
-      tris.push_back({p00, p10, p11});
-      tris.push_back({p00, p11, p01});
-    }
+  const std::vector<Triangle> tris = testing::unit_square_grid(n);
   Agreement a;
   for (int y = 1; y < 2 * n; ++y)
     for (int x = 1; x < 2 * n; ++x) {
