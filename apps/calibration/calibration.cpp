@@ -171,7 +171,7 @@ std::string interrupted_file_text(const MachineFile& file, const std::string& ou
 }
 
 std::string fitted_file_text(const MachineFile& file, const std::string& out_path, const std::string& specs,
-                             const CalibrationResult& r, const std::string& command) {
+                             const CalibrationResult& r, const std::string& command, const std::string& workload) {
   const std::string base = base_of(file, out_path);
   const auto s = summarize(r.cells);
   std::string text = fmt::format("# {}, calibrated.\n# Written by:\n#   {}\n", file.config().name, command);
@@ -180,6 +180,7 @@ std::string fitted_file_text(const MachineFile& file, const std::string& out_pat
   for (const auto& t : s)
     text += fmt::format("#   table {}: {} cells, median |error| {:.1f} %, max {:.1f} %\n", t.table, t.cells,
                         100 * t.median_error, 100 * t.max_error);
+  if (!workload.empty()) text += "# The scenes as the thesis's runs converged (table 4.2's loops; --workload):\n" + workload;
   text += "# Every other table is a prediction: `gcsim validate --config " + out_path + "`.\n";
   text += fmt::format("base = \"{}\"\nname = \"{} (calibrated on {})\"\n\n", base, file.config().name, specs);
   text += fmt::format("[calibration]\nfitted = [");

@@ -58,8 +58,9 @@ CalibrationResult calibrate(const MachineFile& file, const std::vector<MeasuredT
 
 // The fitted machine file: `base = ...` and the fitted keys, with a header naming the command,
 // the tables and the fit's quality.
+// workload: comment lines (each "#   ...\n") saying how the scenes were matched to the thesis's runs.
 std::string fitted_file_text(const MachineFile& file, const std::string& out_path, const std::string& specs,
-                             const CalibrationResult& r, const std::string& command);
+                             const CalibrationResult& r, const std::string& command, const std::string& workload = "");
 
 // What an interrupted calibration leaves at --out: a machine file with the best trial's values so
 // far (best may be null: no trial finished), marked interrupted in its header and name, and

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "apps/calibration/measured_table.hpp"
+#include "apps/calibration/thesis_workload.hpp"
 #include "apps/radiosity/cell_assignment.hpp"
 #include "apps/radiosity/form_factor_exchange.hpp"
 #include "apps/radiosity/form_factor_merge.hpp"
@@ -26,6 +27,9 @@ struct PredictionSettings {
   radiosity::FormFactorMerge merge = radiosity::FormFactorMerge::whole_hemicube;  // tables 4.5 and 4.8 together
   radiosity::FormFactorExchange ff_exchange = radiosity::FormFactorExchange::together;  // 4.4.1: two exchanges per loop
   int jobs = 1;          // simulations run side by side on this many host threads
+  // Each built-in scene's reflectances scaled so that it takes table 4.2's loops at `energy`
+  // (apps/calibration/thesis_workload.hpp); false: the scenes as built.
+  bool match_thesis_loops = true;
 };
 
 // Predictions in the layout of a table: kNotMeasured where the table has no figure.
@@ -50,6 +54,9 @@ class Predictor {
   // Simulated runs so far (each cell of a broadcast table, each distinct radiosity run).
   int runs() const { return runs_; }
 
+  // The scenes whose workload was matched to table 4.2 so far (lower-case names), and how.
+  const std::map<std::string, LoopMatch>& loop_matches() const { return matches_; }
+
  private:
   struct RadiosityRun {
     double seconds = 0;
@@ -58,6 +65,8 @@ class Predictor {
   using RunKey = std::tuple<std::string, int, bool>;  // scene, nodes, tree broadcast
   void run_radiosity(const std::vector<RunKey>& keys, const machine::MachineConfig& c,
                      std::map<RunKey, RadiosityRun>& out);
+  radiosity::SolverOptions solver_options() const;
+  void load_scenes(const std::vector<RunKey>& keys);
   RadiosityRun one_node_from_counts(const std::string& scene, const machine::MachineConfig& c);
   void predict_broadcast(const MeasuredTable& t, const machine::MachineConfig& c, Grid& g);
   void run_done();
@@ -66,6 +75,9 @@ class Predictor {
   // One-node radiosity runs charge only counted operations, and the counts do not depend on the
   // machine: they are kept, and a new machine's time is recomputed from them.
   std::map<std::string, std::map<std::string, std::int64_t, std::less<>>> one_node_ops_;
+  // The scenes the runs read (matched to table 4.2 once, on first use), by lower-case name.
+  std::map<std::string, radiosity::Scene> scenes_;
+  std::map<std::string, LoopMatch> matches_;
   int runs_ = 0;
   std::function<void(int, int)> on_run_;
   int predict_done_ = 0, predict_total_ = 0;  // the current predict()'s runs, for on_run_

@@ -37,6 +37,7 @@ struct PredictFlags {
   std::string cell_assignment = "block";
   std::string merge = "whole-hemicube";
   std::string ff_exchange = "together";
+  std::string workload = "thesis-loops";
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 };
 
@@ -67,6 +68,13 @@ void add_predict_options(CLI::App* cmd, PredictFlags& f) {
                   "(K + 1: each shooter's form factors on their own, `gcsim run radiosity`'s default)")
       ->check(CLI::IsMember({"per-shooter", "together"}))
       ->capture_default_str();
+  cmd->add_option("--workload", f.workload,
+                  "Radiosity tables: thesis-loops (each scene's reflectances scaled by the one factor that makes it "
+                  "take table 4.2's loops at --energy, since a run's time is its loops times the machine's time per "
+                  "loop: CORNELL as built takes 254 loops to 99.9 % where the thesis's took 302; README, Calibration) "
+                  "or as-built (the scenes as `gcsim run radiosity` builds them)")
+      ->check(CLI::IsMember({"thesis-loops", "as-built"}))
+      ->capture_default_str();
   cmd->add_option("--jobs", f.jobs, "Simulations run side by side on this many host threads")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
@@ -83,6 +91,7 @@ std::string non_default_flags(const PredictFlags& f) {
   if (f.cell_assignment != d.cell_assignment) out += " --cell-assignment " + f.cell_assignment;
   if (f.merge != d.merge) out += " --ff-merge " + f.merge;
   if (f.ff_exchange != d.ff_exchange) out += " --ff-exchange " + f.ff_exchange;
+  if (f.workload != d.workload) out += " --workload " + f.workload;
   return out;
 }
 
@@ -95,7 +104,17 @@ cal::PredictionSettings settings(const PredictFlags& f) {
   s.merge = radiosity::parse_form_factor_merge(f.merge);
   s.ff_exchange = radiosity::parse_form_factor_exchange(f.ff_exchange);
   s.jobs = f.jobs;
+  s.match_thesis_loops = f.workload == "thesis-loops";
   return s;
+}
+
+// One line per scene matched to table 4.2 (--workload thesis-loops), each prefixed.
+std::string workload_lines(const cal::Predictor& p, double energy, const std::string& prefix) {
+  std::string out;
+  for (const auto& [scene, m] : p.loop_matches())
+    out += fmt::format("{}{}: every reflectance x{:.4f}, {} loops to {:g} % (table 4.2: {}; as built: {})\n", prefix, scene,
+                       m.scale, m.loops, 100 * energy, m.thesis_loops, m.loops_as_built);
+  return out;
 }
 
 // The fit's trials as they finish: the best so far (what an interruption leaves) and a progress
@@ -193,6 +212,7 @@ void add_calibrate(CommandGroups& g) {
       throw;
     }
     progress.line.clear();
+    fmt::print("{}", workload_lines(predictor, f->predict.energy, "workload  "));
     cal::print_cells(r.cells, tables);
     cal::print_summaries(cal::summarize(r.cells));
     fmt::print("\n{} after {} iterations ({} simulated runs){}\n", r.fit.converged ? "converged" : "NOT converged",
@@ -200,7 +220,8 @@ void add_calibrate(CommandGroups& g) {
     for (const auto& w : r.warnings) fmt::print(stderr, "gcsim: warning: {}\n", w);
     for (const auto& p : r.parameters)
       fmt::print("  {:<32} {:>12.6g} +- {:<10.2g} (was {:.6g})\n", p.key, p.value, p.sigma, p.initial);
-    std::ofstream(f->out) << cal::fitted_file_text(file, f->out, f->fit, r, command);
+    std::ofstream(f->out) << cal::fitted_file_text(file, f->out, f->fit, r, command,
+                                                   workload_lines(predictor, f->predict.energy, "#   "));
     fmt::print("wrote {}\n", f->out);
     if (!f->csv.empty()) cal::write_csv(f->csv, r.cells);
     if (!f->json.empty()) {
@@ -275,6 +296,7 @@ void add_validate(CommandGroups& g) {
     // An interruption leaves the cells whose runs finished; the others are not predicted.
     std::erase_if(cells, [](const cal::CellComparison& c) { return std::isnan(c.predicted); });
     mark_fitted(cells, file.config());
+    fmt::print("{}", workload_lines(predictor, f->predict.energy, "workload  "));
     cal::print_cells(cells, tables);
     const auto summaries = cal::summarize(cells);
     cal::print_summaries(summaries);
@@ -282,6 +304,9 @@ void add_validate(CommandGroups& g) {
     if (!f->csv.empty()) cal::write_csv(f->csv, cells);
     if (!f->json.empty()) {
       nlohmann::json j = cal::to_json(cells, summaries);
+      for (const auto& [scene, m] : predictor.loop_matches())
+        j["workload"][scene] = {{"reflectance_scale", m.scale}, {"loops", m.loops}, {"thesis_loops", m.thesis_loops},
+                                {"loops_as_built", m.loops_as_built}};
       if (interruption) j["interrupted"] = true;
       write_json_file(f->json, j);
     }
