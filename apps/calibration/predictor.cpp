@@ -59,6 +59,12 @@ int measured_cells(const MeasuredTable& t) {
 
 }  // namespace
 
+CommTimeOf parse_comm_time_of(const std::string& s) {
+  if (s == "root") return CommTimeOf::root;
+  if (s == "mean") return CommTimeOf::mean;
+  throw std::invalid_argument("comm time of '" + s + "': expected root or mean");
+}
+
 void Predictor::run_done() {
   ++predict_done_;
   if (on_run_) on_run_(predict_done_, predict_total_);
@@ -150,7 +156,9 @@ void Predictor::run_radiosity(const std::vector<RunKey>& keys, const machine::Ma
       radiosity::radiosity_program(p, scene, o, &outcome);
     });
     std::lock_guard<std::mutex> g(lock);
-    out[todo[i]] = {run.simulated_seconds(), run.mean_comm_seconds()};
+    const double comm = settings_.comm_time_of == CommTimeOf::root ? machine::to_seconds(run.processors.at(0).comm)
+                                                                     : run.mean_comm_seconds();
+    out[todo[i]] = {run.simulated_seconds(), comm};
     if (nodes == 1) one_node_ops_[scene_name] = run.total_ops();
     ++runs_;
     run_done();

@@ -18,6 +18,13 @@
 
 namespace gcsim::calibration {
 
+// Whose communication time a measured table of it (4.5) reports. The thesis's program has one
+// distinguished processor, the root (processor 0) that every exchange gathers to and scatters
+// from, the "managing processor" of its broadcasts; a PARIX program prints the times it reads
+// there. `mean`: the mean over the processors, which waits for slower neighbours raise.
+enum class CommTimeOf { root, mean };
+CommTimeOf parse_comm_time_of(const std::string& s);  // throws std::invalid_argument
+
 struct PredictionSettings {
   std::string model;     // network model; "": the machine file's
   int hemicube = 256;    // radiosity runs: hemicube resolution
@@ -30,6 +37,7 @@ struct PredictionSettings {
   // Each built-in scene's reflectances scaled so that it takes table 4.2's loops at `energy`
   // (apps/calibration/thesis_workload.hpp); false: the scenes as built.
   bool match_thesis_loops = true;
+  CommTimeOf comm_time_of = CommTimeOf::root;
 };
 
 // Predictions in the layout of a table: kNotMeasured where the table has no figure.

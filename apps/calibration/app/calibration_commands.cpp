@@ -38,6 +38,7 @@ struct PredictFlags {
   std::string merge = "whole-hemicube";
   std::string ff_exchange = "together";
   std::string workload = "thesis-loops";
+  std::string comm_time = "root";
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 };
 
@@ -75,6 +76,12 @@ void add_predict_options(CLI::App* cmd, PredictFlags& f) {
                   "or as-built (the scenes as `gcsim run radiosity` builds them)")
       ->check(CLI::IsMember({"thesis-loops", "as-built"}))
       ->capture_default_str();
+  cmd->add_option("--comm-time", f.comm_time,
+                  "Radiosity tables: whose communication time table 4.5 reports: root (processor 0, which every "
+                  "exchange gathers to and scatters from, where the thesis's program read its times; README, "
+                  "Calibration) or mean (over the processors, as `gcsim run radiosity` prints it)")
+      ->check(CLI::IsMember({"root", "mean"}))
+      ->capture_default_str();
   cmd->add_option("--jobs", f.jobs, "Simulations run side by side on this many host threads")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
@@ -92,6 +99,7 @@ std::string non_default_flags(const PredictFlags& f) {
   if (f.merge != d.merge) out += " --ff-merge " + f.merge;
   if (f.ff_exchange != d.ff_exchange) out += " --ff-exchange " + f.ff_exchange;
   if (f.workload != d.workload) out += " --workload " + f.workload;
+  if (f.comm_time != d.comm_time) out += " --comm-time " + f.comm_time;
   return out;
 }
 
@@ -105,6 +113,7 @@ cal::PredictionSettings settings(const PredictFlags& f) {
   s.ff_exchange = radiosity::parse_form_factor_exchange(f.ff_exchange);
   s.jobs = f.jobs;
   s.match_thesis_loops = f.workload == "thesis-loops";
+  s.comm_time_of = cal::parse_comm_time_of(f.comm_time);
   return s;
 }
 
