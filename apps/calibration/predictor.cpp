@@ -109,6 +109,33 @@ radiosity::SolverOptions Predictor::solver_options() const {
   return o;
 }
 
+std::vector<Predictor::RunKey> Predictor::radiosity_keys(const std::vector<MeasuredTable>& tables) {
+  std::vector<RunKey> keys;
+  for (const MeasuredTable& t : tables) {
+    if (is_broadcast(t)) continue;
+    const bool tree = t.id == "4.8";
+    for (std::size_t r = 0; r < t.nodes.size(); ++r)
+      for (std::size_t k = 0; k < t.columns.size(); ++k) {
+        if (std::isnan(t.values[r][k])) continue;
+        keys.emplace_back(scene_of(t.columns[k]), t.nodes[r], tree);
+        if (t.id == "4.4") keys.emplace_back(scene_of(t.columns[k]), 1, false);  // speedup needs the 1-node time
+      }
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  return keys;
+}
+
+void Predictor::prepare(const std::vector<MeasuredTable>& tables) { load_scenes(radiosity_keys(tables)); }
+
+void Predictor::share_scenes(const Predictor& from) {
+  if (from.settings_.match_thesis_loops != settings_.match_thesis_loops || from.settings_.energy != settings_.energy ||
+      from.settings_.hemicube != settings_.hemicube || from.settings_.shooters != settings_.shooters)
+    throw std::logic_error("share_scenes: the predictors' scenes would differ");
+  scenes_.insert(from.scenes_.begin(), from.scenes_.end());
+  matches_.insert(from.matches_.begin(), from.matches_.end());
+}
+
 // Each scene is loaded once per predictor, not once per run or per trial of a fit; runs only read
 // it. Matching a scene to table 4.2 solves it a dozen times on the host, scenes side by side.
 void Predictor::load_scenes(const std::vector<RunKey>& keys) {
@@ -168,23 +195,10 @@ void Predictor::run_radiosity(const std::vector<RunKey>& keys, const machine::Ma
 std::vector<Grid> Predictor::predict(const std::vector<MeasuredTable>& tables, const machine::MachineConfig& c,
                                      std::exception_ptr* interruption) {
   // Gather every radiosity run the tables need, then simulate each once.
-  std::vector<RunKey> keys;
   predict_done_ = predict_total_ = 0;
-  for (const MeasuredTable& t : tables) {
-    if (is_broadcast(t)) {
-      predict_total_ += measured_cells(t);
-      continue;
-    }
-    const bool tree = t.id == "4.8";
-    for (std::size_t r = 0; r < t.nodes.size(); ++r)
-      for (std::size_t k = 0; k < t.columns.size(); ++k) {
-        if (std::isnan(t.values[r][k])) continue;
-        keys.emplace_back(scene_of(t.columns[k]), t.nodes[r], tree);
-        if (t.id == "4.4") keys.emplace_back(scene_of(t.columns[k]), 1, false);  // speedup needs the 1-node time
-      }
-  }
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  for (const MeasuredTable& t : tables)
+    if (is_broadcast(t)) predict_total_ += measured_cells(t);
+  const std::vector<RunKey> keys = radiosity_keys(tables);
   // An interruption stops the runs; what finished is kept (the maps and grids are filled run by run).
   std::exception_ptr stopped;
   auto guarded = [&](auto&& step) {

@@ -62,6 +62,12 @@ class Predictor {
   // Simulated runs so far (each cell of a broadcast table, each distinct radiosity run).
   int runs() const { return runs_; }
 
+  // Loads (and matches to table 4.2) the scenes the tables' runs need, ahead of predict(), so a
+  // caller timing predictions can leave that out; share_scenes takes another predictor's, which
+  // must have the same scene settings (energy, hemicube, shooters, workload).
+  void prepare(const std::vector<MeasuredTable>& tables);
+  void share_scenes(const Predictor& from);
+
   // The scenes whose workload was matched to table 4.2 so far (lower-case names), and how.
   const std::map<std::string, LoopMatch>& loop_matches() const { return matches_; }
 
@@ -73,6 +79,7 @@ class Predictor {
   using RunKey = std::tuple<std::string, int, bool>;  // scene, nodes, tree broadcast
   void run_radiosity(const std::vector<RunKey>& keys, const machine::MachineConfig& c,
                      std::map<RunKey, RadiosityRun>& out);
+  static std::vector<RunKey> radiosity_keys(const std::vector<MeasuredTable>& tables);
   radiosity::SolverOptions solver_options() const;
   void load_scenes(const std::vector<RunKey>& keys);
   RadiosityRun one_node_from_counts(const std::string& scene, const machine::MachineConfig& c);
