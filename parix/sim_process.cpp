@@ -146,11 +146,23 @@ Request SimProcess::abandoned_send() {
   return abandoned;
 }
 
+// A send's state is over (done or withdrawn) once nothing but this process holds it: the message
+// lets go when delivered, received or dropped. Only its state needs resetting; a send never sets
+// the receive's fields, and a wait clears its waiter.
+[[gnu::always_inline]] inline Request SimProcess::send_request() {
+  if (send_request_.unique()) [[likely]] {
+    send_request_.state()->rearm();
+  } else {
+    send_request_ = sim_.requests.take();
+  }
+  return send_request_;
+}
+
 // Inline into isend and send: one call per message less.
 [[gnu::always_inline]] inline Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool synchronous) {
   if (sim_.charges_comm_cpu && !charge_send_cpu(link, data.size())) [[unlikely]] return abandoned_send();
   LinkEnd& e = end_of(link, "send");  // after the CPU time: links may have grown meanwhile
-  Request req = sim_.requests.take();
+  Request req = send_request();
   req.state()->link = link.handle();
   req.state()->peer = e.peer;
   // The runtime's copy of the message is held by the sender's node until it is delivered, then
@@ -190,7 +202,9 @@ inline void Simulation::hold(LinkEnd& e, Message&& m) {
   }
   HeldMessage& held = e.arrived.append();
   held.data = std::move(m.data);
-  held.send = std::move(m.send);
+  // An asynchronous send completed on arrival: the queue keeps no hold on it, so its process can
+  // reuse the request (send_request) while the message waits here.
+  if (m.synchronous) held.send = std::move(m.send);
   held.synchronous = m.synchronous;
 }
 

@@ -55,7 +55,7 @@ struct Message {
 // the queue moves in and, while it grows, around.
 struct HeldMessage {
   Bytes data;
-  Request send;  // completed when received, if synchronous (else it was on arrival)
+  Request send;  // a synchronous send, completed when received (null: asynchronous, completed on arrival)
   bool synchronous = false;
 };
 
@@ -128,6 +128,9 @@ class SimProcess final : public Processor, public Waiter {
   // The request a blocking receive waits on, reused from one receive to the next: once it is over
   // only this process holds it, and it needs neither the pool nor a reset of every field.
   Request& blocking_receive();
+  // The request of an isend or send, reused the same way: once the program has dropped its copy
+  // and the message is delivered, only this process holds it. Else one from the pool, kept next.
+  Request send_request();
   LinkEnd& end_of(const Link& link, const char* call);
   // A request that is over already (a delivered isend) costs a test; waiting for one still
   // running is out of line.
@@ -156,6 +159,7 @@ class SimProcess final : public Processor, public Waiter {
   ProcessorStats& stats_;
   int node_;
   Request blocking_receive_;  // empty until the first blocking receive; see blocking_receive()
+  Request send_request_;      // empty until the first send; see send_request()
 };
 
 // options.placement checked to be a permutation of 0..nodes-1; identity when empty.
