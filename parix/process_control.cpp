@@ -54,7 +54,7 @@ bool SimProcess::cancel(Request& r) {
     // Its link is still there: a queued receive keeps the link's slots from reuse.
     LinkEnd& e = sim_.links.at(s.link);
     if (e.owner != id_) throw ParixError(fmt::format("processor {}: cancel of a receive of processor {}", id_, e.owner));
-    e.receives.erase_if([&s](const Request& q) { return q.state() == &s; });
+    e.receives.erase_if([&s](const PostedReceive& q) { return q.request.state() == &s; });
     sim_.links.release_if_done(s.link);
   }
   // A send: its message is still in the network (or held for in-order delivery); accept drops it.

@@ -211,9 +211,15 @@ inline void Simulation::hold(LinkEnd& e, Message&& m) {
 inline void Simulation::hand_over(LinkEnd& e, Message&& m) {
   if (!m.synchronous) complete(m.send);
   if (e.receives.empty()) return hold(e, std::move(m));
-  Request r = std::move(e.receives.front());
+  PostedReceive& posted = e.receives.front();
+  Request r = std::move(posted.request);
+  if (Bytes* into = posted.into) {
+    into->swap(m.data);  // the receiver's old storage stays in m's slot (deliver), for its next message
+    if (m.data.capacity() > kSlotKeepsBytes) [[unlikely]] payloads.give(std::move(m.data));
+  } else {
+    r.state()->data = std::move(m.data);
+  }
   e.receives.drop_front();
-  r.state()->data = std::move(m.data);
   if (m.synchronous) complete(m.send);
   complete(r);
 }
@@ -245,7 +251,11 @@ void Simulation::deliver(std::int64_t slot) {
   const std::int64_t end = m.dst_end;  // its pair is not reused while a message travels to it
   LinkEnd& e = links.at(end);
   const std::int64_t seq = m.link_seq;
-  e.order.arrive(seq, std::move(m), [this, &e](Message&& next) { accept(e, std::move(next)); });
+  e.order.arrive(seq, std::move(m), [this, &e, &m](Message&& next) {
+    accept(e, std::move(next));
+    // A held successor is not in a slot: what a receiver's vector left in it goes to the pool.
+    if (&next != &m) [[unlikely]] payloads.give(std::move(next.data));
+  });
   // Its payload went on (to a receive, the link's queue, the held messages or the pool); the
   // request it keeps alive must not wait for the slot's reuse.
   m.send = Request();
@@ -273,7 +283,7 @@ Request SimProcess::post_receive(Link& link) {
   post_receive(req, end_of(link, "recv"), link);
 }
 
-[[gnu::always_inline]] inline void SimProcess::post_receive(Request& req, LinkEnd& e, const Link& link) {
+[[gnu::always_inline]] inline void SimProcess::post_receive(Request& req, LinkEnd& e, const Link& link, Bytes* into) {
   RequestState& s = *req.state();
   s.is_receive = true;
   s.payloads = &sim_.payloads;
@@ -289,7 +299,9 @@ Request SimProcess::post_receive(Link& link) {
     m.send = Request();
     e.arrived.drop_front();
   } else {
-    e.receives.push_back(req);
+    PostedReceive& posted = e.receives.append();
+    posted.request = req;
+    posted.into = into;
   }
 }
 
@@ -351,9 +363,12 @@ void SimProcess::recv(Link& link, Bytes& into) {
   // The message is there already (most of a large ring's): no request, no wait, nothing to charge.
   if (!e.arrived.empty() && !sim_.charges_comm_cpu) return sim_.take_held(e, id_, into);
   Request& r = blocking_receive();
-  post_receive(r, e, link);
+  // Untraced and uncharged (nothing asks the request's size), the message is delivered into `into`.
+  const bool direct = !sim_.charges_comm_cpu && !sim_.trace.enabled();
+  post_receive(r, e, link, direct ? &into : nullptr);
   RequestState& s = *r.state();
   wait_for_receive(s);
+  if (direct) return;
   // Request::take_into, with the pool known: into's old storage goes back to it.
   into.swap(s.data);
   sim_.payloads.give(std::move(s.data));

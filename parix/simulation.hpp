@@ -59,6 +59,14 @@ struct HeldMessage {
   bool synchronous = false;
 };
 
+// A receive waiting on its link end. A blocking receive into the caller's vector (untraced, no
+// [comm_cpu] charge) names that vector: the message is swapped straight into it (hand_over), and
+// the caller's old storage stays with the message's slot for the next message sent in it.
+struct PostedReceive {
+  Request request;
+  Bytes* into = nullptr;  // null: the message goes to the request's data
+};
+
 // One end of a virtual link.
 struct LinkEnd {
   int owner = -1;
@@ -68,7 +76,7 @@ struct LinkEnd {
   std::int64_t sent = 0;                                 // messages sent from this end
   InOrderDelivery<Message> order;                        // holds messages that overtook a predecessor
   Fifo<HeldMessage> arrived;                             // delivered, not yet received
-  Fifo<Request> receives;                                // posted, waiting for a message
+  Fifo<PostedReceive> receives;                          // posted, waiting for a message
   // Nothing the peer sent is still travelling or held, and nothing waits here: the slot may go.
   bool idle(const LinkEnd& peer) const {
     return peer.sent == order.delivered() && arrived.empty() && receives.empty();
@@ -124,7 +132,8 @@ class SimProcess final : public Processor, public Waiter {
   Request post_receive(Link& link);
   // Posts a receive on link's end with req (fresh or rearmed) and matches it with an arrived message.
   void post_receive(Request& req, Link& link);
-  void post_receive(Request& req, LinkEnd& e, const Link& link);  // e: link's end, checked
+  // e: link's end, checked; into: see PostedReceive.
+  void post_receive(Request& req, LinkEnd& e, const Link& link, Bytes* into = nullptr);
   // The request a blocking receive waits on, reused from one receive to the next: once it is over
   // only this process holds it, and it needs neither the pool nor a reset of every field.
   Request& blocking_receive();
@@ -215,8 +224,8 @@ class Simulation {
   // The message in `slot` arrived: delivered in place (no copy of it), then the slot is free.
   void deliver(std::int64_t slot);
   // Messages in the network wait in a slab, so callbacks can refer to them by index. A free slot
-  // for the next one, which the caller fills in place: its payload is empty and its request null
-  // (moved on or reset by deliver).
+  // for the next one, which the caller fills in place: its request is null (moved on or reset by
+  // deliver), its payload empty or a receiver's old storage (hand_over), to be overwritten.
   std::int64_t take_slot() {
     if (free_slots.empty()) {
       in_flight.emplace_back();
@@ -272,6 +281,9 @@ class Simulation {
 
   std::string deadlock_report() const;
 
+  // The most storage a message's slot keeps from a receiver's old vector (see PostedReceive);
+  // more goes back to the pool, which bounds what it keeps.
+  static constexpr std::size_t kSlotKeepsBytes = 4096;
   RequestPool requests;      // first member: outlives every request the others hold
   PayloadPool payloads;      // messages' storage, recycled (parix/payload_pool.hpp)
   machine::MachineConfig config;
