@@ -212,13 +212,15 @@ inline void Simulation::hand_over(LinkEnd& e, Message&& m) {
   if (!m.synchronous) complete(m.send);
   if (e.receives.empty()) return hold(e, std::move(m));
   PostedReceive& posted = e.receives.front();
-  Request r = std::move(posted.request);
-  if (Bytes* into = posted.into) {
-    into->swap(m.data);  // the receiver's old storage stays in m's slot (deliver), for its next message
+  if (SimProcess* receiver = posted.receiver) {
+    posted.into->swap(m.data);  // the receiver's old storage stays in m's slot (deliver), for its next message
     if (m.data.capacity() > kSlotKeepsBytes) [[unlikely]] payloads.give(std::move(m.data));
-  } else {
-    r.state()->data = std::move(m.data);
+    e.receives.drop_front();
+    if (m.synchronous) complete(m.send);
+    return receiver->received_into();
   }
+  Request r = std::move(posted.request);
+  r.state()->data = std::move(m.data);
   e.receives.drop_front();
   if (m.synchronous) complete(m.send);
   complete(r);
@@ -251,7 +253,7 @@ void Simulation::deliver(std::int64_t slot) {
   const std::int64_t end = m.dst_end;  // its pair is not reused while a message travels to it
   LinkEnd& e = links.at(end);
   const std::int64_t seq = m.link_seq;
-  e.order.arrive(seq, std::move(m), [this, &e, &m](Message&& next) {
+  e.order.arrive(seq, std::move(m), [this, &e, &m](Message&& next) __attribute__((always_inline)) {
     accept(e, std::move(next));
     // A held successor is not in a slot: what a receiver's vector left in it goes to the pool.
     if (&next != &m) [[unlikely]] payloads.give(std::move(next.data));
@@ -283,7 +285,7 @@ Request SimProcess::post_receive(Link& link) {
   post_receive(req, end_of(link, "recv"), link);
 }
 
-[[gnu::always_inline]] inline void SimProcess::post_receive(Request& req, LinkEnd& e, const Link& link, Bytes* into) {
+[[gnu::always_inline]] inline void SimProcess::post_receive(Request& req, LinkEnd& e, const Link& link) {
   RequestState& s = *req.state();
   s.is_receive = true;
   s.payloads = &sim_.payloads;
@@ -301,7 +303,8 @@ Request SimProcess::post_receive(Link& link) {
   } else {
     PostedReceive& posted = e.receives.append();
     posted.request = req;
-    posted.into = into;
+    posted.into = nullptr;
+    posted.receiver = nullptr;
   }
 }
 
@@ -360,18 +363,34 @@ Bytes SimProcess::recv(Link& link) {
 
 void SimProcess::recv(Link& link, Bytes& into) {
   LinkEnd& e = end_of(link, "recv");
-  // The message is there already (most of a large ring's): no request, no wait, nothing to charge.
-  if (!e.arrived.empty() && !sim_.charges_comm_cpu) return sim_.take_held(e, id_, into);
+  if (!sim_.charges_comm_cpu) [[likely]] {
+    // The message is there already (most of a large ring's): no request, no wait, nothing to charge.
+    if (!e.arrived.empty()) return sim_.take_held(e, id_, into);
+    if (!sim_.trace.enabled()) return receive_into(e, into);
+  }
   Request& r = blocking_receive();
-  // Untraced and uncharged (nothing asks the request's size), the message is delivered into `into`.
-  const bool direct = !sim_.charges_comm_cpu && !sim_.trace.enabled();
-  post_receive(r, e, link, direct ? &into : nullptr);
+  post_receive(r, e, link);
   RequestState& s = *r.state();
   wait_for_receive(s);
-  if (direct) return;
   // Request::take_into, with the pool known: into's old storage goes back to it.
   into.swap(s.data);
   sim_.payloads.give(std::move(s.data));
+}
+
+// The wait of wait_running, with a flag for the request's state: block() throws when the run is
+// abandoned, or returns while it unwinds already.
+[[gnu::always_inline]] inline void SimProcess::receive_into(LinkEnd& e, Bytes& into) {
+  PostedReceive& posted = e.receives.append();  // its request is null: moved on or never set
+  posted.into = &into;
+  posted.receiver = this;
+  received_ = false;
+  const int peer = e.peer;
+  const machine::SimTime start = sim_.kernel.now();
+  do {
+    block("recv", peer);
+    if (sim_.cancelling) return;
+  } while (!received_);
+  stats_.comm += sim_.kernel.now() - start;
 }
 
 void SimProcess::charge_receive_cpu(RequestState& r) {

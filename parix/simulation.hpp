@@ -59,12 +59,16 @@ struct HeldMessage {
   bool synchronous = false;
 };
 
-// A receive waiting on its link end. A blocking receive into the caller's vector (untraced, no
-// [comm_cpu] charge) names that vector: the message is swapped straight into it (hand_over), and
-// the caller's old storage stays with the message's slot for the next message sent in it.
+class SimProcess;
+
+// A receive waiting on its link end: a request, or a blocking receive into the caller's vector
+// (untraced, no [comm_cpu] charge: nothing asks a request's size), which needs none. Its message is
+// swapped straight into that vector and its process woken (Simulation::hand_over); the caller's
+// old storage stays with the message's slot for the next message sent in it.
 struct PostedReceive {
-  Request request;
-  Bytes* into = nullptr;  // null: the message goes to the request's data
+  Request request;                 // null for a receive into a vector
+  Bytes* into = nullptr;           // the vector, or null
+  SimProcess* receiver = nullptr;  // whom to wake, or null
 };
 
 // One end of a virtual link.
@@ -108,6 +112,11 @@ class SimProcess final : public Processor, public Waiter {
   // Suspends this fiber until wake(); `call` and `peer` describe the wait for deadlock reports.
   void block(const char* call, int peer);
   void wake() override;
+  // Simulation::hand_over put the message of receive_into in its vector.
+  void received_into() {
+    received_ = true;
+    wake();
+  }
   // Blocks while a is running (until it is done or cancelled); false when the run was abandoned
   // meanwhile (a is then cancelled).
   bool wait_for_activity(Activity& a, const char* call, int peer);
@@ -132,8 +141,11 @@ class SimProcess final : public Processor, public Waiter {
   Request post_receive(Link& link);
   // Posts a receive on link's end with req (fresh or rearmed) and matches it with an arrived message.
   void post_receive(Request& req, Link& link);
-  // e: link's end, checked; into: see PostedReceive.
-  void post_receive(Request& req, LinkEnd& e, const Link& link, Bytes* into = nullptr);
+  void post_receive(Request& req, LinkEnd& e, const Link& link);  // e: link's end, checked
+  // A blocking receive into `into` on e, untraced and uncharged, whose message is not there yet:
+  // posted without a request (see PostedReceive), then waits for it.
+  void receive_into(LinkEnd& e, Bytes& into);
+
   // The request a blocking receive waits on, reused from one receive to the next: once it is over
   // only this process holds it, and it needs neither the pool nor a reset of every field.
   Request& blocking_receive();
@@ -169,6 +181,7 @@ class SimProcess final : public Processor, public Waiter {
   int node_;
   Request blocking_receive_;  // empty until the first blocking receive; see blocking_receive()
   Request send_request_;      // empty until the first send; see send_request()
+  bool received_ = false;     // receive_into's message has arrived
 };
 
 // options.placement checked to be a permutation of 0..nodes-1; identity when empty.

@@ -151,6 +151,47 @@ TEST(RecvInto, AnOvertakingMessageReachesAWaitingReceiveInSendingOrder) {
   EXPECT_EQ(got[1], bytes_of("short"));
 }
 
+// A receive into a vector that waits needs no request (PostedReceive): it still takes its place
+// among the receives posted on its link, and each of a processor's threads waits for its own.
+TEST(RecvInto, WaitingReceivesIntoVectorsAndRequestsShareTheLinkInPostingOrder) {
+  Bytes by_request, by_thread, by_main;
+  run_simulated(published_machine(2), [&](Processor& p) {
+    Link l = p.connect(1 - p.id());
+    if (p.id() == 0) {
+      p.compute("cycle", 80'000);  // 1 ms: every receive below is posted first
+      for (const char* text : {"first", "second", "third"}) p.send(l, bytes_of(text));
+      return;
+    }
+    Request r = p.irecv(l);
+    Thread t = p.spawn([&](Processor& me) { me.recv(l, by_thread); });
+    p.compute("cycle", 8'000);  // the thread posts its receive before this one
+    p.recv(l, by_main);
+    p.wait(r);
+    r.take_into(by_request);
+    t.join();
+  });
+  EXPECT_EQ(by_request, bytes_of("first"));
+  EXPECT_EQ(by_thread, bytes_of("second"));
+  EXPECT_EQ(by_main, bytes_of("third"));
+}
+
+// A deadlock while processes wait in receives into vectors names them like any receive, and the
+// run unwinds them (the memcheck run of this suite checks it leaves nothing behind).
+TEST(RecvInto, ReceivesIntoVectorsThatNeverEndAreReportedAsDeadlock) {
+  try {
+    run_simulated(published_machine(2), [](Processor& p) {
+      Link l = p.connect(1 - p.id());
+      Bytes into = bytes_of("old");
+      p.recv(l, into);
+    });
+    FAIL() << "expected a deadlock";
+  } catch (const DeadlockError& e) {
+    const std::string report = e.what();
+    EXPECT_NE(report.find("processor 0: blocked in recv on processor 1"), std::string::npos) << report;
+    EXPECT_NE(report.find("processor 1: blocked in recv on processor 0"), std::string::npos) << report;
+  }
+}
+
 TEST(RecvInto, TakeIntoAfterIrecvSwapsAndTheRequestKeepsNothing) {
   Bytes got = bytes_of("old"), after;
   run_simulated(published_machine(2), [&](Processor& p) {
