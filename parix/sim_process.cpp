@@ -169,7 +169,7 @@ Request SimProcess::abandoned_send() {
   // by the receiver's until received; declared before the host allocates it.
   const std::int64_t bytes = static_cast<std::int64_t>(data.size());
   if (bytes > 0) {
-    if (!sim_.declare_memory(id_, bytes, sim_.in_flight_kind)) throw OutOfMemoryError(sim_.refusal(id_, bytes, sim_.in_flight_kind));
+    if (!sim_.declare_message(id_, bytes, sim_.in_flight_kind)) throw OutOfMemoryError(sim_.refusal(id_, bytes, sim_.in_flight_kind));
   }
   // Built in its slot; the arrival callback captures only (simulation, slot), small enough for
   // the kernel to store inline, which keeps the per-message cost free of extra allocations.
@@ -196,7 +196,7 @@ inline void Simulation::hold(LinkEnd& e, Message&& m) {
   // run as soon as this event is over (the kernel's loop stops on a failure).
   if (!m.data.empty()) {
     const auto bytes = static_cast<std::int64_t>(m.data.size());
-    if (!declare_memory(e.owner, bytes, received_kind) && !failure) [[unlikely]] {
+    if (!declare_message(e.owner, bytes, received_kind) && !failure) [[unlikely]] {
       failure = std::make_exception_ptr(OutOfMemoryError(refusal(e.owner, bytes, received_kind)));
     }
   }

@@ -268,10 +268,17 @@ class Simulation {
     if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, memory.kind_name(kind));
     return true;
   }
-  // Gives back bytes declared before. Never fails, and needs no warning: a node over its memory
-  // got there by a declare_memory, which kept the first warning.
+  // The same for bytes > 0, a message's (NodeMemory::add).
+  bool declare_message(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
+    machine::NodeMemory& memory = *memory_of[processor];
+    if (!memory.add(bytes, kind)) return false;
+    if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, memory.kind_name(kind));
+    return true;
+  }
+  // Gives back bytes > 0 declared before. Never fails, and needs no warning: a node over its
+  // memory got there by a declaration, which kept the first warning.
   void release_memory(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
-    memory_of[processor]->use(-bytes, kind);
+    memory_of[processor]->release(bytes, kind);
   }
   std::string refusal(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) const {
     const machine::NodeMemory& memory = *memory_of[processor];
