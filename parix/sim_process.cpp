@@ -128,7 +128,7 @@ namespace {
 }  // namespace
 
 inline LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
-  LinkEnd* found = link.valid() ? sim_.links.find(link.handle()) : nullptr;
+  LinkEnd* found = link.valid() ? sim_.links.find(link.handle(), link.hint()) : nullptr;
   if (!found || found->owner != id_) [[unlikely]] throw_bad_link(id_, call, found);
   return *found;
 }
@@ -183,6 +183,7 @@ Request SimProcess::abandoned_send() {
   m.src = id_;
   m.sent = sim_.kernel.now();
   m.dst_end = e.peer_end;
+  m.dst = e.peer_at;
   auto& s = stats_;
   ++s.messages_sent;
   s.bytes_sent += bytes;
@@ -250,8 +251,8 @@ void Simulation::accept_slow(LinkEnd& e, Message&& m) {
 void Simulation::deliver(std::int64_t slot) {
   Message& m = in_flight[slot];  // stays put: nothing parks a message during a delivery
   if (!m.data.empty()) release_memory(m.src, static_cast<std::int64_t>(m.data.size()), in_flight_kind);
-  const std::int64_t end = m.dst_end;  // its pair is not reused while a message travels to it
-  LinkEnd& e = links.at(end);
+  const std::int64_t end = m.dst_end;
+  LinkEnd& e = *m.dst;
   const std::int64_t seq = m.link_seq;
   e.order.arrive(seq, std::move(m), [this, &e, &m](Message&& next) __attribute__((always_inline)) {
     accept(e, std::move(next));

@@ -37,6 +37,7 @@ using machine::TraceRecord;
 struct Cancelled {};
 
 class Simulation;
+struct LinkEnd;
 
 // A message on its way or waiting in a link's queue.
 struct Message {
@@ -47,6 +48,7 @@ struct Message {
   std::int64_t id = 0;
   std::int64_t link_seq = 0;  // position on its link: a link delivers in sending order
   std::int64_t dst_end = -1;  // the link end it goes to
+  LinkEnd* dst = nullptr;     // the same, found (its pair is not reused while a message travels to it)
   int src = -1;
   machine::SimTime sent = 0;
 };
@@ -76,6 +78,7 @@ struct LinkEnd {
   int owner = -1;
   int peer = -1;
   std::int64_t peer_end = -1;
+  LinkEnd* peer_at = nullptr;  // the end of peer_end (ends never move)
   bool open = true;
   std::int64_t sent = 0;                                 // messages sent from this end
   InOrderDelivery<Message> order;                        // holds messages that overtook a predecessor
