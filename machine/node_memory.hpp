@@ -38,6 +38,21 @@ class NodeMemory {
     peak_ = std::max(peak_, used_);
     return true;
   }
+  // use(bytes) and use(-bytes) for bytes > 0, the runtime's declarations on every message: the same
+  // sums, without the sign's cases (no release can raise the peak, no addition needs the clamp).
+  bool add(std::int64_t bytes, Kind kind) {
+    if (limit_ == MemoryLimit::enforce && bytes > capacity_ - used_) return false;
+    held_[kind].bytes += bytes;
+    used_ += bytes;
+    peak_ = std::max(peak_, used_);
+    return true;
+  }
+  void release(std::int64_t bytes, Kind kind) {
+    Held& h = held_[kind];
+    const std::int64_t change = std::min(bytes, h.bytes);  // never below zero, as use()
+    h.bytes -= change;
+    used_ -= change;
+  }
   const std::string& kind_name(Kind kind) const { return held_[kind].kind; }
   std::int64_t used() const { return used_; }
   std::int64_t peak() const { return peak_; }

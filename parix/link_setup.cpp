@@ -21,8 +21,8 @@ Link SimProcess::connect(int peer, int tag) {
     const auto [a, b] = sim_.links.open_pair();
     LinkEnd& ea = sim_.links.at(a);
     LinkEnd& eb = sim_.links.at(b);
-    ea.owner = id_, ea.peer = peer;
-    eb.owner = peer, eb.peer = id_;
+    ea.owner = id_, ea.peer = peer, ea.peer_at = &eb;
+    eb.owner = peer, eb.peer = id_, eb.peer_at = &ea;
     const machine::SimTime up = sim_.connections.set_up(node_, sim_.node_of[peer], start);
     std::int64_t* theirs = other.result;
     SimProcess* them = other.who;
@@ -48,7 +48,7 @@ Link SimProcess::connect(int peer, int tag) {
   const machine::SimTime took = sim_.kernel.now() - start;
   stats_.comm += took;
   stats_.connect += took;
-  return Link(this, peer, tag, mine);
+  return Link(this, peer, tag, mine, sim_.links.hint_of(mine));
 }
 
 }  // namespace gcsim::parix::detail

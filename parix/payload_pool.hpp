@@ -36,18 +36,12 @@ class PayloadPool {
     return b;
   }
   // The same into out, in place (a message's slot): no vector moved through a temporary. The
-  // storage is the last vector given back in its class when it fits (always, for equal-sized
-  // messages), else take_elsewhere's. out's own storage, if any, is freed.
+  // storage is out's own when it fits (a slot keeps a receiver's old vector), else the last vector
+  // given back in its class when it fits (always, for equal-sized messages), else
+  // take_elsewhere's; out's own, too small or not needed (an empty message), comes back here.
   void copy_into(Bytes& out, std::span<const std::byte> data) {
-    if (data.empty()) return out.clear();
-    std::vector<Bytes>& list = free_[capacity_class(data.size())];
-    if (!list.empty() && list.back().capacity() >= data.size()) {
-      out.swap(list.back());
-      list.pop_back();
-      kept_bytes_ -= out.capacity();
-    } else {
-      out = take_elsewhere(data.size());
-    }
+    if (data.empty()) return give(std::move(out));
+    if (out.capacity() < data.size()) take_for(out, data.size());
     // Kept vectors keep their last size: a stream of equal-sized messages overwrites in place.
     if (out.size() == data.size()) return copy_bytes(out.data(), data.data(), data.size());
     out.assign(data.begin(), data.end());
@@ -89,6 +83,18 @@ class PayloadPool {
   static constexpr int kClasses = 64;
   static int capacity_class(std::size_t bytes) { return std::bit_width(bytes) - 1; }  // floor(log2), bytes > 0
   Bytes take_elsewhere(std::size_t bytes);
+  // Storage for `bytes` in out, whose own (too small, if any) comes back here first.
+  void take_for(Bytes& out, std::size_t bytes) {
+    if (out.capacity() > 0) [[unlikely]] give(std::move(out));
+    std::vector<Bytes>& list = free_[capacity_class(bytes)];
+    if (!list.empty() && list.back().capacity() >= bytes) {
+      out.swap(list.back());
+      list.pop_back();
+      kept_bytes_ -= out.capacity();
+    } else {
+      out = take_elsewhere(bytes);
+    }
+  }
   [[gnu::noinline, gnu::cold]] void keep_growing(std::vector<Bytes>& list, Bytes&& b);
   Bytes pop(std::vector<Bytes>& list) {
     Bytes b = std::move(list.back());

@@ -50,8 +50,9 @@ class PayloadPool;
 class Link {
  public:
   Link() = default;
-  Link(Processor* owner, int peer, int tag, std::int64_t handle)
-      : owner_(owner), peer_(peer), tag_(tag), handle_(handle) {}
+  // hint: backend-private, where the backend keeps this end (checked on use, never trusted).
+  Link(Processor* owner, int peer, int tag, std::int64_t handle, const void* hint = nullptr)
+      : owner_(owner), peer_(peer), tag_(tag), handle_(handle), hint_(hint) {}
   Link(Link&& o) noexcept { *this = std::move(o); }
   Link& operator=(Link&& o) noexcept;
   Link(const Link&) = delete;
@@ -61,6 +62,7 @@ class Link {
   int peer() const { return peer_; }
   int tag() const { return tag_; }
   std::int64_t handle() const { return handle_; }
+  const void* hint() const { return hint_; }
   bool valid() const { return owner_ != nullptr; }
 
  private:
@@ -68,6 +70,7 @@ class Link {
   int peer_ = -1;
   int tag_ = 0;
   std::int64_t handle_ = -1;
+  const void* hint_ = nullptr;
 };
 
 namespace detail {
@@ -334,6 +337,7 @@ inline Link& Link::operator=(Link&& o) noexcept {
     peer_ = o.peer_;
     tag_ = o.tag_;
     handle_ = o.handle_;
+    hint_ = o.hint_;
   }
   return *this;
 }

@@ -128,7 +128,7 @@ namespace {
 }  // namespace
 
 inline LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
-  LinkEnd* found = link.valid() ? sim_.links.find(link.handle()) : nullptr;
+  LinkEnd* found = link.valid() ? sim_.links.find(link.handle(), link.hint()) : nullptr;
   if (!found || found->owner != id_) [[unlikely]] throw_bad_link(id_, call, found);
   return *found;
 }
@@ -146,18 +146,30 @@ Request SimProcess::abandoned_send() {
   return abandoned;
 }
 
+// A send's state is over (done or withdrawn) once nothing but this process holds it: the message
+// lets go when delivered, received or dropped. Only its state needs resetting; a send never sets
+// the receive's fields, and a wait clears its waiter.
+[[gnu::always_inline]] inline Request SimProcess::send_request() {
+  if (send_request_.unique()) [[likely]] {
+    send_request_.state()->rearm();
+  } else {
+    send_request_ = sim_.requests.take();
+  }
+  return send_request_;
+}
+
 // Inline into isend and send: one call per message less.
 [[gnu::always_inline]] inline Request SimProcess::post_send(Link& link, std::span<const std::byte> data, bool synchronous) {
   if (sim_.charges_comm_cpu && !charge_send_cpu(link, data.size())) [[unlikely]] return abandoned_send();
   LinkEnd& e = end_of(link, "send");  // after the CPU time: links may have grown meanwhile
-  Request req = sim_.requests.take();
+  Request req = send_request();
   req.state()->link = link.handle();
   req.state()->peer = e.peer;
   // The runtime's copy of the message is held by the sender's node until it is delivered, then
   // by the receiver's until received; declared before the host allocates it.
   const std::int64_t bytes = static_cast<std::int64_t>(data.size());
   if (bytes > 0) {
-    if (!sim_.declare_memory(id_, bytes, sim_.in_flight_kind)) throw OutOfMemoryError(sim_.refusal(id_, bytes, sim_.in_flight_kind));
+    if (!sim_.declare_message(id_, bytes, sim_.in_flight_kind)) throw OutOfMemoryError(sim_.refusal(id_, bytes, sim_.in_flight_kind));
   }
   // Built in its slot; the arrival callback captures only (simulation, slot), small enough for
   // the kernel to store inline, which keeps the per-message cost free of extra allocations.
@@ -171,6 +183,7 @@ Request SimProcess::abandoned_send() {
   m.src = id_;
   m.sent = sim_.kernel.now();
   m.dst_end = e.peer_end;
+  m.dst = e.peer_at;
   auto& s = stats_;
   ++s.messages_sent;
   s.bytes_sent += bytes;
@@ -184,22 +197,32 @@ inline void Simulation::hold(LinkEnd& e, Message&& m) {
   // run as soon as this event is over (the kernel's loop stops on a failure).
   if (!m.data.empty()) {
     const auto bytes = static_cast<std::int64_t>(m.data.size());
-    if (!declare_memory(e.owner, bytes, received_kind) && !failure) [[unlikely]] {
+    if (!declare_message(e.owner, bytes, received_kind) && !failure) [[unlikely]] {
       failure = std::make_exception_ptr(OutOfMemoryError(refusal(e.owner, bytes, received_kind)));
     }
   }
   HeldMessage& held = e.arrived.append();
   held.data = std::move(m.data);
-  held.send = std::move(m.send);
+  // An asynchronous send completed on arrival: the queue keeps no hold on it, so its process can
+  // reuse the request (send_request) while the message waits here.
+  if (m.synchronous) held.send = std::move(m.send);
   held.synchronous = m.synchronous;
 }
 
 inline void Simulation::hand_over(LinkEnd& e, Message&& m) {
   if (!m.synchronous) complete(m.send);
   if (e.receives.empty()) return hold(e, std::move(m));
-  Request r = std::move(e.receives.front());
-  e.receives.drop_front();
+  PostedReceive& posted = e.receives.front();
+  if (SimProcess* receiver = posted.receiver) {
+    posted.into->swap(m.data);  // the receiver's old storage stays in m's slot (deliver), for its next message
+    if (m.data.capacity() > kSlotKeepsBytes) [[unlikely]] payloads.give(std::move(m.data));
+    e.receives.drop_front();
+    if (m.synchronous) complete(m.send);
+    return receiver->received_into();
+  }
+  Request r = std::move(posted.request);
   r.state()->data = std::move(m.data);
+  e.receives.drop_front();
   if (m.synchronous) complete(m.send);
   complete(r);
 }
@@ -228,10 +251,14 @@ void Simulation::accept_slow(LinkEnd& e, Message&& m) {
 void Simulation::deliver(std::int64_t slot) {
   Message& m = in_flight[slot];  // stays put: nothing parks a message during a delivery
   if (!m.data.empty()) release_memory(m.src, static_cast<std::int64_t>(m.data.size()), in_flight_kind);
-  const std::int64_t end = m.dst_end;  // its pair is not reused while a message travels to it
-  LinkEnd& e = links.at(end);
+  const std::int64_t end = m.dst_end;
+  LinkEnd& e = *m.dst;
   const std::int64_t seq = m.link_seq;
-  e.order.arrive(seq, std::move(m), [this, &e](Message&& next) { accept(e, std::move(next)); });
+  e.order.arrive(seq, std::move(m), [this, &e, &m](Message&& next) __attribute__((always_inline)) {
+    accept(e, std::move(next));
+    // A held successor is not in a slot: what a receiver's vector left in it goes to the pool.
+    if (&next != &m) [[unlikely]] payloads.give(std::move(next.data));
+  });
   // Its payload went on (to a receive, the link's queue, the held messages or the pool); the
   // request it keeps alive must not wait for the slot's reuse.
   m.send = Request();
@@ -275,7 +302,10 @@ Request SimProcess::post_receive(Link& link) {
     m.send = Request();
     e.arrived.drop_front();
   } else {
-    e.receives.push_back(req);
+    PostedReceive& posted = e.receives.append();
+    posted.request = req;
+    posted.into = nullptr;
+    posted.receiver = nullptr;
   }
 }
 
@@ -334,8 +364,11 @@ Bytes SimProcess::recv(Link& link) {
 
 void SimProcess::recv(Link& link, Bytes& into) {
   LinkEnd& e = end_of(link, "recv");
-  // The message is there already (most of a large ring's): no request, no wait, nothing to charge.
-  if (!e.arrived.empty() && !sim_.charges_comm_cpu) return sim_.take_held(e, id_, into);
+  if (!sim_.charges_comm_cpu) [[likely]] {
+    // The message is there already (most of a large ring's): no request, no wait, nothing to charge.
+    if (!e.arrived.empty()) return sim_.take_held(e, id_, into);
+    if (!sim_.trace.enabled()) return receive_into(e, into);
+  }
   Request& r = blocking_receive();
   post_receive(r, e, link);
   RequestState& s = *r.state();
@@ -343,6 +376,22 @@ void SimProcess::recv(Link& link, Bytes& into) {
   // Request::take_into, with the pool known: into's old storage goes back to it.
   into.swap(s.data);
   sim_.payloads.give(std::move(s.data));
+}
+
+// The wait of wait_running, with a flag for the request's state: block() throws when the run is
+// abandoned, or returns while it unwinds already.
+[[gnu::always_inline]] inline void SimProcess::receive_into(LinkEnd& e, Bytes& into) {
+  PostedReceive& posted = e.receives.append();  // its request is null: moved on or never set
+  posted.into = &into;
+  posted.receiver = this;
+  received_ = false;
+  const int peer = e.peer;
+  const machine::SimTime start = sim_.kernel.now();
+  do {
+    block("recv", peer);
+    if (sim_.cancelling) return;
+  } while (!received_);
+  stats_.comm += sim_.kernel.now() - start;
 }
 
 void SimProcess::charge_receive_cpu(RequestState& r) {
@@ -359,73 +408,6 @@ void SimProcess::charge_receive_cpu(RequestState& r) {
 void SimProcess::wait(Request& r) {
   if (!r.valid()) [[unlikely]] throw_empty_request(id_, "wait");
   wait_for(*r.state(), "wait", TraceKind::wait);
-}
-
-namespace {
-
-// The lowest index of a completed request; rs.size() if none is, while some still run.
-std::size_t first_done(std::span<Request* const> rs, int processor) {
-  bool any_running = false;
-  for (std::size_t i = 0; i < rs.size(); ++i) {
-    if (!rs[i]->valid()) throw ParixError(fmt::format("processor {}: wait_any on an empty request", processor));
-    if (rs[i]->test()) return i;
-    any_running = any_running || rs[i]->state()->running();
-  }
-  if (!any_running) throw ParixError(fmt::format("processor {}: wait_any on {} requests, all cancelled", processor, rs.size()));
-  return rs.size();
-}
-
-}  // namespace
-
-std::size_t SimProcess::wait_any(std::span<Request* const> rs) {
-  if (rs.empty()) throw ParixError(fmt::format("processor {}: wait_any on no requests", id_));
-  const machine::SimTime start = sim_.kernel.now();
-  std::size_t i;
-  while ((i = first_done(rs, id_)) == rs.size()) {
-    for (Request* r : rs) r->state()->waiter = this;
-    block("wait_any", rs.size() == 1 ? rs[0]->state()->peer : -1);
-    for (Request* r : rs) r->state()->waiter = nullptr;
-    if (sim_.cancelling) return 0;
-  }
-  const machine::SimTime end = sim_.kernel.now();
-  stats_.comm += end - start;
-  if (sim_.trace.enabled() && end > start) {
-    sim_.trace.record({TraceKind::wait, id_, rs[i]->state()->peer, start, end, 0, -1, "wait_any", thread_});
-  }
-  charge_receive_cpu(*rs[i]->state());
-  return i;
-}
-
-bool SimProcess::cancel(Request& r) {
-  if (!r.valid()) throw_empty_request(id_, "cancel");
-  RequestState& s = *r.state();
-  if (!s.running()) return s.cancelled();
-  if (s.is_receive) {
-    // Not yet matched, so still queued on its link: the link's next message goes to the next one.
-    // Its link is still there: a queued receive keeps the link's slots from reuse.
-    LinkEnd& e = sim_.links.at(s.link);
-    if (e.owner != id_) throw ParixError(fmt::format("processor {}: cancel of a receive of processor {}", id_, e.owner));
-    e.receives.erase_if([&s](const Request& q) { return q.state() == &s; });
-    sim_.links.release_if_done(s.link);
-  }
-  // A send: its message is still in the network (or held for in-order delivery); accept drops it.
-  s.cancel();
-  return true;
-}
-
-Thread SimProcess::spawn(std::function<void(Processor&)> body) {
-  const int thread = static_cast<int>(std::count_if(sim_.processes.begin(), sim_.processes.end(),
-                                                    [&](const auto& p) { return p->id() == id_; }));
-  sim_.processes.push_back(std::make_unique<SimProcess>(sim_, id_, thread));
-  SimProcess* t = sim_.processes.back().get();
-  sim_.launch(t, std::move(body));
-  return Thread([this, t] {
-    while (!t->finished) {
-      t->joiner = this;
-      block("join", id_);
-      if (sim_.cancelling) return;
-    }
-  });
 }
 
 }  // namespace gcsim::parix::detail

@@ -37,6 +37,7 @@ using machine::TraceRecord;
 struct Cancelled {};
 
 class Simulation;
+struct LinkEnd;
 
 // A message on its way or waiting in a link's queue.
 struct Message {
@@ -47,6 +48,7 @@ struct Message {
   std::int64_t id = 0;
   std::int64_t link_seq = 0;  // position on its link: a link delivers in sending order
   std::int64_t dst_end = -1;  // the link end it goes to
+  LinkEnd* dst = nullptr;     // the same, found (its pair is not reused while a message travels to it)
   int src = -1;
   machine::SimTime sent = 0;
 };
@@ -55,8 +57,20 @@ struct Message {
 // the queue moves in and, while it grows, around.
 struct HeldMessage {
   Bytes data;
-  Request send;  // completed when received, if synchronous (else it was on arrival)
+  Request send;  // a synchronous send, completed when received (null: asynchronous, completed on arrival)
   bool synchronous = false;
+};
+
+class SimProcess;
+
+// A receive waiting on its link end: a request, or a blocking receive into the caller's vector
+// (untraced, no [comm_cpu] charge: nothing asks a request's size), which needs none. Its message is
+// swapped straight into that vector and its process woken (Simulation::hand_over); the caller's
+// old storage stays with the message's slot for the next message sent in it.
+struct PostedReceive {
+  Request request;                 // null for a receive into a vector
+  Bytes* into = nullptr;           // the vector, or null
+  SimProcess* receiver = nullptr;  // whom to wake, or null
 };
 
 // One end of a virtual link.
@@ -64,11 +78,12 @@ struct LinkEnd {
   int owner = -1;
   int peer = -1;
   std::int64_t peer_end = -1;
+  LinkEnd* peer_at = nullptr;  // the end of peer_end (ends never move)
   bool open = true;
   std::int64_t sent = 0;                                 // messages sent from this end
   InOrderDelivery<Message> order;                        // holds messages that overtook a predecessor
   Fifo<HeldMessage> arrived;                             // delivered, not yet received
-  Fifo<Request> receives;                                // posted, waiting for a message
+  Fifo<PostedReceive> receives;                          // posted, waiting for a message
   // Nothing the peer sent is still travelling or held, and nothing waits here: the slot may go.
   bool idle(const LinkEnd& peer) const {
     return peer.sent == order.delivered() && arrived.empty() && receives.empty();
@@ -100,6 +115,11 @@ class SimProcess final : public Processor, public Waiter {
   // Suspends this fiber until wake(); `call` and `peer` describe the wait for deadlock reports.
   void block(const char* call, int peer);
   void wake() override;
+  // Simulation::hand_over put the message of receive_into in its vector.
+  void received_into() {
+    received_ = true;
+    wake();
+  }
   // Blocks while a is running (until it is done or cancelled); false when the run was abandoned
   // meanwhile (a is then cancelled).
   bool wait_for_activity(Activity& a, const char* call, int peer);
@@ -125,9 +145,16 @@ class SimProcess final : public Processor, public Waiter {
   // Posts a receive on link's end with req (fresh or rearmed) and matches it with an arrived message.
   void post_receive(Request& req, Link& link);
   void post_receive(Request& req, LinkEnd& e, const Link& link);  // e: link's end, checked
+  // A blocking receive into `into` on e, untraced and uncharged, whose message is not there yet:
+  // posted without a request (see PostedReceive), then waits for it.
+  void receive_into(LinkEnd& e, Bytes& into);
+
   // The request a blocking receive waits on, reused from one receive to the next: once it is over
   // only this process holds it, and it needs neither the pool nor a reset of every field.
   Request& blocking_receive();
+  // The request of an isend or send, reused the same way: once the program has dropped its copy
+  // and the message is delivered, only this process holds it. Else one from the pool, kept next.
+  Request send_request();
   LinkEnd& end_of(const Link& link, const char* call);
   // A request that is over already (a delivered isend) costs a test; waiting for one still
   // running is out of line.
@@ -156,6 +183,8 @@ class SimProcess final : public Processor, public Waiter {
   ProcessorStats& stats_;
   int node_;
   Request blocking_receive_;  // empty until the first blocking receive; see blocking_receive()
+  Request send_request_;      // empty until the first send; see send_request()
+  bool received_ = false;     // receive_into's message has arrived
 };
 
 // options.placement checked to be a permutation of 0..nodes-1; identity when empty.
@@ -211,8 +240,8 @@ class Simulation {
   // The message in `slot` arrived: delivered in place (no copy of it), then the slot is free.
   void deliver(std::int64_t slot);
   // Messages in the network wait in a slab, so callbacks can refer to them by index. A free slot
-  // for the next one, which the caller fills in place: its payload is empty and its request null
-  // (moved on or reset by deliver).
+  // for the next one, which the caller fills in place: its request is null (moved on or reset by
+  // deliver), its payload empty or a receiver's old storage (hand_over), to be overwritten.
   std::int64_t take_slot() {
     if (free_slots.empty()) {
       in_flight.emplace_back();
@@ -242,10 +271,17 @@ class Simulation {
     if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, memory.kind_name(kind));
     return true;
   }
-  // Gives back bytes declared before. Never fails, and needs no warning: a node over its memory
-  // got there by a declare_memory, which kept the first warning.
+  // The same for bytes > 0, a message's (NodeMemory::add).
+  bool declare_message(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
+    machine::NodeMemory& memory = *memory_of[processor];
+    if (!memory.add(bytes, kind)) return false;
+    if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, memory.kind_name(kind));
+    return true;
+  }
+  // Gives back bytes > 0 declared before. Never fails, and needs no warning: a node over its
+  // memory got there by a declaration, which kept the first warning.
   void release_memory(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
-    memory_of[processor]->use(-bytes, kind);
+    memory_of[processor]->release(bytes, kind);
   }
   std::string refusal(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) const {
     const machine::NodeMemory& memory = *memory_of[processor];
@@ -268,6 +304,9 @@ class Simulation {
 
   std::string deadlock_report() const;
 
+  // The most storage a message's slot keeps from a receiver's old vector (see PostedReceive);
+  // more goes back to the pool, which bounds what it keeps.
+  static constexpr std::size_t kSlotKeepsBytes = 4096;
   RequestPool requests;      // first member: outlives every request the others hold
   PayloadPool payloads;      // messages' storage, recycled (parix/payload_pool.hpp)
   machine::MachineConfig config;

@@ -37,6 +37,22 @@ TEST(NodeMemory, AReleaseNeverTakesAKindBelowZero) {
   EXPECT_FALSE(m.use(401, "image"));
 }
 
+// add and release, the runtime's per-message forms, keep the same sums as use(+bytes) and
+// use(-bytes): refused past the node under enforce, a peak, and no kind below zero.
+TEST(NodeMemory, AddAndReleaseKeepTheSumsOfUse) {
+  NodeMemory a(100, MemoryLimit::enforce), b(100, MemoryLimit::enforce);
+  const NodeMemory::Kind ka = a.kind("messages"), kb = b.kind("messages");
+  for (const std::int64_t bytes : {40, 50, 20, -30, 60, -70, -80, 10}) {
+    const bool granted = bytes > 0 ? a.add(bytes, ka) : (a.release(-bytes, ka), true);
+    EXPECT_EQ(granted, b.use(bytes, kb)) << bytes;
+    EXPECT_EQ(a.used(), b.used()) << bytes;
+    EXPECT_EQ(a.peak(), b.peak()) << bytes;
+    EXPECT_EQ(a.breakdown(), b.breakdown()) << bytes;
+  }
+  EXPECT_EQ(a.used(), 10);
+  EXPECT_EQ(a.peak(), 90);
+}
+
 TEST(NodeMemory, TheReportNamesProcessorKindsLargestFirstAndTheLimit) {
   NodeMemory m(32 << 20, MemoryLimit::enforce);
   ASSERT_TRUE(m.use(1 << 20, "scene"));

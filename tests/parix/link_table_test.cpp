@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <string>
 
 #include "parix/collectives.hpp"
 #include "parix/simulated_runtime.hpp"
@@ -53,6 +54,44 @@ TEST(LinkTable, SlotsAreReusedOnlyWhenBothEndsAreClosedAndIdle) {
   EXPECT_FALSE(t.find(d)->busy);
   t.close(a);  // a stale close touches nothing
   EXPECT_TRUE(t.find(c)->open && t.find(d)->open);
+}
+
+// A Link keeps its end's hint (Link::hint): through it a live handle finds its end without the
+// slot's look-up, and a handle whose slot was reused since finds nothing, as find does.
+TEST(LinkTable, AHintFindsTheLiveEndAndNeverAReusedSlotsNewEnd) {
+  LinkTable<FakeEnd> t;
+  const auto [a, b] = t.open_pair();
+  const void* hint_a = t.hint_of(a);
+  EXPECT_EQ(t.find(a, hint_a), t.find(a));
+  EXPECT_EQ(t.find(b, nullptr), t.find(b));  // no hint: the look-up
+  t.close(a);
+  t.close(b);
+  const auto [c, d] = t.open_pair();  // the same slots, a new generation
+  EXPECT_EQ(t.find(a, hint_a), nullptr);
+  EXPECT_EQ(t.find(c, t.hint_of(c)), t.find(c));
+  EXPECT_EQ(t.find(d, t.hint_of(d)), t.find(d));
+}
+
+// Through its hint a link is still checked on every use: another processor's link is refused.
+TEST(LinkTable, ALinkOfAnotherProcessorIsRefusedOnUse) {
+  Link* of_zero = nullptr;
+  std::string error;
+  run_simulated(test_support::published_machine(2), [&](Processor& p) {
+    Link l = p.connect(1 - p.id());
+    if (p.id() == 0) {
+      of_zero = &l;
+      p.recv(l);  // keeps l alive until 1 has tried it
+      return;
+    }
+    p.compute("cycle", 1000);  // 0 has published its link
+    try {
+      p.send(*of_zero, {});
+    } catch (const ParixError& e) {
+      error = e.what();
+    }
+    p.send(l, {});
+  });
+  EXPECT_NE(error.find("processor 1: send on a link owned by processor 0"), std::string::npos) << error;
 }
 
 TEST(LinkTable, AThousandPairsOpenedAndClosedInTurnUseTwoSlots) {

@@ -26,20 +26,30 @@ TEST(PayloadPool, ACopyReusesStorageGivenBack) {
   EXPECT_EQ(pool.kept(), 0u);
 }
 
-// copy_into fills a message's slot in place with recycled storage, replacing what it held.
+// copy_into fills a message's slot in place: with its own storage when that fits, else with recycled
+// storage, the slot's own coming back to the pool.
 TEST(PayloadPool, ACopyIntoReusesStorageInPlace) {
   PayloadPool pool;
   Bytes given = filled(64);
   const std::byte* storage = given.data();
   pool.give(std::move(given));
-  Bytes slot = filled(3, std::byte{5});  // old contents: dropped
+  Bytes slot = filled(3, std::byte{5});  // too small: back to the pool, its contents dropped
   pool.copy_into(slot, filled(64, std::byte{9}));
   EXPECT_EQ(slot.data(), storage);
   EXPECT_EQ(slot, filled(64, std::byte{9}));
-  EXPECT_EQ(pool.kept(), 0u);
-  EXPECT_EQ(pool.kept_bytes(), 0u);
+  EXPECT_EQ(pool.kept(), 1u);
+  EXPECT_EQ(pool.kept_bytes(), 3u);
+  // The slot's own storage fits a shorter message (a slot keeps a receiver's old vector).
+  pool.copy_into(slot, filled(40, std::byte{4}));
+  EXPECT_EQ(slot.data(), storage);
+  EXPECT_EQ(slot, filled(40, std::byte{4}));
+  EXPECT_EQ(pool.kept(), 1u);
+  // An empty message carries no storage: the slot's comes back here.
   pool.copy_into(slot, {});
   EXPECT_TRUE(slot.empty());
+  EXPECT_EQ(slot.capacity(), 0u);
+  EXPECT_EQ(pool.kept(), 2u);
+  EXPECT_EQ(pool.kept_bytes(), 67u);
 }
 
 TEST(PayloadPool, ACopyGetsStorageThatFits) {
