@@ -39,31 +39,56 @@ inline bool negative_axis(const SlabRay& r, int a) {
 }
 
 #if defined(__SSE2__)
-// The ray's slab constants broadcast once per ray, not once per node.
+// The ray's slab constants broadcast once per ray, not once per node. For a walk compiled for the
+// ray's octant, also the reciprocal with its far half negated (see both_children).
 struct SlabLanes {
   const SlabRay& ray;
   __m128 o[3], inv[3], tmin;
+  __m128 inv_signed[3];  // (inv, inv, -inv, -inv); on an axis the ray runs down, (-inv, -inv, inv, inv)
+  __m128 start;          // (tmin, tmin, -inf, -inf)
   SlabLanes(const SlabRay& r, float t0)
       : ray(r),
         o{_mm_set1_ps(r.o[0]), _mm_set1_ps(r.o[1]), _mm_set1_ps(r.o[2])},
         inv{_mm_set1_ps(r.inv[0]), _mm_set1_ps(r.inv[1]), _mm_set1_ps(r.inv[2])},
-        tmin(_mm_set1_ps(t0)) {}
+        tmin(_mm_set1_ps(t0)),
+        start(_mm_setr_ps(t0, t0, -kInfinity, -kInfinity)) {
+    alignas(16) static constexpr float kFlip[2][4] = {{0.0f, 0.0f, -0.0f, -0.0f}, {-0.0f, -0.0f, 0.0f, 0.0f}};
+    for (int a = 0; a < 3; ++a) inv_signed[a] = _mm_xor_ps(inv[a], _mm_load_ps(kFlip[r.negative[a]]));
+  }
 };
 
 template <int kSigns>
 inline unsigned both_children(const PairNode& n, const SlabLanes& r, float tmax, float entry[2]) {
-  __m128 t0 = r.tmin, t1 = _mm_set1_ps(kInfinity);
-  for (int a = 0; a < 3; ++a) {
-    // (lo0, lo1, hi0, hi1) -> distances; the near pair is in the low or high half.
-    const __m128 t = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.bounds[a]), r.o[a]), r.inv[a]);
-    const __m128 swapped = _mm_movehl_ps(t, t);
-    const bool negative = negative_axis<kSigns>(r.ray, a);
-    const __m128 tn = negative ? swapped : t;
-    const __m128 tf = negative ? t : swapped;
-    t0 = _mm_max_ps(tn, t0);
-    t1 = _mm_min_ps(tf, t1);
+  __m128 t0, far;
+  if constexpr (kSigns >= 0) {
+    // One max per axis instead of a max and a min: the far distances are carried negated,
+    // (lo0, lo1, hi0, hi1) - o times (inv, inv, -inv, -inv) being (near0, near1, -far0, -far1)
+    // exactly (negation is exact in every step), halves swapped on an axis the ray runs down.
+    // max(-f, -t) is -min(f, t) bit for bit, and like min it keeps its second operand when the
+    // first is NaN or the two are equal.
+    t0 = r.start;
+    for (int a = 0; a < 3; ++a) {
+      __m128 t = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.bounds[a]), r.o[a]), r.inv_signed[a]);
+      if ((kSigns >> a) & 1) t = _mm_shuffle_ps(t, t, _MM_SHUFFLE(1, 0, 3, 2));
+      t0 = _mm_max_ps(t, t0);
+    }
+    const __m128 t1 = _mm_xor_ps(_mm_movehl_ps(t0, t0), _mm_set1_ps(-0.0f));
+    far = _mm_min_ps(_mm_mul_ps(t1, _mm_set1_ps(1.0f + 2.0f * gamma(3))), _mm_set1_ps(tmax));
+  } else {
+    t0 = r.tmin;
+    __m128 t1 = _mm_set1_ps(kInfinity);
+    for (int a = 0; a < 3; ++a) {
+      // (lo0, lo1, hi0, hi1) -> distances; the near pair is in the low or high half.
+      const __m128 t = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.bounds[a]), r.o[a]), r.inv[a]);
+      const __m128 swapped = _mm_movehl_ps(t, t);
+      const bool negative = r.ray.negative[a];
+      const __m128 tn = negative ? swapped : t;
+      const __m128 tf = negative ? t : swapped;
+      t0 = _mm_max_ps(tn, t0);
+      t1 = _mm_min_ps(tf, t1);
+    }
+    far = _mm_min_ps(_mm_mul_ps(t1, _mm_set1_ps(1.0f + 2.0f * gamma(3))), _mm_set1_ps(tmax));
   }
-  const __m128 far = _mm_min_ps(_mm_mul_ps(t1, _mm_set1_ps(1.0f + 2.0f * gamma(3))), _mm_set1_ps(tmax));
   const __m128 near = _mm_mul_ps(t0, _mm_set1_ps(1.0f - 2.0f * gamma(3)));
   entry[0] = _mm_cvtss_f32(near);
   entry[1] = _mm_cvtss_f32(_mm_shuffle_ps(near, near, _MM_SHUFFLE(1, 1, 1, 1)));
@@ -309,6 +334,11 @@ void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, cons
   if (prims.triangles.empty()) kByOctantAndAxis[octant][2](prims, tree, ray, slab, hit, tally);
   else if (axes[0] == ray.kx && axes[1] == ray.ky) kByOctantAndAxis[octant][kz](prims, tree, ray, slab, hit, tally);
   else ordered<-1, -1>(prims, tree, ray, slab, hit, tally);
+}
+
+void traverse_ordered_generic(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit,
+                              TestTally& tally) {
+  ordered<-1, -1>(prims, tree, ray, SlabRay(ray), hit, tally);
 }
 
 bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally) {

@@ -13,6 +13,10 @@ namespace gcsim::geometry {
 
 void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally);
 void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally);
+// The same walk reading the ray's octant and triangle axes at run time, as it does for a ray
+// with a -0 or NaN component: the reference the tests hold the per-octant walks to.
+void traverse_ordered_generic(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit,
+                              TestTally& tally);
 // True if any primitive is hit with tmin < t < tmax (shadow rays); stops at the first.
 bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally);
 // Every primitive, no tree: the reference the tests compare with.
