@@ -123,16 +123,41 @@ inline unsigned both_children(const PairNode& n, const SlabLanes& lanes, float t
 
 // What the primitive tests need of a ray, prepared once per ray.
 struct QuickRay {
+  // Each set only when there are such primitives: neither is free, and a walk reads only those.
   TriangleRejectRay reject;
   SphereRay sphere;
   // Every primitive tested lies in `box` (the tree's root box); only triangles use it.
-  QuickRay(const Ray& r, const Bounds3& box, bool triangles) : reject(r), sphere(r) {
-    if (triangles) reject.assume_within(box);
+  QuickRay(const Ray& r, const Bounds3& box, const PrimitiveArrays& prims) {
+    if (!prims.triangles.empty()) {
+      reject = TriangleRejectRay(r);
+      reject.assume_within(box);
+    }
+    if (!prims.spheres.empty()) sphere = SphereRay(r);
   }
 };
 
-// test_primitive and occludes with the ray prepared, and the SSE rejection in front of the
-// triangle test: the same tally and the same hits, fewer instructions.
+// intersect_triangle's answer with the SSE rejection in front, finished from the rejection's
+// own sheared vertices and edge functions when it finds the ray inside all three edges.
+inline bool triangle_test_quickly(const Triangle& tri, const Ray& ray, const TriangleRejectRay& reject, float tmax,
+                                  float* t, float* b1, float* b2) {
+#if defined(__SSE2__)
+  __m128 s[4];
+  const RejectVerdict v = triangle_verdict(tri, reject, s);
+  if (v == RejectVerdict::missed) return false;
+  if (v == RejectVerdict::inside) {
+    ShearedTriangle sh;
+    _mm_store_ps(sh.x, s[0]);
+    _mm_store_ps(sh.y, s[1]);
+    _mm_store_ps(sh.z, s[2]);
+    _mm_store_ps(sh.e, s[3]);
+    return finish_triangle_test(sh, ray, tmax, t, b1, b2);
+  }
+#endif
+  return intersect_triangle(tri, ray, tmax, t, b1, b2);
+}
+
+// test_primitive and occludes with the ray prepared and the triangle test above: the same tally
+// and the same hits, fewer instructions.
 inline void test_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, const QuickRay& quick, Hit& hit,
                          TestTally& tally) {
   if (prims.is_sphere(prim)) {
@@ -141,11 +166,9 @@ inline void test_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray,
     if (intersect_sphere(prims.spheres[prim], quick.sphere, hit.t, &t)) hit.offer(t, prim);
     return;
   }
-  if (triangle_surely_missed(prims.triangle(prim), quick.reject)) {
-    ++tally.triangles;
-    return;
-  }
-  test_primitive(prims, prim, ray, hit, tally);
+  ++tally.triangles;
+  float t, b1 = 0, b2 = 0;
+  if (triangle_test_quickly(prims.triangle(prim), ray, quick.reject, hit.t, &t, &b1, &b2)) hit.offer(t, prim, b1, b2);
 }
 
 inline bool occludes_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, const QuickRay& quick, float tmax,
@@ -155,11 +178,9 @@ inline bool occludes_quickly(const PrimitiveArrays& prims, int prim, const Ray& 
     float t;
     return intersect_sphere(prims.spheres[prim], quick.sphere, tmax, &t) && t < tmax;
   }
-  if (triangle_surely_missed(prims.triangle(prim), quick.reject)) {
-    ++tally.triangles;
-    return false;
-  }
-  return occludes(prims, prim, ray, tmax, tally);
+  ++tally.triangles;
+  float t, b1, b2;
+  return triangle_test_quickly(prims.triangle(prim), ray, quick.reject, tmax, &t, &b1, &b2) && t < tmax;
 }
 
 }  // namespace
@@ -200,7 +221,7 @@ bool walk_depth_first(const PackedTree& tree, const Ray& ray, float tmax, TestTa
 }  // namespace
 
 void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
-  const QuickRay quick(ray, tree.root_box, !prims.triangles.empty());
+  const QuickRay quick(ray, tree.root_box, prims);
   walk_depth_first(tree, ray, kInfinity, tally, [&](int p) {
     test_quickly(prims, p, ray, quick, hit, tally);
     return false;
@@ -220,6 +241,21 @@ namespace {
   float t, b1 = 0, b2 = 0;
   if (intersect_triangle(prims.triangle(prim), ray, hit.t, &t, &b1, &b2)) hit.offer(t, prim, b1, b2);
 }
+
+#if defined(__SSE2__)
+// The rest of the watertight test for a triangle the rejection found inside all three edges,
+// from the rejection's own sheared vertices and edge functions (passed in registers): the full
+// test would compute them again.
+[[gnu::noinline]] void finish_triangle(const Ray& ray, int prim, __m128 x, __m128 y, __m128 z, __m128 e, Hit& hit) {
+  ShearedTriangle s;
+  _mm_store_ps(s.x, x);
+  _mm_store_ps(s.y, y);
+  _mm_store_ps(s.z, z);
+  _mm_store_ps(s.e, e);
+  float t, b1 = 0, b2 = 0;
+  if (finish_triangle_test(s, ray, hit.t, &t, &b1, &b2)) hit.offer(t, prim, b1, b2);
+}
+#endif
 
 // test_quickly with the counts in the walk's own locals and only the rejection inline.
 struct OrderedTally {
@@ -252,8 +288,16 @@ template <int kSigns, int kZ>
     return;
   }
   ++tally.triangles;
+#if defined(__SSE2__)
+  __m128 s[4];
+  const RejectVerdict v = triangle_verdict<kx_of<kSigns, kZ>(), ky_of<kSigns, kZ>(), kZ>(
+      view.triangles[prim - view.sphere_count], quick.reject, s);
+  if (v == RejectVerdict::inside) finish_triangle(ray, prim, s[0], s[1], s[2], s[3], hit);
+  else if (v == RejectVerdict::unsure) full_triangle_test(view.prims, prim, ray, hit);
+#else
   if (!triangle_surely_missed<kx_of<kSigns, kZ>(), ky_of<kSigns, kZ>(), kZ>(view.triangles[prim - view.sphere_count], quick.reject))
     full_triangle_test(view.prims, prim, ray, hit);
+#endif
 }
 
 template <int kSigns, int kZ>
@@ -271,7 +315,7 @@ void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ra
   float entry;
   ++tally.boxes;
   if (intersect_box(tree.root_box, ray, hit.t, &entry)) {
-    const QuickRay quick(ray, tree.root_box, !prims.triangles.empty());
+    const QuickRay quick(ray, tree.root_box, prims);
     const SlabLanes lanes(slab, ray.tmin);
     const PrimView view(prims);
     stack[top++] = {tree.root, entry};
@@ -342,7 +386,7 @@ void traverse_ordered_generic(const PrimitiveArrays& prims, const PackedTree& tr
 }
 
 bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally) {
-  const QuickRay quick(ray, tree.root_box, !prims.triangles.empty());
+  const QuickRay quick(ray, tree.root_box, prims);
   return walk_depth_first(tree, ray, tmax, tally,
                           [&](int p) { return occludes_quickly(prims, p, ray, quick, tmax, tally); });
 }

@@ -16,36 +16,18 @@ namespace {
 constexpr float kFloatSafeLargest = 1e12f;
 constexpr float kFloatSafeSmallest = 1e-12f;
 
-// The axes are template parameters so that the permutation costs nothing at run time; T is the
-// arithmetic (float, or double for geometry outside float's safe range); the rounding bounds are
-// T's (the float inputs convert to double exactly).
-template <class T, int kx, int ky, int kz>
-bool watertight(const Triangle& tri, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2) {
-  using V = glm::vec<3, T>;
+// The second half of the test, from the sheared vertices (a, b, c in the ray's frame) and the
+// edge functions. T is the arithmetic (float, or double for geometry outside float's safe range);
+// the rounding bounds are T's.
+template <class T>
+inline bool watertight_finish(T ax, T ay, T az, T bx, T by, T bz, T cx, T cy, T cz, T e0, T e1, T e2, const Ray& ray,
+                              float tmax, float* t_hit, float* b1, float* b2) {
   auto gamma = [](int n) { return gamma_of<T>(n); };
-  // Translate to the ray origin, permute so the dominant direction axis is z, then shear.
-  const V o(ray.origin);
-  const V a = V(tri.p0) - o, b = V(tri.p1) - o, c = V(tri.p2) - o;
-  const T sx = ray.shear_x, sy = ray.shear_y, sz = ray.shear_z;
-  const T az = a[kz], bz = b[kz], cz = c[kz];
-  const T ax = a[kx] + sx * az, ay = a[ky] + sy * az;
-  const T bx = b[kx] + sx * bz, by = b[ky] + sy * bz;
-  const T cx = c[kx] + sx * cz, cy = c[ky] + sy * cz;
-
-  // Edge functions: twice the signed areas of the sub-triangles seen from the ray.
-  T e0 = bx * cy - by * cx;
-  T e1 = cx * ay - cy * ax;
-  T e2 = ax * by - ay * bx;
-  if (std::is_same_v<T, float> && (e0 == 0 || e1 == 0 || e2 == 0)) {
-    // Exactly on an edge in float: decide in double, so the shared edge is never skipped by both.
-    e0 = static_cast<T>(double(bx) * cy - double(by) * cx);
-    e1 = static_cast<T>(double(cx) * ay - double(cy) * ax);
-    e2 = static_cast<T>(double(ax) * by - double(ay) * bx);
-  }
   if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0)) return false;
   const T det = e0 + e1 + e2;
   if (det == 0) return false;  // degenerate, or seen exactly edge-on
 
+  const T sz = ray.shear_z;
   const T zs0 = az * sz, zs1 = bz * sz, zs2 = cz * sz;
   const T t_scaled = e0 * zs0 + e1 * zs1 + e2 * zs2;
   // Reject outside (tmin, tmax] without dividing, widened by the products' rounding so that a
@@ -77,6 +59,33 @@ bool watertight(const Triangle& tri, const Ray& ray, float tmax, float* t_hit, f
   return true;
 }
 
+// The axes are template parameters so that the permutation costs nothing at run time; T is the
+// arithmetic (the float inputs convert to double exactly).
+template <class T, int kx, int ky, int kz>
+bool watertight(const Triangle& tri, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2) {
+  using V = glm::vec<3, T>;
+  // Translate to the ray origin, permute so the dominant direction axis is z, then shear.
+  const V o(ray.origin);
+  const V a = V(tri.p0) - o, b = V(tri.p1) - o, c = V(tri.p2) - o;
+  const T sx = ray.shear_x, sy = ray.shear_y;
+  const T az = a[kz], bz = b[kz], cz = c[kz];
+  const T ax = a[kx] + sx * az, ay = a[ky] + sy * az;
+  const T bx = b[kx] + sx * bz, by = b[ky] + sy * bz;
+  const T cx = c[kx] + sx * cz, cy = c[ky] + sy * cz;
+
+  // Edge functions: twice the signed areas of the sub-triangles seen from the ray.
+  T e0 = bx * cy - by * cx;
+  T e1 = cx * ay - cy * ax;
+  T e2 = ax * by - ay * bx;
+  if (std::is_same_v<T, float> && (e0 == 0 || e1 == 0 || e2 == 0)) {
+    // Exactly on an edge in float: decide in double, so the shared edge is never skipped by both.
+    e0 = static_cast<T>(double(bx) * cy - double(by) * cx);
+    e1 = static_cast<T>(double(cx) * ay - double(cy) * ax);
+    e2 = static_cast<T>(double(ax) * by - double(ay) * bx);
+  }
+  return watertight_finish<T>(ax, ay, az, bx, by, bz, cx, cy, cz, e0, e1, e2, ray, tmax, t_hit, b1, b2);
+}
+
 template <class T>
 bool intersect_in(const Triangle& tri, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2) {
   switch (ray.kz * 3 + ray.kx) {
@@ -90,6 +99,11 @@ bool intersect_in(const Triangle& tri, const Ray& ray, float tmax, float* t_hit,
 }
 
 }  // namespace
+
+bool finish_triangle_test(const ShearedTriangle& s, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2) {
+  return watertight_finish<float>(s.x[0], s.y[0], s.z[0], s.x[1], s.y[1], s.z[1], s.x[2], s.y[2], s.z[2], s.e[0],
+                                  s.e[1], s.e[2], ray, tmax, t_hit, b1, b2);
+}
 
 bool intersect_triangle(const Triangle& tri, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2) {
   const glm::vec3 m = glm::max(glm::max(abs_components(tri.p0 - ray.origin), abs_components(tri.p1 - ray.origin)),
