@@ -1,5 +1,6 @@
 #include "apps/common/geometry/traversal.hpp"
 
+#include "apps/common/geometry/triangle_finish.hpp"
 #include "apps/common/geometry/triangle_reject.hpp"
 
 #include <algorithm>
@@ -123,15 +124,11 @@ inline unsigned both_children(const PairNode& n, const SlabLanes& lanes, float t
 
 // What the primitive tests need of a ray, prepared once per ray.
 struct QuickRay {
-  // Each set only when there are such primitives: neither is free, and a walk reads only those.
   TriangleRejectRay reject;
-  SphereRay sphere;
+  SphereRay sphere;  // set only when there are spheres: its conversion to double is not free
   // Every primitive tested lies in `box` (the tree's root box); only triangles use it.
-  QuickRay(const Ray& r, const Bounds3& box, const PrimitiveArrays& prims) {
-    if (!prims.triangles.empty()) {
-      reject = TriangleRejectRay(r);
-      reject.assume_within(box);
-    }
+  QuickRay(const Ray& r, const Bounds3& box, const PrimitiveArrays& prims) : reject(r) {
+    if (!prims.triangles.empty()) reject.assume_within(box);
     if (!prims.spheres.empty()) sphere = SphereRay(r);
   }
 };
@@ -243,17 +240,17 @@ namespace {
 }
 
 #if defined(__SSE2__)
+template <int kLane>
+inline float lane(__m128 v) { return _mm_cvtss_f32(_mm_shuffle_ps(v, v, _MM_SHUFFLE(kLane, kLane, kLane, kLane))); }
+
 // The rest of the watertight test for a triangle the rejection found inside all three edges,
-// from the rejection's own sheared vertices and edge functions (passed in registers): the full
-// test would compute them again.
+// from the rejection's own sheared vertices and edge functions, taken from the registers they
+// arrive in (stored and reloaded as floats, they would wait for store forwarding).
 [[gnu::noinline]] void finish_triangle(const Ray& ray, int prim, __m128 x, __m128 y, __m128 z, __m128 e, Hit& hit) {
-  ShearedTriangle s;
-  _mm_store_ps(s.x, x);
-  _mm_store_ps(s.y, y);
-  _mm_store_ps(s.z, z);
-  _mm_store_ps(s.e, e);
   float t, b1 = 0, b2 = 0;
-  if (finish_triangle_test(s, ray, hit.t, &t, &b1, &b2)) hit.offer(t, prim, b1, b2);
+  if (watertight_finish<float>(lane<0>(x), lane<0>(y), lane<0>(z), lane<1>(x), lane<1>(y), lane<1>(z), lane<2>(x),
+                               lane<2>(y), lane<2>(z), lane<0>(e), lane<1>(e), lane<2>(e), ray, hit.t, &t, &b1, &b2))
+    hit.offer(t, prim, b1, b2);
 }
 #endif
 
