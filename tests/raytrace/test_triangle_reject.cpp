@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "apps/common/geometry/traversal.hpp"
 #include "apps/common/geometry/triangle_reject.hpp"
 #include "apps/common/rng.hpp"
 #include "apps/raytrace/geometry_names.hpp"
@@ -33,6 +34,16 @@ void check(const Triangle& tri, const Ray& ray, Agreement& a) {
   ASSERT_EQ(triangle_surely_missed(tri, within), rejected);
   hit ? ++a.hits : ++a.misses;
   a.rejected += rejected;
+  // test_primitive_quickly (the uniformity test's fill) against test_primitive: hit and count.
+  PrimitiveArrays one;
+  one.triangles.push_back(tri);
+  Hit quick, full;
+  TestTally quick_tally, full_tally;
+  test_primitive_quickly(one, 0, ray, quick, quick_tally);
+  test_primitive(one, 0, ray, full, full_tally);
+  ASSERT_TRUE(quick.prim == full.prim && same_bits(quick.t, full.t) && same_bits(quick.b1, full.b1) &&
+              same_bits(quick.b2, full.b2));
+  ASSERT_EQ(quick_tally.triangles, full_tally.triangles);
   // Inside all three edges: finishing from the rejection's own sheared vertices and edge
   // functions answers as the full test does, bit for bit, for any tmax (also exactly t).
   __m128 rows[4];

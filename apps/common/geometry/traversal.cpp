@@ -133,6 +133,19 @@ struct QuickRay {
   }
 };
 
+#if defined(__SSE2__)
+template <int kLane>
+inline float lane(__m128 v) { return _mm_cvtss_f32(_mm_shuffle_ps(v, v, _MM_SHUFFLE(kLane, kLane, kLane, kLane))); }
+
+// finish_triangle_test with the rejection's rows taken from the registers they arrive in (stored
+// and reloaded as floats, they would wait for store forwarding).
+inline bool finish_from_lanes(const Ray& ray, __m128 x, __m128 y, __m128 z, __m128 e, float tmax, float* t, float* b1,
+                              float* b2) {
+  return watertight_finish<float>(lane<0>(x), lane<0>(y), lane<0>(z), lane<1>(x), lane<1>(y), lane<1>(z), lane<2>(x),
+                                  lane<2>(y), lane<2>(z), lane<0>(e), lane<1>(e), lane<2>(e), ray, tmax, t, b1, b2);
+}
+#endif
+
 // intersect_triangle's answer with the SSE rejection in front, finished from the rejection's
 // own sheared vertices and edge functions when it finds the ray inside all three edges.
 inline bool triangle_test_quickly(const Triangle& tri, const Ray& ray, const TriangleRejectRay& reject, float tmax,
@@ -141,14 +154,7 @@ inline bool triangle_test_quickly(const Triangle& tri, const Ray& ray, const Tri
   __m128 s[4];
   const RejectVerdict v = triangle_verdict(tri, reject, s);
   if (v == RejectVerdict::missed) return false;
-  if (v == RejectVerdict::inside) {
-    ShearedTriangle sh;
-    _mm_store_ps(sh.x, s[0]);
-    _mm_store_ps(sh.y, s[1]);
-    _mm_store_ps(sh.z, s[2]);
-    _mm_store_ps(sh.e, s[3]);
-    return finish_triangle_test(sh, ray, tmax, t, b1, b2);
-  }
+  if (v == RejectVerdict::inside) return finish_from_lanes(ray, s[0], s[1], s[2], s[3], tmax, t, b1, b2);
 #endif
   return intersect_triangle(tri, ray, tmax, t, b1, b2);
 }
@@ -240,17 +246,12 @@ namespace {
 }
 
 #if defined(__SSE2__)
-template <int kLane>
-inline float lane(__m128 v) { return _mm_cvtss_f32(_mm_shuffle_ps(v, v, _MM_SHUFFLE(kLane, kLane, kLane, kLane))); }
-
 // The rest of the watertight test for a triangle the rejection found inside all three edges,
-// from the rejection's own sheared vertices and edge functions, taken from the registers they
-// arrive in (stored and reloaded as floats, they would wait for store forwarding).
+// from the rejection's own sheared vertices and edge functions (the full test would compute
+// them again).
 [[gnu::noinline]] void finish_triangle(const Ray& ray, int prim, __m128 x, __m128 y, __m128 z, __m128 e, Hit& hit) {
   float t, b1 = 0, b2 = 0;
-  if (watertight_finish<float>(lane<0>(x), lane<0>(y), lane<0>(z), lane<1>(x), lane<1>(y), lane<1>(z), lane<2>(x),
-                               lane<2>(y), lane<2>(z), lane<0>(e), lane<1>(e), lane<2>(e), ray, hit.t, &t, &b1, &b2))
-    hit.offer(t, prim, b1, b2);
+  if (finish_from_lanes(ray, x, y, z, e, hit.t, &t, &b1, &b2)) hit.offer(t, prim, b1, b2);
 }
 #endif
 
@@ -386,6 +387,17 @@ bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, cons
   const QuickRay quick(ray, tree.root_box, prims);
   return walk_depth_first(tree, ray, tmax, tally,
                           [&](int p) { return occludes_quickly(prims, p, ray, quick, tmax, tally); });
+}
+
+void test_primitive_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, Hit& hit, TestTally& tally) {
+  if (prims.is_sphere(prim)) {
+    test_primitive(prims, prim, ray, hit, tally);
+    return;
+  }
+  ++tally.triangles;
+  float t, b1 = 0, b2 = 0;
+  if (triangle_test_quickly(prims.triangle(prim), ray, TriangleRejectRay(ray), hit.t, &t, &b1, &b2))
+    hit.offer(t, prim, b1, b2);
 }
 
 void intersect_brute_force(const PrimitiveArrays& prims, const Ray& ray, Hit& hit, TestTally& tally) {

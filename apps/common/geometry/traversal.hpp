@@ -19,6 +19,9 @@ void traverse_ordered_generic(const PrimitiveArrays& prims, const PackedTree& tr
                               TestTally& tally);
 // True if any primitive is hit with tmin < t < tmax (shadow rays); stops at the first.
 bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally);
+// test_primitive (primitive_test.hpp) with the SSE rejection and, inside all three edges, the
+// triangle test finished from its values: the same hit and count, fewer instructions.
+void test_primitive_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, Hit& hit, TestTally& tally);
 // Every primitive, no tree: the reference the tests compare with.
 void intersect_brute_force(const PrimitiveArrays& prims, const Ray& ray, Hit& hit, TestTally& tally);
 
