@@ -316,10 +316,15 @@ void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ra
     const QuickRay quick(ray, tree.root_box, prims);
     const SlabLanes lanes(slab, ray.tmin);
     const PrimView view(prims);
-    stack[top++] = {tree.root, entry};
-    while (top > 0) {
-      const Entry e = stack[--top];
-      if (e.entry > hit.t) continue;  // figure 3: a nearer primitive was found meanwhile
+    // The node to expand next stays in registers: the child the binary walk would push last, and
+    // so pop at once, is taken without the trip through the stack (same order, same checks).
+    Entry e{tree.root, entry};
+    for (;;) {
+      if (e.entry > hit.t) {  // figure 3: a nearer primitive was found meanwhile
+        if (top == 0) break;
+        e = stack[--top];
+        continue;
+      }
       const PairNode& n = tree.nodes[e.node];
       Entry found[2];
       int count = 0;
@@ -336,16 +341,20 @@ void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ra
           if (mask >> i & 1u) found[count++] = {n.child[i], entries[i]};
         }
       }
-      if (count == 2) {
+      if (count == 2 && top + 2 <= kStackSize) {
         ++tally.sorts;  // a binary tree sorts its children with one comparison (2.2.2)
         if (found[0].entry < found[1].entry) std::swap(found[0], found[1]);
-        if (top + 2 <= kStackSize) {
-          stack[top++] = found[0];  // farther, visited second
-          stack[top++] = found[1];
-        }
-      } else if (count == 1 && top < kStackSize) {
-        stack[top++] = found[0];
+        stack[top++] = found[0];  // farther, visited second
+        e = found[1];
+        continue;
       }
+      if (count == 2) ++tally.sorts;  // sorted, but no room to push: both are dropped
+      else if (count == 1 && top < kStackSize) {
+        e = found[0];
+        continue;
+      }
+      if (top == 0) break;
+      e = stack[--top];
     }
   }
   counts.boxes += tally.boxes;
