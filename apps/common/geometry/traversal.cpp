@@ -203,20 +203,27 @@ bool walk_depth_first(const PackedTree& tree, const Ray& ray, float tmax, TestTa
   const SlabLanes lanes(slab, ray.tmin);
   NodeRef stack[kStackSize];
   int top = 0;
-  stack[top++] = tree.root;
-  while (top > 0) {
-    const PairNode& n = tree.nodes[stack[--top]];
+  NodeRef node = tree.root;  // in registers: the first child, pushed last, is taken at once
+  for (;;) {
+    const PairNode& n = tree.nodes[node];
     float entries[2];
     const unsigned mask = both_children<-1>(n, lanes, tmax, entries);
-    for (int i = 1; i >= 0; --i) {  // push the second child first: the first is visited first
+    bool next = false;
+    for (int i = 1; i >= 0; --i) {  // the second child first on the stack: the first is visited first
       const NodeRef c = n.child[i];
       if (is_primitive(c)) {
         if (visit(primitive_of(c))) return true;
       } else {
         ++tally.boxes;
-        if ((mask >> i & 1u) && top < kStackSize) stack[top++] = c;
+        if ((mask >> i & 1u) && top < kStackSize) {
+          if (i == 0) node = c, next = true;
+          else stack[top++] = c;
+        }
       }
     }
+    if (next) continue;
+    if (top == 0) break;
+    node = stack[--top];
   }
   return false;
 }
