@@ -1,16 +1,22 @@
 // The single-ray walk compiled per octant (traversal.cpp: far distances carried negated, one max
-// per axis) must give exactly what the generic walk, which reads the octant at run time, gives:
-// hit, distance and barycentrics bit for bit, and every count. Hard cases: rays through the
+// per axis) must give exactly what the generic walk, which reads the octant at run time, gives,
+// and both what a plainly written walk gives: hit, distance and barycentrics bit for bit, and
+// every count. Hard cases: rays through the
 // corners and edge midpoints of every child box, axis-parallel rays lying in the boxes' slab
 // planes (0 * inf = NaN), rays from inside boxes, rays starting with a hit, empty and
 // one-primitive trees, over every built-in scene and its subtrees.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "apps/common/geometry/bounds.hpp"
 #include "apps/common/geometry/bvh.hpp"
+#include "apps/common/geometry/primitive_test.hpp"
 #include "apps/common/geometry/traversal.hpp"
 #include "apps/common/rng.hpp"
 #include "apps/raytrace/builtin_scenes.hpp"
@@ -22,12 +28,69 @@ namespace {
 
 bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
+// The walk's slab test of one child box, plainly: near and far planes picked by the direction's
+// sign (so a NaN from 0 * inf, a ray lying in a slab plane, is skipped on either side, where
+// intersect_box's swap by comparison may keep it), the far end scaled up and clipped to tmax.
+bool plain_box(const PairNode& n, int child, const Ray& ray, float tmax, float* entry) {
+  float t0 = ray.tmin, t1 = kInfinity;
+  for (int a = 0; a < 3; ++a) {
+    float tn = (n.bounds[a][child] - ray.origin[a]) * ray.inv_direction[a];
+    float tf = (n.bounds[a][2 + child] - ray.origin[a]) * ray.inv_direction[a];
+    if (std::signbit(ray.inv_direction[a])) std::swap(tn, tf);
+    t0 = tn > t0 ? tn : t0;
+    t1 = tf < t1 ? tf : t1;
+  }
+  *entry = t0 * (1.0f - 2.0f * gamma(3));
+  return t0 <= std::min(t1 * (1.0f + 2.0f * gamma(3)), tmax);
+}
+
+// The paper's ordered walk spelled out plainly, as the reference for everything the fast walk
+// does differently on the host (slabs of both children at once, far distances negated, triangle
+// tests finished from the rejection, the next node kept out of the stack): a plain stack, one
+// box test per node child against the nearest hit so far, primitive children first.
+void reference_walk(const Scene& s, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+  if (tree.empty) return;
+  if (is_primitive(tree.root)) return test_primitive(s, primitive_of(tree.root), ray, hit, tally);
+  struct Entry { NodeRef node; float entry; };
+  std::vector<Entry> stack;
+  float entry;
+  ++tally.boxes;
+  if (!intersect_box(tree.root_box, ray, hit.t, &entry)) return;
+  stack.push_back({tree.root, entry});
+  while (!stack.empty()) {
+    const Entry e = stack.back();
+    stack.pop_back();
+    if (e.entry > hit.t) continue;
+    const PairNode& n = tree.nodes[e.node];
+    for (int i = 0; i < 2; ++i)
+      if (is_primitive(n.child[i])) test_primitive(s, primitive_of(n.child[i]), ray, hit, tally);
+    std::vector<Entry> found;
+    for (int i = 0; i < 2; ++i) {
+      if (is_primitive(n.child[i])) continue;
+      ++tally.boxes;
+      if (plain_box(n, i, ray, hit.t, &entry)) found.push_back({n.child[i], entry});
+    }
+    if (found.size() == 2) {
+      ++tally.sorts;
+      if (found[0].entry < found[1].entry) std::swap(found[0], found[1]);  // the farther below
+    }
+    for (const Entry& f : found) stack.push_back(f);
+  }
+}
+
 // Returns whether the ray hit something.
 bool expect_walks_agree(const Scene& s, const PackedTree& tree, const Ray& ray, const Hit& start = Hit{}) {
-  Hit fast = start, ref = start;
-  TestTally fast_tally, ref_tally;
+  Hit fast = start, ref = start, plain = start;
+  TestTally fast_tally, ref_tally, plain_tally;
   traverse_ordered(s, tree, ray, fast, fast_tally);
   traverse_ordered_generic(s, tree, ray, ref, ref_tally);
+  reference_walk(s, tree, ray, plain, plain_tally);
+  EXPECT_EQ(plain.prim, ref.prim);
+  EXPECT_TRUE(same_bits(plain.t, ref.t) && same_bits(plain.b1, ref.b1) && same_bits(plain.b2, ref.b2));
+  EXPECT_EQ(plain_tally.boxes, ref_tally.boxes);
+  EXPECT_EQ(plain_tally.spheres, ref_tally.spheres);
+  EXPECT_EQ(plain_tally.triangles, ref_tally.triangles);
+  EXPECT_EQ(plain_tally.sorts, ref_tally.sorts);
   EXPECT_EQ(fast.prim, ref.prim);
   EXPECT_TRUE(same_bits(fast.t, ref.t)) << fast.t << " vs " << ref.t;
   EXPECT_TRUE(same_bits(fast.b1, ref.b1) && same_bits(fast.b2, ref.b2));
