@@ -333,32 +333,33 @@ void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ra
         continue;
       }
       const PairNode& n = tree.nodes[e.node];
-      Entry found[2];
-      int count = 0;
+      const NodeRef c0 = n.child[0], c1 = n.child[1];
       // Primitive children first: their hits tighten the distance the boxes are tested against.
-      const bool prim0 = is_primitive(n.child[0]), prim1 = is_primitive(n.child[1]);
-      if (prim0) test_in_walk<kSigns, kZ>(view, primitive_of(n.child[0]), ray, quick, hit, tally);
-      if (prim1) test_in_walk<kSigns, kZ>(view, primitive_of(n.child[1]), ray, quick, hit, tally);
+      const bool prim0 = is_primitive(c0), prim1 = is_primitive(c1);
+      if (prim0) test_in_walk<kSigns, kZ>(view, primitive_of(c0), ray, quick, hit, tally);
+      if (prim1) test_in_walk<kSigns, kZ>(view, primitive_of(c1), ray, quick, hit, tally);
       if (!(prim0 && prim1)) {
+        // The hit children by name, not in an array: an array went through memory.
         float entries[2];
         const unsigned mask = both_children<kSigns>(n, lanes, hit.t, entries);
-        for (int i = 0; i < 2; ++i) {
-          if (i == 0 ? prim0 : prim1) continue;
-          ++tally.boxes;
-          if (mask >> i & 1u) found[count++] = {n.child[i], entries[i]};
+        tally.boxes += int(!prim0) + int(!prim1);
+        const bool in0 = !prim0 && (mask & 1u), in1 = !prim1 && (mask & 2u);
+        if (in0 && in1) {
+          ++tally.sorts;  // a binary tree sorts its children with one comparison (2.2.2)
+          if (top + 2 <= kStackSize) {  // else both are dropped, as the binary walk drops them
+            if (entries[0] < entries[1]) {  // the farther below, the nearer next
+              stack[top++] = {c1, entries[1]};
+              e = {c0, entries[0]};
+            } else {
+              stack[top++] = {c0, entries[0]};
+              e = {c1, entries[1]};
+            }
+            continue;
+          }
+        } else if ((in0 || in1) && top < kStackSize) {
+          e = in0 ? Entry{c0, entries[0]} : Entry{c1, entries[1]};
+          continue;
         }
-      }
-      if (count == 2 && top + 2 <= kStackSize) {
-        ++tally.sorts;  // a binary tree sorts its children with one comparison (2.2.2)
-        if (found[0].entry < found[1].entry) std::swap(found[0], found[1]);
-        stack[top++] = found[0];  // farther, visited second
-        e = found[1];
-        continue;
-      }
-      if (count == 2) ++tally.sorts;  // sorted, but no room to push: both are dropped
-      else if (count == 1 && top < kStackSize) {
-        e = found[0];
-        continue;
       }
       if (top == 0) break;
       e = stack[--top];

@@ -63,7 +63,7 @@ enum class RejectVerdict { missed, inside, unsure };
 // then stay in registers), -1 to read them from r. Sets `sheared` (ShearedTriangle's rows) unless
 // the verdict is unsure.
 template <int kX = -1, int kY = -1, int kZ = -1>
-inline RejectVerdict triangle_verdict(const Triangle& tri, const TriangleRejectRay& r, __m128 sheared[4]) {
+[[gnu::always_inline]] inline RejectVerdict triangle_verdict(const Triangle& tri, const TriangleRejectRay& r, __m128 sheared[4]) {
   const float* p = &tri.p0.x;
   // Rows p0, p1, p2 (lane 3 unused), all loads inside the 36 bytes of the triangle.
   __m128 r0 = _mm_loadu_ps(p), r1 = _mm_loadu_ps(p + 3), r2 = _mm_loadu_ps(p + 5);
