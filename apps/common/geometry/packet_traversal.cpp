@@ -169,9 +169,13 @@ GCSIM_AVX2_INLINE unsigned intersect_lanes(const Triangle& tri, int prim, const 
   _mm256_store_ps(tv, t);
   _mm256_store_ps(b1, _mm256_mul_ps(e[1], inv_det));
   _mm256_store_ps(b2, _mm256_mul_ps(e[2], inv_det));
+  // The lanes' t updated in one store, not eight scalar ones: the walk reads them back as one
+  // vector, which could not be forwarded from narrower stores. After an offer a lane's t is
+  // min(old t, t) whether or not the id tie-break took the hit.
+  _mm256_store_ps(s.t, _mm256_blendv_ps(tmax, _mm256_min_ps(tmax, t), _mm256_castsi256_ps(lane_mask(hit))));
   for (; hit; hit &= hit - 1) {
     const int i = std::countr_zero(hit);
-    offer(s, i, tv[i], prim, b1[i], b2[i]);
+    s.hit[i].offer(tv[i], prim, b1[i], b2[i]);
   }
   return scalar;
 }
