@@ -229,19 +229,26 @@ bool PrimaryTracer::fill_if_uniform(Region& r, const Rect& q, TestTally& tally, 
                                  counters.uniformity_box_checks))
     return false;
   ++counters.uniform_regions;
+  Ray rays[kPacketLanes];
+  int xs[kPacketLanes], ys[kPacketLanes];
   for (int y = ry0; y <= ry1; ++y)
-    for (int x = rx0; x <= rx1; ++x) {
-      if (r.done(x, y)) continue;
-      // Only P needs testing; its hit gives the distance and barycentrics for shading.
-      const Ray ray = camera_.pixel_ray(x, y);
-      Hit& hit = r.at(x, y);
-      hit = Hit{};
-      test_primitive(scene_, p, ray, hit, tally);
-      // Within rounding distance of P's edge a neighbour may tie or win in float: trace fully.
-      const bool near_edge = !scene_.is_sphere(p) && std::min({hit.b1, hit.b2, 1.0f - hit.b1 - hit.b2}) < 1e-4f;
-      if (!hit.valid() || near_edge) trace_pixel(x, y, hit, tally, counters);
-      else ++counters.uniform_pixels;
-      r.done(x, y) = 1;
+    for (int x = rx0; x <= rx1;) {
+      // The row's pixels not yet traced, their rays made a few at once (the same rays as pixel_ray).
+      int n = 0;
+      for (; x <= rx1 && n < kPacketLanes; ++x)
+        if (!r.done(x, y)) xs[n] = x, ys[n] = y, ++n;
+      camera_.pixel_rays(xs, ys, n, rays);
+      for (int i = 0; i < n; ++i) {
+        // Only P needs testing; its hit gives the distance and barycentrics for shading.
+        Hit& hit = r.at(xs[i], y);
+        hit = Hit{};
+        test_primitive_quickly(scene_, p, rays[i], hit, tally);
+        // Within rounding distance of P's edge a neighbour may tie or win in float: trace fully.
+        const bool near_edge = !scene_.is_sphere(p) && std::min({hit.b1, hit.b2, 1.0f - hit.b1 - hit.b2}) < 1e-4f;
+        if (!hit.valid() || near_edge) trace_pixel(xs[i], y, hit, tally, counters);
+        else ++counters.uniform_pixels;
+        r.done(xs[i], y) = 1;
+      }
     }
   return true;
 }

@@ -1,6 +1,8 @@
 // Hard cases of the intersection routines: watertightness, axis-parallel rays, grazing hits,
 // degenerate triangles, tiny and huge spheres.
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -151,6 +153,32 @@ TEST(Scale, TinyAndHugeSpheres) {
     // From inside: the far side.
     ASSERT_TRUE(intersect_sphere(s, Ray(s.center, {1, 0, 0}), kInfinity, &t));
     EXPECT_NEAR(t, r, r * 1e-5f);
+  }
+}
+
+// Bounds3::distance_to (maxss, no branches) against the glm formulation it replaced, bit for bit:
+// points inside, on faces, edges and corners, at +-0 coordinates, far away, and a flat box.
+TEST(BoxDistance, BranchFreeEqualsTheGlmFormulation) {
+  apps::Rng rng(3);
+  const Bounds3 boxes[] = {{{-1, -2, -3}, {1, 2, 3}}, {{0, 0, 0}, {0, 0, 0}}, {{-0.0f, 1, 2}, {0.0f, 1, 5}},
+                           {{1e-20f, -1e20f, 3}, {1e-10f, 1e20f, 3}}};
+  for (const Bounds3& b : boxes) {
+    std::vector<glm::vec3> points;
+    for (int i = 0; i < 27; ++i) {  // corners, edge and face midpoints, the centre
+      glm::vec3 p;
+      for (int a = 0, k = i; a < 3; ++a, k /= 3) p[a] = k % 3 == 0 ? b.lo[a] : k % 3 == 1 ? b.center()[a] : b.hi[a];
+      points.push_back(p);
+      points.push_back(-p);
+    }
+    for (int i = 0; i < 200; ++i)
+      points.push_back(b.center() + glm::vec3(rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-4, 4)) *
+                                        glm::max(b.extent(), glm::vec3(1.0f)));
+    points.push_back({-0.0f, -0.0f, -0.0f});
+    for (const glm::vec3& p : points) {
+      const glm::vec3 d = glm::max(glm::max(b.lo - p, p - b.hi), glm::vec3(0.0f));
+      const float ref = std::sqrt(glm::dot(d, d)), got = b.distance_to(p);
+      EXPECT_EQ(std::memcmp(&ref, &got, sizeof ref), 0) << ref << " vs " << got;
+    }
   }
 }
 

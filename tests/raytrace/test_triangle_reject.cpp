@@ -1,10 +1,14 @@
 // The SSE rejection in front of the watertight triangle test must never reject a triangle the
-// full test hits, on the hard cases: rays through vertices and along shared edges, axis-parallel
-// and grazing rays, degenerate triangles, coordinates near float's safe range.
+// full test hits, and finishing the test from its values must answer as the full test does, on
+// the hard cases: rays through vertices and along shared edges, axis-parallel and grazing rays,
+// degenerate triangles, coordinates near float's safe range.
+#include <cmath>
+#include <cstring>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "apps/common/geometry/traversal.hpp"
 #include "apps/common/geometry/triangle_reject.hpp"
 #include "apps/common/rng.hpp"
 #include "apps/raytrace/geometry_names.hpp"
@@ -14,8 +18,10 @@ namespace gcsim::raytrace {
 namespace {
 
 struct Agreement {
-  int hits = 0, misses = 0, rejected = 0;
+  int hits = 0, misses = 0, rejected = 0, inside = 0;
 };
+
+bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 // Checks one ray against one triangle; returns through `a` how often each outcome happened.
 void check(const Triangle& tri, const Ray& ray, Agreement& a) {
@@ -28,6 +34,36 @@ void check(const Triangle& tri, const Ray& ray, Agreement& a) {
   ASSERT_EQ(triangle_surely_missed(tri, within), rejected);
   hit ? ++a.hits : ++a.misses;
   a.rejected += rejected;
+  // test_primitive_quickly (the uniformity test's fill) against test_primitive: hit and count.
+  PrimitiveArrays one;
+  one.triangles.push_back(tri);
+  Hit quick, full;
+  TestTally quick_tally, full_tally;
+  test_primitive_quickly(one, 0, ray, quick, quick_tally);
+  test_primitive(one, 0, ray, full, full_tally);
+  ASSERT_TRUE(quick.prim == full.prim && same_bits(quick.t, full.t) && same_bits(quick.b1, full.b1) &&
+              same_bits(quick.b2, full.b2));
+  ASSERT_EQ(quick_tally.triangles, full_tally.triangles);
+  // Inside all three edges: finishing from the rejection's own sheared vertices and edge
+  // functions answers as the full test does, bit for bit, for any tmax (also exactly t).
+  __m128 rows[4];
+  if (triangle_verdict(tri, TriangleRejectRay(ray), rows) == RejectVerdict::inside) {
+    ShearedTriangle sh;
+    _mm_store_ps(sh.x, rows[0]);
+    _mm_store_ps(sh.y, rows[1]);
+    _mm_store_ps(sh.z, rows[2]);
+    _mm_store_ps(sh.e, rows[3]);
+    ++a.inside;
+    for (float tmax : {kInfinity, hit ? t : 1.0f, hit ? std::nextafter(t, 0.0f) : 1e30f, hit ? 2.0f * t : 0.5f}) {
+      float t1 = -1, b11 = -1, b21 = -1, t2 = -1, b12 = -1, b22 = -1;
+      const bool full = intersect_triangle(tri, ray, tmax, &t1, &b11, &b21);
+      const bool finished = finish_triangle_test(sh, ray, tmax, &t2, &b12, &b22);
+      ASSERT_EQ(full, finished);
+      if (full) {
+        ASSERT_TRUE(same_bits(t1, t2) && same_bits(b11, b12) && same_bits(b21, b22));
+      }
+    }
+  }
   ASSERT_FALSE(hit && rejected) << "rejected a hit: ray (" << ray.origin.x << ", " << ray.origin.y << ", "
                                 << ray.origin.z << ") dir (" << ray.direction.x << ", " << ray.direction.y << ", "
                                 << ray.direction.z << ")";
@@ -77,6 +113,7 @@ TEST(TriangleReject, NeverRejectsAHitOnHardCases) {
   // float's safe range, which only the full test rejects).
   EXPECT_GT(a.hits, 1000);
   EXPECT_GT(a.rejected, a.misses / 8);
+  EXPECT_GT(a.inside, a.hits / 4);  // and finishes from its values (vertex and edge hits cannot)
 }
 
 TEST(TriangleReject, SharedEdgesOfAGridAreNeverRejectedBoth) {

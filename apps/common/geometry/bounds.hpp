@@ -38,8 +38,19 @@ struct Bounds3 {
   }
   // Euclidean distance from p to the nearest point of the box (0 inside).
   float distance_to(glm::vec3 p) const {
+#if defined(__SSE2__)
+    // max by maxss: written as glm::max, the compiler branches on each axis's sign (max(x, 0)^2
+    // is 0 or x^2), which mispredicts in the uniformity test's loop. A tie between zeros may
+    // keep the other sign; the square is +0 either way, so the distance is the same.
+    const auto gap = [](float below, float above) {
+      return _mm_cvtss_f32(_mm_max_ss(_mm_max_ss(_mm_set_ss(below), _mm_set_ss(above)), _mm_setzero_ps()));
+    };
+    const float dx = gap(lo.x - p.x, p.x - hi.x), dy = gap(lo.y - p.y, p.y - hi.y), dz = gap(lo.z - p.z, p.z - hi.z);
+    return std::sqrt(dx * dx + dy * dy + dz * dz);
+#else
     const glm::vec3 d = glm::max(glm::max(lo - p, p - hi), glm::vec3(0.0f));
     return std::sqrt(glm::dot(d, d));
+#endif
   }
 };
 

@@ -169,9 +169,13 @@ GCSIM_AVX2_INLINE unsigned intersect_lanes(const Triangle& tri, int prim, const 
   _mm256_store_ps(tv, t);
   _mm256_store_ps(b1, _mm256_mul_ps(e[1], inv_det));
   _mm256_store_ps(b2, _mm256_mul_ps(e[2], inv_det));
+  // The lanes' t updated in one store, not eight scalar ones: the walk reads them back as one
+  // vector, which could not be forwarded from narrower stores. After an offer a lane's t is
+  // min(old t, t) whether or not the id tie-break took the hit.
+  _mm256_store_ps(s.t, _mm256_blendv_ps(tmax, _mm256_min_ps(tmax, t), _mm256_castsi256_ps(lane_mask(hit))));
   for (; hit; hit &= hit - 1) {
     const int i = std::countr_zero(hit);
-    offer(s, i, tv[i], prim, b1[i], b2[i]);
+    s.hit[i].offer(tv[i], prim, b1[i], b2[i]);
   }
   return scalar;
 }
@@ -314,40 +318,53 @@ GCSIM_AVX2 bool walk(const PrimitiveArrays& prims, const PackedTree& tree, const
   const unsigned live = lanes & root_box(tree.root_box, l, _mm256_load_ps(s.t), root_entry);
   thread_local Entry stack[kStackSize];  // fiber stacks are small
   int top = 0;
-  push(stack, top, tree.root, live, root_entry);
-  while (top > 0) {
-    const Entry& e = stack[--top];  // read before anything is pushed over it
+  // The node to expand next stays in registers: the entry the walk would push last, and so pop
+  // at once, is taken without the trip through the stack (same order and checks).
+  NodeRef node = tree.root;
+  unsigned node_lanes = live;
+  __m256 node_entry = root_entry;
+  while (node_lanes) {
     const __m256 t = _mm256_load_ps(s.t);
     // figure 3: lanes that found a nearer primitive meanwhile prune the node.
-    const unsigned active =
-        e.lanes & ~unsigned(_mm256_movemask_ps(_mm256_cmp_ps(_mm256_load_ps(e.entry), t, _CMP_GT_OQ)));
-    if (!active) continue;
-    const PairNode& n = tree.nodes[e.node];
-    const bool prim0 = is_primitive(n.child[0]), prim1 = is_primitive(n.child[1]);
-    if (prim0) test_lanes(prims, primitive_of(n.child[0]), rays, l, active, s, k);
-    if (prim1) test_lanes(prims, primitive_of(n.child[1]), rays, l, active, s, k);
-    if (prim0 && prim1) continue;
-    const __m256 tmax = _mm256_load_ps(s.t);
-    __m256 near0 = tmax, near1 = tmax;
-    const unsigned hit0 = prim0 ? 0u : child_box<kOctant>(n, 0, l, tmax, near0) & active;
-    const unsigned hit1 = prim1 ? 0u : child_box<kOctant>(n, 1, l, tmax, near1) & active;
-    if (!prim0) count(k.boxes, active);
-    if (!prim1) count(k.boxes, active);
-    const unsigned both = hit0 & hit1, only0 = hit0 & ~both, only1 = hit1 & ~both;
-    count(k.sorts, both);
-    // traverse_ordered visits child 0 first only when its entry is strictly nearer.
-    const unsigned first0 = both & unsigned(_mm256_movemask_ps(_mm256_cmp_ps(near0, near1, _CMP_LT_OQ)));
-    const unsigned first1 = both & ~first0;
-    const NodeRef c0 = n.child[0], c1 = n.child[1];
-    bool ok;
-    if (std::popcount(first0) >= std::popcount(first1)) {  // popped: c0, c1, then c0 for first1
-      ok = push(stack, top, c0, first1, near0) && push(stack, top, c1, both | only1, near1) &&
-           push(stack, top, c0, first0 | only0, near0);
-    } else {  // popped: c1, c0, then c1 for first0
-      ok = push(stack, top, c1, first0, near1) && push(stack, top, c0, both | only0, near0) &&
-           push(stack, top, c1, first1 | only1, near1);
+    const unsigned active = node_lanes & ~unsigned(_mm256_movemask_ps(_mm256_cmp_ps(node_entry, t, _CMP_GT_OQ)));
+    if (active) {
+      const PairNode& n = tree.nodes[node];
+      const bool prim0 = is_primitive(n.child[0]), prim1 = is_primitive(n.child[1]);
+      if (prim0) test_lanes(prims, primitive_of(n.child[0]), rays, l, active, s, k);
+      if (prim1) test_lanes(prims, primitive_of(n.child[1]), rays, l, active, s, k);
+      if (!(prim0 && prim1)) {
+        const __m256 tmax = _mm256_load_ps(s.t);
+        __m256 near0 = tmax, near1 = tmax;
+        const unsigned hit0 = prim0 ? 0u : child_box<kOctant>(n, 0, l, tmax, near0) & active;
+        const unsigned hit1 = prim1 ? 0u : child_box<kOctant>(n, 1, l, tmax, near1) & active;
+        if (!prim0) count(k.boxes, active);
+        if (!prim1) count(k.boxes, active);
+        const unsigned both = hit0 & hit1, only0 = hit0 & ~both, only1 = hit1 & ~both;
+        count(k.sorts, both);
+        // traverse_ordered visits child 0 first only when its entry is strictly nearer.
+        const unsigned first0 = both & unsigned(_mm256_movemask_ps(_mm256_cmp_ps(near0, near1, _CMP_LT_OQ)));
+        const unsigned first1 = both & ~first0;
+        const NodeRef c0 = n.child[0], c1 = n.child[1];
+        // Popped: the last of the three first, so it is not pushed at all.
+        const bool c0_first = std::popcount(first0) >= std::popcount(first1);  // c0, c1, then c0 again
+        const bool ok = c0_first ? push(stack, top, c0, first1, near0) && push(stack, top, c1, both | only1, near1)
+                                 : push(stack, top, c1, first0, near1) && push(stack, top, c0, both | only0, near0);
+        if (!ok) return false;
+        const unsigned last = c0_first ? first0 | only0 : first1 | only1;
+        if (last) {
+          if (top >= kStackSize) return false;  // where its push would have failed
+          node = c0_first ? c0 : c1;
+          node_lanes = last;
+          node_entry = c0_first ? near0 : near1;
+          continue;
+        }
+      }
     }
-    if (!ok) return false;
+    if (top == 0) break;
+    const Entry& e = stack[--top];
+    node = e.node;
+    node_lanes = e.lanes;
+    node_entry = _mm256_load_ps(e.entry);
   }
   alignas(32) std::int32_t boxes[8], spheres[8], triangles[8], sorts[8];
   _mm256_store_si256(reinterpret_cast<__m256i*>(boxes), k.boxes);

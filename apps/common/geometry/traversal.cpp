@@ -1,5 +1,6 @@
 #include "apps/common/geometry/traversal.hpp"
 
+#include "apps/common/geometry/triangle_finish.hpp"
 #include "apps/common/geometry/triangle_reject.hpp"
 
 #include <algorithm>
@@ -39,31 +40,56 @@ inline bool negative_axis(const SlabRay& r, int a) {
 }
 
 #if defined(__SSE2__)
-// The ray's slab constants broadcast once per ray, not once per node.
+// The ray's slab constants broadcast once per ray, not once per node. For a walk compiled for the
+// ray's octant, also the reciprocal with its far half negated (see both_children).
 struct SlabLanes {
   const SlabRay& ray;
   __m128 o[3], inv[3], tmin;
+  __m128 inv_signed[3];  // (inv, inv, -inv, -inv); on an axis the ray runs down, (-inv, -inv, inv, inv)
+  __m128 start;          // (tmin, tmin, -inf, -inf)
   SlabLanes(const SlabRay& r, float t0)
       : ray(r),
         o{_mm_set1_ps(r.o[0]), _mm_set1_ps(r.o[1]), _mm_set1_ps(r.o[2])},
         inv{_mm_set1_ps(r.inv[0]), _mm_set1_ps(r.inv[1]), _mm_set1_ps(r.inv[2])},
-        tmin(_mm_set1_ps(t0)) {}
+        tmin(_mm_set1_ps(t0)),
+        start(_mm_setr_ps(t0, t0, -kInfinity, -kInfinity)) {
+    alignas(16) static constexpr float kFlip[2][4] = {{0.0f, 0.0f, -0.0f, -0.0f}, {-0.0f, -0.0f, 0.0f, 0.0f}};
+    for (int a = 0; a < 3; ++a) inv_signed[a] = _mm_xor_ps(inv[a], _mm_load_ps(kFlip[r.negative[a]]));
+  }
 };
 
 template <int kSigns>
 inline unsigned both_children(const PairNode& n, const SlabLanes& r, float tmax, float entry[2]) {
-  __m128 t0 = r.tmin, t1 = _mm_set1_ps(kInfinity);
-  for (int a = 0; a < 3; ++a) {
-    // (lo0, lo1, hi0, hi1) -> distances; the near pair is in the low or high half.
-    const __m128 t = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.bounds[a]), r.o[a]), r.inv[a]);
-    const __m128 swapped = _mm_movehl_ps(t, t);
-    const bool negative = negative_axis<kSigns>(r.ray, a);
-    const __m128 tn = negative ? swapped : t;
-    const __m128 tf = negative ? t : swapped;
-    t0 = _mm_max_ps(tn, t0);
-    t1 = _mm_min_ps(tf, t1);
+  __m128 t0, far;
+  if constexpr (kSigns >= 0) {
+    // One max per axis instead of a max and a min: the far distances are carried negated,
+    // (lo0, lo1, hi0, hi1) - o times (inv, inv, -inv, -inv) being (near0, near1, -far0, -far1)
+    // exactly (negation is exact in every step), halves swapped on an axis the ray runs down.
+    // max(-f, -t) is -min(f, t) bit for bit, and like min it keeps its second operand when the
+    // first is NaN or the two are equal.
+    t0 = r.start;
+    for (int a = 0; a < 3; ++a) {
+      __m128 t = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.bounds[a]), r.o[a]), r.inv_signed[a]);
+      if ((kSigns >> a) & 1) t = _mm_shuffle_ps(t, t, _MM_SHUFFLE(1, 0, 3, 2));
+      t0 = _mm_max_ps(t, t0);
+    }
+    const __m128 t1 = _mm_xor_ps(_mm_movehl_ps(t0, t0), _mm_set1_ps(-0.0f));
+    far = _mm_min_ps(_mm_mul_ps(t1, _mm_set1_ps(1.0f + 2.0f * gamma(3))), _mm_set1_ps(tmax));
+  } else {
+    t0 = r.tmin;
+    __m128 t1 = _mm_set1_ps(kInfinity);
+    for (int a = 0; a < 3; ++a) {
+      // (lo0, lo1, hi0, hi1) -> distances; the near pair is in the low or high half.
+      const __m128 t = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.bounds[a]), r.o[a]), r.inv[a]);
+      const __m128 swapped = _mm_movehl_ps(t, t);
+      const bool negative = r.ray.negative[a];
+      const __m128 tn = negative ? swapped : t;
+      const __m128 tf = negative ? t : swapped;
+      t0 = _mm_max_ps(tn, t0);
+      t1 = _mm_min_ps(tf, t1);
+    }
+    far = _mm_min_ps(_mm_mul_ps(t1, _mm_set1_ps(1.0f + 2.0f * gamma(3))), _mm_set1_ps(tmax));
   }
-  const __m128 far = _mm_min_ps(_mm_mul_ps(t1, _mm_set1_ps(1.0f + 2.0f * gamma(3))), _mm_set1_ps(tmax));
   const __m128 near = _mm_mul_ps(t0, _mm_set1_ps(1.0f - 2.0f * gamma(3)));
   entry[0] = _mm_cvtss_f32(near);
   entry[1] = _mm_cvtss_f32(_mm_shuffle_ps(near, near, _MM_SHUFFLE(1, 1, 1, 1)));
@@ -99,15 +125,42 @@ inline unsigned both_children(const PairNode& n, const SlabLanes& lanes, float t
 // What the primitive tests need of a ray, prepared once per ray.
 struct QuickRay {
   TriangleRejectRay reject;
-  SphereRay sphere;
+  SphereRay sphere;  // set only when there are spheres: its conversion to double is not free
   // Every primitive tested lies in `box` (the tree's root box); only triangles use it.
-  QuickRay(const Ray& r, const Bounds3& box, bool triangles) : reject(r), sphere(r) {
-    if (triangles) reject.assume_within(box);
+  QuickRay(const Ray& r, const Bounds3& box, const PrimitiveArrays& prims) : reject(r) {
+    if (!prims.triangles.empty()) reject.assume_within(box);
+    if (!prims.spheres.empty()) sphere = SphereRay(r);
   }
 };
 
-// test_primitive and occludes with the ray prepared, and the SSE rejection in front of the
-// triangle test: the same tally and the same hits, fewer instructions.
+#if defined(__SSE2__)
+template <int kLane>
+inline float lane(__m128 v) { return _mm_cvtss_f32(_mm_shuffle_ps(v, v, _MM_SHUFFLE(kLane, kLane, kLane, kLane))); }
+
+// finish_triangle_test with the rejection's rows taken from the registers they arrive in (stored
+// and reloaded as floats, they would wait for store forwarding).
+inline bool finish_from_lanes(const Ray& ray, __m128 x, __m128 y, __m128 z, __m128 e, float tmax, float* t, float* b1,
+                              float* b2) {
+  return watertight_finish<float>(lane<0>(x), lane<0>(y), lane<0>(z), lane<1>(x), lane<1>(y), lane<1>(z), lane<2>(x),
+                                  lane<2>(y), lane<2>(z), lane<0>(e), lane<1>(e), lane<2>(e), ray, tmax, t, b1, b2);
+}
+#endif
+
+// intersect_triangle's answer with the SSE rejection in front, finished from the rejection's
+// own sheared vertices and edge functions when it finds the ray inside all three edges.
+inline bool triangle_test_quickly(const Triangle& tri, const Ray& ray, const TriangleRejectRay& reject, float tmax,
+                                  float* t, float* b1, float* b2) {
+#if defined(__SSE2__)
+  __m128 s[4];
+  const RejectVerdict v = triangle_verdict(tri, reject, s);
+  if (v == RejectVerdict::missed) return false;
+  if (v == RejectVerdict::inside) return finish_from_lanes(ray, s[0], s[1], s[2], s[3], tmax, t, b1, b2);
+#endif
+  return intersect_triangle(tri, ray, tmax, t, b1, b2);
+}
+
+// test_primitive and occludes with the ray prepared and the triangle test above: the same tally
+// and the same hits, fewer instructions.
 inline void test_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, const QuickRay& quick, Hit& hit,
                          TestTally& tally) {
   if (prims.is_sphere(prim)) {
@@ -116,11 +169,9 @@ inline void test_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray,
     if (intersect_sphere(prims.spheres[prim], quick.sphere, hit.t, &t)) hit.offer(t, prim);
     return;
   }
-  if (triangle_surely_missed(prims.triangle(prim), quick.reject)) {
-    ++tally.triangles;
-    return;
-  }
-  test_primitive(prims, prim, ray, hit, tally);
+  ++tally.triangles;
+  float t, b1 = 0, b2 = 0;
+  if (triangle_test_quickly(prims.triangle(prim), ray, quick.reject, hit.t, &t, &b1, &b2)) hit.offer(t, prim, b1, b2);
 }
 
 inline bool occludes_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, const QuickRay& quick, float tmax,
@@ -130,11 +181,9 @@ inline bool occludes_quickly(const PrimitiveArrays& prims, int prim, const Ray& 
     float t;
     return intersect_sphere(prims.spheres[prim], quick.sphere, tmax, &t) && t < tmax;
   }
-  if (triangle_surely_missed(prims.triangle(prim), quick.reject)) {
-    ++tally.triangles;
-    return false;
-  }
-  return occludes(prims, prim, ray, tmax, tally);
+  ++tally.triangles;
+  float t, b1, b2;
+  return triangle_test_quickly(prims.triangle(prim), ray, quick.reject, tmax, &t, &b1, &b2) && t < tmax;
 }
 
 }  // namespace
@@ -154,20 +203,27 @@ bool walk_depth_first(const PackedTree& tree, const Ray& ray, float tmax, TestTa
   const SlabLanes lanes(slab, ray.tmin);
   NodeRef stack[kStackSize];
   int top = 0;
-  stack[top++] = tree.root;
-  while (top > 0) {
-    const PairNode& n = tree.nodes[stack[--top]];
+  NodeRef node = tree.root;  // in registers: the first child, pushed last, is taken at once
+  for (;;) {
+    const PairNode& n = tree.nodes[node];
     float entries[2];
     const unsigned mask = both_children<-1>(n, lanes, tmax, entries);
-    for (int i = 1; i >= 0; --i) {  // push the second child first: the first is visited first
+    bool next = false;
+    for (int i = 1; i >= 0; --i) {  // the second child first on the stack: the first is visited first
       const NodeRef c = n.child[i];
       if (is_primitive(c)) {
         if (visit(primitive_of(c))) return true;
       } else {
         ++tally.boxes;
-        if ((mask >> i & 1u) && top < kStackSize) stack[top++] = c;
+        if ((mask >> i & 1u) && top < kStackSize) {
+          if (i == 0) node = c, next = true;
+          else stack[top++] = c;
+        }
       }
     }
+    if (next) continue;
+    if (top == 0) break;
+    node = stack[--top];
   }
   return false;
 }
@@ -175,7 +231,7 @@ bool walk_depth_first(const PackedTree& tree, const Ray& ray, float tmax, TestTa
 }  // namespace
 
 void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
-  const QuickRay quick(ray, tree.root_box, !prims.triangles.empty());
+  const QuickRay quick(ray, tree.root_box, prims);
   walk_depth_first(tree, ray, kInfinity, tally, [&](int p) {
     test_quickly(prims, p, ray, quick, hit, tally);
     return false;
@@ -195,6 +251,16 @@ namespace {
   float t, b1 = 0, b2 = 0;
   if (intersect_triangle(prims.triangle(prim), ray, hit.t, &t, &b1, &b2)) hit.offer(t, prim, b1, b2);
 }
+
+#if defined(__SSE2__)
+// The rest of the watertight test for a triangle the rejection found inside all three edges,
+// from the rejection's own sheared vertices and edge functions (the full test would compute
+// them again).
+[[gnu::noinline]] void finish_triangle(const Ray& ray, int prim, __m128 x, __m128 y, __m128 z, __m128 e, Hit& hit) {
+  float t, b1 = 0, b2 = 0;
+  if (finish_from_lanes(ray, x, y, z, e, hit.t, &t, &b1, &b2)) hit.offer(t, prim, b1, b2);
+}
+#endif
 
 // test_quickly with the counts in the walk's own locals and only the rejection inline.
 struct OrderedTally {
@@ -227,8 +293,16 @@ template <int kSigns, int kZ>
     return;
   }
   ++tally.triangles;
+#if defined(__SSE2__)
+  __m128 s[4];
+  const RejectVerdict v = triangle_verdict<kx_of<kSigns, kZ>(), ky_of<kSigns, kZ>(), kZ>(
+      view.triangles[prim - view.sphere_count], quick.reject, s);
+  if (v == RejectVerdict::inside) finish_triangle(ray, prim, s[0], s[1], s[2], s[3], hit);
+  else if (v == RejectVerdict::unsure) full_triangle_test(view.prims, prim, ray, hit);
+#else
   if (!triangle_surely_missed<kx_of<kSigns, kZ>(), ky_of<kSigns, kZ>(), kZ>(view.triangles[prim - view.sphere_count], quick.reject))
     full_triangle_test(view.prims, prim, ray, hit);
+#endif
 }
 
 template <int kSigns, int kZ>
@@ -246,39 +320,49 @@ void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ra
   float entry;
   ++tally.boxes;
   if (intersect_box(tree.root_box, ray, hit.t, &entry)) {
-    const QuickRay quick(ray, tree.root_box, !prims.triangles.empty());
+    const QuickRay quick(ray, tree.root_box, prims);
     const SlabLanes lanes(slab, ray.tmin);
     const PrimView view(prims);
-    stack[top++] = {tree.root, entry};
-    while (top > 0) {
-      const Entry e = stack[--top];
-      if (e.entry > hit.t) continue;  // figure 3: a nearer primitive was found meanwhile
+    // The node to expand next stays in registers: the child the binary walk would push last, and
+    // so pop at once, is taken without the trip through the stack (same order, same checks).
+    Entry e{tree.root, entry};
+    for (;;) {
+      if (e.entry > hit.t) {  // figure 3: a nearer primitive was found meanwhile
+        if (top == 0) break;
+        e = stack[--top];
+        continue;
+      }
       const PairNode& n = tree.nodes[e.node];
-      Entry found[2];
-      int count = 0;
+      const NodeRef c0 = n.child[0], c1 = n.child[1];
       // Primitive children first: their hits tighten the distance the boxes are tested against.
-      const bool prim0 = is_primitive(n.child[0]), prim1 = is_primitive(n.child[1]);
-      if (prim0) test_in_walk<kSigns, kZ>(view, primitive_of(n.child[0]), ray, quick, hit, tally);
-      if (prim1) test_in_walk<kSigns, kZ>(view, primitive_of(n.child[1]), ray, quick, hit, tally);
+      const bool prim0 = is_primitive(c0), prim1 = is_primitive(c1);
+      if (prim0) test_in_walk<kSigns, kZ>(view, primitive_of(c0), ray, quick, hit, tally);
+      if (prim1) test_in_walk<kSigns, kZ>(view, primitive_of(c1), ray, quick, hit, tally);
       if (!(prim0 && prim1)) {
+        // The hit children by name, not in an array: an array went through memory.
         float entries[2];
         const unsigned mask = both_children<kSigns>(n, lanes, hit.t, entries);
-        for (int i = 0; i < 2; ++i) {
-          if (i == 0 ? prim0 : prim1) continue;
-          ++tally.boxes;
-          if (mask >> i & 1u) found[count++] = {n.child[i], entries[i]};
+        tally.boxes += int(!prim0) + int(!prim1);
+        const bool in0 = !prim0 && (mask & 1u), in1 = !prim1 && (mask & 2u);
+        if (in0 && in1) {
+          ++tally.sorts;  // a binary tree sorts its children with one comparison (2.2.2)
+          if (top + 2 <= kStackSize) {  // else both are dropped, as the binary walk drops them
+            if (entries[0] < entries[1]) {  // the farther below, the nearer next
+              stack[top++] = {c1, entries[1]};
+              e = {c0, entries[0]};
+            } else {
+              stack[top++] = {c0, entries[0]};
+              e = {c1, entries[1]};
+            }
+            continue;
+          }
+        } else if ((in0 || in1) && top < kStackSize) {
+          e = in0 ? Entry{c0, entries[0]} : Entry{c1, entries[1]};
+          continue;
         }
       }
-      if (count == 2) {
-        ++tally.sorts;  // a binary tree sorts its children with one comparison (2.2.2)
-        if (found[0].entry < found[1].entry) std::swap(found[0], found[1]);
-        if (top + 2 <= kStackSize) {
-          stack[top++] = found[0];  // farther, visited second
-          stack[top++] = found[1];
-        }
-      } else if (count == 1 && top < kStackSize) {
-        stack[top++] = found[0];
-      }
+      if (top == 0) break;
+      e = stack[--top];
     }
   }
   counts.boxes += tally.boxes;
@@ -311,10 +395,26 @@ void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, cons
   else ordered<-1, -1>(prims, tree, ray, slab, hit, tally);
 }
 
+void traverse_ordered_generic(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit,
+                              TestTally& tally) {
+  ordered<-1, -1>(prims, tree, ray, SlabRay(ray), hit, tally);
+}
+
 bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally) {
-  const QuickRay quick(ray, tree.root_box, !prims.triangles.empty());
+  const QuickRay quick(ray, tree.root_box, prims);
   return walk_depth_first(tree, ray, tmax, tally,
                           [&](int p) { return occludes_quickly(prims, p, ray, quick, tmax, tally); });
+}
+
+void test_primitive_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, Hit& hit, TestTally& tally) {
+  if (prims.is_sphere(prim)) {
+    test_primitive(prims, prim, ray, hit, tally);
+    return;
+  }
+  ++tally.triangles;
+  float t, b1 = 0, b2 = 0;
+  if (triangle_test_quickly(prims.triangle(prim), ray, TriangleRejectRay(ray), hit.t, &t, &b1, &b2))
+    hit.offer(t, prim, b1, b2);
 }
 
 void intersect_brute_force(const PrimitiveArrays& prims, const Ray& ray, Hit& hit, TestTally& tally) {

@@ -13,8 +13,15 @@ namespace gcsim::geometry {
 
 void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally);
 void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally);
+// The same walk reading the ray's octant and triangle axes at run time, as it does for a ray
+// with a -0 or NaN component: the reference the tests hold the per-octant walks to.
+void traverse_ordered_generic(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit,
+                              TestTally& tally);
 // True if any primitive is hit with tmin < t < tmax (shadow rays); stops at the first.
 bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally);
+// test_primitive (primitive_test.hpp) with the SSE rejection and, inside all three edges, the
+// triangle test finished from its values: the same hit and count, fewer instructions.
+void test_primitive_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, Hit& hit, TestTally& tally);
 // Every primitive, no tree: the reference the tests compare with.
 void intersect_brute_force(const PrimitiveArrays& prims, const Ray& ray, Hit& hit, TestTally& tally);
 

@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "apps/common/geometry/float_util.hpp"
+#include "apps/common/geometry/triangle_finish.hpp"
 
 namespace gcsim::geometry {
 
@@ -17,16 +18,14 @@ constexpr float kFloatSafeLargest = 1e12f;
 constexpr float kFloatSafeSmallest = 1e-12f;
 
 // The axes are template parameters so that the permutation costs nothing at run time; T is the
-// arithmetic (float, or double for geometry outside float's safe range); the rounding bounds are
-// T's (the float inputs convert to double exactly).
+// arithmetic (the float inputs convert to double exactly).
 template <class T, int kx, int ky, int kz>
 bool watertight(const Triangle& tri, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2) {
   using V = glm::vec<3, T>;
-  auto gamma = [](int n) { return gamma_of<T>(n); };
   // Translate to the ray origin, permute so the dominant direction axis is z, then shear.
   const V o(ray.origin);
   const V a = V(tri.p0) - o, b = V(tri.p1) - o, c = V(tri.p2) - o;
-  const T sx = ray.shear_x, sy = ray.shear_y, sz = ray.shear_z;
+  const T sx = ray.shear_x, sy = ray.shear_y;
   const T az = a[kz], bz = b[kz], cz = c[kz];
   const T ax = a[kx] + sx * az, ay = a[ky] + sy * az;
   const T bx = b[kx] + sx * bz, by = b[ky] + sy * bz;
@@ -42,39 +41,7 @@ bool watertight(const Triangle& tri, const Ray& ray, float tmax, float* t_hit, f
     e1 = static_cast<T>(double(cx) * ay - double(cy) * ax);
     e2 = static_cast<T>(double(ax) * by - double(ay) * bx);
   }
-  if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0)) return false;
-  const T det = e0 + e1 + e2;
-  if (det == 0) return false;  // degenerate, or seen exactly edge-on
-
-  const T zs0 = az * sz, zs1 = bz * sz, zs2 = cz * sz;
-  const T t_scaled = e0 * zs0 + e1 * zs1 + e2 * zs2;
-  // Reject outside (tmin, tmax] without dividing, widened by the products' rounding so that a
-  // hit at exactly tmax (a coincident triangle: the id tie-break of Hit decides) is not lost here;
-  // the exact test on t follows.
-  const T t0 = ray.tmin, t1 = T(tmax) * (1 + T(4) * std::numeric_limits<T>::epsilon());
-  if (det < 0 && (t_scaled >= t0 * det || t_scaled < t1 * det)) return false;
-  if (det > 0 && (t_scaled <= t0 * det || t_scaled > t1 * det)) return false;
-  const T inv_det = T(1) / det;
-  const T t = t_scaled * inv_det;
-
-  // t must exceed its own rounding error, or the "hit" may be the ray's own surface.
-  const T max_z = std::max({std::abs(zs0), std::abs(zs1), std::abs(zs2)});
-  const T dz = gamma(3) * max_z;
-  const T max_x = std::max({std::abs(ax), std::abs(bx), std::abs(cx)});
-  const T max_y = std::max({std::abs(ay), std::abs(by), std::abs(cy)});
-  const T dx = gamma(5) * (max_x + max_z);
-  const T dy = gamma(5) * (max_y + max_z);
-  const T de = 2 * (gamma(2) * max_x * max_y + dy * max_x + dx * max_y);
-  const T max_e = std::max({std::abs(e0), std::abs(e1), std::abs(e2)});
-  const T dt = 3 * (gamma(3) * max_e * max_z + de * max_z + dz * max_e) * std::abs(inv_det);
-  if (t <= dt) return false;
-  const float tf = static_cast<float>(t);
-  if (!(tf > ray.tmin && tf <= tmax)) return false;
-
-  *t_hit = tf;
-  *b1 = static_cast<float>(e1 * inv_det);
-  *b2 = static_cast<float>(e2 * inv_det);
-  return true;
+  return watertight_finish<T>(ax, ay, az, bx, by, bz, cx, cy, cz, e0, e1, e2, ray, tmax, t_hit, b1, b2);
 }
 
 template <class T>
@@ -90,6 +57,11 @@ bool intersect_in(const Triangle& tri, const Ray& ray, float tmax, float* t_hit,
 }
 
 }  // namespace
+
+bool finish_triangle_test(const ShearedTriangle& s, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2) {
+  return watertight_finish<float>(s.x[0], s.y[0], s.z[0], s.x[1], s.y[1], s.z[1], s.x[2], s.y[2], s.z[2], s.e[0],
+                                  s.e[1], s.e[2], ray, tmax, t_hit, b1, b2);
+}
 
 bool intersect_triangle(const Triangle& tri, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2) {
   const glm::vec3 m = glm::max(glm::max(abs_components(tri.p0 - ray.origin), abs_components(tri.p1 - ray.origin)),

@@ -30,6 +30,7 @@ struct TriangleRejectRay {
   __m128 shear_x, shear_y;
   int kx, ky, kz;
   bool in_range = false;  // every triangle tested passes the float range check
+  TriangleRejectRay() = default;  // for a walk without triangles, which never reads it
   explicit TriangleRejectRay(const Ray& r)
       : o{_mm_set1_ps(r.origin.x), _mm_set1_ps(r.origin.y), _mm_set1_ps(r.origin.z)},
         shear_x(_mm_set1_ps(r.shear_x)), shear_y(_mm_set1_ps(r.shear_y)), kx(r.kx), ky(r.ky), kz(r.kz),
@@ -53,11 +54,16 @@ struct TriangleRejectRay {
   glm::vec3 origin;
 };
 
-// True only if intersect_triangle(tri, ray, ...) surely returns false for any tmax. kX, kY, kZ:
-// the ray's kx, ky, kz when the caller knows them at compile time (the vertex rows then stay in
-// registers), -1 to read them from r.
+// What the rejection found: the triangle is surely missed; or its edge functions all have one
+// sign (none 0) and its coordinates are in float's range, so finish_triangle_test (triangle.hpp)
+// decides from what was computed here; or the scalar test must decide alone.
+enum class RejectVerdict { missed, inside, unsure };
+
+// kX, kY, kZ: the ray's kx, ky, kz when the caller knows them at compile time (the vertex rows
+// then stay in registers), -1 to read them from r. Sets `sheared` (ShearedTriangle's rows) unless
+// the verdict is unsure.
 template <int kX = -1, int kY = -1, int kZ = -1>
-inline bool triangle_surely_missed(const Triangle& tri, const TriangleRejectRay& r) {
+[[gnu::always_inline]] inline RejectVerdict triangle_verdict(const Triangle& tri, const TriangleRejectRay& r, __m128 sheared[4]) {
   const float* p = &tri.p0.x;
   // Rows p0, p1, p2 (lane 3 unused), all loads inside the 36 bytes of the triangle.
   __m128 r0 = _mm_loadu_ps(p), r1 = _mm_loadu_ps(p + 3), r2 = _mm_loadu_ps(p + 5);
@@ -73,7 +79,7 @@ inline bool triangle_surely_missed(const Triangle& tri, const TriangleRejectRay&
     const __m128 below = _mm_and_ps(_mm_and_ps(_mm_cmple_ps(m0, big), _mm_cmple_ps(m1, big)), _mm_cmple_ps(m2, big));
     const __m128 above =
         _mm_or_ps(_mm_or_ps(_mm_cmpge_ps(m0, small), _mm_cmpge_ps(m1, small)), _mm_cmpge_ps(m2, small));
-    if (_mm_movemask_ps(below) != 15 || _mm_movemask_ps(above) == 0) return false;
+    if (_mm_movemask_ps(below) != 15 || _mm_movemask_ps(above) == 0) return RejectVerdict::unsure;
   }
 
   // Permute and shear (ax = a[kx] + sx * a[kz], ...), then e_i = x_j y_k - y_j x_k over the
@@ -87,15 +93,24 @@ inline bool triangle_surely_missed(const Triangle& tri, const TriangleRejectRay&
   const __m128 zero = _mm_setzero_ps();
   // An edge function exactly 0: the scalar test retries in double; NaN (a NaN vertex, which no
   // box bounds): leave it to the scalar test too.
-  if (_mm_movemask_ps(_mm_or_ps(_mm_cmpeq_ps(e, zero), _mm_cmpunord_ps(e, e))) & 7) return false;
+  if (_mm_movemask_ps(_mm_or_ps(_mm_cmpeq_ps(e, zero), _mm_cmpunord_ps(e, e))) & 7) return RejectVerdict::unsure;
+  sheared[0] = x, sheared[1] = y, sheared[2] = z, sheared[3] = e;
   const int negative = _mm_movemask_ps(_mm_cmplt_ps(e, zero)) & 7;
   const int positive = _mm_movemask_ps(_mm_cmpgt_ps(e, zero)) & 7;
-  return negative != 0 && positive != 0;
+  return negative != 0 && positive != 0 ? RejectVerdict::missed : RejectVerdict::inside;
+}
+
+// True only if intersect_triangle(tri, ray, ...) surely returns false for any tmax.
+template <int kX = -1, int kY = -1, int kZ = -1>
+inline bool triangle_surely_missed(const Triangle& tri, const TriangleRejectRay& r) {
+  __m128 sheared[4];
+  return triangle_verdict<kX, kY, kZ>(tri, r, sheared) == RejectVerdict::missed;
 }
 
 #else
 
 struct TriangleRejectRay {
+  TriangleRejectRay() = default;
   explicit TriangleRejectRay(const Ray&) {}
   void assume_within(const Bounds3&) {}
 };
