@@ -18,10 +18,10 @@
 
 namespace gcsim::calibration {
 
-// Whose communication time a measured table of it (4.5) reports. The thesis's program has one
-// distinguished processor, the root (processor 0) that every exchange gathers to and scatters
-// from, the "managing processor" of its broadcasts; a PARIX program prints the times it reads
-// there. `mean`: the mean over the processors, which waits for slower neighbours raise.
+// Whose communication time a measured table of it (4.5) reports; the thesis does not say. Its
+// program has one distinguished processor, the root (processor 0) that every exchange gathers to
+// and scatters from. `mean`: the mean over the processors, which adds the time the others wait
+// for their turn in a sequential exchange.
 enum class CommTimeOf { root, mean };
 CommTimeOf parse_comm_time_of(const std::string& s);  // throws std::invalid_argument
 

@@ -78,7 +78,7 @@ void add_predict_options(CLI::App* cmd, PredictFlags& f) {
       ->capture_default_str();
   cmd->add_option("--comm-time", f.comm_time,
                   "Radiosity tables: whose communication time table 4.5 reports: root (processor 0, which every "
-                  "exchange gathers to and scatters from, where the thesis's program read its times; README, "
+                  "exchange gathers to and scatters from; the thesis does not say whose time it printed: README, "
                   "Calibration) or mean (over the processors, as `gcsim run radiosity` prints it)")
       ->check(CLI::IsMember({"root", "mean"}))
       ->capture_default_str();
