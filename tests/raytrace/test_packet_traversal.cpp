@@ -15,6 +15,7 @@
 #include "apps/common/rng.hpp"
 #include "apps/raytrace/builtin_scenes.hpp"
 #include "apps/raytrace/camera.hpp"
+#include "tests/raytrace/box_corner_rays.hpp"
 
 namespace gcsim::raytrace {
 namespace {
@@ -93,24 +94,7 @@ TEST(PacketTraversal, GrazingRaysMixedOctantsAndMaskedLanes) {
   apps::Rng rng(5);
   const Bounds3 b = s.bounds();
   const glm::vec3 c = 0.5f * (b.lo + b.hi), reach = 2.0f * (b.hi - b.lo);
-  std::vector<Ray> rays;
-  for (const PairNode& n : bvh.packed.nodes)
-    for (int child = 0; child < 2; ++child) {
-      const glm::vec3 lo(n.bounds[0][child], n.bounds[1][child], n.bounds[2][child]);
-      const glm::vec3 hi(n.bounds[0][2 + child], n.bounds[1][2 + child], n.bounds[2][2 + child]);
-      const glm::vec3 corner(rng.uniform() < 0.5f ? lo.x : hi.x, rng.uniform() < 0.5f ? lo.y : hi.y,
-                             rng.uniform() < 0.5f ? lo.z : hi.z);
-      const glm::vec3 from = c + reach * glm::vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
-      rays.emplace_back(from, glm::normalize(corner - from));
-      glm::vec3 edge = corner;
-      edge.x = 0.5f * (lo.x + hi.x);
-      rays.emplace_back(from, glm::normalize(edge - from));
-      const int axis = int(rng.next_u32() % 3);
-      glm::vec3 d(0.0f), o = corner;
-      d[axis] = rng.uniform() < 0.5f ? 1.0f : -1.0f;
-      o[axis] = c[axis] - d[axis] * reach[axis];  // in the box's other two slab planes
-      rays.emplace_back(o, d);
-    }
+  std::vector<Ray> rays = testing::box_corner_rays(bvh.packed, b, rng, 0, false);
   // In the root box's own face planes (the packet tests the root box apart), and from inside it.
   const Bounds3& root = bvh.packed.root_box;
   for (int i = 0; i < 64; ++i) {

@@ -22,6 +22,7 @@
 #include "apps/raytrace/builtin_scenes.hpp"
 #include "apps/raytrace/camera.hpp"
 #include "apps/raytrace/subtree.hpp"
+#include "tests/raytrace/box_corner_rays.hpp"
 
 namespace gcsim::raytrace {
 namespace {
@@ -101,35 +102,10 @@ bool expect_walks_agree(const Scene& s, const PackedTree& tree, const Ray& ray, 
   return ref.valid();
 }
 
-// Rays at the corners and edges of every child box of `tree`, from points all around the scene,
-// and axis-parallel rays in the boxes' slab planes, some starting inside the box.
+// The hard rays of every child box of `tree` (tests/raytrace/box_corner_rays.hpp), those from
+// inside the boxes and in their slab planes included.
 std::vector<Ray> hard_rays(const PackedTree& tree, const Bounds3& scene, apps::Rng& rng) {
-  const glm::vec3 c = 0.5f * (scene.lo + scene.hi), reach = 2.0f * (scene.hi - scene.lo);
-  std::vector<Ray> rays;
-  for (const PairNode& n : tree.nodes)
-    for (int child = 0; child < 2; ++child) {
-      const glm::vec3 lo(n.bounds[0][child], n.bounds[1][child], n.bounds[2][child]);
-      const glm::vec3 hi(n.bounds[0][2 + child], n.bounds[1][2 + child], n.bounds[2][2 + child]);
-      const glm::vec3 corner(rng.uniform() < 0.5f ? lo.x : hi.x, rng.uniform() < 0.5f ? lo.y : hi.y,
-                             rng.uniform() < 0.5f ? lo.z : hi.z);
-      const glm::vec3 from = c + reach * glm::vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
-      rays.emplace_back(from, glm::normalize(corner - from));
-      glm::vec3 edge = corner;
-      edge.y = 0.5f * (lo.y + hi.y);
-      rays.emplace_back(from, glm::normalize(edge - from));
-      const int axis = int(rng.next_u32() % 3);
-      glm::vec3 d(0.0f), o = corner;
-      d[axis] = rng.uniform() < 0.5f ? 1.0f : -1.0f;
-      o[axis] = c[axis] - d[axis] * reach[axis];  // in the box's other two slab planes
-      rays.emplace_back(o, d);
-      o[axis] = 0.5f * (lo[axis] + hi[axis]);  // from inside the box, along its edge
-      rays.emplace_back(o, -d);
-      // Diagonal in a slab plane: one direction component exactly 0.
-      glm::vec3 e(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
-      e[axis] = 0.0f;
-      if (glm::length(e) > 0.1f) rays.emplace_back(corner - reach * e, glm::normalize(e));
-    }
-  return rays;
+  return testing::box_corner_rays(tree, scene, rng, 1, true);
 }
 
 class SingleWalkScene : public ::testing::TestWithParam<std::string_view> {};
