@@ -27,19 +27,13 @@ class NodeMemory {
   // use(bytes, Kind) skips the search by name. Handles number a node's kinds in first-use order.
   using Kind = std::size_t;
   Kind kind(std::string_view name);
-  bool use(std::int64_t bytes, Kind kind) {  // inline: the runtime calls it twice per message
-    if (bytes > 0 && limit_ == MemoryLimit::enforce && bytes > capacity_ - used_) return false;
-    Held& h = held_[kind];
-    // A release never takes a kind below zero: a double release is the caller's slip, not memory
-    // the node gains.
-    const std::int64_t change = std::max(bytes, -h.bytes);
-    h.bytes += change;
-    used_ += change;
-    peak_ = std::max(peak_, used_);
+  bool use(std::int64_t bytes, Kind kind) {
+    if (bytes > 0) return add(bytes, kind);
+    if (bytes < 0) release(-bytes, kind);
     return true;
   }
-  // use(bytes) and use(-bytes) for bytes > 0, the runtime's declarations on every message: the same
-  // sums, without the sign's cases (no release can raise the peak, no addition needs the clamp).
+  // use(bytes) and use(-bytes) for bytes > 0, without the sign's test: the runtime's declarations
+  // on every message (inline, twice per message).
   bool add(std::int64_t bytes, Kind kind) {
     if (limit_ == MemoryLimit::enforce && bytes > capacity_ - used_) return false;
     held_[kind].bytes += bytes;
@@ -49,7 +43,8 @@ class NodeMemory {
   }
   void release(std::int64_t bytes, Kind kind) {
     Held& h = held_[kind];
-    const std::int64_t change = std::min(bytes, h.bytes);  // never below zero, as use()
+    // Never below zero: a double release is the caller's slip, not memory the node gains.
+    const std::int64_t change = std::min(bytes, h.bytes);
     h.bytes -= change;
     used_ -= change;
   }

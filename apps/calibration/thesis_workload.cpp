@@ -80,8 +80,9 @@ LoopMatch match_loops(const radiosity::Scene& scene, const radiosity::SolverOpti
   }
   // hi reaches the target (exactly, or one loop or more past it); lo stops short of it.
   const int hi_loops = loops_hi == target ? target : loops_at(scene, options, hi, kUncapped);
-  m.scale = hi_loops - target <= target - loops_lo ? hi : lo;
-  m.loops = m.scale == hi ? hi_loops : loops_lo;
+  const bool take_hi = hi_loops - target <= target - loops_lo;
+  m.scale = take_hi ? hi : lo;
+  m.loops = take_hi ? hi_loops : loops_lo;
   return m;
 }
 

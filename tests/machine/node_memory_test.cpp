@@ -37,8 +37,8 @@ TEST(NodeMemory, AReleaseNeverTakesAKindBelowZero) {
   EXPECT_FALSE(m.use(401, "image"));
 }
 
-// add and release, the runtime's per-message forms, keep the same sums as use(+bytes) and
-// use(-bytes): refused past the node under enforce, a peak, and no kind below zero.
+// add and release, the runtime's per-message forms (which use(+bytes) and use(-bytes) call), on
+// their own: refused past the node under enforce, a peak, and no kind below zero (the final sums).
 TEST(NodeMemory, AddAndReleaseKeepTheSumsOfUse) {
   NodeMemory a(100, MemoryLimit::enforce), b(100, MemoryLimit::enforce);
   const NodeMemory::Kind ka = a.kind("messages"), kb = b.kind("messages");

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "apps/common/geometry/traversal.hpp"
+#include "apps/common/geometry/triangle_finish.hpp"
 #include "apps/common/geometry/triangle_reject.hpp"
 #include "apps/common/rng.hpp"
 #include "apps/raytrace/geometry_names.hpp"
@@ -48,16 +49,17 @@ void check(const Triangle& tri, const Ray& ray, Agreement& a) {
   // functions answers as the full test does, bit for bit, for any tmax (also exactly t).
   __m128 rows[4];
   if (triangle_verdict(tri, TriangleRejectRay(ray), rows) == RejectVerdict::inside) {
-    ShearedTriangle sh;
-    _mm_store_ps(sh.x, rows[0]);
-    _mm_store_ps(sh.y, rows[1]);
-    _mm_store_ps(sh.z, rows[2]);
-    _mm_store_ps(sh.e, rows[3]);
+    alignas(16) float x[4], y[4], z[4], e[4];  // lanes: vertices a, b, c (p0, p1, p2); edge functions
+    _mm_store_ps(x, rows[0]);
+    _mm_store_ps(y, rows[1]);
+    _mm_store_ps(z, rows[2]);
+    _mm_store_ps(e, rows[3]);
     ++a.inside;
     for (float tmax : {kInfinity, hit ? t : 1.0f, hit ? std::nextafter(t, 0.0f) : 1e30f, hit ? 2.0f * t : 0.5f}) {
       float t1 = -1, b11 = -1, b21 = -1, t2 = -1, b12 = -1, b22 = -1;
       const bool full = intersect_triangle(tri, ray, tmax, &t1, &b11, &b21);
-      const bool finished = finish_triangle_test(sh, ray, tmax, &t2, &b12, &b22);
+      const bool finished = geometry::watertight_finish<float>(x[0], y[0], z[0], x[1], y[1], z[1], x[2], y[2], z[2], e[0],
+                                                               e[1], e[2], ray, tmax, &t2, &b12, &b22);
       ASSERT_EQ(full, finished);
       if (full) {
         ASSERT_TRUE(same_bits(t1, t2) && same_bits(b11, b12) && same_bits(b21, b22));

@@ -137,7 +137,7 @@ struct QuickRay {
 template <int kLane>
 inline float lane(__m128 v) { return _mm_cvtss_f32(_mm_shuffle_ps(v, v, _MM_SHUFFLE(kLane, kLane, kLane, kLane))); }
 
-// finish_triangle_test with the rejection's rows taken from the registers they arrive in (stored
+// watertight_finish with the rejection's rows taken from the registers they arrive in (stored
 // and reloaded as floats, they would wait for store forwarding).
 inline bool finish_from_lanes(const Ray& ray, __m128 x, __m128 y, __m128 z, __m128 e, float tmax, float* t, float* b1,
                               float* b2) {

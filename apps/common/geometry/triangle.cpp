@@ -58,11 +58,6 @@ bool intersect_in(const Triangle& tri, const Ray& ray, float tmax, float* t_hit,
 
 }  // namespace
 
-bool finish_triangle_test(const ShearedTriangle& s, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2) {
-  return watertight_finish<float>(s.x[0], s.y[0], s.z[0], s.x[1], s.y[1], s.z[1], s.x[2], s.y[2], s.z[2], s.e[0],
-                                  s.e[1], s.e[2], ray, tmax, t_hit, b1, b2);
-}
-
 bool intersect_triangle(const Triangle& tri, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2) {
   const glm::vec3 m = glm::max(glm::max(abs_components(tri.p0 - ray.origin), abs_components(tri.p1 - ray.origin)),
                                abs_components(tri.p2 - ray.origin));

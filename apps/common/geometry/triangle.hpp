@@ -25,17 +25,4 @@ struct Triangle {
 // Degenerate (zero-area) triangles are never hit.
 bool intersect_triangle(const Triangle& tri, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2);
 
-// The triangle in the ray's frame as intersect_triangle's float path computes it first: vertices
-// a, b, c (p0, p1, p2) translated to the ray origin, permuted and sheared (x, y; z unsheared),
-// and the edge functions e. Element 3 of each is unused (SSE lanes).
-struct alignas(16) ShearedTriangle {
-  float x[4], y[4], z[4], e[4];
-};
-
-// The rest of intersect_triangle's float path for a triangle whose vertices are within float's
-// safe range and none of whose edge functions is 0: what it returns for the same ray and tmax,
-// bit for bit. For callers that computed `s` already, with the same operations (the SSE
-// rejection, triangle_reject.hpp).
-bool finish_triangle_test(const ShearedTriangle& s, const Ray& ray, float tmax, float* t_hit, float* b1, float* b2);
-
 }  // namespace gcsim::geometry

@@ -55,13 +55,13 @@ struct TriangleRejectRay {
 };
 
 // What the rejection found: the triangle is surely missed; or its edge functions all have one
-// sign (none 0) and its coordinates are in float's range, so finish_triangle_test (triangle.hpp)
+// sign (none 0) and its coordinates are in float's range, so watertight_finish (triangle_finish.hpp)
 // decides from what was computed here; or the scalar test must decide alone.
 enum class RejectVerdict { missed, inside, unsure };
 
 // kX, kY, kZ: the ray's kx, ky, kz when the caller knows them at compile time (the vertex rows
-// then stay in registers), -1 to read them from r. Sets `sheared` (ShearedTriangle's rows) unless
-// the verdict is unsure.
+// then stay in registers), -1 to read them from r. Unless the verdict is unsure, sets `sheared`:
+// rows x, y, z of the sheared vertices a, b, c, then the edge functions e (lane 3 unused).
 template <int kX = -1, int kY = -1, int kZ = -1>
 [[gnu::always_inline]] inline RejectVerdict triangle_verdict(const Triangle& tri, const TriangleRejectRay& r, __m128 sheared[4]) {
   const float* p = &tri.p0.x;
