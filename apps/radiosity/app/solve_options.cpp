@@ -10,7 +10,27 @@
 
 namespace gcsim::radiosity::app {
 
-void add_solve_options(CLI::App* cmd, SolveFlags& f) {
+namespace {
+
+// --energy: a fraction in [0, 1), with the reason 1 can never be reached.
+CLI::Validator shot_fraction() {
+  return CLI::Validator(
+      [](std::string& v) -> std::string {
+        double x = -1;
+        try {
+          std::size_t used = 0;
+          x = std::stod(v, &used);
+          if (used != v.size()) return "'" + v + "' is not a number";
+        } catch (const std::exception&) {
+          return "'" + v + "' is not a number";
+        }
+        return x >= 0 && x < 1 ? "" : "must be in [0, 1): reflected light keeps some energy unshot forever";
+      },
+      "in [0, 1)");
+}
+
+// What is solved: the scene, the hemicube, the shooters and when to stop.
+void add_problem_options(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("--scene", f.scene, "room, picroom, cornell (thesis table 4.1) or the path of a TOML scene file or a WORLD file")
       ->capture_default_str();
   cmd->add_option("--hemicube", f.hemicube,
@@ -22,20 +42,12 @@ void add_solve_options(CLI::App* cmd, SolveFlags& f) {
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
   cmd->add_option("--energy", f.energy, "Stop once this fraction of the energy has been shot (thesis: 0.999)")
-      ->check(CLI::Validator(
-          [](std::string& v) -> std::string {
-            double x = -1;
-            try {
-              std::size_t used = 0;
-              x = std::stod(v, &used);
-              if (used != v.size()) return "'" + v + "' is not a number";
-            } catch (const std::exception&) {
-              return "'" + v + "' is not a number";
-            }
-            return x >= 0 && x < 1 ? "" : "must be in [0, 1): reflected light keeps some energy unshot forever";
-          },
-          "in [0, 1)"))
+      ->check(shot_fraction())
       ->capture_default_str();
+}
+
+// How the nodes share the work and exchange its results.
+void add_parallel_options(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("--parallel", f.parallel,
                   "hemicube-fixed (4.3: hemicube cells spread over the nodes), hemicube-hierarchical (4.5: "
                   "border cells split into four, recursively), patch (4.2.2: each shooter's owner computes "
@@ -78,6 +90,10 @@ void add_solve_options(CLI::App* cmd, SolveFlags& f) {
                   "thesis's 4.4.1 reading, apps/radiosity/form_factor_exchange.hpp). Same radiosities either way")
       ->check(CLI::IsMember({"per-shooter", "together"}))
       ->capture_default_str();
+}
+
+// The near field, the shooters' order and the loop limit.
+void add_shooting_options(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("--near-field-ratio", f.near_field_ratio,
                   "Near field: a shooter splits into n x n parts (each shooting its own hemicube of resolution / n) "
                   "until each part is at most this times its centre's distance to the nearest receiver. At the "
@@ -107,6 +123,14 @@ void add_solve_options(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("--max-steps", f.max_steps, "Give up after this many loops")
       ->check(CLI::Range(1, 1 << 30))
       ->capture_default_str();
+}
+
+}  // namespace
+
+void add_solve_options(CLI::App* cmd, SolveFlags& f) {
+  add_problem_options(cmd, f);
+  add_parallel_options(cmd, f);
+  add_shooting_options(cmd, f);
 }
 
 ParallelOptions parallel_options(const SolveFlags& f) {
