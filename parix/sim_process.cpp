@@ -253,17 +253,22 @@ void Simulation::deliver(std::int64_t slot) {
   if (!m.data.empty()) release_memory(m.src, static_cast<std::int64_t>(m.data.size()), in_flight_kind);
   const std::int64_t end = m.dst_end;
   LinkEnd& e = *m.dst;
-  const std::int64_t seq = m.link_seq;
-  e.order.arrive(seq, std::move(m), [this, &e, &m](Message&& next) __attribute__((always_inline)) {
-    accept(e, std::move(next));
-    // A held successor is not in a slot: what a receiver's vector left in it goes to the pool.
-    if (&next != &m) [[unlikely]] payloads.give(std::move(next.data));
-  });
+  if (e.order.admit(m.link_seq, m)) [[likely]] {
+    accept(e, std::move(m));
+    if (e.order.holds_any()) [[unlikely]] release_held(e);
+  }
   // Its payload went on (to a receive, the link's queue, the held messages or the pool); the
   // request it keeps alive must not wait for the slot's reuse.
   m.send = Request();
   free_slots.push_back(slot);
   if (!e.open) links.release_if_done(end);  // the last message to a closed link may free it
+}
+
+void Simulation::release_held(LinkEnd& e) {
+  e.order.release_held([this, &e](Message&& next) {
+    accept(e, std::move(next));
+    payloads.give(std::move(next.data));  // not in a slot: what a receiver's vector left goes to the pool
+  });
 }
 
 Request SimProcess::isend(Link& link, std::span<const std::byte> data) { return post_send(link, data, false); }

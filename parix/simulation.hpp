@@ -254,6 +254,9 @@ class Simulation {
   // A message delivered in order to its link end: to a waiting receive, else to the end's queue.
   void accept(LinkEnd& e, Message&& m);
   [[gnu::noinline]] void accept_slow(LinkEnd& e, Message&& m);  // withdrawn or traced
+  // Accepts e's held messages that are now in order (one arrived that they had overtaken). Out of
+  // line: most links never hold any.
+  [[gnu::noinline]] void release_held(LinkEnd& e);
   // Completes an asynchronous send, then gives m to e's first waiting receive, or holds it.
   [[gnu::always_inline]] inline void hand_over(LinkEnd& e, Message&& m);
   // Queues m at e until a receive takes it (its send, if asynchronous, completed already).
