@@ -128,7 +128,7 @@ namespace {
 }  // namespace
 
 inline LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
-  LinkEnd* found = link.valid() ? sim_.links.find(link.handle(), link.hint()) : nullptr;
+  LinkEnd* found = sim_.links.find(link.handle(), link.hint());  // null for an empty link (handle -1)
   if (!found || found->owner != id_) [[unlikely]] throw_bad_link(id_, call, found);
   return *found;
 }
