@@ -274,8 +274,13 @@ class Simulation {
     if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, memory.kind_name(kind));
     return true;
   }
-  // The same for bytes > 0, a message's (NodeMemory::add).
+  // The same for bytes > 0, a message's: within the node's memory in line (NodeMemory::add_within),
+  // an overrun (refused, or granted with a warning) out of line.
   bool declare_message(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
+    if (memory_of[processor]->add_within(bytes, kind)) [[likely]] return true;
+    return declare_beyond(processor, bytes, kind);
+  }
+  [[gnu::noinline]] bool declare_beyond(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
     machine::NodeMemory& memory = *memory_of[processor];
     if (!memory.add(bytes, kind)) return false;
     if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, memory.kind_name(kind));
