@@ -173,8 +173,7 @@ Request SimProcess::abandoned_send() {
   }
   // Built in its slot; the arrival callback captures only (simulation, slot), small enough for
   // the kernel to store inline, which keeps the per-message cost free of extra allocations.
-  const std::int64_t slot = sim_.take_slot();
-  Message& m = sim_.in_flight[slot];
+  Message& m = sim_.take_slot();
   sim_.payloads.copy_into(m.data, data);
   m.send = req;
   m.synchronous = synchronous;
@@ -187,7 +186,7 @@ Request SimProcess::abandoned_send() {
   auto& s = stats_;
   ++s.messages_sent;
   s.bytes_sent += bytes;
-  sim_.network->transfer(node_, sim_.node_of[e.peer], bytes, [sim = &sim_, slot] { sim->deliver(slot); });
+  sim_.network->transfer(node_, sim_.node_of[e.peer], bytes, [sim = &sim_, &m] { sim->deliver(m); });
   return req;
 }
 
@@ -248,8 +247,7 @@ void Simulation::accept_slow(LinkEnd& e, Message&& m) {
   hand_over(e, std::move(m));
 }
 
-void Simulation::deliver(std::int64_t slot) {
-  Message& m = in_flight[slot];  // stays put: nothing parks a message during a delivery
+void Simulation::deliver(Message& m) {  // m stays put: nothing parks a message during a delivery
   if (!m.data.empty()) release_memory(m.src, static_cast<std::int64_t>(m.data.size()), in_flight_kind);
   const std::int64_t end = m.dst_end;
   LinkEnd& e = *m.dst;
@@ -260,7 +258,7 @@ void Simulation::deliver(std::int64_t slot) {
   // Its payload went on (to a receive, the link's queue, the held messages or the pool); the
   // request it keeps alive must not wait for the slot's reuse.
   m.send = Request();
-  free_slots.push_back(slot);
+  free_slots.push_back(&m);
   if (!e.open) links.release_if_done(end);  // the last message to a closed link may free it
 }
 

@@ -25,6 +25,7 @@
 #include "parix/payload_pool.hpp"
 #include "parix/request_pool.hpp"
 #include "parix/simulated_runtime.hpp"
+#include "parix/stable_vector.hpp"
 
 namespace gcsim::parix::detail {
 
@@ -237,19 +238,17 @@ class Simulation {
     --live;
   }
 
-  // The message in `slot` arrived: delivered in place (no copy of it), then the slot is free.
-  void deliver(std::int64_t slot);
-  // Messages in the network wait in a slab, so callbacks can refer to them by index. A free slot
-  // for the next one, which the caller fills in place: its request is null (moved on or reset by
-  // deliver), its payload empty or a receiver's old storage (hand_over), to be overwritten.
-  std::int64_t take_slot() {
-    if (free_slots.empty()) {
-      in_flight.emplace_back();
-      return static_cast<std::int64_t>(in_flight.size()) - 1;
-    }
-    const std::int64_t slot = free_slots.back();
+  // The message in slot m arrived: delivered in place (no copy of it), then the slot is free.
+  void deliver(Message& m);
+  // Messages in the network wait in slots that never move, so callbacks can refer to them by
+  // address. A free slot for the next one, which the caller fills in place: its request is null
+  // (moved on or reset by deliver), its payload empty or a receiver's old storage (hand_over), to
+  // be overwritten.
+  Message& take_slot() {
+    if (free_slots.empty()) [[unlikely]] return in_flight.emplace_back();
+    Message& m = *free_slots.back();
     free_slots.pop_back();
-    return slot;
+    return m;
   }
   // A message delivered in order to its link end: to a waiting receive, else to the end's queue.
   void accept(LinkEnd& e, Message&& m);
@@ -337,8 +336,8 @@ class Simulation {
   machine::NodeMemory::Kind received_kind = 0;
   std::vector<ProcessorStats> stats;
   LinkTable<LinkEnd> links;
-  std::vector<Message> in_flight;
-  std::vector<std::int64_t> free_slots;
+  StableVector<Message> in_flight;  // slots of the messages in flight, at most the run's peak
+  std::vector<Message*> free_slots;
   std::vector<std::unique_ptr<SimProcess>> processes;
   FiberPool fibers;
   // A connect call waiting for its other end.
