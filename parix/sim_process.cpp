@@ -181,7 +181,6 @@ Request SimProcess::abandoned_send() {
   m.link_seq = e.sent++;
   m.src = id_;
   m.sent = sim_.kernel.now();
-  m.dst_end = e.peer_end;
   m.dst = e.peer_at;
   auto& s = stats_;
   ++s.messages_sent;
@@ -249,7 +248,6 @@ void Simulation::accept_slow(LinkEnd& e, Message&& m) {
 
 void Simulation::deliver(Message& m) {  // m stays put: nothing parks a message during a delivery
   if (!m.data.empty()) release_memory(m.src, static_cast<std::int64_t>(m.data.size()), in_flight_kind);
-  const std::int64_t end = m.dst_end;
   LinkEnd& e = *m.dst;
   if (e.order.admit(m.link_seq, m)) [[likely]] {
     accept(e, std::move(m));
@@ -259,7 +257,8 @@ void Simulation::deliver(Message& m) {  // m stays put: nothing parks a message 
   // request it keeps alive must not wait for the slot's reuse.
   m.send = Request();
   free_slots.push_back(&m);
-  if (!e.open) links.release_if_done(end);  // the last message to a closed link may free it
+  // The last message to a closed link may free it; e's handle is its peer's peer_end.
+  if (!e.open) [[unlikely]] links.release_if_done(e.peer_at->peer_end);
 }
 
 void Simulation::release_held(LinkEnd& e) {

@@ -48,8 +48,7 @@ struct Message {
   bool synchronous = false;
   std::int64_t id = 0;
   std::int64_t link_seq = 0;  // position on its link: a link delivers in sending order
-  std::int64_t dst_end = -1;  // the link end it goes to
-  LinkEnd* dst = nullptr;     // the same, found (its pair is not reused while a message travels to it)
+  LinkEnd* dst = nullptr;  // the link end it goes to (its pair is not reused while a message travels to it)
   int src = -1;
   machine::SimTime sent = 0;
 };
