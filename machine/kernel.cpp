@@ -41,6 +41,7 @@ void Kernel::at_slow(SimTime t, Action&& a) {
     sift_up(heap_.size() - 1, later);
   }
   in_order_.push_back({t, seq_++, slot});
+  run_end_ = t;
 }
 
 Kernel::Key Kernel::pop_heap() {

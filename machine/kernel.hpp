@@ -65,6 +65,9 @@ class Kernel {
   void add_chunk();
 
   RingBuffer<Key> in_order_;  // keys later than or equal to their predecessor, in (time, seq) order
+  // The time of the last key added to the in-order run: its back's while it holds any, else no
+  // later than now_. A key at or after it extends the run (one comparison instead of the back's).
+  SimTime run_end_ = 0;
   std::vector<Key> heap_;     // min-heap on (time, seq) of the keys that came out of order
   // Chunks never move, so an action runs in place even if it schedules more events.
   std::vector<std::unique_ptr<Action[]>> chunks_;
@@ -80,13 +83,13 @@ class Kernel {
 // The common case in line, without a call before the action's move, so that it saves few
 // registers: a free slot and a key that extends the in-order run, which has room.
 inline void Kernel::at(SimTime t, Action&& a) {
-  if (t < now_ || free_slots_.empty() || in_order_.full() || (!in_order_.empty() && t < in_order_.back().time))
-      [[unlikely]] {
+  if (t < run_end_ || t < now_ || free_slots_.empty() || in_order_.full()) [[unlikely]] {
     return at_slow(t, std::move(a));
   }
   Action* const slot = free_slots_.back();
   free_slots_.pop_back();
   in_order_.push_back({t, seq_++, slot});
+  run_end_ = t;
   slot->fill(std::move(a));  // free slots are empty (reset by step)
 }
 
