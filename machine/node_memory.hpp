@@ -59,6 +59,12 @@ class NodeMemory {
     held -= change;
     used_ -= change;
   }
+  // release() of bytes the caller declared and still holds (the runtime's messages in flight,
+  // each released once, on arrival): the same sums without release()'s floor at zero.
+  void give_back(std::int64_t bytes, Kind kind) {
+    held_[kind] -= bytes;
+    used_ -= bytes;
+  }
   const std::string& kind_name(Kind kind) const { return kinds_[kind]; }
   std::int64_t used() const { return used_; }
   std::int64_t peak() const { return peak_; }

@@ -247,7 +247,7 @@ void Simulation::accept_slow(LinkEnd& e, Message&& m) {
 }
 
 void Simulation::deliver(Message& m) {  // m stays put: nothing parks a message during a delivery
-  if (!m.data.empty()) release_memory(m.src, static_cast<std::int64_t>(m.data.size()), in_flight_kind);
+  if (!m.data.empty()) release_in_flight(m);
   LinkEnd& e = *m.dst;
   if (e.order.admit(m.link_seq, m)) [[likely]] {
     accept(e, std::move(m));

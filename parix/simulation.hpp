@@ -289,6 +289,11 @@ class Simulation {
   void release_memory(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
     memory_of[processor]->release(bytes, kind);
   }
+  // The bytes of a message that arrived, declared in flight on its sender's node when it was sent
+  // (which threw when refused, so every message in flight holds its bytes there).
+  void release_in_flight(const Message& m) {
+    memory_of[m.src]->give_back(static_cast<std::int64_t>(m.data.size()), in_flight_kind);
+  }
   std::string refusal(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) const {
     const machine::NodeMemory& memory = *memory_of[processor];
     return memory.report(processor, bytes, memory.kind_name(kind));

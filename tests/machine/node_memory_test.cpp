@@ -78,6 +78,23 @@ TEST(NodeMemory, AddWithinGrantsWhatFitsAndLeavesAnOverrunToTheCaller) {
   }
 }
 
+// give_back, for bytes the caller holds: the same sums as release.
+TEST(NodeMemory, GiveBackOfWhatIsHeldKeepsTheSumsOfRelease) {
+  NodeMemory a(1000, MemoryLimit::enforce), b(1000, MemoryLimit::enforce);
+  const NodeMemory::Kind ka = a.kind("messages"), kb = b.kind("messages");
+  ASSERT_TRUE(a.use(300, "scene") && b.use(300, "scene"));
+  ASSERT_TRUE(a.add(500, ka) && b.add(500, kb));
+  for (const std::int64_t bytes : {120, 80, 300}) {
+    a.give_back(bytes, ka);
+    b.release(bytes, kb);
+    EXPECT_EQ(a.used(), b.used()) << bytes;
+    EXPECT_EQ(a.breakdown(), b.breakdown()) << bytes;
+  }
+  EXPECT_EQ(a.used(), 300);
+  EXPECT_EQ(a.peak(), 800);
+  EXPECT_TRUE(a.add_within(700, ka));  // all the node's memory is free again but the scene's
+}
+
 TEST(NodeMemory, TheReportNamesProcessorKindsLargestFirstAndTheLimit) {
   NodeMemory m(32 << 20, MemoryLimit::enforce);
   ASSERT_TRUE(m.use(1 << 20, "scene"));
