@@ -7,10 +7,9 @@
 namespace gcsim::machine {
 
 void Kernel::add_chunk() {
-  const auto first = static_cast<std::uint32_t>(chunks_.size() * kChunk);
-  chunks_.push_back(std::make_unique<Action[]>(kChunk));
+  Action* const first = chunks_.emplace_back(std::make_unique<Action[]>(kChunk)).get();
   free_slots_.reserve(free_slots_.size() + kChunk);
-  for (std::uint32_t i = kChunk; i-- > 0;) free_slots_.push_back(first + i);
+  for (std::size_t i = kChunk; i-- > 0;) free_slots_.push_back(first + i);
 }
 
 // The hole at i moves towards the root while its parent is later than key, which then fills it.
@@ -30,8 +29,8 @@ void Kernel::at_slow(SimTime t, Action&& a) {
     throw std::logic_error("Kernel::at: event scheduled in the past (" + std::to_string(t) + " ps < now " +
                            std::to_string(now_) + " ps)");
   }
-  const std::uint32_t slot = take_slot();
-  action(slot).fill(std::move(a));  // free slots are empty (reset by step)
+  Action* const slot = take_slot();
+  slot->fill(std::move(a));  // free slots are empty (reset by step)
   // seq grows, so a key not earlier than the run's last is later than every key in the run. A
   // key earlier than the last ones moves them to the heap instead of going there itself: the
   // run keeps the common delay of a flow, the heap takes the few later ones it would block.
@@ -42,6 +41,7 @@ void Kernel::at_slow(SimTime t, Action&& a) {
     sift_up(heap_.size() - 1, later);
   }
   in_order_.push_back({t, seq_++, slot});
+  run_end_ = t;
 }
 
 Kernel::Key Kernel::pop_heap() {

@@ -1,7 +1,7 @@
 #pragma once
 // The discrete-event kernel: a clock and a queue of actions ordered by (time, sequence number).
 // Ties at equal times run in the order they were scheduled, so a run is deterministic.
-// The queue holds small (time, sequence, slot) keys in two parts: a run of keys scheduled in
+// The queue holds small (time, sequence, action) keys in two parts: a run of keys scheduled in
 // nondecreasing time (a FIFO: most events of a steady message flow, where each message takes the
 // same time, come in order) and a 4-ary heap for the others; a step pops the earlier of the two
 // fronts, so the order is the same as one heap's. The actions themselves stay in place in a pool
@@ -42,7 +42,7 @@ class Kernel {
   struct Key {
     SimTime time;
     std::uint64_t seq;
-    std::uint32_t slot;
+    KernelAction* action;  // its slot in the pool (slots never move): no index to resolve
     // One 128-bit comparison of (time, seq), without a branch; times are never negative (at()
     // refuses the past and the clock starts at 0), so they order the same as unsigned.
     bool operator<(const Key& o) const {
@@ -54,23 +54,24 @@ class Kernel {
   void at_slow(SimTime t, Action&& action);  // a new slot chunk, the heap, or a time in the past
   void sift_up(std::size_t i, const Key& key);
   [[gnu::noinline]] Key pop_heap();  // out of line: step() inlines into the simulation's loop
-  static constexpr std::uint32_t kChunkBits = 10;
-  static constexpr std::uint32_t kChunk = 1u << kChunkBits;
-  Action& action(std::uint32_t slot) { return chunks_[slot >> kChunkBits][slot & (kChunk - 1)]; }
+  static constexpr std::size_t kChunk = 1024;
   // Inline, as at() runs once per event; growing the pool is out of line.
-  std::uint32_t take_slot() {
+  Action* take_slot() {
     if (free_slots_.empty()) add_chunk();
-    const std::uint32_t slot = free_slots_.back();
+    Action* const slot = free_slots_.back();
     free_slots_.pop_back();
     return slot;
   }
   void add_chunk();
 
   RingBuffer<Key> in_order_;  // keys later than or equal to their predecessor, in (time, seq) order
+  // The time of the last key added to the in-order run: its back's while it holds any, else no
+  // later than now_. A key at or after it extends the run (one comparison instead of the back's).
+  SimTime run_end_ = 0;
   std::vector<Key> heap_;     // min-heap on (time, seq) of the keys that came out of order
   // Chunks never move, so an action runs in place even if it schedules more events.
   std::vector<std::unique_ptr<Action[]>> chunks_;
-  std::vector<std::uint32_t> free_slots_;
+  std::vector<Action*> free_slots_;
   SimTime now_ = 0;
   std::uint64_t seq_ = 0;
   std::uint64_t processed_ = 0;
@@ -82,14 +83,14 @@ class Kernel {
 // The common case in line, without a call before the action's move, so that it saves few
 // registers: a free slot and a key that extends the in-order run, which has room.
 inline void Kernel::at(SimTime t, Action&& a) {
-  if (t < now_ || free_slots_.empty() || in_order_.full() || (!in_order_.empty() && t < in_order_.back().time))
-      [[unlikely]] {
+  if (t < run_end_ || t < now_ || free_slots_.empty() || in_order_.full()) [[unlikely]] {
     return at_slow(t, std::move(a));
   }
-  const std::uint32_t slot = free_slots_.back();
+  Action* const slot = free_slots_.back();
   free_slots_.pop_back();
   in_order_.push_back({t, seq_++, slot});
-  action(slot).fill(std::move(a));  // free slots are empty (reset by step)
+  run_end_ = t;
+  slot->fill(std::move(a));  // free slots are empty (reset by step)
 }
 
 inline bool Kernel::step() {
@@ -104,18 +105,17 @@ inline bool Kernel::step() {
   }
   now_ = top.time;
   ++processed_;
-  Action& a = action(top.slot);
+  Action* const a = top.action;
   // The slot is released only after the action ran: it may schedule events, which must not reuse it.
   struct Release {
     Kernel& k;
-    Action& a;
-    std::uint32_t slot;
+    Action* a;
     ~Release() {
-      a.reset();
-      k.free_slots_.push_back(slot);
+      a->reset();
+      k.free_slots_.push_back(a);
     }
-  } release{*this, a, top.slot};
-  a();
+  } release{*this, a};
+  (*a)();
   return true;
 }
 

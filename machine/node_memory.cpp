@@ -16,16 +16,17 @@ MemoryLimit parse_memory_limit(std::string_view name) {
 }
 
 NodeMemory::Kind NodeMemory::kind(std::string_view name) {
-  for (Kind k = 0; k < held_.size(); ++k)
-    if (held_[k].kind == name) return k;
-  held_.push_back(Held{std::string(name), 0});  // holding nothing: breakdown() leaves it out
-  return held_.size() - 1;
+  for (Kind k = 0; k < kinds_.size(); ++k)
+    if (kinds_[k] == name) return k;
+  kinds_.emplace_back(name);
+  held_.push_back(0);  // holding nothing: breakdown() leaves it out
+  return kinds_.size() - 1;
 }
 
 std::string NodeMemory::breakdown() const {
   std::vector<std::pair<std::int64_t, std::string_view>> kinds;
-  for (const Held& h : held_)
-    if (h.bytes > 0) kinds.emplace_back(h.bytes, h.kind);
+  for (Kind k = 0; k < kinds_.size(); ++k)
+    if (held_[k] > 0) kinds.emplace_back(held_[k], kinds_[k]);
   // Largest first; equal sizes by name.
   std::sort(kinds.begin(), kinds.end(),
             [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });

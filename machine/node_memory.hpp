@@ -36,19 +36,36 @@ class NodeMemory {
   // on every message (inline, twice per message).
   bool add(std::int64_t bytes, Kind kind) {
     if (limit_ == MemoryLimit::enforce && bytes > capacity_ - used_) return false;
-    held_[kind].bytes += bytes;
+    held_[kind] += bytes;
     used_ += bytes;
     peak_ = std::max(peak_, used_);
     return true;
   }
+  // add() when the node's memory holds bytes > 0 more, under either limit (true); else changes
+  // nothing and returns false, for the caller to add() and deal with the overrun. One test for
+  // what add() and a test of over() afterwards ask (the runtime, on every message).
+  bool add_within(std::int64_t bytes, Kind kind) {
+    const std::int64_t used = used_ + bytes;
+    if (used > capacity_) [[unlikely]] return false;
+    held_[kind] += bytes;
+    used_ = used;
+    peak_ = std::max(peak_, used);
+    return true;
+  }
   void release(std::int64_t bytes, Kind kind) {
-    Held& h = held_[kind];
+    std::int64_t& held = held_[kind];
     // Never below zero: a double release is the caller's slip, not memory the node gains.
-    const std::int64_t change = std::min(bytes, h.bytes);
-    h.bytes -= change;
+    const std::int64_t change = std::min(bytes, held);
+    held -= change;
     used_ -= change;
   }
-  const std::string& kind_name(Kind kind) const { return held_[kind].kind; }
+  // release() of bytes the caller declared and still holds (the runtime's messages in flight,
+  // each released once, on arrival): the same sums without release()'s floor at zero.
+  void give_back(std::int64_t bytes, Kind kind) {
+    held_[kind] -= bytes;
+    used_ -= bytes;
+  }
+  const std::string& kind_name(Kind kind) const { return kinds_[kind]; }
   std::int64_t used() const { return used_; }
   std::int64_t peak() const { return peak_; }
   std::int64_t capacity() const { return capacity_; }
@@ -66,11 +83,10 @@ class NodeMemory {
   MemoryLimit limit_;
   std::int64_t used_ = 0;
   std::int64_t peak_ = 0;
-  struct Held {
-    std::string kind;
-    std::int64_t bytes;
-  };
-  std::vector<Held> held_;  // bytes in use by kind (a handful per node), indexed by Kind
+  // By Kind (a handful per node): the names, and apart from them the bytes in use, which every
+  // declaration indexes (an array of 8-byte sums).
+  std::vector<std::string> kinds_;
+  std::vector<std::int64_t> held_;
 };
 
 // "12 bytes", "1.5 KB", "32.0 MB", "10.0 GB" (binary units, as the machine file's memory_mb).

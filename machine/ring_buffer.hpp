@@ -15,8 +15,8 @@ class RingBuffer {
  public:
   bool empty() const { return size_ == 0; }
   std::size_t size() const { return size_; }
-  std::size_t capacity() const { return mask_ + (items_.empty() ? 0 : 1); }
-  bool full() const { return size_ == capacity(); }
+  std::size_t capacity() const { return capacity_; }
+  bool full() const { return size_ == capacity_; }  // one comparison: the kernel asks on every event
   const T& front() const { return items_[head_]; }
   const T& back() const { return items_[(head_ + size_ - 1) & mask_]; }
   void push_back(const T& v) {
@@ -37,11 +37,13 @@ class RingBuffer {
     for (std::size_t i = 0; i < size_; ++i) bigger[i] = items_[(head_ + i) & mask_];
     items_.swap(bigger);
     head_ = 0;
-    mask_ = items_.size() - 1;
+    capacity_ = items_.size();
+    mask_ = capacity_ - 1;
   }
   std::vector<T> items_;
   std::size_t head_ = 0;
   std::size_t size_ = 0;
+  std::size_t capacity_ = 0;  // items_.size(), kept apart: the vector's size divides by sizeof(T)
   std::size_t mask_ = 0;
 };
 

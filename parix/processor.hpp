@@ -61,8 +61,8 @@ class Link {
 
   int peer() const { return peer_; }
   int tag() const { return tag_; }
-  std::int64_t handle() const { return handle_; }
-  const void* hint() const { return hint_; }
+  std::int64_t handle() const { return handle_; }  // -1 for an empty or moved-from link
+  const void* hint() const { return hint_; }      // null for an empty or moved-from link
   bool valid() const { return owner_ != nullptr; }
 
  private:
@@ -336,8 +336,9 @@ inline Link& Link::operator=(Link&& o) noexcept {
     owner_ = std::exchange(o.owner_, nullptr);
     peer_ = o.peer_;
     tag_ = o.tag_;
-    handle_ = o.handle_;
-    hint_ = o.hint_;
+    // o names no end any more: a backend finds nothing by its handle and hint (no valid() test).
+    handle_ = std::exchange(o.handle_, -1);
+    hint_ = std::exchange(o.hint_, nullptr);
   }
   return *this;
 }

@@ -128,7 +128,7 @@ namespace {
 }  // namespace
 
 inline LinkEnd& SimProcess::end_of(const Link& link, const char* call) {
-  LinkEnd* found = link.valid() ? sim_.links.find(link.handle(), link.hint()) : nullptr;
+  LinkEnd* found = sim_.links.find(link.handle(), link.hint());  // null for an empty link (handle -1)
   if (!found || found->owner != id_) [[unlikely]] throw_bad_link(id_, call, found);
   return *found;
 }
@@ -173,8 +173,7 @@ Request SimProcess::abandoned_send() {
   }
   // Built in its slot; the arrival callback captures only (simulation, slot), small enough for
   // the kernel to store inline, which keeps the per-message cost free of extra allocations.
-  const std::int64_t slot = sim_.take_slot();
-  Message& m = sim_.in_flight[slot];
+  Message& m = sim_.take_slot();
   sim_.payloads.copy_into(m.data, data);
   m.send = req;
   m.synchronous = synchronous;
@@ -182,12 +181,11 @@ Request SimProcess::abandoned_send() {
   m.link_seq = e.sent++;
   m.src = id_;
   m.sent = sim_.kernel.now();
-  m.dst_end = e.peer_end;
   m.dst = e.peer_at;
   auto& s = stats_;
   ++s.messages_sent;
   s.bytes_sent += bytes;
-  sim_.network->transfer(node_, sim_.node_of[e.peer], bytes, [sim = &sim_, slot] { sim->deliver(slot); });
+  sim_.network->transfer(node_, sim_.node_of[e.peer], bytes, [sim = &sim_, &m] { sim->deliver(m); });
   return req;
 }
 
@@ -248,22 +246,26 @@ void Simulation::accept_slow(LinkEnd& e, Message&& m) {
   hand_over(e, std::move(m));
 }
 
-void Simulation::deliver(std::int64_t slot) {
-  Message& m = in_flight[slot];  // stays put: nothing parks a message during a delivery
-  if (!m.data.empty()) release_memory(m.src, static_cast<std::int64_t>(m.data.size()), in_flight_kind);
-  const std::int64_t end = m.dst_end;
+void Simulation::deliver(Message& m) {  // m stays put: nothing parks a message during a delivery
+  if (!m.data.empty()) release_in_flight(m);
   LinkEnd& e = *m.dst;
-  const std::int64_t seq = m.link_seq;
-  e.order.arrive(seq, std::move(m), [this, &e, &m](Message&& next) __attribute__((always_inline)) {
-    accept(e, std::move(next));
-    // A held successor is not in a slot: what a receiver's vector left in it goes to the pool.
-    if (&next != &m) [[unlikely]] payloads.give(std::move(next.data));
-  });
+  if (e.order.admit(m.link_seq, m)) [[likely]] {
+    accept(e, std::move(m));
+    if (e.order.holds_any()) [[unlikely]] release_held(e);
+  }
   // Its payload went on (to a receive, the link's queue, the held messages or the pool); the
   // request it keeps alive must not wait for the slot's reuse.
   m.send = Request();
-  free_slots.push_back(slot);
-  if (!e.open) links.release_if_done(end);  // the last message to a closed link may free it
+  free_slots.push_back(&m);
+  // The last message to a closed link may free it; e's handle is its peer's peer_end.
+  if (!e.open) [[unlikely]] links.release_if_done(e.peer_at->peer_end);
+}
+
+void Simulation::release_held(LinkEnd& e) {
+  e.order.release_held([this, &e](Message&& next) {
+    accept(e, std::move(next));
+    payloads.give(std::move(next.data));  // not in a slot: what a receiver's vector left goes to the pool
+  });
 }
 
 Request SimProcess::isend(Link& link, std::span<const std::byte> data) { return post_send(link, data, false); }

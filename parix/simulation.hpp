@@ -25,6 +25,7 @@
 #include "parix/payload_pool.hpp"
 #include "parix/request_pool.hpp"
 #include "parix/simulated_runtime.hpp"
+#include "parix/stable_vector.hpp"
 
 namespace gcsim::parix::detail {
 
@@ -47,8 +48,7 @@ struct Message {
   bool synchronous = false;
   std::int64_t id = 0;
   std::int64_t link_seq = 0;  // position on its link: a link delivers in sending order
-  std::int64_t dst_end = -1;  // the link end it goes to
-  LinkEnd* dst = nullptr;     // the same, found (its pair is not reused while a message travels to it)
+  LinkEnd* dst = nullptr;  // the link end it goes to (its pair is not reused while a message travels to it)
   int src = -1;
   machine::SimTime sent = 0;
 };
@@ -237,23 +237,24 @@ class Simulation {
     --live;
   }
 
-  // The message in `slot` arrived: delivered in place (no copy of it), then the slot is free.
-  void deliver(std::int64_t slot);
-  // Messages in the network wait in a slab, so callbacks can refer to them by index. A free slot
-  // for the next one, which the caller fills in place: its request is null (moved on or reset by
-  // deliver), its payload empty or a receiver's old storage (hand_over), to be overwritten.
-  std::int64_t take_slot() {
-    if (free_slots.empty()) {
-      in_flight.emplace_back();
-      return static_cast<std::int64_t>(in_flight.size()) - 1;
-    }
-    const std::int64_t slot = free_slots.back();
+  // The message in slot m arrived: delivered in place (no copy of it), then the slot is free.
+  void deliver(Message& m);
+  // Messages in the network wait in slots that never move, so callbacks can refer to them by
+  // address. A free slot for the next one, which the caller fills in place: its request is null
+  // (moved on or reset by deliver), its payload empty or a receiver's old storage (hand_over), to
+  // be overwritten.
+  Message& take_slot() {
+    if (free_slots.empty()) [[unlikely]] return in_flight.emplace_back();
+    Message& m = *free_slots.back();
     free_slots.pop_back();
-    return slot;
+    return m;
   }
   // A message delivered in order to its link end: to a waiting receive, else to the end's queue.
   void accept(LinkEnd& e, Message&& m);
   [[gnu::noinline]] void accept_slow(LinkEnd& e, Message&& m);  // withdrawn or traced
+  // Accepts e's held messages that are now in order (one arrived that they had overtaken). Out of
+  // line: most links never hold any.
+  [[gnu::noinline]] void release_held(LinkEnd& e);
   // Completes an asynchronous send, then gives m to e's first waiting receive, or holds it.
   [[gnu::always_inline]] inline void hand_over(LinkEnd& e, Message&& m);
   // Queues m at e until a receive takes it (its send, if asynchronous, completed already).
@@ -271,8 +272,13 @@ class Simulation {
     if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, memory.kind_name(kind));
     return true;
   }
-  // The same for bytes > 0, a message's (NodeMemory::add).
+  // The same for bytes > 0, a message's: within the node's memory in line (NodeMemory::add_within),
+  // an overrun (refused, or granted with a warning) out of line.
   bool declare_message(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
+    if (memory_of[processor]->add_within(bytes, kind)) [[likely]] return true;
+    return declare_beyond(processor, bytes, kind);
+  }
+  [[gnu::noinline]] bool declare_beyond(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
     machine::NodeMemory& memory = *memory_of[processor];
     if (!memory.add(bytes, kind)) return false;
     if (memory.over() && memory_warning.empty()) memory_warning = memory.report(processor, 0, memory.kind_name(kind));
@@ -282,6 +288,11 @@ class Simulation {
   // memory got there by a declaration, which kept the first warning.
   void release_memory(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
     memory_of[processor]->release(bytes, kind);
+  }
+  // The bytes of a message that arrived, declared in flight on its sender's node when it was sent
+  // (which threw when refused, so every message in flight holds its bytes there).
+  void release_in_flight(const Message& m) {
+    memory_of[m.src]->give_back(static_cast<std::int64_t>(m.data.size()), in_flight_kind);
   }
   std::string refusal(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) const {
     const machine::NodeMemory& memory = *memory_of[processor];
@@ -329,8 +340,8 @@ class Simulation {
   machine::NodeMemory::Kind received_kind = 0;
   std::vector<ProcessorStats> stats;
   LinkTable<LinkEnd> links;
-  std::vector<Message> in_flight;
-  std::vector<std::int64_t> free_slots;
+  StableVector<Message> in_flight;  // slots of the messages in flight, at most the run's peak
+  std::vector<Message*> free_slots;
   std::vector<std::unique_ptr<SimProcess>> processes;
   FiberPool fibers;
   // A connect call waiting for its other end.

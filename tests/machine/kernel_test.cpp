@@ -139,6 +139,24 @@ TEST(Kernel, MixedInOrderAndOutOfOrderEventsRunInTimeThenSchedulingOrder) {
   EXPECT_EQ(k.pending(), 0u);
 }
 
+// The kernel compares a new key with the time of the last key its in-order run took, not with
+// the run's back: after the run empties (its keys run, or moved to the heap), keys between now
+// and the heap's still go in time order.
+TEST(Kernel, KeysAfterTheInOrderRunEmptiedRunInTimeOrder) {
+  Kernel k;
+  std::vector<int> order;
+  k.at(100, [&] { order.push_back(100); });
+  k.at(50, [&] { order.push_back(50); });  // earlier: 100 moves to the heap
+  ASSERT_TRUE(k.step());                   // 50; the run is empty, the heap holds 100
+  EXPECT_EQ(k.now(), 50);
+  k.at(60, [&] { order.push_back(60); });
+  k.at(55, [&] { order.push_back(55); });  // earlier than the run's last (60)
+  k.at(55, [&] { order.push_back(56); });  // a tie: after the first 55
+  EXPECT_THROW(k.at(49, [] {}), std::logic_error);
+  k.run();
+  EXPECT_EQ(order, (std::vector<int>{50, 55, 56, 60, 100}));
+}
+
 TEST(RingBuffer, KeepsFifoOrderAcrossWrapsAndGrowth) {
   RingBuffer<int> q;
   int pushed = 0, popped = 0;
@@ -154,6 +172,14 @@ TEST(RingBuffer, KeepsFifoOrderAcrossWrapsAndGrowth) {
     ASSERT_EQ(q.size(), static_cast<std::size_t>(pushed - popped));
   }
   EXPECT_EQ(q.capacity() & (q.capacity() - 1), 0u);  // a power of two
+  EXPECT_FALSE(q.full());
+  while (q.size() < q.capacity()) q.push_back(pushed++);
+  EXPECT_TRUE(q.full());
+  const std::size_t before = q.capacity();
+  q.push_back(pushed++);  // grows
+  EXPECT_EQ(q.capacity(), 2 * before);
+  EXPECT_FALSE(q.full());
+  for (; popped < pushed; ++popped, q.pop_front()) ASSERT_EQ(q.front(), popped);
 }
 
 TEST(KernelAction, MovesLeaveTheSourceEmpty) {

@@ -53,6 +53,48 @@ TEST(NodeMemory, AddAndReleaseKeepTheSumsOfUse) {
   EXPECT_EQ(a.peak(), 90);
 }
 
+// add_within, the runtime's in-line form: what add grants within the node's memory, under either
+// limit; past it nothing changes (the caller then adds, refused or warned).
+TEST(NodeMemory, AddWithinGrantsWhatFitsAndLeavesAnOverrunToTheCaller) {
+  for (const MemoryLimit limit : {MemoryLimit::enforce, MemoryLimit::warn}) {
+    NodeMemory a(100, limit), b(100, limit);
+    const NodeMemory::Kind ka = a.kind("messages"), kb = b.kind("messages");
+    for (const std::int64_t bytes : {40, 60, 1, 30}) {  // 60 fills the node exactly; 1 would overrun
+      const bool fits = b.used() + bytes <= 100;
+      EXPECT_EQ(a.add_within(bytes, ka), fits) << bytes;
+      if (fits) EXPECT_TRUE(b.add(bytes, kb));
+      EXPECT_EQ(a.used(), b.used()) << bytes;
+      EXPECT_EQ(a.peak(), b.peak()) << bytes;
+      EXPECT_EQ(a.breakdown(), b.breakdown()) << bytes;
+      if (bytes == 60) {
+        a.release(70, ka);  // 70 of the 100 go back before the next, 1 byte then fits
+        b.release(70, kb);
+      }
+    }
+    EXPECT_EQ(a.used(), 61);
+    EXPECT_EQ(a.peak(), 100);
+    EXPECT_FALSE(a.add_within(40, ka));  // 101: refused under enforce, a warning's case under warn
+    EXPECT_EQ(a.used(), 61);
+  }
+}
+
+// give_back, for bytes the caller holds: the same sums as release.
+TEST(NodeMemory, GiveBackOfWhatIsHeldKeepsTheSumsOfRelease) {
+  NodeMemory a(1000, MemoryLimit::enforce), b(1000, MemoryLimit::enforce);
+  const NodeMemory::Kind ka = a.kind("messages"), kb = b.kind("messages");
+  ASSERT_TRUE(a.use(300, "scene") && b.use(300, "scene"));
+  ASSERT_TRUE(a.add(500, ka) && b.add(500, kb));
+  for (const std::int64_t bytes : {120, 80, 300}) {
+    a.give_back(bytes, ka);
+    b.release(bytes, kb);
+    EXPECT_EQ(a.used(), b.used()) << bytes;
+    EXPECT_EQ(a.breakdown(), b.breakdown()) << bytes;
+  }
+  EXPECT_EQ(a.used(), 300);
+  EXPECT_EQ(a.peak(), 800);
+  EXPECT_TRUE(a.add_within(700, ka));  // all the node's memory is free again but the scene's
+}
+
 TEST(NodeMemory, TheReportNamesProcessorKindsLargestFirstAndTheLimit) {
   NodeMemory m(32 << 20, MemoryLimit::enforce);
   ASSERT_TRUE(m.use(1 << 20, "scene"));

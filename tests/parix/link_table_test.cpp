@@ -94,6 +94,33 @@ TEST(LinkTable, ALinkOfAnotherProcessorIsRefusedOnUse) {
   EXPECT_NE(error.find("processor 1: send on a link owned by processor 0"), std::string::npos) << error;
 }
 
+// A moved-from link names no end (handle -1, no hint), so the runtime, which no longer asks
+// Link::valid on every send and receive, refuses it as not open; the link it moved to works.
+TEST(LinkTable, AMovedFromLinkIsRefusedAsNotOpen) {
+  std::string error;
+  std::int64_t moved_from_handle = 0;
+  const void* moved_from_hint = &error;
+  run_simulated(test_support::published_machine(2), [&](Processor& p) {
+    Link l = p.connect(1 - p.id());
+    Link moved = std::move(l);
+    if (p.id() == 1) {
+      moved_from_handle = l.handle();
+      moved_from_hint = l.hint();
+      try {
+        p.send(l, {});
+      } catch (const ParixError& e) {
+        error = e.what();
+      }
+      p.send(moved, {});
+    } else {
+      p.recv(moved);
+    }
+  });
+  EXPECT_EQ(moved_from_handle, -1);
+  EXPECT_EQ(moved_from_hint, nullptr);
+  EXPECT_NE(error.find("processor 1: send on a link that is not open"), std::string::npos) << error;
+}
+
 TEST(LinkTable, AThousandPairsOpenedAndClosedInTurnUseTwoSlots) {
   LinkTable<FakeEnd> t;
   for (int i = 0; i < 1000; ++i) {

@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <sstream>
 #include "tests/support/scratch_path.hpp"
 
@@ -144,6 +146,42 @@ TEST(Runtime, MessagesOnALinkArriveInOrder) {
     }
   });
   for (int i = 0; i < 20; ++i) EXPECT_EQ(got[i], i);
+}
+
+// Messages in flight live in slots that never move, which their arrival events name by address:
+// a burst of 300 isends (about five chunks of slots, added while the first ones travel) on two
+// links arrives whole and in order, and so does a second burst sent once the first is delivered.
+TEST(Runtime, MessagesInFlightKeepTheirSlotsWhileMoreAreSent) {
+  constexpr int kBurst = 300;
+  std::vector<std::uint16_t> got[2];
+  run_simulated(on_nodes(3), [&](Processor& p) {
+    if (p.id() == 2) {
+      Link from[2] = {p.connect(0), p.connect(1)};
+      Bytes in;
+      for (int i = 0; i < 2 * kBurst; ++i) {
+        for (int s = 0; s < 2; ++s) {
+          p.recv(from[s], in);
+          std::uint16_t v = 0;
+          std::memcpy(&v, in.data(), sizeof v);
+          got[s].push_back(v);
+        }
+      }
+      return;
+    }
+    Link to = p.connect(2);
+    for (int burst = 0; burst < 2; ++burst) {
+      std::vector<Request> rs;
+      for (int i = 0; i < kBurst; ++i) {
+        const std::uint16_t v = static_cast<std::uint16_t>(burst * kBurst + i + p.id() * 1000);
+        rs.push_back(p.isend(to, std::as_bytes(std::span(&v, 1))));
+      }
+      for (auto& r : rs) p.wait(r);
+    }
+  });
+  for (int s = 0; s < 2; ++s) {
+    ASSERT_EQ(got[s].size(), 2u * kBurst);
+    for (int i = 0; i < 2 * kBurst; ++i) ASSERT_EQ(got[s][i], i + s * 1000) << "link " << s << ", message " << i;
+  }
 }
 
 TEST(Runtime, IrecvAndWaitAnyReturnTheFirstArrival) {

@@ -67,6 +67,25 @@ TEST(InOrderDelivery, AnyArrivalOrderDeliversInSendingOrder) {
   for (int i = 0; i < 8; ++i) EXPECT_EQ(got.at(i), i);
 }
 
+// The runtime's form (deliver in line): admit says whether a message is next, holding it if not;
+// after delivering it the caller releases what waited behind it.
+TEST(InOrderDelivery, AdmitHoldsAnEarlyMessageAndReleaseHeldDeliversTheNextOnes) {
+  InOrderDelivery<std::string> link;
+  std::vector<std::string> got;
+  auto deliver = [&](std::string&& m) { got.push_back(std::move(m)); };
+  std::string c = "c", b = "b", a = "a";
+  EXPECT_FALSE(link.admit(2, c));
+  EXPECT_FALSE(link.admit(1, b));
+  EXPECT_TRUE(link.holds_any());
+  ASSERT_TRUE(link.admit(0, a));
+  EXPECT_EQ(a, "a");  // admitted: left with the caller
+  deliver(std::move(a));
+  link.release_held(deliver);
+  EXPECT_EQ(got, (std::vector<std::string>{"a", "b", "c"}));
+  EXPECT_FALSE(link.holds_any());
+  EXPECT_EQ(link.delivered(), 3);
+}
+
 TEST(Fifo, KeepsOrderAndHoldsNothingUntilUsed) {
   Fifo<int> q;
   EXPECT_TRUE(q.empty());
