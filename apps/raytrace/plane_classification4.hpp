@@ -13,10 +13,33 @@
 
 namespace gcsim::raytrace {
 
+// A plane with the absolute values classify() reads, laid out as one lane of FourPlanes:
+// prepared once for a plane that many regions use (the camera's planes through pixel centres).
+struct PreparedPlane {
+  Plane plane;
+  glm::vec3 abs_normal{0.0f};
+  float abs_offset = 0.0f;
+  PreparedPlane() = default;
+  explicit PreparedPlane(const Plane& p)
+      : plane(p), abs_normal(abs_components(p.normal)), abs_offset(std::abs(p.offset)) {}
+};
+
 #if defined(__SSE2__)
 
 class FourPlanes {
  public:
+  // The same lanes as from the four planes themselves, by two 4 x 4 transposes.
+  explicit FourPlanes(const std::array<const PreparedPlane*, 4>& p) {
+    static_assert(sizeof(PreparedPlane) == 8 * sizeof(float));
+    __m128 a[4], b[4];
+    for (int i = 0; i < 4; ++i) {
+      a[i] = _mm_loadu_ps(&p[i]->plane.normal.x);
+      b[i] = _mm_loadu_ps(&p[i]->abs_normal.x);
+    }
+    _MM_TRANSPOSE4_PS(a[0], a[1], a[2], a[3]);
+    _MM_TRANSPOSE4_PS(b[0], b[1], b[2], b[3]);
+    for (int k = 0; k < 4; ++k) lanes_[k] = a[k], lanes_[4 + k] = b[k];
+  }
   explicit FourPlanes(const std::array<Plane, 4>& p) {
     alignas(16) float v[8][4];
     for (int i = 0; i < 4; ++i) {
@@ -58,6 +81,8 @@ class FourPlanes {
 
 class FourPlanes {
  public:
+  explicit FourPlanes(const std::array<const PreparedPlane*, 4>& p)
+      : planes_{p[0]->plane, p[1]->plane, p[2]->plane, p[3]->plane} {}
   explicit FourPlanes(const std::array<Plane, 4>& p) : planes_(p) {}
   bool any_outside(const BoxCentre& b) const {
     for (const Plane& pl : planes_)
