@@ -85,14 +85,16 @@ bool OcclusionCheck::nothing_in_front(const Subtree& subtree, int prim, float ma
   stack[top++] = subtree.root;
   ++checks;
   while (top > 0) {
-    const BvhNode& n = subtree.nodes[stack[--top]];
+    const PairNode& n = subtree.packed.nodes[stack[--top]];
     for (int i = 0; i < 2; ++i) {
       const NodeRef c = n.child[i];
       if (is_primitive(c) && primitive_of(c) == prim) continue;
       ++checks;
+      const Bounds3 box{{n.bounds[0][i], n.bounds[1][i], n.bounds[2][i]},
+                        {n.bounds[0][2 + i], n.bounds[1][2 + i], n.bounds[2][2 + i]}};
       if (is_primitive(c)) {
-        if (!cannot_occlude(bvh_.prim_bounds[primitive_of(c)]) && !triangle_behind(prim, primitive_of(c))) return false;
-      } else if (!cannot_occlude(subtree.nodes[c].box)) {
+        if (!cannot_occlude(box) && !triangle_behind(prim, primitive_of(c))) return false;
+      } else if (!cannot_occlude(box)) {
         if (top >= 256) return false;
         stack[top++] = c;
       }

@@ -20,6 +20,18 @@
 namespace gcsim::raytrace {
 namespace {
 
+// Box of each node of the subtree, as its parent holds it (the root's: the tree's root box).
+std::vector<Bounds3> subtree_node_boxes(const Subtree& s) {
+  std::vector<Bounds3> boxes(s.packed.nodes.size());
+  if (!is_primitive(s.root)) boxes[s.root] = s.packed.root_box;
+  for (const PairNode& n : s.packed.nodes)
+    for (int i = 0; i < 2; ++i)
+      if (!is_primitive(n.child[i]))
+        boxes[n.child[i]] = {{n.bounds[0][i], n.bounds[1][i], n.bounds[2][i]},
+                             {n.bounds[0][2 + i], n.bounds[1][2 + i], n.bounds[2][2 + i]}};
+  return boxes;
+}
+
 // The uniformity test's occlusion check as it was, everything derived for the one call.
 bool reference_nothing_in_front(const Scene& scene, const Bvh& bvh, const Camera& camera, const Subtree& subtree,
                                 int prim, float max_distance, int rx0, int ry0, int rx1, int ry1,
@@ -63,17 +75,18 @@ bool reference_nothing_in_front(const Scene& scene, const Bvh& bvh, const Camera
     }
     return true;
   };
+  const std::vector<Bounds3> node_boxes = subtree_node_boxes(subtree);
   std::vector<NodeRef> stack{subtree.root};
   ++checks;
   while (!stack.empty()) {
-    const BvhNode n = subtree.nodes[stack.back()];
+    const PairNode n = subtree.packed.nodes[stack.back()];
     stack.pop_back();
     for (NodeRef c : n.child) {
       if (is_primitive(c) && primitive_of(c) == prim) continue;
       ++checks;
       if (is_primitive(c)) {
         if (!cannot_occlude(bvh.prim_bounds[primitive_of(c)]) && !triangle_behind(primitive_of(c))) return false;
-      } else if (!cannot_occlude(subtree.nodes[c].box)) {
+      } else if (!cannot_occlude(node_boxes[c])) {
         if (stack.size() >= 256) return false;
         stack.push_back(c);
       }
@@ -85,7 +98,7 @@ bool reference_nothing_in_front(const Scene& scene, const Bvh& bvh, const Camera
 std::vector<int> primitives_of(const Subtree& s) {
   std::vector<int> out;
   if (is_primitive(s.root)) out.push_back(primitive_of(s.root));
-  for (const BvhNode& n : s.nodes)
+  for (const PairNode& n : s.packed.nodes)
     for (NodeRef c : n.child)
       if (is_primitive(c)) out.push_back(primitive_of(c));
   return out;
