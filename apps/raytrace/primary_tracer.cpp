@@ -3,12 +3,10 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
-#include <optional>
 
 #include "apps/common/geometry/packet_traversal.hpp"
 #include "apps/common/geometry/traversal.hpp"
 #include "apps/raytrace/geometry_names.hpp"
-#include "apps/raytrace/plane_classification4.hpp"
 
 namespace gcsim::raytrace {
 
@@ -39,6 +37,7 @@ struct PrimaryTracer::Region {
 PrimaryTracer::PrimaryTracer(const Scene& scene, const Bvh& bvh, const Camera& camera, Algorithm algorithm)
     : scene_(scene), bvh_(bvh), camera_(camera), algorithm_(algorithm) {
   if (algorithm == Algorithm::B1) classifier_ = std::make_unique<RayClassifier>(scene, bvh, camera);
+  if (algorithm == Algorithm::A4) occlusion_ = std::make_unique<OcclusionCheck>(scene, bvh, camera);
 }
 
 void PrimaryTracer::trace_pixel(int x, int y, Hit& hit, TestTally& tally, TraceCounters& counters) {
@@ -225,8 +224,8 @@ bool PrimaryTracer::fill_if_uniform(Region& r, const Rect& q, TestTally& tally, 
   const int p = r.at(rx0, ry0).prim;
   bool same = p >= 0;
   for (int i = 1; i < 4 && same; ++i) same = r.at(cx[i], cy[i]).prim == p;
-  if (!same || !nothing_in_front(p, farthest_possible_hit(p, r, rx0, ry0, rx1, ry1), rx0, ry0, rx1, ry1,
-                                 counters.uniformity_box_checks))
+  if (!same || !occlusion_->nothing_in_front(subtree_, p, farthest_possible_hit(p, r, rx0, ry0, rx1, ry1), rx0, ry0,
+                                             rx1, ry1, counters.uniformity_box_checks))
     return false;
   ++counters.uniform_regions;
   Ray rays[kPacketLanes];
@@ -255,91 +254,12 @@ bool PrimaryTracer::fill_if_uniform(Region& r, const Rect& q, TestTally& tally, 
 
 // An upper bound of the distance at which any ray of the region meets P. For a triangle the hits
 // of the region's rays are convex combinations of the corner hits, and distance from the eye is
-// convex, so the farthest corner bounds them; for a sphere the near side is never farther than
-// the centre (eye outside), or than the centre plus the radius (eye inside).
+// convex, so the farthest corner bounds them; a sphere's bound depends on the sphere alone.
 float PrimaryTracer::farthest_possible_hit(int prim, const Region& r, int rx0, int ry0, int rx1, int ry1) const {
-  float d;
-  if (scene_.is_sphere(prim)) {
-    const Sphere& s = scene_.spheres[prim];
-    const float to_center = glm::length(s.center - camera_.eye());
-    d = to_center > s.radius ? to_center : to_center + s.radius;
-  } else {
-    auto& rr = const_cast<Region&>(r);
-    d = std::max({rr.at(rx0, ry0).t, rr.at(rx1, ry0).t, rr.at(rx0, ry1).t, rr.at(rx1, ry1).t});
-  }
+  if (scene_.is_sphere(prim)) return occlusion_->sphere_distance_bound(prim);
+  auto& rr = const_cast<Region&>(r);
+  const float d = std::max({rr.at(rx0, ry0).t, rr.at(rx1, ry0).t, rr.at(rx0, ry1).t, rr.at(rx1, ry1).t});
   return d * (1.0f + 1e-5f);
-}
-
-// True if no primitive of the subtree other than P can be hit nearer than P by a ray of the region.
-// Every primitive that meets the subregion's pyramid is in the subtree. A box cannot hold such a
-// primitive if it is farther from the eye than P can be (max_distance), or, when P is a triangle,
-// if it lies wholly behind P's plane as seen from the eye; a triangle cannot if its three vertices
-// are behind or on that plane (P's neighbours across a convex fold of a mesh). Nor can a box
-// outside the pyramid of the region's corner rays.
-bool PrimaryTracer::nothing_in_front(int prim, float max_distance, int rx0, int ry0, int rx1, int ry1,
-                                     std::int64_t& checks) const {
-  if (is_primitive(subtree_.root)) return primitive_of(subtree_.root) == prim;
-  const glm::vec3 eye = camera_.eye();
-  std::optional<Plane> behind;  // inside = the side away from the eye
-  glm::dvec3 pn(0.0), p0(0.0);
-  double eye_side = 0;
-  if (!scene_.is_sphere(prim)) {
-    const Triangle& t = scene_.triangle(prim);
-    p0 = glm::dvec3(t.p0);
-    pn = glm::cross(glm::dvec3(t.p1) - p0, glm::dvec3(t.p2) - p0);
-    eye_side = glm::dot(pn, glm::dvec3(eye) - p0) > 0 ? 1.0 : -1.0;
-    const glm::vec3 n = glm::vec3(-eye_side * pn);
-    behind = Plane{n, glm::dot(n, t.p0)};
-  } else {
-    // The visible cap of a sphere seen from distance D lies in front of the plane at r^2/D from
-    // the centre towards the eye; a ray meets P there before it can reach anything behind it.
-    const Sphere& sp = scene_.spheres[prim];
-    const glm::vec3 to_eye = eye - sp.center;
-    const float d = glm::length(to_eye);
-    if (d > sp.radius) {
-      const glm::vec3 u = to_eye / d;
-      behind = Plane{-u, glm::dot(-u, sp.center + u * (sp.radius * sp.radius / d))};
-    }
-  }
-  // The pyramid of the region's own corner rays (pixel centres), tighter than the subtree's.
-  const FourPlanes region({camera_.column_plane_at(rx0 + 0.5f), flipped(camera_.column_plane_at(rx1 + 0.5f)),
-                           camera_.row_plane_at(ry0 + 0.5f), flipped(camera_.row_plane_at(ry1 + 0.5f))});
-  // |normal| of the plane once, and each box's centre once for its five classifications.
-  const glm::vec3 behind_abs = behind ? abs_components(behind->normal) : glm::vec3(0.0f);
-  auto cannot_occlude = [&](const Bounds3& box) {
-    if (box.distance_to(eye) > max_distance) return true;
-    const BoxCentre b(box);
-    return (behind && classify(b, *behind, behind_abs) == Side::inside) || region.any_outside(b);
-  };
-  auto triangle_behind = [&](int q) {
-    if (scene_.is_sphere(q) || scene_.is_sphere(prim)) return false;
-    const Triangle& t = scene_.triangle(q);
-    const double scale = 1e-9 * glm::length(pn);
-    for (const glm::vec3& v : {t.p0, t.p1, t.p2}) {
-      const glm::dvec3 d = glm::dvec3(v) - p0;
-      if (eye_side * glm::dot(pn, d) > scale * glm::length(d)) return false;
-    }
-    return true;
-  };
-  NodeRef stack[256];
-  int top = 0;
-  stack[top++] = subtree_.root;
-  ++checks;
-  while (top > 0) {
-    const BvhNode& n = subtree_.nodes[stack[--top]];
-    for (int i = 0; i < 2; ++i) {
-      const NodeRef c = n.child[i];
-      if (is_primitive(c) && primitive_of(c) == prim) continue;
-      ++checks;
-      if (is_primitive(c)) {
-        if (!cannot_occlude(bvh_.prim_bounds[primitive_of(c)]) && !triangle_behind(primitive_of(c))) return false;
-      } else if (!cannot_occlude(subtree_.nodes[c].box)) {
-        if (top >= 256) return false;
-        stack[top++] = c;
-      }
-    }
-  }
-  return true;
 }
 
 }  // namespace gcsim::raytrace

@@ -12,6 +12,7 @@
 #include "apps/raytrace/counters.hpp"
 #include "apps/common/geometry/hit.hpp"
 #include "apps/raytrace/geometry_names.hpp"
+#include "apps/raytrace/occlusion_check.hpp"
 #include "apps/raytrace/ray_classification.hpp"
 #include "apps/raytrace/subtree.hpp"
 
@@ -47,7 +48,6 @@ class PrimaryTracer {
   void trace_uniform_regions(Region& r, int rx0, int ry0, int rx1, int ry1, TestTally& tally, TraceCounters& counters);
   static void split(const Rect& q, std::vector<Rect>& out);
   bool fill_if_uniform(Region& r, const Rect& q, TestTally& tally, TraceCounters& counters);
-  bool nothing_in_front(int prim, float max_distance, int rx0, int ry0, int rx1, int ry1, std::int64_t& checks) const;
   float farthest_possible_hit(int prim, const Region& r, int rx0, int ry0, int rx1, int ry1) const;
 
   const Scene& scene_;
@@ -60,6 +60,7 @@ class PrimaryTracer {
   PlaneFilteredTree row_;
   Subtree subtree_;
   std::unique_ptr<RayClassifier> classifier_;
+  std::unique_ptr<OcclusionCheck> occlusion_;  // A4's
   std::vector<Pixel> pixels_;      // scratch: the pixels a tile or a level of regions traces
   std::vector<Rect> level_, next_;  // scratch: A4's regions, a level at a time
   std::vector<std::uint64_t> pending_;  // scratch: A4's corners to trace at this level, as bits

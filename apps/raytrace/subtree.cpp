@@ -6,6 +6,7 @@ namespace gcsim::raytrace {
 namespace {
 
 struct FilterPass {
+  using Entry = PlaneFilteredTree::Entry;
   const Bvh& bvh;
   const Plane* planes;  // two
   PlaneFilteredTree& out;
@@ -24,16 +25,23 @@ struct FilterPass {
       if (s == Side::inside) inside |= (1u << i);
     }
     const int at = static_cast<int>(out.entries.size());
-    out.entries.push_back({r, inside, {-1, -1}, b});
+    out.entries.push_back({r, inside, {-1, -1}, -1, b});
     if (!is_primitive(r)) {
+      const std::size_t lanes_before = out.children.size();
       const int c0 = visit(bvh.nodes[r].child[0], inside);
       const int c1 = visit(bvh.nodes[r].child[1], inside);
       if (c0 < 0 && c1 < 0) {
         out.entries.resize(at);  // nothing below survives: drop the node too
+        out.children.erase(out.children.begin() + std::ptrdiff_t(lanes_before), out.children.end());
         return -1;
       }
-      out.entries[at].child[0] = c0;
-      out.entries[at].child[1] = c1;
+      Entry& e = out.entries[at];
+      e.child[0] = c0;
+      e.child[1] = c1;
+      e.children = static_cast<int>(out.children.size());
+      // A dropped child's lanes hold an empty box: classified, never read.
+      const BoxCentre none;
+      out.children.emplace_back(c0 >= 0 ? out.entries[c0].box : none, c1 >= 0 ? out.entries[c1].box : none);
     }
     return at;
   }
@@ -43,41 +51,65 @@ struct SubtreePass {
   const Bvh& bvh;
   const PlaneFilteredTree& row;
   const Plane* planes;  // two
-  Subtree& out;
+  PackedTree& out;
   std::int64_t tests = 0;
   // Both planes classified in one pass (lanes 2 and 3 repeat them); counted as one at a time.
   FourPlanes both{{planes[0], planes[1], planes[0], planes[1]}};
 
-  // Returns true and sets *ref when something of entry e lies inside both planes.
-  bool visit(int e, std::uint8_t inside, NodeRef* ref) {
-    const auto& entry = row.entries[e];
-    if ((inside & 3u) != 3u) {
-      unsigned in, out_bits;
-      both.sides(entry.box, in, out_bits);
-      for (int i = 0; i < 2; ++i) {
-        if (inside & (1u << i)) continue;
-        ++tests;
-        if (out_bits >> i & 1u) return false;  // plane 1 is not tested after plane 0 drops the box
-        if (in >> i & 1u) inside |= (1u << i);
-      }
+  // What survives of an entry: the root of its part of the subtree (a node of `out` or a
+  // primitive) and the entry whose box bounds that part; entry -1 when nothing does.
+  struct Part {
+    NodeRef ref;
+    int entry;
+  };
+
+  const Bounds3& box_of(int e) const {
+    const NodeRef r = row.entries[e].ref;
+    return is_primitive(r) ? bvh.prim_bounds[primitive_of(r)] : bvh.nodes[r].box;
+  }
+
+  // Counts the tests of a box by the planes `inside` does not yet hold it in, from its bits of
+  // the classification; false if it lies outside one.
+  bool survives(unsigned in, unsigned out_bits, std::uint8_t& inside) {
+    for (int i = 0; i < 2; ++i) {
+      if (inside & (1u << i)) continue;
+      ++tests;
+      if (out_bits >> i & 1u) return false;  // plane 1 is not tested after plane 0 drops the box
+      if (in >> i & 1u) inside |= (1u << i);
     }
-    if (is_primitive(entry.ref)) {
-      *ref = entry.ref;
-      ++out.primitive_count;
-      return true;
-    }
-    NodeRef c[2];
-    bool has[2] = {false, false};
-    for (int i = 0; i < 2; ++i)
-      if (entry.child[i] >= 0) has[i] = visit(entry.child[i], inside, &c[i]);
-    if (!has[0] && !has[1]) return false;
-    if (!has[0] || !has[1]) {  // figure 2: a node with one child is replaced by the child
-      *ref = has[0] ? c[0] : c[1];
-      return true;
-    }
-    out.nodes.push_back({bvh.nodes[entry.ref].box, {c[0], c[1]}});
-    *ref = static_cast<NodeRef>(out.nodes.size() - 1);
     return true;
+  }
+
+  // The part of entry e, which survives with flags `inside`. Both children are classified here
+  // at once, so that a child outside a plane, or a primitive, costs no call.
+  Part visit(int e, std::uint8_t inside) {
+    const auto& entry = row.entries[e];
+    if (is_primitive(entry.ref)) return {entry.ref, e};
+    unsigned in = 0, out_bits = 0;  // not read when the node is inside both planes
+    if ((inside & 3u) != 3u) both.sides(row.children[entry.children], in, out_bits);
+    Part c[2] = {{0, -1}, {0, -1}};
+    for (int k = 0; k < 2; ++k) {
+      const int child = entry.child[k];
+      std::uint8_t child_inside = inside;
+      if (child < 0 || !survives(in >> (2 * k) & 3u, out_bits >> (2 * k) & 3u, child_inside)) continue;
+      const NodeRef ref = row.entries[child].ref;
+      c[k] = is_primitive(ref) ? Part{ref, child} : visit(child, child_inside);
+    }
+    const Part& c0 = c[0];
+    const Part& c1 = c[1];
+    // Figure 2: a node left with one child is replaced by the child.
+    if (c0.entry < 0) return c1;
+    if (c1.entry < 0) return c0;
+    PairNode& n = out.nodes.emplace_back();
+    const Bounds3* boxes[2] = {&box_of(c0.entry), &box_of(c1.entry)};
+    for (int c = 0; c < 2; ++c)
+      for (int a = 0; a < 3; ++a) {
+        n.bounds[a][c] = boxes[c]->lo[a];
+        n.bounds[a][2 + c] = boxes[c]->hi[a];
+      }
+    n.child[0] = c0.ref;
+    n.child[1] = c1.ref;
+    return {static_cast<NodeRef>(out.nodes.size() - 1), e};
   }
 };
 
@@ -85,6 +117,7 @@ struct SubtreePass {
 
 void filter_by_two_planes(const Bvh& bvh, const Plane& a, const Plane& b, PlaneFilteredTree& out, TraceCounters& counters) {
   out.entries.clear();
+  out.children.clear();
   const Plane planes[2] = {a, b};
   FilterPass pass{bvh, planes, out};
   out.root = pass.visit(bvh.root, 0);
@@ -94,21 +127,24 @@ void filter_by_two_planes(const Bvh& bvh, const Plane& a, const Plane& b, PlaneF
 
 void subtree_from_filtered(const Bvh& bvh, const PlaneFilteredTree& row, const Plane& c, const Plane& d, Subtree& out,
                            TraceCounters& counters) {
-  out.nodes.clear();
-  out.empty = true;
-  out.primitive_count = 0;
-  out.packed.empty = true;
+  out.packed.nodes.clear();
+  out.empty = out.packed.empty = true;
+  out.root = out.packed.root = 0;
   if (row.root < 0) return;
   const Plane planes[2] = {c, d};
-  SubtreePass pass{bvh, row, planes, out};
-  NodeRef root;
-  if (pass.visit(row.root, 0, &root)) {
-    out.root = root;
-    out.empty = false;
+  SubtreePass pass{bvh, row, planes, out.packed};
+  std::uint8_t inside = 0;
+  unsigned in, out_bits;
+  pass.both.sides(row.entries[row.root].box, in, out_bits);
+  const SubtreePass::Part root =
+      pass.survives(in, out_bits, inside) ? pass.visit(row.root, inside) : SubtreePass::Part{0, -1};
+  if (root.entry >= 0) {
+    out.root = out.packed.root = root.ref;
+    out.empty = out.packed.empty = false;
+    out.packed.root_box = pass.box_of(root.entry);
   }
   counters.plane_tests += pass.tests;
-  counters.subtree_nodes += static_cast<std::int64_t>(out.nodes.size());
-  pack_tree(out.nodes, out.root, out.empty, bvh.prim_bounds, out.packed);
+  counters.subtree_nodes += static_cast<std::int64_t>(out.packed.nodes.size());
 }
 
 void build_subtree(const Bvh& bvh, const std::array<Plane, 4>& planes, Subtree& out, TraceCounters& counters) {

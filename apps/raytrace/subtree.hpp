@@ -18,16 +18,16 @@
 #include "apps/raytrace/geometry_names.hpp"
 #include "apps/raytrace/camera.hpp"
 #include "apps/raytrace/counters.hpp"
-#include "apps/raytrace/plane_classification.hpp"
+#include "apps/raytrace/plane_classification4.hpp"
 
 namespace gcsim::raytrace {
 
+// Laid out for traversal only: each node holds its children's boxes (packed_tree.hpp), which is
+// also all the uniformity test reads.
 struct Subtree {
-  std::vector<BvhNode> nodes;
-  NodeRef root = 0;
+  NodeRef root = 0;  // a node of packed.nodes, or a primitive
   bool empty = true;
-  int primitive_count = 0;
-  PackedTree packed;  // the same, laid out for traversal
+  PackedTree packed;
 };
 
 // The BVH filtered by two planes: the node and primitive entries not outside either, with the
@@ -38,9 +38,12 @@ class PlaneFilteredTree {
     NodeRef ref;            // BVH node or primitive
     std::uint8_t inside;    // bit i: entirely inside plane i
     std::int32_t child[2];  // entries; -1 where the child was dropped
+    std::int32_t children;  // a node's children's boxes in `children`; -1 for a primitive
     BoxCentre box;          // its box, prepared: every subregion of the row classifies it
   };
   std::vector<Entry> entries;
+  // Both children of a node in the lanes a subregion's two planes are classified in at once.
+  std::vector<BoxLanes> children;
   int root = -1;  // -1: nothing survives
 };
 

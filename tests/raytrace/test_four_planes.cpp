@@ -37,6 +37,14 @@ TEST(FourPlanes, AgreesWithScalarClassify) {
       if (rng.uniform() < 0.2f) planes[i % 4].offset = glm::dot(planes[i % 4].normal, box.lo);
       const bool expected = any_outside_scalar(planes, box);
       ASSERT_EQ(FourPlanes(planes).any_outside(BoxCentre(box)), expected) << "case " << i << " scale " << scale;
+      // Built from planes prepared beforehand: the same lanes, so the same answers.
+      const PreparedPlane prepared[4] = {PreparedPlane(planes[0]), PreparedPlane(planes[1]), PreparedPlane(planes[2]),
+                                         PreparedPlane(planes[3])};
+      unsigned in_a, out_a, in_b, out_b;
+      FourPlanes(planes).sides(BoxCentre(box), in_a, out_a);
+      FourPlanes({&prepared[0], &prepared[1], &prepared[2], &prepared[3]}).sides(BoxCentre(box), in_b, out_b);
+      ASSERT_EQ(in_a, in_b) << "case " << i;
+      ASSERT_EQ(out_a, out_b) << "case " << i;
       outside += expected;
       ++total;
     }

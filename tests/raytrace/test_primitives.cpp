@@ -2,6 +2,7 @@
 // degenerate triangles, tiny and huge spheres.
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -178,6 +179,25 @@ TEST(BoxDistance, BranchFreeEqualsTheGlmFormulation) {
       const glm::vec3 d = glm::max(glm::max(b.lo - p, p - b.hi), glm::vec3(0.0f));
       const float ref = std::sqrt(glm::dot(d, d)), got = b.distance_to(p);
       EXPECT_EQ(std::memcmp(&ref, &got, sizeof ref), 0) << ref << " vs " << got;
+    }
+  }
+}
+
+// largest_with_sqrt_at_most(m) = T must split the floats exactly: sqrt(s) > m iff s > T, checked
+// at T and its neighbours and over random squares, for limits tiny, huge, zero, infinite and NaN.
+TEST(SqrtThreshold, SplitsTheFloatsAsTheSquareRootDoes) {
+  apps::Rng rng(8);
+  std::vector<float> limits = {0.0f, -0.0f, -1.0f, 1.0f, 2.0f, 1e-30f, 1e-20f, 3e-23f, 1.8e19f, 2e19f, 1e30f,
+                               std::numeric_limits<float>::max(), std::numeric_limits<float>::denorm_min(), kInfinity,
+                               -kInfinity, std::numeric_limits<float>::quiet_NaN()};
+  for (int i = 0; i < 2000; ++i) limits.push_back(std::exp2(rng.uniform(-60, 60)) * rng.uniform(1, 2));
+  for (float m : limits) {
+    const float t = largest_with_sqrt_at_most(m);
+    std::vector<float> squares = {t, next_float_up(t), next_float_down(t), 0.0f, kInfinity, m * m};
+    for (int k = 0; k < 20; ++k) squares.push_back(m * m * rng.uniform(0.999f, 1.001f));
+    for (float s : squares) {
+      if (std::isnan(s) || s < 0.0f) continue;
+      ASSERT_EQ(std::sqrt(s) > m, s > t) << "limit " << m << " square " << s << " threshold " << t;
     }
   }
 }

@@ -37,7 +37,10 @@ struct Bounds3 {
     return {lo - pad, hi + pad};
   }
   // Euclidean distance from p to the nearest point of the box (0 inside).
-  float distance_to(glm::vec3 p) const {
+  float distance_to(glm::vec3 p) const { return std::sqrt(squared_distance_to(p)); }
+  // Its square, without the square root: compare it with largest_with_sqrt_at_most(limit) to
+  // learn whether distance_to(p) > limit (the uniformity test asks that of many boxes).
+  float squared_distance_to(glm::vec3 p) const {
 #if defined(__SSE2__)
     // max by maxss: written as glm::max, the compiler branches on each axis's sign (max(x, 0)^2
     // is 0 or x^2), which mispredicts in the uniformity test's loop. A tie between zeros may
@@ -46,10 +49,10 @@ struct Bounds3 {
       return _mm_cvtss_f32(_mm_max_ss(_mm_max_ss(_mm_set_ss(below), _mm_set_ss(above)), _mm_setzero_ps()));
     };
     const float dx = gap(lo.x - p.x, p.x - hi.x), dy = gap(lo.y - p.y, p.y - hi.y), dz = gap(lo.z - p.z, p.z - hi.z);
-    return std::sqrt(dx * dx + dy * dy + dz * dz);
+    return dx * dx + dy * dy + dz * dz;
 #else
     const glm::vec3 d = glm::max(glm::max(lo - p, p - hi), glm::vec3(0.0f));
-    return std::sqrt(glm::dot(d, d));
+    return glm::dot(d, d);
 #endif
   }
 };

@@ -28,4 +28,17 @@ inline V abs_components(V v) {
 inline float next_float_up(float v) { return std::nextafter(v, kInfinity); }
 inline float next_float_down(float v) { return std::nextafter(v, -kInfinity); }
 
+// The largest float x with std::sqrt(x) <= limit (NaN for a NaN limit, -inf below zero): as
+// sqrt is correctly rounded and so never decreases, std::sqrt(s) > limit exactly when
+// s > largest_with_sqrt_at_most(limit), for every float s. One threshold per limit spares a
+// square root per comparison.
+inline float largest_with_sqrt_at_most(float limit) {
+  if (std::isnan(limit)) return limit;
+  if (limit < 0.0f) return -kInfinity;
+  float x = limit * limit;  // within an ulp or two of the answer
+  while (x > 0.0f && std::sqrt(x) > limit) x = next_float_down(x);
+  while (x < kInfinity && std::sqrt(next_float_up(x)) <= limit) x = next_float_up(x);
+  return x;
+}
+
 }  // namespace gcsim::geometry
