@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include <boost/container/small_vector.hpp>
+
 namespace gcsim::machine {
 
 // What happens when a node's memory would be exceeded: the request fails (enforce), or it is
@@ -84,9 +86,10 @@ class NodeMemory {
   std::int64_t used_ = 0;
   std::int64_t peak_ = 0;
   // By Kind (a handful per node): the names, and apart from them the bytes in use, which every
-  // declaration indexes (an array of 8-byte sums).
+  // message declaration indexes. The first eight sums live inside the object, beside used_, so
+  // a message's declaration touches one cache line of its node, not a second allocation.
   std::vector<std::string> kinds_;
-  std::vector<std::int64_t> held_;
+  boost::container::small_vector<std::int64_t, 8> held_;
 };
 
 // "12 bytes", "1.5 KB", "32.0 MB", "10.0 GB" (binary units, as the machine file's memory_mb).
