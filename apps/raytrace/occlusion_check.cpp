@@ -28,6 +28,7 @@ const OcclusionCheck::Shade& OcclusionCheck::shade_of(int prim) {
     const glm::vec3 n = glm::vec3(-eye_side * pn);
     s.behind = Plane{n, glm::dot(n, t.p0)};
     s.has_behind = true;
+    s.plane = {p0, pn, eye_side, 1e-9 * glm::length(pn)};
   } else {
     // The visible cap of a sphere seen from distance D lies in front of the plane at r^2/D from
     // the centre towards the eye; a ray meets P there before it can reach anything behind it.
@@ -39,8 +40,7 @@ const OcclusionCheck::Shade& OcclusionCheck::shade_of(int prim) {
       s.behind = Plane{-u, glm::dot(-u, sp.center + u * (sp.radius * sp.radius / d))};
       s.has_behind = true;
     }
-    const float to_center = glm::length(sp.center - eye_);
-    s.sphere_bound = (to_center > sp.radius ? to_center : to_center + sp.radius) * (1.0f + 1e-5f);
+    s.sphere_bound = (d > sp.radius ? d : d + sp.radius) * (1.0f + 1e-5f);  // d: the eye to the centre
   }
   if (s.has_behind) s.behind_abs = abs_components(s.behind.normal);
   return s;
@@ -50,17 +50,12 @@ float OcclusionCheck::sphere_distance_bound(int prim) { return shade_of(prim).sp
 
 // A triangle q with its three vertices behind or on P's plane, seen from the eye (P's neighbours
 // across a convex fold of a mesh), cannot hide P.
-bool OcclusionCheck::triangle_behind(int prim, int q) const {
-  if (scene_.is_sphere(q) || scene_.is_sphere(prim)) return false;
-  const Triangle& p = scene_.triangle(prim);
-  const glm::dvec3 p0(p.p0);
-  const glm::dvec3 pn = glm::cross(glm::dvec3(p.p1) - p0, glm::dvec3(p.p2) - p0);
-  const double eye_side = glm::dot(pn, glm::dvec3(eye_) - p0) > 0 ? 1.0 : -1.0;
-  const double scale = 1e-9 * glm::length(pn);
+bool OcclusionCheck::triangle_behind(const Shade& p, int q) const {
+  if (scene_.is_sphere(q) || !p.has_plane()) return false;
   const Triangle& t = scene_.triangle(q);
   for (const glm::vec3& v : {t.p0, t.p1, t.p2}) {
-    const glm::dvec3 d = glm::dvec3(v) - p0;
-    if (eye_side * glm::dot(pn, d) > scale * glm::length(d)) return false;
+    const glm::dvec3 d = glm::dvec3(v) - p.plane.p0;
+    if (p.plane.eye_side * glm::dot(p.plane.normal, d) > p.plane.scale * glm::length(d)) return false;
   }
   return true;
 }
@@ -93,7 +88,7 @@ bool OcclusionCheck::nothing_in_front(const Subtree& subtree, int prim, float ma
       const Bounds3 box{{n.bounds[0][i], n.bounds[1][i], n.bounds[2][i]},
                         {n.bounds[0][2 + i], n.bounds[1][2 + i], n.bounds[2][2 + i]}};
       if (is_primitive(c)) {
-        if (!cannot_occlude(box) && !triangle_behind(prim, primitive_of(c))) return false;
+        if (!cannot_occlude(box) && !triangle_behind(shade, primitive_of(c))) return false;
       } else if (!cannot_occlude(box)) {
         if (top >= 256) return false;
         stack[top++] = c;

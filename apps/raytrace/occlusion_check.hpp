@@ -38,9 +38,15 @@ class OcclusionCheck {
     bool has_behind = false;
     bool ready = false;
     float sphere_bound = 0.0f;
+    // A triangle P's own plane in double, for triangle_behind (eye_side 0: P is a sphere).
+    struct {
+      glm::dvec3 p0{0.0}, normal{0.0};
+      double eye_side = 0.0, scale = 0.0;
+    } plane;
+    bool has_plane() const { return plane.eye_side != 0.0; }
   };
   const Shade& shade_of(int prim);
-  bool triangle_behind(int prim, int q) const;
+  bool triangle_behind(const Shade& p, int q) const;
 
   const Scene& scene_;
   const Bvh& bvh_;
