@@ -1,5 +1,6 @@
 // Hard cases of the intersection routines: watertightness, axis-parallel rays, grazing hits,
 // degenerate triangles, tiny and huge spheres.
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -180,6 +181,22 @@ TEST(BoxDistance, BranchFreeEqualsTheGlmFormulation) {
       const float ref = std::sqrt(glm::dot(d, d)), got = b.distance_to(p);
       EXPECT_EQ(std::memcmp(&ref, &got, sizeof ref), 0) << ref << " vs " << got;
     }
+  }
+}
+
+// The in-line steps equal std::nextafter towards +-inf bit for bit: at zeros, denormals, the
+// largest finite float, the infinities, NaN, and on random bit patterns of every exponent.
+TEST(NextFloat, EqualsNextafterForEveryKindOfFloat) {
+  constexpr float kMax = std::numeric_limits<float>::max(), kTiny = std::numeric_limits<float>::denorm_min();
+  std::vector<float> values = {0.0f, -0.0f, kTiny, -kTiny, std::numeric_limits<float>::min(), 1.0f, -1.0f, kMax,
+                               -kMax, kInfinity, -kInfinity, std::numeric_limits<float>::quiet_NaN()};
+  apps::Rng rng(9);
+  for (int i = 0; i < 200000; ++i)
+    values.push_back(std::bit_cast<float>(rng.next_u32()));
+  auto same = [](float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0 || (std::isnan(a) && std::isnan(b)); };
+  for (float v : values) {
+    ASSERT_TRUE(same(next_float_up(v), std::nextafter(v, kInfinity))) << v;
+    ASSERT_TRUE(same(next_float_down(v), std::nextafter(v, -kInfinity))) << v;
   }
 }
 

@@ -18,7 +18,7 @@ struct ReferencePass {
   const Bvh& bvh;
   const PlaneFilteredTree& row;
   std::array<Plane, 2> planes;
-  std::vector<BvhNode> nodes;
+  std::vector<BvhNode> nodes{};
   std::int64_t tests = 0;
 
   bool visit(int e, std::uint8_t inside, NodeRef* ref) {
