@@ -62,7 +62,9 @@ TEST(NodeMemory, AddWithinGrantsWhatFitsAndLeavesAnOverrunToTheCaller) {
     for (const std::int64_t bytes : {40, 60, 1, 30}) {  // 60 fills the node exactly; 1 would overrun
       const bool fits = b.used() + bytes <= 100;
       EXPECT_EQ(a.add_within(bytes, ka), fits) << bytes;
-      if (fits) EXPECT_TRUE(b.add(bytes, kb));
+      if (fits) {
+        EXPECT_TRUE(b.add(bytes, kb));
+      }
       EXPECT_EQ(a.used(), b.used()) << bytes;
       EXPECT_EQ(a.peak(), b.peak()) << bytes;
       EXPECT_EQ(a.breakdown(), b.breakdown()) << bytes;
