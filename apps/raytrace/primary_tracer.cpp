@@ -85,11 +85,9 @@ void PrimaryTracer::trace_pixels(const std::vector<Pixel>& pixels, int x0, int y
       const int n = int(std::min<std::size_t>(kPacketLanes, pixels.size() - first));
       for (int i = 0; i < n; ++i) xs[i] = pixels[first + i].x, ys[i] = pixels[first + i].y;
       camera_.pixel_rays(xs, ys, n, rays);
-      for (int i = 0; i < n; ++i) {
-        Hit& hit = hit_of(pixels[first + i]);
-        hit = Hit{};
-        traverse_ordered(scene_, single, rays[i], hit, tally);
-      }
+      Hit lane_hits[kPacketLanes];
+      traverse_ordered_rays(scene_, single, rays, n, lane_hits, tally);
+      for (int i = 0; i < n; ++i) hit_of(pixels[first + i]) = lane_hits[i];
     }
     return;
   }

@@ -139,6 +139,48 @@ TEST_P(SingleWalkScene, PerOctantWalksEqualTheGenericWalk) {
   EXPECT_GT(hits, 0);
 }
 
+// traverse_ordered_rays over a run (octants and origins mixed, or a tile's rays from one origin,
+// some starting with a hit) gives each ray's traverse_ordered hit and the sum of their counts.
+void expect_run_agrees(const Scene& s, const PackedTree& tree, const std::vector<Ray>& rays, apps::Rng& rng) {
+  std::vector<Hit> run(rays.size()), alone(rays.size());
+  for (std::size_t i = 0; i < rays.size(); i += 3) {
+    run[i].t = alone[i].t = rng.uniform(0.2f, 2.0f) * glm::length(s.bounds().hi - s.bounds().lo);
+    run[i].prim = alone[i].prim = 0;
+  }
+  TestTally run_tally, alone_tally;
+  traverse_ordered_rays(s, tree, rays.data(), int(rays.size()), run.data(), run_tally);
+  for (std::size_t i = 0; i < rays.size(); ++i) traverse_ordered(s, tree, rays[i], alone[i], alone_tally);
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    EXPECT_EQ(run[i].prim, alone[i].prim) << "ray " << i;
+    EXPECT_TRUE(same_bits(run[i].t, alone[i].t) && same_bits(run[i].b1, alone[i].b1) && same_bits(run[i].b2, alone[i].b2));
+  }
+  EXPECT_EQ(run_tally.boxes, alone_tally.boxes);
+  EXPECT_EQ(run_tally.spheres, alone_tally.spheres);
+  EXPECT_EQ(run_tally.triangles, alone_tally.triangles);
+  EXPECT_EQ(run_tally.sorts, alone_tally.sorts);
+}
+
+TEST_P(SingleWalkScene, RunsOfRaysEqualOneRayAtATime) {
+  const Scene s = make_builtin_scene(GetParam());
+  const Bvh bvh = build_bvh_by_clustering(s);
+  apps::Rng rng(12);
+  const std::vector<Ray> hard = hard_rays(bvh.packed, s.bounds(), rng);
+  ASSERT_GT(hard.size(), 100u);
+  expect_run_agrees(s, bvh.packed, hard, rng);
+  const Camera cam(s.camera, 64, 64);
+  Subtree sub;
+  TraceCounters counters;
+  for (int tile = 0; tile < 64; tile += 9) {
+    const int x0 = 8 * (tile % 8), y0 = 8 * (tile / 8);
+    build_subtree(bvh, pyramid_planes(cam, x0, y0, x0 + 8, y0 + 8), sub, counters);
+    std::vector<Ray> tile_rays;
+    for (int y = y0; y < y0 + 8; ++y)
+      for (int x = x0; x < x0 + 8; ++x) tile_rays.push_back(cam.pixel_ray(x, y));
+    expect_run_agrees(s, sub.packed, tile_rays, rng);
+    if (tile == 27) expect_run_agrees(s, sub.packed, hard_rays(sub.packed, s.bounds(), rng), rng);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Builtins, SingleWalkScene,
                          ::testing::Values("spheres-a", "spheres-b", "spheres-random", "teapot", "teapots", "whitted"));
 

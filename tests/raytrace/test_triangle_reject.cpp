@@ -24,8 +24,31 @@ struct Agreement {
 
 bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
+#if defined(__AVX__)
+// Two triangles rejected at once (a tree node whose children are both triangles) answer as each
+// does alone: the same verdict and, unless unsure, the same rows bit for bit.
+void check_pair(const Triangle& first, const Triangle& second, const TriangleRejectRay& r) {
+  const geometry::RejectPair pair = geometry::triangle_verdicts2(first, second, r);
+  const Triangle* tris[2] = {&first, &second};
+  for (int k = 0; k < 2; ++k) {
+    __m128 alone[4], together[4];
+    const RejectVerdict v = triangle_verdict(*tris[k], r, alone);
+    ASSERT_EQ(pair.verdict[k], v) << "triangle " << k << " of the pair";
+    if (v == RejectVerdict::unsure) continue;
+    pair.rows(k, together);
+    alignas(16) float a[4], b[4];
+    for (int i = 0; i < 4; ++i) {
+      _mm_store_ps(a, alone[i]);
+      _mm_store_ps(b, together[i]);
+      ASSERT_EQ(std::memcmp(a, b, 3 * sizeof(float)), 0) << "row " << i << " of triangle " << k;
+    }
+  }
+}
+#endif
+
 // Checks one ray against one triangle; returns through `a` how often each outcome happened.
-void check(const Triangle& tri, const Ray& ray, Agreement& a) {
+// `partner`: another triangle, rejected together with this one as a tree node's two children.
+void check(const Triangle& tri, const Triangle& partner, const Ray& ray, Agreement& a) {
   float t, b1, b2;
   const bool hit = intersect_triangle(tri, ray, kInfinity, &t, &b1, &b2);
   const bool rejected = triangle_surely_missed(tri, TriangleRejectRay(ray));
@@ -33,6 +56,16 @@ void check(const Triangle& tri, const Ray& ray, Agreement& a) {
   TriangleRejectRay within(ray);
   within.assume_within(union_of(tri.bounds(), Bounds3{ray.origin + 0.5f, ray.origin + 2.0f}));
   ASSERT_EQ(triangle_surely_missed(tri, within), rejected);
+#if defined(__AVX__)
+  // Paired with its partner, either way round.
+  TriangleRejectRay wider(ray);  // the range check skipped for both
+  wider.assume_within(union_of(union_of(tri.bounds(), partner.bounds()), Bounds3{ray.origin + 0.5f, ray.origin + 2.0f}));
+  const TriangleRejectRay plain(ray);
+  for (const TriangleRejectRay* r : {static_cast<const TriangleRejectRay*>(&wider), &plain}) {
+    check_pair(tri, partner, *r);
+    check_pair(partner, tri, *r);
+  }
+#endif
   hit ? ++a.hits : ++a.misses;
   a.rejected += rejected;
   // test_primitive_quickly (the uniformity test's fill) against test_primitive: hit and count.
@@ -88,7 +121,10 @@ TEST(TriangleReject, NeverRejectsAHitOnHardCases) {
   apps::Rng rng(11);
   Agreement a;
   for (float scale : {1.0f, 1e-13f, 1e-6f, 1e5f, 1e12f, 3e12f}) {
-    for (const Triangle& tri : hard_triangles(rng, scale)) {
+    const std::vector<Triangle> tris = hard_triangles(rng, scale);
+    for (std::size_t n = 0; n < tris.size(); ++n) {
+      const Triangle& tri = tris[n];
+      const Triangle& partner = tris[(n + 7) % tris.size()];
       const glm::vec3 verts[3] = {tri.p0, tri.p1, tri.p2};
       for (int i = 0; i < 30; ++i) {
         const glm::vec3 o = scale * glm::vec3(rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-4, 4));
@@ -98,14 +134,14 @@ TEST(TriangleReject, NeverRejectsAHitOnHardCases) {
                                      verts[i % 3] + scale * glm::vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), 0)};
         for (const glm::vec3& target : targets) {
           if (target == o) continue;
-          check(tri, Ray(o, target - o), a);
+          check(tri, partner, Ray(o, target - o), a);
           // Axis-parallel (with negative zeros), and grazing: in the plane of an edge.
           const glm::vec3 d = target - o;
           const int k = i % 3;
           glm::vec3 axis(-0.0f);
           axis[k] = d[k] < 0 ? -1.0f : 1.0f;
-          check(tri, Ray(target - axis * scale, axis), a);
-          check(tri, Ray(verts[k] - (verts[(k + 1) % 3] - verts[k]), verts[(k + 1) % 3] - verts[k]), a);
+          check(tri, partner, Ray(target - axis * scale, axis), a);
+          check(tri, partner, Ray(verts[k] - (verts[(k + 1) % 3] - verts[k]), verts[(k + 1) % 3] - verts[k]), a);
           if (HasFatalFailure()) return;
         }
       }
@@ -128,7 +164,7 @@ TEST(TriangleReject, SharedEdgesOfAGridAreNeverRejectedBoth) {
     for (int x = 1; x < 2 * n; ++x) {
       const Ray r({x / float(2 * n), y / float(2 * n), 1.0f}, {0.0f, -0.0f, -1.0f});
       const int before = a.hits;
-      for (const Triangle& t : tris) check(t, r, a);
+      for (std::size_t k = 0; k < tris.size(); ++k) check(tris[k], tris[k ^ 1], r, a);  // the quad's halves paired
       ASSERT_FALSE(HasFatalFailure());
       EXPECT_GT(a.hits, before) << x << "," << y;
     }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #if defined(__SSE2__)
 #include <immintrin.h>
 #endif
@@ -126,10 +127,13 @@ inline unsigned both_children(const PairNode& n, const SlabLanes& lanes, float t
 struct QuickRay {
   TriangleRejectRay reject;
   SphereRay sphere;  // set only when there are spheres: its conversion to double is not free
-  // Every primitive tested lies in `box` (the tree's root box); only triangles use it.
-  QuickRay(const Ray& r, const Bounds3& box, const PrimitiveArrays& prims) : reject(r) {
-    if (!prims.triangles.empty()) reject.assume_within(box);
+  // Without the range check's shortcut (reject.in_range false: every triangle is checked).
+  QuickRay(const Ray& r, const PrimitiveArrays& prims) : reject(r) {
     if (!prims.spheres.empty()) sphere = SphereRay(r);
+  }
+  // Every primitive tested lies in `box` (the tree's root box); only triangles use it.
+  QuickRay(const Ray& r, const Bounds3& box, const PrimitiveArrays& prims) : QuickRay(r, prims) {
+    if (!prims.triangles.empty()) reject.assume_within(box);
   }
 };
 
@@ -305,99 +309,181 @@ template <int kSigns, int kZ>
 #endif
 }
 
+// Both children of a node are primitives: as test_in_walk on each in turn, with both triangles'
+// rejections done at once when the host has AVX (a triangle's verdict does not depend on the hit
+// distance, which the first may shorten; the second is finished after the first).
 template <int kSigns, int kZ>
-void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, const SlabRay& slab, Hit& hit,
-             TestTally& counts) {
-  if (tree.empty) return;
-  if (is_primitive(tree.root)) {
-    test_primitive(prims, primitive_of(tree.root), ray, hit, counts);
+[[gnu::always_inline]] inline void test_two_in_walk(const PrimView& view, int p0, int p1, const Ray& ray,
+                                                    const QuickRay& quick, Hit& hit, OrderedTally& tally) {
+#if defined(__AVX__)
+  if (p0 >= view.sphere_count && p1 >= view.sphere_count) {
+    tally.triangles += 2;
+    const RejectPair pair = triangle_verdicts2<kx_of<kSigns, kZ>(), ky_of<kSigns, kZ>(), kZ>(
+        view.triangles[p0 - view.sphere_count], view.triangles[p1 - view.sphere_count], quick.reject);
+    const int prims[2] = {p0, p1};
+    for (int k = 0; k < 2; ++k) {
+      if (pair.verdict[k] == RejectVerdict::inside) {
+        __m128 s[4];
+        pair.rows(k, s);
+        finish_triangle(ray, prims[k], s[0], s[1], s[2], s[3], hit);
+      } else if (pair.verdict[k] == RejectVerdict::unsure) {
+        full_triangle_test(view.prims, prims[k], ray, hit);
+      }
+    }
     return;
   }
-  OrderedTally tally;  // locals: the primitive tests cannot alias them
+#endif
+  test_in_walk<kSigns, kZ>(view, p0, ray, quick, hit, tally);
+  test_in_walk<kSigns, kZ>(view, p1, ray, quick, hit, tally);
+}
+
+// The triangle rejection's range check of the tree's root box (TriangleRejectRay::assume_within)
+// for one origin at a time: the rays of a run mostly share their origin (a tile's primary rays).
+class RootRange {
+ public:
+  RootRange(const PackedTree& tree, const PrimitiveArrays& prims) : prims_(prims), box_(tree.root_box), triangles_(!prims.triangles.empty()) {}
+  QuickRay quick_ray(const Ray& ray) {
+    QuickRay quick(ray, prims_);
+    if (!triangles_) return quick;
+    if (!known_ || std::memcmp(&origin_, &ray.origin, sizeof origin_) != 0) {
+      quick.reject.assume_within(box_);
+      origin_ = ray.origin, in_range_ = quick.reject.in_range, known_ = true;
+    }
+    quick.reject.in_range = in_range_;
+    return quick;
+  }
+
+ private:
+  const PrimitiveArrays& prims_;
+  const Bounds3& box_;
+  bool triangles_, known_ = false, in_range_ = false;
+  glm::vec3 origin_{0.0f};
+};
+
+// Section 2.2.2's ordered walk for one ray.
+template <int kSigns, int kZ>
+[[gnu::always_inline]] inline void ordered_one(const PrimView& view, const PackedTree& tree, const Ray& ray, Hit& hit,
+                                               RootRange& range, OrderedTally& tally) {
   struct Entry { NodeRef node; float entry; };
   Entry stack[kStackSize];
   int top = 0;
   float entry;
   ++tally.boxes;
-  if (intersect_box(tree.root_box, ray, hit.t, &entry)) {
-    const QuickRay quick(ray, tree.root_box, prims);
-    const SlabLanes lanes(slab, ray.tmin);
-    const PrimView view(prims);
-    // The node to expand next stays in registers: the child the binary walk would push last, and
-    // so pop at once, is taken without the trip through the stack (same order, same checks).
-    Entry e{tree.root, entry};
-    for (;;) {
-      if (e.entry > hit.t) {  // figure 3: a nearer primitive was found meanwhile
-        if (top == 0) break;
-        e = stack[--top];
-        continue;
-      }
-      const PairNode& n = tree.nodes[e.node];
-      const NodeRef c0 = n.child[0], c1 = n.child[1];
-      // Primitive children first: their hits tighten the distance the boxes are tested against.
-      const bool prim0 = is_primitive(c0), prim1 = is_primitive(c1);
-      if (prim0) test_in_walk<kSigns, kZ>(view, primitive_of(c0), ray, quick, hit, tally);
-      if (prim1) test_in_walk<kSigns, kZ>(view, primitive_of(c1), ray, quick, hit, tally);
-      if (!(prim0 && prim1)) {
-        // The hit children by name, not in an array: an array went through memory.
-        float entries[2];
-        const unsigned mask = both_children<kSigns>(n, lanes, hit.t, entries);
-        tally.boxes += int(!prim0) + int(!prim1);
-        const bool in0 = !prim0 && (mask & 1u), in1 = !prim1 && (mask & 2u);
-        if (in0 && in1) {
-          ++tally.sorts;  // a binary tree sorts its children with one comparison (2.2.2)
-          if (top + 2 <= kStackSize) {  // else both are dropped, as the binary walk drops them
-            if (entries[0] < entries[1]) {  // the farther below, the nearer next
-              stack[top++] = {c1, entries[1]};
-              e = {c0, entries[0]};
-            } else {
-              stack[top++] = {c0, entries[0]};
-              e = {c1, entries[1]};
-            }
-            continue;
-          }
-        } else if ((in0 || in1) && top < kStackSize) {
-          e = in0 ? Entry{c0, entries[0]} : Entry{c1, entries[1]};
-          continue;
-        }
-      }
+  if (!intersect_box(tree.root_box, ray, hit.t, &entry)) return;
+  const QuickRay quick = range.quick_ray(ray);
+  const SlabRay slab(ray);
+  const SlabLanes lanes(slab, ray.tmin);
+  // The node to expand next stays in registers: the child the binary walk would push last, and
+  // so pop at once, is taken without the trip through the stack (same order, same checks).
+  Entry e{tree.root, entry};
+  for (;;) {
+    if (e.entry > hit.t) {  // figure 3: a nearer primitive was found meanwhile
       if (top == 0) break;
       e = stack[--top];
+      continue;
     }
+    const PairNode& n = tree.nodes[e.node];
+    const NodeRef c0 = n.child[0], c1 = n.child[1];
+    // Primitive children first: their hits tighten the distance the boxes are tested against.
+    const bool prim0 = is_primitive(c0), prim1 = is_primitive(c1);
+    if (prim0 && prim1) {
+      test_two_in_walk<kSigns, kZ>(view, primitive_of(c0), primitive_of(c1), ray, quick, hit, tally);
+    } else {
+      if (prim0) test_in_walk<kSigns, kZ>(view, primitive_of(c0), ray, quick, hit, tally);
+      if (prim1) test_in_walk<kSigns, kZ>(view, primitive_of(c1), ray, quick, hit, tally);
+      // The hit children by name, not in an array: an array went through memory.
+      float entries[2];
+      const unsigned mask = both_children<kSigns>(n, lanes, hit.t, entries);
+      tally.boxes += int(!prim0) + int(!prim1);
+      const bool in0 = !prim0 && (mask & 1u), in1 = !prim1 && (mask & 2u);
+      if (in0 && in1) {
+        ++tally.sorts;  // a binary tree sorts its children with one comparison (2.2.2)
+        if (top + 2 <= kStackSize) {  // else both are dropped, as the binary walk drops them
+          if (entries[0] < entries[1]) {  // the farther below, the nearer next
+            stack[top++] = {c1, entries[1]};
+            e = {c0, entries[0]};
+          } else {
+            stack[top++] = {c0, entries[0]};
+            e = {c1, entries[1]};
+          }
+          continue;
+        }
+      } else if ((in0 || in1) && top < kStackSize) {
+        e = in0 ? Entry{c0, entries[0]} : Entry{c1, entries[1]};
+        continue;
+      }
+    }
+    if (top == 0) break;
+    e = stack[--top];
   }
+}
+
+// ordered_one for each of `count` rays of one octant and dominant axis, the per-tree work (the
+// counts' locals, the arrays' pointers, the root box's range check per origin) done once.
+template <int kSigns, int kZ>
+void ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray* rays, int count, Hit* hits,
+             TestTally& counts) {
+  if (tree.empty) return;
+  if (is_primitive(tree.root)) {
+    for (int i = 0; i < count; ++i) test_primitive(prims, primitive_of(tree.root), rays[i], hits[i], counts);
+    return;
+  }
+  OrderedTally tally;  // locals: the primitive tests cannot alias them
+  const PrimView view(prims);
+  RootRange range(tree, prims);
+  for (int i = 0; i < count; ++i) ordered_one<kSigns, kZ>(view, tree, rays[i], hits[i], range, tally);
   counts.boxes += tally.boxes;
   counts.spheres += tally.spheres;
   counts.triangles += tally.triangles;
   counts.sorts += tally.sorts;
 }
 
-}  // namespace
+using Walk = void (*)(const PrimitiveArrays&, const PackedTree&, const Ray*, int, Hit*, TestTally&);
 
-void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
-  // One walk per ray octant and dominant axis, so that neither the slab test's near/far choice
-  // nor the triangle rejection's axis permutation is read at run time.
-  using Walk = void (*)(const PrimitiveArrays&, const PackedTree&, const Ray&, const SlabRay&, Hit&, TestTally&);
+// One walk per ray octant and dominant axis, so that neither the slab test's near/far choice nor
+// the triangle rejection's axis permutation is read at run time.
+Walk walk_for(const PrimitiveArrays& prims, const Ray& ray) {
 #define GCSIM_OCTANT(s) ordered<s, 0>, ordered<s, 1>, ordered<s, 2>
   static constexpr Walk kByOctantAndAxis[8][3] = {{GCSIM_OCTANT(0)}, {GCSIM_OCTANT(1)}, {GCSIM_OCTANT(2)},
                                                   {GCSIM_OCTANT(3)}, {GCSIM_OCTANT(4)}, {GCSIM_OCTANT(5)},
                                                   {GCSIM_OCTANT(6)}, {GCSIM_OCTANT(7)}};
 #undef GCSIM_OCTANT
-  const SlabRay slab(ray);
-  const int octant = slab.negative[0] | slab.negative[1] << 1 | slab.negative[2] << 2;
+  const glm::vec3& inv = ray.inv_direction;  // SlabRay's signs
+  const int octant = int(std::signbit(inv.x)) | int(std::signbit(inv.y)) << 1 | int(std::signbit(inv.z)) << 2;
+  // Without triangles the axes are never read: one walk per octant keeps fewer walks warm.
+  if (prims.triangles.empty()) return kByOctantAndAxis[octant][2];
   // The octant's sign of the dominant axis decides kx and ky as Ray::prepare does, except for a
   // direction of -0 or NaN there: such a ray takes the generic walk.
   static constexpr int kAxes[2][3][2] = {{{1, 2}, {2, 0}, {0, 1}}, {{2, 1}, {0, 2}, {1, 0}}};  // [negative][kz]: kx, ky
   const int kz = ray.kz;
   const int* axes = kAxes[(octant >> kz) & 1][kz];
-  // Without triangles the axes are never read: one walk per octant keeps fewer walks warm.
-  if (prims.triangles.empty()) kByOctantAndAxis[octant][2](prims, tree, ray, slab, hit, tally);
-  else if (axes[0] == ray.kx && axes[1] == ray.ky) kByOctantAndAxis[octant][kz](prims, tree, ray, slab, hit, tally);
-  else ordered<-1, -1>(prims, tree, ray, slab, hit, tally);
+  return axes[0] == ray.kx && axes[1] == ray.ky ? kByOctantAndAxis[octant][kz] : ordered<-1, -1>;
+}
+
+}  // namespace
+
+void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
+  walk_for(prims, ray)(prims, tree, &ray, 1, &hit, tally);
+}
+
+void traverse_ordered_rays(const PrimitiveArrays& prims, const PackedTree& tree, const Ray* rays, int count, Hit* hits,
+                           TestTally& tally) {
+  if (count <= 0) return;
+  // Runs of rays that take the same walk (a tile's rays mostly take one).
+  int first = 0;
+  Walk walk = walk_for(prims, rays[0]);
+  for (int i = 1; i <= count; ++i) {
+    const Walk next = i < count ? walk_for(prims, rays[i]) : nullptr;
+    if (next == walk) continue;
+    walk(prims, tree, rays + first, i - first, hits + first, tally);
+    first = i;
+    walk = next;
+  }
 }
 
 void traverse_ordered_generic(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit,
                               TestTally& tally) {
-  ordered<-1, -1>(prims, tree, ray, SlabRay(ray), hit, tally);
+  ordered<-1, -1>(prims, tree, &ray, 1, &hit, tally);
 }
 
 bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally) {

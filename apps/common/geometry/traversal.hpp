@@ -13,6 +13,11 @@ namespace gcsim::geometry {
 
 void traverse_unordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally);
 void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally);
+// traverse_ordered for each of `count` rays in turn (hits[i] for rays[i]), with the per-tree work
+// done once for rays that share an octant and an origin (a tile's primary rays): the same hits
+// and counts.
+void traverse_ordered_rays(const PrimitiveArrays& prims, const PackedTree& tree, const Ray* rays, int count, Hit* hits,
+                           TestTally& tally);
 // The same walk reading the ray's octant and triangle axes at run time, as it does for a ray
 // with a -0 or NaN component: the reference the tests hold the per-octant walks to.
 void traverse_ordered_generic(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit,
