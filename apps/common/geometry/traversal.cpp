@@ -1,5 +1,6 @@
 #include "apps/common/geometry/traversal.hpp"
 
+#include "apps/common/geometry/slab_lanes.hpp"
 #include "apps/common/geometry/triangle_finish.hpp"
 #include "apps/common/geometry/triangle_reject.hpp"
 
@@ -13,115 +14,11 @@
 namespace gcsim::geometry {
 namespace {
 
+using slab::both_children;
+using slab::SlabLanes;
+using slab::SlabRay;
+
 constexpr int kStackSize = 256;  // clustered trees of the built-in scenes are < 64 deep
-
-// Slab tests of both children of n at once (see intersect_box for the conservative rounding and
-// NaN handling: a NaN from 0 * inf, an axis-parallel ray in a slab plane, is dropped by max/min,
-// which return their second operand when the first is NaN). The far distance is scaled up once,
-// after the minimum, which is the same as scaling each.
-struct SlabRay {
-  float o[3], inv[3];
-  bool negative[3];  // the hi plane is met first
-  explicit SlabRay(const Ray& r) {
-    for (int a = 0; a < 3; ++a) {
-      o[a] = r.origin[a];
-      inv[a] = r.inv_direction[a];
-      negative[a] = std::signbit(inv[a]);
-    }
-  }
-};
-
-// Bit a of kSigns: the ray runs towards -axis a; -1: read from the ray at run time. The
-// closest-hit walk is compiled for each of the eight octants, so the near/far choice per axis
-// costs nothing inside the loop.
-template <int kSigns>
-inline bool negative_axis(const SlabRay& r, int a) {
-  if constexpr (kSigns < 0) return r.negative[a];
-  else return (kSigns >> a) & 1;
-}
-
-#if defined(__SSE2__)
-// The ray's slab constants broadcast once per ray, not once per node. For a walk compiled for the
-// ray's octant, also the reciprocal with its far half negated (see both_children).
-struct SlabLanes {
-  const SlabRay& ray;
-  __m128 o[3], inv[3], tmin;
-  __m128 inv_signed[3];  // (inv, inv, -inv, -inv); on an axis the ray runs down, (-inv, -inv, inv, inv)
-  __m128 start;          // (tmin, tmin, -inf, -inf)
-  SlabLanes(const SlabRay& r, float t0)
-      : ray(r),
-        o{_mm_set1_ps(r.o[0]), _mm_set1_ps(r.o[1]), _mm_set1_ps(r.o[2])},
-        inv{_mm_set1_ps(r.inv[0]), _mm_set1_ps(r.inv[1]), _mm_set1_ps(r.inv[2])},
-        tmin(_mm_set1_ps(t0)),
-        start(_mm_setr_ps(t0, t0, -kInfinity, -kInfinity)) {
-    alignas(16) static constexpr float kFlip[2][4] = {{0.0f, 0.0f, -0.0f, -0.0f}, {-0.0f, -0.0f, 0.0f, 0.0f}};
-    for (int a = 0; a < 3; ++a) inv_signed[a] = _mm_xor_ps(inv[a], _mm_load_ps(kFlip[r.negative[a]]));
-  }
-};
-
-template <int kSigns>
-inline unsigned both_children(const PairNode& n, const SlabLanes& r, float tmax, float entry[2]) {
-  __m128 t0, far;
-  if constexpr (kSigns >= 0) {
-    // One max per axis instead of a max and a min: the far distances are carried negated,
-    // (lo0, lo1, hi0, hi1) - o times (inv, inv, -inv, -inv) being (near0, near1, -far0, -far1)
-    // exactly (negation is exact in every step), halves swapped on an axis the ray runs down.
-    // max(-f, -t) is -min(f, t) bit for bit, and like min it keeps its second operand when the
-    // first is NaN or the two are equal.
-    t0 = r.start;
-    for (int a = 0; a < 3; ++a) {
-      __m128 t = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.bounds[a]), r.o[a]), r.inv_signed[a]);
-      if ((kSigns >> a) & 1) t = _mm_shuffle_ps(t, t, _MM_SHUFFLE(1, 0, 3, 2));
-      t0 = _mm_max_ps(t, t0);
-    }
-    const __m128 t1 = _mm_xor_ps(_mm_movehl_ps(t0, t0), _mm_set1_ps(-0.0f));
-    far = _mm_min_ps(_mm_mul_ps(t1, _mm_set1_ps(1.0f + 2.0f * gamma(3))), _mm_set1_ps(tmax));
-  } else {
-    t0 = r.tmin;
-    __m128 t1 = _mm_set1_ps(kInfinity);
-    for (int a = 0; a < 3; ++a) {
-      // (lo0, lo1, hi0, hi1) -> distances; the near pair is in the low or high half.
-      const __m128 t = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.bounds[a]), r.o[a]), r.inv[a]);
-      const __m128 swapped = _mm_movehl_ps(t, t);
-      const bool negative = r.ray.negative[a];
-      const __m128 tn = negative ? swapped : t;
-      const __m128 tf = negative ? t : swapped;
-      t0 = _mm_max_ps(tn, t0);
-      t1 = _mm_min_ps(tf, t1);
-    }
-    far = _mm_min_ps(_mm_mul_ps(t1, _mm_set1_ps(1.0f + 2.0f * gamma(3))), _mm_set1_ps(tmax));
-  }
-  const __m128 near = _mm_mul_ps(t0, _mm_set1_ps(1.0f - 2.0f * gamma(3)));
-  entry[0] = _mm_cvtss_f32(near);
-  entry[1] = _mm_cvtss_f32(_mm_shuffle_ps(near, near, _MM_SHUFFLE(1, 1, 1, 1)));
-  return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(t0, far))) & 3u;
-}
-#else
-struct SlabLanes {
-  const SlabRay& ray;
-  float tmin;
-  SlabLanes(const SlabRay& r, float t0) : ray(r), tmin(t0) {}
-};
-
-template <int kSigns>
-inline unsigned both_children(const PairNode& n, const SlabLanes& lanes, float tmax, float entry[2]) {
-  const SlabRay& r = lanes.ray;
-  unsigned mask = 0;
-  for (int c = 0; c < 2; ++c) {
-    float t0 = lanes.tmin, t1 = kInfinity;
-    for (int a = 0; a < 3; ++a) {
-      float tn = (n.bounds[a][c] - r.o[a]) * r.inv[a];
-      float tf = (n.bounds[a][2 + c] - r.o[a]) * r.inv[a];
-      if (negative_axis<kSigns>(r, a)) std::swap(tn, tf);
-      t0 = tn > t0 ? tn : t0;
-      t1 = tf < t1 ? tf : t1;
-    }
-    entry[c] = t0 * (1.0f - 2.0f * gamma(3));
-    mask |= unsigned(t0 <= std::min(t1 * (1.0f + 2.0f * gamma(3)), tmax)) << c;
-  }
-  return mask;
-}
-#endif
 
 // What the primitive tests need of a ray, prepared once per ray.
 struct QuickRay {
@@ -372,7 +269,7 @@ template <int kSigns, int kZ>
   if (!intersect_box(tree.root_box, ray, hit.t, &entry)) return;
   const QuickRay quick = range.quick_ray(ray);
   const SlabRay slab(ray);
-  const SlabLanes lanes(slab, ray.tmin);
+  const SlabLanes lanes(slab, ray.tmin, std::integral_constant<int, kSigns>{});
   // The node to expand next stays in registers: the child the binary walk would push last, and
   // so pop at once, is taken without the trip through the stack (same order, same checks).
   Entry e{tree.root, entry};
@@ -460,6 +357,13 @@ Walk walk_for(const PrimitiveArrays& prims, const Ray& ray) {
   return axes[0] == ray.kx && axes[1] == ray.ky ? kByOctantAndAxis[octant][kz] : ordered<-1, -1>;
 }
 
+// Whether walk_for gives two rays the same walk, from all it reads of them (cheaper than asking it).
+bool same_walk(const Ray& a, const Ray& b) {
+  const glm::vec3 &p = a.inv_direction, &q = b.inv_direction;
+  return std::signbit(p.x) == std::signbit(q.x) && std::signbit(p.y) == std::signbit(q.y) &&
+         std::signbit(p.z) == std::signbit(q.z) && a.kx == b.kx && a.ky == b.ky && a.kz == b.kz;
+}
+
 }  // namespace
 
 void traverse_ordered(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, Hit& hit, TestTally& tally) {
@@ -473,6 +377,7 @@ void traverse_ordered_rays(const PrimitiveArrays& prims, const PackedTree& tree,
   int first = 0;
   Walk walk = walk_for(prims, rays[0]);
   for (int i = 1; i <= count; ++i) {
+    if (i < count && same_walk(rays[i], rays[i - 1])) continue;
     const Walk next = i < count ? walk_for(prims, rays[i]) : nullptr;
     if (next == walk) continue;
     walk(prims, tree, rays + first, i - first, hits + first, tally);
