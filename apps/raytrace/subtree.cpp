@@ -101,12 +101,7 @@ struct SubtreePass {
     if (c0.entry < 0) return c1;
     if (c1.entry < 0) return c0;
     PairNode& n = out.nodes.emplace_back();
-    const Bounds3* boxes[2] = {&box_of(c0.entry), &box_of(c1.entry)};
-    for (int c = 0; c < 2; ++c)
-      for (int a = 0; a < 3; ++a) {
-        n.bounds[a][c] = boxes[c]->lo[a];
-        n.bounds[a][2 + c] = boxes[c]->hi[a];
-      }
+    set_child_boxes(n, box_of(c0.entry), box_of(c1.entry));
     n.child[0] = c0.ref;
     n.child[1] = c1.ref;
     return {static_cast<NodeRef>(out.nodes.size() - 1), e};

@@ -11,15 +11,10 @@ void pack_tree(const std::vector<BvhNode>& nodes, NodeRef root, bool empty, cons
   out.root_box = is_primitive(root) ? prim_bounds[primitive_of(root)] : nodes[root].box;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     PairNode& p = out.nodes[i];
-    for (int c = 0; c < 2; ++c) {
-      const NodeRef r = nodes[i].child[c];
-      const Bounds3& b = is_primitive(r) ? prim_bounds[primitive_of(r)] : nodes[r].box;
-      for (int a = 0; a < 3; ++a) {
-        p.bounds[a][c] = b.lo[a];
-        p.bounds[a][2 + c] = b.hi[a];
-      }
-      p.child[c] = r;
-    }
+    const auto box = [&](NodeRef r) -> const Bounds3& { return is_primitive(r) ? prim_bounds[primitive_of(r)] : nodes[r].box; };
+    set_child_boxes(p, box(nodes[i].child[0]), box(nodes[i].child[1]));
+    p.child[0] = nodes[i].child[0];
+    p.child[1] = nodes[i].child[1];
   }
 }
 

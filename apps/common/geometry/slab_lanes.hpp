@@ -47,6 +47,10 @@ struct SlabLanes {
   __m128 o[3], inv[3], tmin;
   __m128 inv_signed[3];  // (inv, inv, -inv, -inv); on an axis the ray runs down, (-inv, -inv, inv, inv)
   __m128 start;          // (tmin, tmin, -inf, -inf)
+  // The conservative scalings of both_children, in memory for the multiplies to read (the loop
+  // has no register to keep them in, and would otherwise rebuild them at every node).
+  __m128 far_scale_negated = _mm_set1_ps(-(1.0f + 2.0f * gamma(3)));
+  __m128 near_scale = _mm_set1_ps(1.0f - 2.0f * gamma(3));
   // kSigns >= 0: the ray's octant, known to the walk at compile time (negative_axis).
   template <int kSigns = -1>
   SlabLanes(const SlabRay& r, float t0, std::integral_constant<int, kSigns> = {})
@@ -75,8 +79,8 @@ inline unsigned both_children(const PairNode& n, const SlabLanes& r, float tmax,
       if ((kSigns >> a) & 1) t = _mm_shuffle_ps(t, t, _MM_SHUFFLE(1, 0, 3, 2));
       t0 = _mm_max_ps(t, t0);
     }
-    const __m128 t1 = _mm_xor_ps(_mm_movehl_ps(t0, t0), _mm_set1_ps(-0.0f));
-    far = _mm_min_ps(_mm_mul_ps(t1, _mm_set1_ps(1.0f + 2.0f * gamma(3))), _mm_set1_ps(tmax));
+    // (-f) * -(1 + 2 gamma) is f * (1 + 2 gamma) bit for bit: rounding to nearest is symmetric.
+    far = _mm_min_ps(_mm_mul_ps(_mm_movehl_ps(t0, t0), r.far_scale_negated), _mm_set1_ps(tmax));
   } else {
     t0 = r.tmin;
     __m128 t1 = _mm_set1_ps(kInfinity);
@@ -92,7 +96,7 @@ inline unsigned both_children(const PairNode& n, const SlabLanes& r, float tmax,
     }
     far = _mm_min_ps(_mm_mul_ps(t1, _mm_set1_ps(1.0f + 2.0f * gamma(3))), _mm_set1_ps(tmax));
   }
-  const __m128 near = _mm_mul_ps(t0, _mm_set1_ps(1.0f - 2.0f * gamma(3)));
+  const __m128 near = _mm_mul_ps(t0, r.near_scale);
   entry[0] = _mm_cvtss_f32(near);
   entry[1] = _mm_cvtss_f32(_mm_shuffle_ps(near, near, _MM_SHUFFLE(1, 1, 1, 1)));
   return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(t0, far))) & 3u;
