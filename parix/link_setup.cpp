@@ -28,8 +28,9 @@ Link SimProcess::connect(int peer, int tag) {
     SimProcess* them = other.who;
     const machine::SimTime their_start = other.since;
     // Both ends' set-ups complete at once; the waiting end wakes first.
-    sim_.kernel.at(up, [theirs, their_set_up = other.set_up, &set_up, b] {
-      *theirs = b;
+    // b by an init-capture: capturing a structured binding by name needs clang 16.
+    sim_.kernel.at(up, [theirs, their_set_up = other.set_up, &set_up, their_end = b] {
+      *theirs = their_end;
       their_set_up->complete();
       set_up.complete();
     });
