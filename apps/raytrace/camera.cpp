@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <stdexcept>
 #include <utility>
 #if defined(__SSE2__)
@@ -43,6 +44,48 @@ Plane Camera::row_plane_at(float j) const {
 }
 
 #if defined(__SSE2__)
+namespace {
+
+// The rest of Ray::prepare() for four rays, lane by lane, and the rays written whole: the
+// dominant axis kz (the first of the largest |component|s, as prepare's comparisons pick it), kx
+// and ky after it, swapped where the direction runs down kz, and the shear (-d[kx] * inv[kz] is
+// prepare's -direction[kx] * shear_z: the same two exact or rounded steps). A Ray is sixteen
+// 4-byte fields, so four 4 x 4 transposes lay four rays out as four 16-byte stores each, where
+// the per-ray code made sixteen scalar stores and three data-dependent branches.
+void store_rays(glm::vec3 eye, const __m128 unit[3], const __m128 inv[3], int m, Ray* out) {
+  static_assert(sizeof(Ray) == 16 * sizeof(float) && offsetof(Ray, inv_direction) == 7 * sizeof(float) &&
+                offsetof(Ray, kx) == 10 * sizeof(float) && offsetof(Ray, shear_x) == 13 * sizeof(float));
+  const auto select = [](__m128 mask, __m128 a, __m128 b) { return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b)); };
+  const auto ints = [](int v) { return _mm_castsi128_ps(_mm_set1_epi32(v)); };
+  const __m128 sign = _mm_set1_ps(-0.0f);
+  const __m128 ax = _mm_andnot_ps(sign, unit[0]), ay = _mm_andnot_ps(sign, unit[1]), az = _mm_andnot_ps(sign, unit[2]);
+  const __m128 x_over_y = _mm_cmpgt_ps(ax, ay);
+  const __m128 kz0 = _mm_and_ps(x_over_y, _mm_cmpgt_ps(ax, az));
+  const __m128 kz1 = _mm_andnot_ps(x_over_y, _mm_cmpgt_ps(ay, az));
+  // Per lane by kz = 0, 1, 2: d[kz], inv[kz], and d, kx, ky before the swap ((1, 2), (2, 0), (0, 1)).
+  const auto by_kz = [&](__m128 if0, __m128 if1, __m128 if2) { return select(kz0, if0, select(kz1, if1, if2)); };
+  const __m128 d_kz = by_kz(unit[0], unit[1], unit[2]);
+  const __m128 shear_z = by_kz(inv[0], inv[1], inv[2]);
+  __m128 d_kx = by_kz(unit[1], unit[2], unit[0]), d_ky = by_kz(unit[2], unit[0], unit[1]);
+  __m128 kx = by_kz(ints(1), ints(2), ints(0)), ky = by_kz(ints(2), ints(0), ints(1));
+  const __m128 kz = by_kz(ints(0), ints(1), ints(2));
+  const __m128 down = _mm_cmplt_ps(d_kz, _mm_setzero_ps());
+  const __m128 swapped_x = select(down, d_ky, d_kx), swapped_kx = select(down, ky, kx);
+  d_ky = select(down, d_kx, d_ky), ky = select(down, kx, ky);
+  d_kx = swapped_x, kx = swapped_kx;
+  const __m128 shear_x = _mm_mul_ps(_mm_xor_ps(d_kx, sign), shear_z);
+  const __m128 shear_y = _mm_mul_ps(_mm_xor_ps(d_ky, sign), shear_z);
+  // Fields 0-15 of the four rays, four at a time.
+  __m128 f[16] = {_mm_set1_ps(eye.x), _mm_set1_ps(eye.y), _mm_set1_ps(eye.z), unit[0], unit[1], unit[2],
+                  _mm_setzero_ps(), inv[0], inv[1], inv[2], kx, ky, kz, shear_x, shear_y, shear_z};
+  for (int q = 0; q < 4; ++q) {
+    _MM_TRANSPOSE4_PS(f[4 * q], f[4 * q + 1], f[4 * q + 2], f[4 * q + 3]);
+    for (int i = 0; i < m; ++i) _mm_storeu_ps(reinterpret_cast<float*>(&out[i]) + 4 * q, f[4 * q + i]);
+  }
+}
+
+}  // namespace
+
 // direction() and Ray::prepare() for four pixels, operation by operation in the same order (no
 // contraction: the build has no FMA), so each lane rounds as the scalar code does.
 void Camera::pixel_rays(const int* x, const int* y, int n, Ray* out) const {
@@ -61,30 +104,15 @@ void Camera::pixel_rays(const int* x, const int* y, int n, Ray* out) const {
                         _mm_mul_ps(v, _mm_set1_ps(up_[a])));
     const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], d[0]), _mm_mul_ps(d[1], d[1])), _mm_mul_ps(d[2], d[2]));
     const __m128 scale = _mm_div_ps(_mm_set1_ps(1.0f), _mm_sqrt_ps(len2));
-    alignas(16) float dir[3][4], inv[3][4];
+    __m128 unit[3], inv[3];
     for (int a = 0; a < 3; ++a) {
-      const __m128 unit = _mm_mul_ps(d[a], scale);
-      _mm_store_ps(dir[a], unit);
-      _mm_store_ps(inv[a], _mm_div_ps(_mm_set1_ps(1.0f), unit));
+      unit[a] = _mm_mul_ps(d[a], scale);
+      inv[a] = _mm_div_ps(_mm_set1_ps(1.0f), unit[a]);
     }
-    for (int i = 0; i < m; ++i) {
-      Ray& r = out[first + i];
-      r.origin = eye_;
-      r.direction = glm::vec3(dir[0][i], dir[1][i], dir[2][i]);
-      r.tmin = 0.0f;
-      r.inv_direction = glm::vec3(inv[0][i], inv[1][i], inv[2][i]);
-      // The rest of Ray::prepare().
-      const glm::vec3 abs_d = abs_components(r.direction);
-      r.kz = abs_d.x > abs_d.y ? (abs_d.x > abs_d.z ? 0 : 2) : (abs_d.y > abs_d.z ? 1 : 2);
-      r.kx = r.kz == 2 ? 0 : r.kz + 1;
-      r.ky = r.kx == 2 ? 0 : r.kx + 1;
-      if (r.direction[r.kz] < 0.0f) std::swap(r.kx, r.ky);
-      r.shear_z = r.inv_direction[r.kz];
-      r.shear_x = -r.direction[r.kx] * r.shear_z;
-      r.shear_y = -r.direction[r.ky] * r.shear_z;
-    }
+    store_rays(eye_, unit, inv, m, out + first);
   }
 }
+
 #else
 void Camera::pixel_rays(const int* x, const int* y, int n, Ray* out) const {
   for (int i = 0; i < n; ++i) out[i] = pixel_ray(x[i], y[i]);

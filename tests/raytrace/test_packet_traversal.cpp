@@ -3,10 +3,13 @@
 // cases: mixed octants in one packet, rays grazing box edges and lying in slab planes, lanes
 // masked off, lanes that start with a hit, empty and one-primitive trees. And the camera's four-
 // at-a-time rays equal its single ones bit for bit.
+#include <array>
+
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "apps/common/geometry/bvh.hpp"
@@ -132,12 +135,27 @@ TEST(PacketTraversal, EmptyAndOnePrimitiveTrees) {
 }
 
 TEST(PacketTraversal, CameraRaysFourAtATimeEqualSingleRays) {
-  const Scene s = make_builtin_scene("teapots");
-  for (int size : {7, 64}) {
-    const Camera cam(s.camera, size, size + 3);
+  Scene s = make_builtin_scene("teapots");
+  // Teapots' own view, then views down each axis both ways and along diagonals, where the
+  // dominant axis changes across the image and |components| tie (every kz, kx, ky and swap).
+  std::vector<scene::Camera> views = {s.camera};
+  for (const glm::dvec3 at : {glm::dvec3(1, 0, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 1, 0.001), glm::dvec3(0, -1, 0.001),
+                              glm::dvec3(0, 0, 1), glm::dvec3(0, 0, -1), glm::dvec3(1, 1, 0), glm::dvec3(1, -1, 1),
+                              glm::dvec3(-1, 1, -1), glm::dvec3(0, 1, 1), glm::dvec3(1, 0, -1)}) {
+    scene::Camera c = s.camera;
+    c.eye = glm::dvec3(0.25, -0.5, 2.0);
+    c.look_at = c.eye + at;
+    c.fov_y_degrees = 100.0;
+    views.push_back(c);
+  }
+  std::array<int, 3> kz_seen{};
+  // 9 x 9: the centre pixel's ray is the view direction itself, where |components| tie exactly.
+  for (const scene::Camera& view : views)
+  for (const auto [width, height] : {std::pair{7, 10}, std::pair{9, 9}, std::pair{64, 67}}) {
+    const Camera cam(view, width, height);
     std::vector<int> xs, ys;
-    for (int y = 0; y < size + 3; ++y)
-      for (int x = 0; x < size; ++x) xs.push_back(x), ys.push_back(y);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) xs.push_back(x), ys.push_back(y);
     std::vector<Ray> rays(xs.size());
     cam.pixel_rays(xs.data(), ys.data(), int(xs.size()), rays.data());
     for (std::size_t i = 0; i < rays.size(); ++i) {
@@ -149,8 +167,10 @@ TEST(PacketTraversal, CameraRaysFourAtATimeEqualSingleRays) {
       ASSERT_TRUE(r.kx == ref.kx && r.ky == ref.ky && r.kz == ref.kz && r.tmin == ref.tmin);
       ASSERT_TRUE(same_bits(r.shear_x, ref.shear_x) && same_bits(r.shear_y, ref.shear_y) &&
                   same_bits(r.shear_z, ref.shear_z));
+      ++kz_seen[std::size_t(ref.kz)];
     }
   }
+  for (int k = 0; k < 3; ++k) EXPECT_GT(kz_seen[std::size_t(k)], 100) << "axis " << k;
 }
 
 }  // namespace
