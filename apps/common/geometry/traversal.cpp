@@ -42,8 +42,10 @@ inline float lane(__m128 v) { return _mm_cvtss_f32(_mm_shuffle_ps(v, v, _MM_SHUF
 // and reloaded as floats, they would wait for store forwarding).
 inline bool finish_from_lanes(const Ray& ray, __m128 x, __m128 y, __m128 z, __m128 e, float tmax, float* t, float* b1,
                               float* b2) {
-  return watertight_finish<float>(lane<0>(x), lane<0>(y), lane<0>(z), lane<1>(x), lane<1>(y), lane<1>(z), lane<2>(x),
-                                  lane<2>(y), lane<2>(z), lane<0>(e), lane<1>(e), lane<2>(e), ray, tmax, t, b1, b2);
+  // Only after an "inside" verdict: the edge functions agree in sign.
+  return watertight_finish<float, true>(lane<0>(x), lane<0>(y), lane<0>(z), lane<1>(x), lane<1>(y), lane<1>(z),
+                                        lane<2>(x), lane<2>(y), lane<2>(z), lane<0>(e), lane<1>(e), lane<2>(e), ray, tmax,
+                                        t, b1, b2);
 }
 #endif
 

@@ -13,12 +13,15 @@ namespace gcsim::geometry {
 
 // The second half of the test, from the sheared vertices (a, b, c in the ray's frame) and the
 // edge functions. T is the arithmetic (float, or double for geometry outside float's safe range);
-// the rounding bounds are T's.
-template <class T>
+// the rounding bounds are T's. kSignsAgree: the caller knows the three edge functions are nonzero
+// and of one sign (the SSE rejection's "inside" verdict), so the first check could never fail.
+template <class T, bool kSignsAgree = false>
 inline bool watertight_finish(T ax, T ay, T az, T bx, T by, T bz, T cx, T cy, T cz, T e0, T e1, T e2, const Ray& ray,
                               float tmax, float* t_hit, float* b1, float* b2) {
   auto gamma = [](int n) { return gamma_of<T>(n); };
-  if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0)) return false;
+  if constexpr (!kSignsAgree) {
+    if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0)) return false;
+  }
   const T det = e0 + e1 + e2;
   if (det == 0) return false;  // degenerate, or seen exactly edge-on
 
