@@ -108,6 +108,19 @@ std::vector<Ray> hard_rays(const PackedTree& tree, const Bounds3& scene, apps::R
   return testing::box_corner_rays(tree, scene, rng, 1, true);
 }
 
+// Every ninth 8 x 8 tile of a 64 x 64 view: fn(the tile's subtree, the camera, x0, y0, tile).
+template <class Fn>
+void for_sample_tiles(const Scene& s, const Bvh& bvh, Fn&& fn) {
+  const Camera cam(s.camera, 64, 64);
+  Subtree sub;
+  TraceCounters counters;
+  for (int tile = 0; tile < 64; tile += 9) {
+    const int x0 = 8 * (tile % 8), y0 = 8 * (tile / 8);
+    build_subtree(bvh, pyramid_planes(cam, x0, y0, x0 + 8, y0 + 8), sub, counters);
+    fn(sub.packed, cam, x0, y0, tile);
+  }
+}
+
 class SingleWalkScene : public ::testing::TestWithParam<std::string_view> {};
 
 TEST_P(SingleWalkScene, PerOctantWalksEqualTheGenericWalk) {
@@ -124,17 +137,12 @@ TEST_P(SingleWalkScene, PerOctantWalksEqualTheGenericWalk) {
     ++rays;
   }
   // The subtrees A3 and A4 walk: camera rays of a few tiles, and the hard rays of one subtree.
-  const Camera cam(s.camera, 64, 64);
-  Subtree sub;
-  TraceCounters counters;
-  for (int tile = 0; tile < 64; tile += 9) {
-    const int x0 = 8 * (tile % 8), y0 = 8 * (tile / 8);
-    build_subtree(bvh, pyramid_planes(cam, x0, y0, x0 + 8, y0 + 8), sub, counters);
+  for_sample_tiles(s, bvh, [&](const PackedTree& sub, const Camera& cam, int x0, int y0, int tile) {
     for (int y = y0; y < y0 + 8; ++y)
-      for (int x = x0; x < x0 + 8; ++x) hits += expect_walks_agree(s, sub.packed, cam.pixel_ray(x, y));
+      for (int x = x0; x < x0 + 8; ++x) hits += expect_walks_agree(s, sub, cam.pixel_ray(x, y));
     if (tile == 27)
-      for (const Ray& ray : hard_rays(sub.packed, s.bounds(), rng)) hits += expect_walks_agree(s, sub.packed, ray);
-  }
+      for (const Ray& ray : hard_rays(sub, s.bounds(), rng)) hits += expect_walks_agree(s, sub, ray);
+  });
   EXPECT_GT(rays, 0);
   EXPECT_GT(hits, 0);
 }
@@ -167,18 +175,13 @@ TEST_P(SingleWalkScene, RunsOfRaysEqualOneRayAtATime) {
   const std::vector<Ray> hard = hard_rays(bvh.packed, s.bounds(), rng);
   ASSERT_GT(hard.size(), 100u);
   expect_run_agrees(s, bvh.packed, hard, rng);
-  const Camera cam(s.camera, 64, 64);
-  Subtree sub;
-  TraceCounters counters;
-  for (int tile = 0; tile < 64; tile += 9) {
-    const int x0 = 8 * (tile % 8), y0 = 8 * (tile / 8);
-    build_subtree(bvh, pyramid_planes(cam, x0, y0, x0 + 8, y0 + 8), sub, counters);
+  for_sample_tiles(s, bvh, [&](const PackedTree& sub, const Camera& cam, int x0, int y0, int tile) {
     std::vector<Ray> tile_rays;
     for (int y = y0; y < y0 + 8; ++y)
       for (int x = x0; x < x0 + 8; ++x) tile_rays.push_back(cam.pixel_ray(x, y));
-    expect_run_agrees(s, sub.packed, tile_rays, rng);
-    if (tile == 27) expect_run_agrees(s, sub.packed, hard_rays(sub.packed, s.bounds(), rng), rng);
-  }
+    expect_run_agrees(s, sub, tile_rays, rng);
+    if (tile == 27) expect_run_agrees(s, sub, hard_rays(sub, s.bounds(), rng), rng);
+  });
 }
 
 INSTANTIATE_TEST_SUITE_P(Builtins, SingleWalkScene,
