@@ -185,6 +185,7 @@ inline bool triangle_surely_missed(const Triangle& tri, const TriangleRejectRay&
 #else
 
 struct TriangleRejectRay {
+  bool in_range = false;  // read and kept by the walk's per-origin memo; nothing to skip here
   TriangleRejectRay() = default;
   explicit TriangleRejectRay(const Ray&) {}
   void assume_within(const Bounds3&) {}
