@@ -162,12 +162,61 @@ void report_interrupted_fit(const cal::MachineFile& file, const std::string& spe
   write_json_file(json, j);
 }
 
+struct CalibrateFlags {
+  std::string fit, free, config, out, json, csv;
+  PredictFlags predict;
+};
+
+// gcsim calibrate's run: the fit, its report, and the files it writes.
+void run_calibrate(const CalibrateFlags& f) {
+  for (const auto& [path, option] : {std::pair{f.out, "--out"}, {f.json, "--json"}, {f.csv, "--csv"}})
+    pipeline::check_writable(path, option);  // before the fit's many runs
+  const cal::MachineFile file(f.config);
+  const std::vector<cal::MeasuredTable> tables = cal::tables_from_specs(f.fit);
+  const std::vector<std::string> free = cal::split_list(f.free);
+  for (const auto& k : free) file.check_free_key(k);
+  cal::Predictor predictor(settings(f.predict));
+  const std::string command = "gcsim calibrate --fit " + f.fit + " --free " + f.free +
+                              (f.config.empty() ? "" : " --config " + f.config) + non_default_flags(f.predict) +
+                              " --out " + f.out;
+  fmt::print("fitting {} to table(s) {} on {} ...\n", f.free, f.fit, file.source());
+  std::fflush(stdout);
+  FitProgress progress;
+  predictor.on_run([&](int done, int total) { progress.run(done, total); });
+  cal::CalibrationResult r;
+  try {
+    r = cal::calibrate(file, tables, free, predictor, [&](const cal::CalibrationTrial& t) { progress.trial(t); });
+  } catch (const parix::Interrupted&) {
+    progress.line.clear();
+    report_interrupted_fit(file, f.fit, f.out, f.json, progress, command);
+    throw;
+  }
+  progress.line.clear();
+  fmt::print("{}", workload_lines(predictor, f.predict.energy, "workload  "));
+  cal::print_cells(r.cells, tables);
+  cal::print_summaries(cal::summarize(r.cells));
+  fmt::print("\n{} after {} iterations ({} simulated runs){}\n", r.fit.converged ? "converged" : "NOT converged",
+             r.fit.iterations, predictor.runs(), r.fit.converged ? "" : ": " + r.fit.reason);
+  for (const auto& w : r.warnings) fmt::print(stderr, "gcsim: warning: {}\n", w);
+  for (const auto& p : r.parameters)
+    fmt::print("  {:<32} {:>12.6g} +- {:<10.2g} (was {:.6g})\n", p.key, p.value, p.sigma, p.initial);
+  std::ofstream(f.out) << cal::fitted_file_text(file, f.out, f.fit, r, command,
+                                                 workload_lines(predictor, f.predict.energy, "#   "));
+  fmt::print("wrote {}\n", f.out);
+  if (!f.csv.empty()) cal::write_csv(f.csv, r.cells);
+  if (!f.json.empty()) {
+    nlohmann::json j = cal::to_json(r.cells, cal::summarize(r.cells));
+    for (const auto& p : r.parameters) j["parameters"].push_back({{"key", p.key}, {"value", p.value}, {"sigma", p.sigma}, {"initial", p.initial}});
+    j["converged"] = r.fit.converged;
+    write_json_file(f.json, j);
+  }
+  if (!r.fit.converged)
+    throw pipeline::RunFailure(fmt::format("the fit did not converge after {} iterations; {} holds its last parameters",
+                                           r.fit.iterations, f.out));
+}
+
 void add_calibrate(CommandGroups& g) {
-  struct Flags {
-    std::string fit, free, config, out, json, csv;
-    PredictFlags predict;
-  };
-  auto f = std::make_shared<Flags>();
+  auto f = std::make_shared<CalibrateFlags>();
   CLI::App* cmd = g.app->add_subcommand(
       "calibrate",
       "Fit free parameters of a machine file to measured tables by least squares.\n\n"
@@ -197,52 +246,7 @@ void add_calibrate(CommandGroups& g) {
       "      --free network.connect_base_us,network.connect_per_hop_us,network.link_bandwidth_mbps,"
       "ops.hemicube_pixel,ops.form_factor_merge \\\n"
       "      --config gc-powerplus-mechanisms.toml --out gc-powerplus-calibrated.toml");
-  cmd->callback([f] {
-    for (const auto& [path, option] : {std::pair{f->out, "--out"}, {f->json, "--json"}, {f->csv, "--csv"}})
-      pipeline::check_writable(path, option);  // before the fit's many runs
-    const cal::MachineFile file(f->config);
-    const std::vector<cal::MeasuredTable> tables = cal::tables_from_specs(f->fit);
-    const std::vector<std::string> free = cal::split_list(f->free);
-    for (const auto& k : free) file.check_free_key(k);
-    cal::Predictor predictor(settings(f->predict));
-    const std::string command = "gcsim calibrate --fit " + f->fit + " --free " + f->free +
-                                (f->config.empty() ? "" : " --config " + f->config) + non_default_flags(f->predict) +
-                                " --out " + f->out;
-    fmt::print("fitting {} to table(s) {} on {} ...\n", f->free, f->fit, file.source());
-    std::fflush(stdout);
-    FitProgress progress;
-    predictor.on_run([&](int done, int total) { progress.run(done, total); });
-    cal::CalibrationResult r;
-    try {
-      r = cal::calibrate(file, tables, free, predictor, [&](const cal::CalibrationTrial& t) { progress.trial(t); });
-    } catch (const parix::Interrupted&) {
-      progress.line.clear();
-      report_interrupted_fit(file, f->fit, f->out, f->json, progress, command);
-      throw;
-    }
-    progress.line.clear();
-    fmt::print("{}", workload_lines(predictor, f->predict.energy, "workload  "));
-    cal::print_cells(r.cells, tables);
-    cal::print_summaries(cal::summarize(r.cells));
-    fmt::print("\n{} after {} iterations ({} simulated runs){}\n", r.fit.converged ? "converged" : "NOT converged",
-               r.fit.iterations, predictor.runs(), r.fit.converged ? "" : ": " + r.fit.reason);
-    for (const auto& w : r.warnings) fmt::print(stderr, "gcsim: warning: {}\n", w);
-    for (const auto& p : r.parameters)
-      fmt::print("  {:<32} {:>12.6g} +- {:<10.2g} (was {:.6g})\n", p.key, p.value, p.sigma, p.initial);
-    std::ofstream(f->out) << cal::fitted_file_text(file, f->out, f->fit, r, command,
-                                                   workload_lines(predictor, f->predict.energy, "#   "));
-    fmt::print("wrote {}\n", f->out);
-    if (!f->csv.empty()) cal::write_csv(f->csv, r.cells);
-    if (!f->json.empty()) {
-      nlohmann::json j = cal::to_json(r.cells, cal::summarize(r.cells));
-      for (const auto& p : r.parameters) j["parameters"].push_back({{"key", p.key}, {"value", p.value}, {"sigma", p.sigma}, {"initial", p.initial}});
-      j["converged"] = r.fit.converged;
-      write_json_file(f->json, j);
-    }
-    if (!r.fit.converged)
-      throw pipeline::RunFailure(fmt::format("the fit did not converge after {} iterations; {} holds its last parameters",
-                                             r.fit.iterations, f->out));
-  });
+  cmd->callback([f] { run_calibrate(*f); });
 }
 
 // The tables to validate: those named, or every built-in table not wholly fitted; cells the fit

@@ -302,6 +302,23 @@ GCSIM_AVX2 inline bool push(Entry* stack, int& top, NodeRef node, unsigned lanes
   return true;
 }
 
+// The walk's results for the lanes it traced: their hits, and their counts added to their tallies.
+GCSIM_AVX2 inline void write_back(const State& s, const Counts& k, unsigned lanes, Hit hits[], TestTally tallies[]) {
+  alignas(32) std::int32_t boxes[8], spheres[8], triangles[8], sorts[8];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(boxes), k.boxes);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(spheres), k.spheres);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(triangles), k.triangles);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(sorts), k.sorts);
+  for (unsigned m = lanes; m; m &= m - 1) {
+    const int i = std::countr_zero(m);
+    hits[i] = s.hit[i];
+    tallies[i].boxes += boxes[i];
+    tallies[i].spheres += spheres[i];
+    tallies[i].triangles += triangles[i];
+    tallies[i].sorts += sorts[i];
+  }
+}
+
 // The walk of ordered<> in traversal.cpp for all lanes at once; false (nothing written) when it
 // would need more stack than the single-ray walk has.
 template <int kOctant>
@@ -366,19 +383,7 @@ GCSIM_AVX2 bool walk(const PrimitiveArrays& prims, const PackedTree& tree, const
     node_lanes = e.lanes;
     node_entry = _mm256_load_ps(e.entry);
   }
-  alignas(32) std::int32_t boxes[8], spheres[8], triangles[8], sorts[8];
-  _mm256_store_si256(reinterpret_cast<__m256i*>(boxes), k.boxes);
-  _mm256_store_si256(reinterpret_cast<__m256i*>(spheres), k.spheres);
-  _mm256_store_si256(reinterpret_cast<__m256i*>(triangles), k.triangles);
-  _mm256_store_si256(reinterpret_cast<__m256i*>(sorts), k.sorts);
-  for (unsigned m = lanes; m; m &= m - 1) {
-    const int i = std::countr_zero(m);
-    hits[i] = s.hit[i];
-    tallies[i].boxes += boxes[i];
-    tallies[i].spheres += spheres[i];
-    tallies[i].triangles += triangles[i];
-    tallies[i].sorts += sorts[i];
-  }
+  write_back(s, k, lanes, hits, tallies);
   return true;
 }
 
