@@ -3,10 +3,9 @@
 // cases: mixed octants in one packet, rays grazing box edges and lying in slab planes, lanes
 // masked off, lanes that start with a hit, empty and one-primitive trees. And the camera's four-
 // at-a-time rays equal its single ones bit for bit.
-#include <array>
-
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstring>
 #include <string_view>
 #include <utility>
@@ -151,7 +150,7 @@ TEST(PacketTraversal, CameraRaysFourAtATimeEqualSingleRays) {
   std::array<int, 3> kz_seen{};
   // 9 x 9: the centre pixel's ray is the view direction itself, where |components| tie exactly.
   for (const scene::Camera& view : views)
-  for (const auto [width, height] : {std::pair{7, 10}, std::pair{9, 9}, std::pair{64, 67}}) {
+  for (const auto& [width, height] : {std::pair{7, 10}, std::pair{9, 9}, std::pair{64, 67}}) {
     const Camera cam(view, width, height);
     std::vector<int> xs, ys;
     for (int y = 0; y < height; ++y)
