@@ -1,7 +1,6 @@
 #include "apps/raytrace/primary_tracer.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cstdint>
 
 #include "apps/common/geometry/packet_traversal.hpp"
@@ -29,7 +28,7 @@ void in_blocks(int x0, int y0, int x1, int y1, F&& f) {
 struct PrimaryTracer::Region {
   int x0, y0, width;
   std::vector<Hit>* hits;
-  std::vector<char> traced;
+  std::vector<char>& traced;
   Hit& at(int x, int y) { return (*hits)[std::size_t(y - y0) * width + (x - x0)]; }
   char& done(int x, int y) { return traced[std::size_t(y - y0) * width + (x - x0)]; }
 };
@@ -131,8 +130,9 @@ void PrimaryTracer::trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>&
     subtree_from_filtered(bvh_, row_, camera_.column_plane(x0), flipped(camera_.column_plane(x1)), subtree_, counters);
   }
   if (algorithm_ == Algorithm::A4 && !subtree_.empty) {
-    Region r{x0, y0, w, &hits, std::vector<char>(std::size_t(w) * h, 0)};
-    trace_uniform_regions(r, x0, y0, x1 - 1, y1 - 1, tally, counters);
+    traced_.assign(std::size_t(w) * h, 0);
+    Region r{x0, y0, w, &hits, traced_};
+    trace_uniform_regions(r, h, tally, counters);
   } else if (uses_subtree(algorithm_) && subtree_.empty) {
     // Nothing meets the subregion: every pixel keeps its empty hit, and no ray is even made.
   } else {
@@ -153,63 +153,43 @@ void PrimaryTracer::trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>&
   counters.child_sorts += tally.sorts;
 }
 
-// Section 2.2.3 on the pixel rectangle with corner pixels (rx0, ry0) and (rx1, ry1), inclusive.
-// The corner rays are traced; if they all hit the same primitive P and nothing in the subtree can
-// lie in front of P inside the region, every pixel sees P. Otherwise the region is halved along its
-// longer side, down to regions whose pixels are all corners. The halves are taken a level at a
-// time, not depth first: which pixels get traced, and what each counts, does not depend on the
-// order (sibling regions share no pixel), and a level's new corners are traced in packets.
-void PrimaryTracer::trace_uniform_regions(Region& r, int rx0, int ry0, int rx1, int ry1, TestTally& tally,
-                                          TraceCounters& counters) {
-  level_.assign(1, Rect{rx0, ry0, rx1, ry1});
-  // A level's new corners as bits, 64 pixels of a row to a word: read out in 4 x 2 blocks (64
-  // is a multiple of 4, so no block straddles two words).
-  const int words = (rx1 - rx0) / 64 + 1, rows = ry1 - ry0 + 1;
-  pending_.assign(std::size_t(words) * (rows + 1), 0);  // a spare zero row below the last
-  auto row = [&](int y) { return &pending_[std::size_t(y - ry0) * words]; };
-  while (!level_.empty()) {
-    for (const Rect& q : level_) {
-      const int cx[4] = {q.x0, q.x1, q.x0, q.x1}, cy[4] = {q.y0, q.y0, q.y1, q.y1};
-      for (int i = 0; i < 4; ++i) {
-        if (r.done(cx[i], cy[i])) continue;
-        r.done(cx[i], cy[i]) = 1;
-        row(cy[i])[(cx[i] - rx0) >> 6] |= std::uint64_t(1) << ((cx[i] - rx0) & 63);
-      }
+// Section 2.2.3 on the tile. The corner rays of a region are traced; if they all hit the same
+// primitive P and nothing in the subtree can lie in front of P inside the region, every pixel sees
+// P. Otherwise the region is halved along its longer side, down to regions whose pixels are all
+// corners. The halves are taken a level at a time, not depth first: which pixels get traced, and
+// what each counts, does not depend on the order (sibling regions share no pixel), and a level's
+// new corners are traced in packets. A corner that a filled region holds is already done.
+void PrimaryTracer::trace_uniform_regions(Region& r, int height, TestTally& tally, TraceCounters& counters) {
+  const RegionSchedule& schedule = schedule_for(r.width, height);
+  reached_.assign(1, 1);
+  for (std::size_t l = 0; l < schedule.levels().size(); ++l) {
+    const RegionLevel& level = schedule.levels()[l];
+    if (l > 0) {  // a region is reached when the region it halves was reached and not filled
+      reached_.resize(level.rects.size());
+      bool any = false;
+      for (std::size_t i = 0; i < level.rects.size(); ++i) any |= (reached_[i] = halved_[level.parent[i]]) != 0;
+      if (!any) return;
     }
-    pixels_.clear();  // the new corners, neighbours next to each other for the packets
-    for (int y = ry0; y <= ry1; y += 2)
-      for (int w = 0; w < words; ++w) {
-        std::uint64_t& a = row(y)[w];
-        std::uint64_t& b = row(y + 1)[w];
-        for (std::uint64_t m = a | b; m;) {
-          const std::uint64_t block = std::uint64_t(15) << (std::countr_zero(m) & ~3);
-          for (std::uint64_t k = a & block; k; k &= k - 1) pixels_.push_back({rx0 + 64 * w + std::countr_zero(k), y});
-          for (std::uint64_t k = b & block; k; k &= k - 1) pixels_.push_back({rx0 + 64 * w + std::countr_zero(k), y + 1});
-          m &= ~block;
-        }
-        a = b = 0;
-      }
+    pixels_.clear();
+    for (const PixelOffset& c : level.new_corners) {
+      char& done = r.done(r.x0 + c.x, r.y0 + c.y);
+      if (!done) pixels_.push_back({r.x0 + c.x, r.y0 + c.y});
+      done = 1;
+    }
     trace_pixels(pixels_, r.x0, r.y0, r.width, *r.hits, tally, counters);
-    next_.clear();
-    for (const Rect& q : level_)
-      if (!fill_if_uniform(r, q, tally, counters)) split(q, next_);
-    std::swap(level_, next_);
+    halved_.assign(level.rects.size(), 0);
+    for (std::size_t i = 0; i < level.rects.size(); ++i) {
+      if (!reached_[i]) continue;
+      const Rect& q = level.rects[i];
+      halved_[i] = !fill_if_uniform(r, {r.x0 + q.x0, r.y0 + q.y0, r.x0 + q.x1, r.y0 + q.y1}, tally, counters);
+    }
   }
 }
 
-// Appends the halves of q, along its longer side, unless every pixel of q is a corner.
-void PrimaryTracer::split(const Rect& q, std::vector<Rect>& out) {
-  const int w = q.x1 - q.x0 + 1, h = q.y1 - q.y0 + 1;
-  if (w <= 2 && h <= 2) return;
-  if (w >= h) {
-    const int mid = q.x0 + (w - 1) / 2;
-    out.push_back({q.x0, q.y0, mid, q.y1});
-    out.push_back({mid + 1, q.y0, q.x1, q.y1});
-  } else {
-    const int mid = q.y0 + (h - 1) / 2;
-    out.push_back({q.x0, q.y0, q.x1, mid});
-    out.push_back({q.x0, mid + 1, q.x1, q.y1});
-  }
+const RegionSchedule& PrimaryTracer::schedule_for(int width, int height) {
+  for (const RegionSchedule& s : schedules_)
+    if (s.width() == width && s.height() == height) return s;
+  return schedules_.emplace_back(width, height);
 }
 
 // The uniformity test of q, whose corners are traced; fills q in when it is uniform.

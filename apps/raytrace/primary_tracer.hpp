@@ -14,6 +14,7 @@
 #include "apps/raytrace/geometry_names.hpp"
 #include "apps/raytrace/occlusion_check.hpp"
 #include "apps/raytrace/ray_classification.hpp"
+#include "apps/raytrace/region_schedule.hpp"
 #include "apps/raytrace/subtree.hpp"
 
 namespace gcsim::raytrace {
@@ -37,7 +38,7 @@ class PrimaryTracer {
  private:
   struct Region;
   struct Pixel { int x, y; };
-  struct Rect { int x0, y0, x1, y1; };  // corner pixels, inclusive
+  using Rect = RegionRect;
   void trace_pixel(int x, int y, Hit& hit, TestTally& tally, TraceCounters& counters);
   // The ordered traversal's tree (A2, A3, A4), or null: the algorithms traced in packets.
   const PackedTree* packet_tree() const;
@@ -45,8 +46,8 @@ class PrimaryTracer {
   // packets of eight in the order given where the algorithm allows (same hits and counts).
   void trace_pixels(const std::vector<Pixel>& pixels, int x0, int y0, int width, std::vector<Hit>& hits, TestTally& tally,
                     TraceCounters& counters);
-  void trace_uniform_regions(Region& r, int rx0, int ry0, int rx1, int ry1, TestTally& tally, TraceCounters& counters);
-  static void split(const Rect& q, std::vector<Rect>& out);
+  void trace_uniform_regions(Region& r, int height, TestTally& tally, TraceCounters& counters);
+  const RegionSchedule& schedule_for(int width, int height);
   bool fill_if_uniform(Region& r, const Rect& q, TestTally& tally, TraceCounters& counters);
   float farthest_possible_hit(int prim, const Region& r, int rx0, int ry0, int rx1, int ry1) const;
 
@@ -62,8 +63,9 @@ class PrimaryTracer {
   std::unique_ptr<RayClassifier> classifier_;
   std::unique_ptr<OcclusionCheck> occlusion_;  // A4's
   std::vector<Pixel> pixels_;      // scratch: the pixels a tile or a level of regions traces
-  std::vector<Rect> level_, next_;  // scratch: A4's regions, a level at a time
-  std::vector<std::uint64_t> pending_;  // scratch: A4's corners to trace at this level, as bits
+  std::vector<RegionSchedule> schedules_;  // A4's halving, per tile shape met so far
+  std::vector<char> traced_;               // scratch: A4's pixels of the tile already hit or filled
+  std::vector<char> reached_, halved_;     // scratch: A4's regions of a level reached, and halved
 };
 
 }  // namespace gcsim::raytrace
