@@ -28,13 +28,14 @@ struct PreparedPlane {
 
 // Two boxes as FourPlanes::sides reads them, box a in lanes 0 and 1, box b in lanes 2 and 3:
 // two children against a subtree's two planes (FourPlanes of c, d, c, d) in one pass.
+// |centre| is not kept: clearing the sign bits gives it exactly, and a row's lanes stay a third
+// smaller in the cache.
 struct BoxLanes {
-  __m128 centre[3], half[3], abs_centre[3];
+  __m128 centre[3], half[3];
   BoxLanes(const BoxCentre& a, const BoxCentre& b) {
     for (int k = 0; k < 3; ++k) {
       centre[k] = _mm_setr_ps(a.centre[k], a.centre[k], b.centre[k], b.centre[k]);
       half[k] = _mm_setr_ps(a.half[k], a.half[k], b.half[k], b.half[k]);
-      abs_centre[k] = _mm_setr_ps(a.abs_centre[k], a.abs_centre[k], b.abs_centre[k], b.abs_centre[k]);
     }
   }
 };
@@ -88,7 +89,10 @@ class FourPlanes {
     };
     const __m128 s = _mm_sub_ps(dot(lanes_[0], lanes_[1], lanes_[2], b.centre), lanes_[3]);
     const __m128 r = dot(lanes_[4], lanes_[5], lanes_[6], b.half);
-    finish(s, r, dot(lanes_[4], lanes_[5], lanes_[6], b.abs_centre), inside_bits, outside_bits);
+    const __m128 sign = _mm_set1_ps(-0.0f);
+    const __m128 abs_centre[3] = {_mm_andnot_ps(sign, b.centre[0]), _mm_andnot_ps(sign, b.centre[1]),
+                                  _mm_andnot_ps(sign, b.centre[2])};
+    finish(s, r, dot(lanes_[4], lanes_[5], lanes_[6], abs_centre), inside_bits, outside_bits);
   }
 
  private:

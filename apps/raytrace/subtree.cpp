@@ -5,43 +5,62 @@
 namespace gcsim::raytrace {
 namespace {
 
+// Counts the tests of a box by the planes `inside` does not yet hold it in, from its bits of a
+// two-plane classification; false if it lies outside one. Plane 1 is not tested after plane 0
+// drops the box, as one scalar classify() after another would not.
+bool survives_planes(unsigned in, unsigned out_bits, std::uint8_t& inside, std::int64_t& tests) {
+  for (int i = 0; i < 2; ++i) {
+    if (inside & (1u << i)) continue;
+    ++tests;
+    if (out_bits >> i & 1u) return false;
+    if (in >> i & 1u) inside |= (1u << i);
+  }
+  return true;
+}
+
 struct FilterPass {
   using Entry = PlaneFilteredTree::Entry;
   const Bvh& bvh;
-  const Plane* planes;  // two
   PlaneFilteredTree& out;
+  // Both children of a node classified in one pass (lanes 2 and 3 repeat the planes).
+  FourPlanes both;
   std::int64_t tests = 0;
 
   const Bounds3& box(NodeRef r) const { return is_primitive(r) ? bvh.prim_bounds[primitive_of(r)] : bvh.nodes[r].box; }
 
-  // Returns the entry index, or -1 when r lies outside a plane.
-  int visit(NodeRef r, std::uint8_t inside) {
-    const BoxCentre b(box(r));
-    for (int i = 0; i < 2; ++i) {
-      if (inside & (1u << i)) continue;
-      ++tests;
-      const Side s = classify(b, planes[i], abs_components(planes[i].normal));
-      if (s == Side::outside) return -1;
-      if (s == Side::inside) inside |= (1u << i);
-    }
+  // The entry of r, which survives with flags `inside` and box b; -1 when nothing below it does.
+  // A node's children are classified here, both at once, in the lanes the row keeps for them.
+  int visit(NodeRef r, std::uint8_t inside, const BoxCentre& b) {
     const int at = static_cast<int>(out.entries.size());
-    out.entries.push_back({r, inside, {-1, -1}, -1, b});
-    if (!is_primitive(r)) {
-      const std::size_t lanes_before = out.children.size();
-      const int c0 = visit(bvh.nodes[r].child[0], inside);
-      const int c1 = visit(bvh.nodes[r].child[1], inside);
-      if (c0 < 0 && c1 < 0) {
-        out.entries.resize(at);  // nothing below survives: drop the node too
-        out.children.erase(out.children.begin() + std::ptrdiff_t(lanes_before), out.children.end());
-        return -1;
-      }
-      Entry& e = out.entries[at];
-      e.child[0] = c0;
-      e.child[1] = c1;
-      e.children = static_cast<int>(out.children.size());
-      // A dropped child's lanes hold an empty box: classified, never read.
+    out.entries.push_back({r, inside, {-1, -1}, -1, b, box(r)});
+    if (is_primitive(r)) return at;
+    const BvhNode& node = bvh.nodes[r];
+    const BoxCentre boxes[2] = {BoxCentre(box(node.child[0])), BoxCentre(box(node.child[1]))};
+    const BoxLanes lanes(boxes[0], boxes[1]);
+    unsigned in = 0, out_bits = 0;  // not read when the node is inside both planes
+    if ((inside & 3u) != 3u) both.sides(lanes, in, out_bits);
+    const std::size_t lanes_before = out.children.size();
+    int c[2];
+    for (int k = 0; k < 2; ++k) {
+      std::uint8_t child_inside = inside;
+      c[k] = survives_planes(in >> (2 * k) & 3u, out_bits >> (2 * k) & 3u, child_inside, tests)
+                 ? visit(node.child[k], child_inside, boxes[k])
+                 : -1;
+    }
+    if (c[0] < 0 && c[1] < 0) {
+      out.entries.resize(at);  // nothing below survives: drop the node too
+      out.children.erase(out.children.begin() + std::ptrdiff_t(lanes_before), out.children.end());
+      return -1;
+    }
+    Entry& e = out.entries[at];
+    e.child[0] = c[0];
+    e.child[1] = c[1];
+    e.children = static_cast<int>(out.children.size());
+    if (c[0] >= 0 && c[1] >= 0) {
+      out.children.push_back(lanes);
+    } else {  // a dropped child's lanes hold an empty box: classified, never read
       const BoxCentre none;
-      out.children.emplace_back(c0 >= 0 ? out.entries[c0].box : none, c1 >= 0 ? out.entries[c1].box : none);
+      out.children.emplace_back(c[0] >= 0 ? boxes[0] : none, c[1] >= 0 ? boxes[1] : none);
     }
     return at;
   }
@@ -63,21 +82,10 @@ struct SubtreePass {
     int entry;
   };
 
-  const Bounds3& box_of(int e) const {
-    const NodeRef r = row.entries[e].ref;
-    return is_primitive(r) ? bvh.prim_bounds[primitive_of(r)] : bvh.nodes[r].box;
-  }
+  const Bounds3& box_of(int e) const { return row.entries[e].bounds; }
 
-  // Counts the tests of a box by the planes `inside` does not yet hold it in, from its bits of
-  // the classification; false if it lies outside one.
   bool survives(unsigned in, unsigned out_bits, std::uint8_t& inside) {
-    for (int i = 0; i < 2; ++i) {
-      if (inside & (1u << i)) continue;
-      ++tests;
-      if (out_bits >> i & 1u) return false;  // plane 1 is not tested after plane 0 drops the box
-      if (in >> i & 1u) inside |= (1u << i);
-    }
-    return true;
+    return survives_planes(in, out_bits, inside, tests);
   }
 
   // The part of entry e, which survives with flags `inside`. Both children are classified here
@@ -113,9 +121,18 @@ struct SubtreePass {
 void filter_by_two_planes(const Bvh& bvh, const Plane& a, const Plane& b, PlaneFilteredTree& out, TraceCounters& counters) {
   out.entries.clear();
   out.children.clear();
-  const Plane planes[2] = {a, b};
-  FilterPass pass{bvh, planes, out};
-  out.root = pass.visit(bvh.root, 0);
+  FilterPass pass{bvh, out, FourPlanes({a, b, a, b})};
+  const BoxCentre root_box(pass.box(bvh.root));
+  std::uint8_t inside = 0;
+  bool outside = false;
+  for (int i = 0; i < 2 && !outside; ++i) {  // the root alone, one plane at a time
+    ++pass.tests;
+    const Plane& p = i == 0 ? a : b;
+    const Side side = classify(root_box, p, abs_components(p.normal));
+    outside = side == Side::outside;
+    if (side == Side::inside) inside |= std::uint8_t(1u << i);
+  }
+  out.root = outside ? -1 : pass.visit(bvh.root, inside, root_box);
   counters.plane_tests += pass.tests;
   counters.subtree_nodes += static_cast<std::int64_t>(out.entries.size());
 }

@@ -40,6 +40,7 @@ class PlaneFilteredTree {
     std::int32_t child[2];  // entries; -1 where the child was dropped
     std::int32_t children;  // a node's children's boxes in `children`; -1 for a primitive
     BoxCentre box;          // its box, prepared: every subregion of the row classifies it
+    Bounds3 bounds;         // the same box as it is: what a subtree's node holds of it
   };
   std::vector<Entry> entries;
   // Both children of a node in the lanes a subregion's two planes are classified in at once.

@@ -45,6 +45,18 @@ TEST(FourPlanes, AgreesWithScalarClassify) {
       FourPlanes({&prepared[0], &prepared[1], &prepared[2], &prepared[3]}).sides(BoxCentre(box), in_b, out_b);
       ASSERT_EQ(in_a, in_b) << "case " << i;
       ASSERT_EQ(out_a, out_b) << "case " << i;
+      // Two boxes in lanes (a subtree's two children against planes 0 and 1): box lane by lane,
+      // its |centre| made from the centre's bits, answers as the scalar test of each lane.
+      Bounds3 other = Bounds3::of_point(-v());
+      other.extend(v());
+      const std::array<Plane, 4> twice{planes[0], planes[1], planes[0], planes[1]};
+      unsigned in_l, out_l;
+      FourPlanes(twice).sides(BoxLanes(BoxCentre(box), BoxCentre(other)), in_l, out_l);
+      for (int lane = 0; lane < 4; ++lane) {
+        const Side side = classify(lane < 2 ? box : other, twice[lane]);
+        ASSERT_EQ(in_l >> lane & 1u, unsigned(side == Side::inside)) << "case " << i << " lane " << lane;
+        ASSERT_EQ(out_l >> lane & 1u, unsigned(side == Side::outside)) << "case " << i << " lane " << lane;
+      }
       outside += expected;
       ++total;
     }
