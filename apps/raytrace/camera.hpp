@@ -37,7 +37,7 @@ class Camera {
     return d * (1.0f / std::sqrt(glm::dot(d, d)));
   }
   Ray pixel_ray(int x, int y) const { return Ray(eye_, direction(x + 0.5f, y + 0.5f)); }
-  // out[i] = pixel_ray(x[i], y[i]) for i < n, bit for bit, four at a time (packets: the square
+  // out[i] = pixel_ray(x[i], y[i]) for i < n, bit for bit, eight or four at a time (packets: the square
   // root and divisions of one ray alone are a long chain of latency).
   void pixel_rays(const int* x, const int* y, int n, Ray* out) const;
 
