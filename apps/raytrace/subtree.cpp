@@ -28,11 +28,11 @@ struct FilterPass {
 
   const Bounds3& box(NodeRef r) const { return is_primitive(r) ? bvh.prim_bounds[primitive_of(r)] : bvh.nodes[r].box; }
 
-  // The entry of r, which survives with flags `inside` and box b; -1 when nothing below it does.
-  // A node's children are classified here, both at once, in the lanes the row keeps for them.
-  int visit(NodeRef r, std::uint8_t inside, const BoxCentre& b) {
+  // The entry of r, which survives with flags `inside`; -1 when nothing below it does. A node's
+  // children are classified here, both at once, in the lanes the row keeps for them.
+  int visit(NodeRef r, std::uint8_t inside) {
     const int at = static_cast<int>(out.entries.size());
-    out.entries.push_back({r, inside, {-1, -1}, -1, b, box(r)});
+    out.entries.push_back({r, inside, {-1, -1}, -1, box(r)});
     if (is_primitive(r)) return at;
     const BvhNode& node = bvh.nodes[r];
     const BoxCentre boxes[2] = {BoxCentre(box(node.child[0])), BoxCentre(box(node.child[1]))};
@@ -44,7 +44,7 @@ struct FilterPass {
     for (int k = 0; k < 2; ++k) {
       std::uint8_t child_inside = inside;
       c[k] = survives_planes(in >> (2 * k) & 3u, out_bits >> (2 * k) & 3u, child_inside, tests)
-                 ? visit(node.child[k], child_inside, boxes[k])
+                 ? visit(node.child[k], child_inside)
                  : -1;
     }
     if (c[0] < 0 && c[1] < 0) {
@@ -132,7 +132,8 @@ void filter_by_two_planes(const Bvh& bvh, const Plane& a, const Plane& b, PlaneF
     outside = side == Side::outside;
     if (side == Side::inside) inside |= std::uint8_t(1u << i);
   }
-  out.root = outside ? -1 : pass.visit(bvh.root, inside, root_box);
+  out.root = outside ? -1 : pass.visit(bvh.root, inside);
+  out.root_box = root_box;
   counters.plane_tests += pass.tests;
   counters.subtree_nodes += static_cast<std::int64_t>(out.entries.size());
 }
@@ -147,7 +148,7 @@ void subtree_from_filtered(const Bvh& bvh, const PlaneFilteredTree& row, const P
   SubtreePass pass{bvh, row, planes, out.packed};
   std::uint8_t inside = 0;
   unsigned in, out_bits;
-  pass.both.sides(row.entries[row.root].box, in, out_bits);
+  pass.both.sides(row.root_box, in, out_bits);
   const SubtreePass::Part root =
       pass.survives(in, out_bits, inside) ? pass.visit(row.root, inside) : SubtreePass::Part{0, -1};
   if (root.entry >= 0) {

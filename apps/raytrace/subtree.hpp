@@ -39,13 +39,13 @@ class PlaneFilteredTree {
     std::uint8_t inside;    // bit i: entirely inside plane i
     std::int32_t child[2];  // entries; -1 where the child was dropped
     std::int32_t children;  // a node's children's boxes in `children`; -1 for a primitive
-    BoxCentre box;          // its box, prepared: every subregion of the row classifies it
-    Bounds3 bounds;         // the same box as it is: what a subtree's node holds of it
+    Bounds3 bounds;         // its box: what a subtree's node holds of it
   };
   std::vector<Entry> entries;
   // Both children of a node in the lanes a subregion's two planes are classified in at once.
   std::vector<BoxLanes> children;
   int root = -1;  // -1: nothing survives
+  BoxCentre root_box;  // the root entry's box, prepared: every subregion of the row classifies it
 };
 
 // Filters the whole BVH by planes a and b (bits 0 and 1).

@@ -26,7 +26,7 @@ struct ReferencePass {
     for (int i = 0; i < 2; ++i) {
       if (inside & (1u << i)) continue;
       ++tests;
-      const Side s = classify(entry.box, planes[i], abs_components(planes[i].normal));
+      const Side s = classify(BoxCentre(entry.bounds), planes[i], abs_components(planes[i].normal));
       if (s == Side::outside) return false;
       if (s == Side::inside) inside |= (1u << i);
     }
