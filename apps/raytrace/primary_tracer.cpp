@@ -127,7 +127,7 @@ void PrimaryTracer::trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>&
       if (!row_counters) counters += row_cost_;
     }
     if (row_counters) *row_counters = row_cost_;
-    subtree_from_filtered(bvh_, row_, camera_.column_plane(x0), flipped(camera_.column_plane(x1)), subtree_, counters);
+    subtree_from_filtered(row_, camera_.column_plane(x0), flipped(camera_.column_plane(x1)), subtree_, counters);
   }
   if (algorithm_ == Algorithm::A4 && !subtree_.empty) {
     traced_.assign(std::size_t(w) * h, 0);

@@ -67,7 +67,6 @@ struct FilterPass {
 };
 
 struct SubtreePass {
-  const Bvh& bvh;
   const PlaneFilteredTree& row;
   const Plane* planes;  // two
   PackedTree& out;
@@ -138,14 +137,14 @@ void filter_by_two_planes(const Bvh& bvh, const Plane& a, const Plane& b, PlaneF
   counters.subtree_nodes += static_cast<std::int64_t>(out.entries.size());
 }
 
-void subtree_from_filtered(const Bvh& bvh, const PlaneFilteredTree& row, const Plane& c, const Plane& d, Subtree& out,
+void subtree_from_filtered(const PlaneFilteredTree& row, const Plane& c, const Plane& d, Subtree& out,
                            TraceCounters& counters) {
   out.packed.nodes.clear();
   out.empty = out.packed.empty = true;
   out.root = out.packed.root = 0;
   if (row.root < 0) return;
   const Plane planes[2] = {c, d};
-  SubtreePass pass{bvh, row, planes, out.packed};
+  SubtreePass pass{row, planes, out.packed};
   std::uint8_t inside = 0;
   unsigned in, out_bits;
   pass.both.sides(row.root_box, in, out_bits);
@@ -163,7 +162,7 @@ void subtree_from_filtered(const Bvh& bvh, const PlaneFilteredTree& row, const P
 void build_subtree(const Bvh& bvh, const std::array<Plane, 4>& planes, Subtree& out, TraceCounters& counters) {
   PlaneFilteredTree filtered;
   filter_by_two_planes(bvh, planes[0], planes[1], filtered, counters);
-  subtree_from_filtered(bvh, filtered, planes[2], planes[3], out, counters);
+  subtree_from_filtered(filtered, planes[2], planes[3], out, counters);
 }
 
 std::array<Plane, 4> pyramid_planes(const Camera& camera, int x0, int y0, int x1, int y1) {

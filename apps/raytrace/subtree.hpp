@@ -52,7 +52,7 @@ class PlaneFilteredTree {
 void filter_by_two_planes(const Bvh& bvh, const Plane& a, const Plane& b, PlaneFilteredTree& out, TraceCounters& counters);
 
 // The subtree of the entries of `row` also inside planes c and d.
-void subtree_from_filtered(const Bvh& bvh, const PlaneFilteredTree& row, const Plane& c, const Plane& d, Subtree& out,
+void subtree_from_filtered(const PlaneFilteredTree& row, const Plane& c, const Plane& d, Subtree& out,
                            TraceCounters& counters);
 
 // Both steps for an arbitrary four-plane region (pencils).

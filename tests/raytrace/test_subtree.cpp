@@ -64,7 +64,7 @@ TEST(Subtree, SameAsTheRecursivePassAndItsPacking) {
         const Plane c = camera.column_plane(x0), d = flipped(camera.column_plane(x0 + tile));
         Subtree got;
         TraceCounters counters;
-        subtree_from_filtered(bvh, row, c, d, got, counters);
+        subtree_from_filtered(row, c, d, got, counters);
         ReferencePass ref{bvh, row, {c, d}};
         NodeRef root = 0;
         const bool any = row.root >= 0 && ref.visit(row.root, 0, &root);
