@@ -32,8 +32,14 @@ def plot_render_accuracy(plt, path, out, title):
                      for i, r in enumerate(rows) if f'{r["pass"]} {r["control"]}' == control)
         points += pts
         ax.plot([x for x, _, _ in pts], [y for _, y, _ in pts], marker="o", label=control)
-        for x, y, value in pts:
-            ax.annotate(value, (x, y), textcoords="offset points", xytext=(4, 4), fontsize=8)
+    # Each control's line passes through the render with every default (the same time and error):
+    # that point is labelled once, not with every control's value written over one another.
+    labels = {}
+    for x, y, value in points:
+        labels.setdefault((x, y), []).append(value)
+    for (x, y), values in labels.items():
+        ax.annotate(values[0] if len(values) == 1 else "all defaults", (x, y), textcoords="offset points",
+                    xytext=(4, 4), fontsize=8)
     front = pareto_front(points)
     ax.plot([x for x, _, _ in front], [y for _, y, _ in front], color="black", linestyle=":", label="Pareto front")
     ax.set_xlabel("simulated seconds of the render")
