@@ -4,7 +4,10 @@
 #include <tuple>
 
 namespace gcsim::raytrace {
+namespace {
 
+// Appends the halves of q, along its longer side (the left or upper half takes the middle pixel
+// of an odd side), unless every pixel of q is a corner.
 void split_region(const RegionRect& q, std::vector<RegionRect>& out) {
   const int w = q.x1 - q.x0 + 1, h = q.y1 - q.y0 + 1;
   if (w <= 2 && h <= 2) return;
@@ -18,6 +21,8 @@ void split_region(const RegionRect& q, std::vector<RegionRect>& out) {
     out.push_back({q.x0, mid + 1, q.x1, q.y1});
   }
 }
+
+}  // namespace
 
 RegionSchedule::RegionSchedule(int width, int height) : width_(width), height_(height) {
   std::vector<char> cornered(std::size_t(width) * height, 0);

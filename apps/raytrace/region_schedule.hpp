@@ -15,10 +15,6 @@ struct PixelOffset {
   int x, y;
 };
 
-// Appends the halves of q, along its longer side (the left or upper half takes the middle pixel
-// of an odd side), unless every pixel of q is a corner.
-void split_region(const RegionRect& q, std::vector<RegionRect>& out);
-
 struct RegionLevel {
   std::vector<RegionRect> rects;  // from the tile's corner pixel (0, 0)
   std::vector<int> parent;        // the previous level's rect each one halves (-1 on level 0)

@@ -56,12 +56,7 @@ struct FilterPass {
     e.child[0] = c[0];
     e.child[1] = c[1];
     e.children = static_cast<int>(out.children.size());
-    if (c[0] >= 0 && c[1] >= 0) {
-      out.children.push_back(lanes);
-    } else {  // a dropped child's lanes hold an empty box: classified, never read
-      const BoxCentre none;
-      out.children.emplace_back(c[0] >= 0 ? boxes[0] : none, c[1] >= 0 ? boxes[1] : none);
-    }
+    out.children.push_back(lanes);  // a dropped child's lanes are classified, never read
     return at;
   }
 };
@@ -83,10 +78,6 @@ struct SubtreePass {
 
   const Bounds3& box_of(int e) const { return row.entries[e].bounds; }
 
-  bool survives(unsigned in, unsigned out_bits, std::uint8_t& inside) {
-    return survives_planes(in, out_bits, inside, tests);
-  }
-
   // The part of entry e, which survives with flags `inside`. Both children are classified here
   // at once, so that a child outside a plane, or a primitive, costs no call.
   Part visit(int e, std::uint8_t inside) {
@@ -98,7 +89,7 @@ struct SubtreePass {
     for (int k = 0; k < 2; ++k) {
       const int child = entry.child[k];
       std::uint8_t child_inside = inside;
-      if (child < 0 || !survives(in >> (2 * k) & 3u, out_bits >> (2 * k) & 3u, child_inside)) continue;
+      if (child < 0 || !survives_planes(in >> (2 * k) & 3u, out_bits >> (2 * k) & 3u, child_inside, tests)) continue;
       const NodeRef ref = row.entries[child].ref;
       c[k] = is_primitive(ref) ? Part{ref, child} : visit(child, child_inside);
     }
@@ -121,18 +112,11 @@ void filter_by_two_planes(const Bvh& bvh, const Plane& a, const Plane& b, PlaneF
   out.entries.clear();
   out.children.clear();
   FilterPass pass{bvh, out, FourPlanes({a, b, a, b})};
-  const BoxCentre root_box(pass.box(bvh.root));
+  out.root_box = BoxCentre(pass.box(bvh.root));
   std::uint8_t inside = 0;
-  bool outside = false;
-  for (int i = 0; i < 2 && !outside; ++i) {  // the root alone, one plane at a time
-    ++pass.tests;
-    const Plane& p = i == 0 ? a : b;
-    const Side side = classify(root_box, p, abs_components(p.normal));
-    outside = side == Side::outside;
-    if (side == Side::inside) inside |= std::uint8_t(1u << i);
-  }
-  out.root = outside ? -1 : pass.visit(bvh.root, inside);
-  out.root_box = root_box;
+  unsigned in, out_bits;
+  pass.both.sides(out.root_box, in, out_bits);
+  out.root = survives_planes(in, out_bits, inside, pass.tests) ? pass.visit(bvh.root, inside) : -1;
   counters.plane_tests += pass.tests;
   counters.subtree_nodes += static_cast<std::int64_t>(out.entries.size());
 }
@@ -149,7 +133,7 @@ void subtree_from_filtered(const PlaneFilteredTree& row, const Plane& c, const P
   unsigned in, out_bits;
   pass.both.sides(row.root_box, in, out_bits);
   const SubtreePass::Part root =
-      pass.survives(in, out_bits, inside) ? pass.visit(row.root, inside) : SubtreePass::Part{0, -1};
+      survives_planes(in, out_bits, inside, pass.tests) ? pass.visit(row.root, inside) : SubtreePass::Part{0, -1};
   if (root.entry >= 0) {
     out.root = out.packed.root = root.ref;
     out.empty = out.packed.empty = false;
