@@ -4,7 +4,8 @@
 
 namespace gcsim::radiosity {
 
-CellPrefetch::CellPrefetch(int workers, CellAssignment assignment) : worker_count_(workers), assignment_(assignment) {
+CellPrefetch::CellPrefetch(int workers, CellAssignment assignment, SideFaces side_faces)
+    : worker_count_(workers), assignment_(assignment), side_faces_(side_faces) {
   if (workers < 1) throw std::invalid_argument("CellPrefetch: at least one worker thread");
 }
 
@@ -38,7 +39,7 @@ CellPrefetch::Batch& CellPrefetch::batch_for(const HemicubeRenderer& renderer, i
   b.left = cells;
   // Replicas run their loops in id order on the simulation's thread, each taking its cells in turn.
   for (int r = 0; r < nodes; ++r)
-    for (int c : cells_of(assignment_, r, nodes, cells)) b.order.push_back(c);
+    for (int c : cells_of(assignment_, r, nodes, cells, side_faces_)) b.order.push_back(c);
   work_ready_.notify_all();
   return b;
 }

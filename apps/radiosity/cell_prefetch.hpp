@@ -25,16 +25,18 @@ namespace gcsim::radiosity {
 
 class CellPrefetch {
  public:
-  // workers: host threads besides the simulation's (host threads - 1), at least 1; `assignment`:
-  // which cells each replica takes, so the workers compute them in the order they are asked for.
-  explicit CellPrefetch(int workers, CellAssignment assignment = CellAssignment::cyclic);
+  // workers: host threads besides the simulation's (host threads - 1), at least 1; `assignment`
+  // and `side_faces`: which cells each replica takes, so the workers compute them in the order
+  // they are asked for.
+  explicit CellPrefetch(int workers, CellAssignment assignment = CellAssignment::cyclic,
+                        SideFaces side_faces = SideFaces::half);
   ~CellPrefetch();  // the workers finish the cell in hand and stop
   CellPrefetch(const CellPrefetch&) = delete;
   CellPrefetch& operator=(const CellPrefetch&) = delete;
 
   // The form factors of `cell` for the projection `renderer` holds (project or use_projection
   // first), in loop `step` of a run on `nodes` replicas where replica r takes cells_of(assignment,
-  // r, nodes, cells); adds the cell's operations to `ops`. Every cell of a (step, shooter) must be taken once.
+  // r, nodes, cells, side_faces); adds the cell's operations to `ops`. Every cell of a (step, shooter) must be taken once.
   CellFormFactors take(HemicubeRenderer& renderer, const Scene& scene, int step, int cell, int nodes, OpCounts& ops);
 
   int workers() const { return int(threads_.size()); }
@@ -66,6 +68,7 @@ class CellPrefetch {
 
   const int worker_count_;
   const CellAssignment assignment_;
+  const SideFaces side_faces_;
   mutable std::mutex lock_;
   std::condition_variable work_ready_, cell_done_;
   std::map<Key, Batch> batches_;

@@ -43,7 +43,7 @@ std::int64_t replica_bytes(const Scene& scene) {
 
 ParallelOptions with_shared_projections(ParallelOptions o) {
   o.shared_projections = o.share_projections ? std::make_shared<ProjectionCache>() : nullptr;
-  o.cell_prefetch = o.host_threads > 1 ? std::make_shared<CellPrefetch>(o.host_threads - 1, o.cell_assignment) : nullptr;
+  o.cell_prefetch = o.host_threads > 1 ? std::make_shared<CellPrefetch>(o.host_threads - 1, o.cell_assignment, o.side_faces) : nullptr;
   return o;
 }
 
@@ -169,7 +169,7 @@ class RadiosityNode {
     if (o_.shared_projections) o_.shared_projections->project(renderer_, state_.steps(), s, ops_);
     else renderer_.project(s, ops_);
     // Patch partition: the shooter's owner computes every cell.
-    for (int c : cells_of(o_.cell_assignment, patch_mode ? 0 : id_, patch_mode ? 1 : n_, cells_))
+    for (int c : cells_of(o_.cell_assignment, patch_mode ? 0 : id_, patch_mode ? 1 : n_, cells_, o_.side_faces))
       put_cell_form_factors(w, std::int32_t(k), cell(c, patch_mode));
   }
 

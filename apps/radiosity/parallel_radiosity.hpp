@@ -46,6 +46,7 @@ struct ParallelOptions {
   bool keep_links = false;      // reuse links between exchanges instead of connecting per message
   int hierarchical_levels = 3;  // for hemicube-hierarchical
   CellAssignment cell_assignment = CellAssignment::cyclic;  // which cells each node computes
+  SideFaces side_faces = SideFaces::half;                  // the mesh those shares are cut from
   FormFactorMerge merge = FormFactorMerge::own_cells;       // how the received parts are added up
   FormFactorExchange ff_exchange = FormFactorExchange::per_shooter;  // one exchange per shooter, or one for all
   std::vector<int> snapshot_loops;  // processor 0 keeps the radiosities after these loops

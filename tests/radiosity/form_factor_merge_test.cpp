@@ -20,7 +20,14 @@ TEST(FormFactorMerge, AdditionsCountEveryPartOverTheWholeHemicube) {
   EXPECT_EQ(merge_additions(FormFactorMerge::whole_hemicube, 8, 192, 166), 8LL * 192 * 166);
   EXPECT_EQ(merge_additions(FormFactorMerge::whole_hemicube, 65536, 512 * 512 * 3, 100000),
             65536LL * 512 * 512 * 3 * 100000);  // no int overflow
+  // Fixed arrays: kMergeSlots element slots per cell whatever the scene, unless it has more.
+  EXPECT_EQ(merge_additions(FormFactorMerge::fixed_arrays, 8, 192, 166), 8LL * 192 * kMergeSlots);
+  EXPECT_EQ(merge_additions(FormFactorMerge::fixed_arrays, 8, 192, 205), 8LL * 192 * kMergeSlots);
+  EXPECT_EQ(merge_additions(FormFactorMerge::fixed_arrays, 8, 192, 300), 8LL * 192 * 300);
+  EXPECT_EQ(merge_additions(FormFactorMerge::fixed_arrays, 1, 192, 166), 0);
   EXPECT_EQ(parse_form_factor_merge("whole-hemicube"), FormFactorMerge::whole_hemicube);
+  EXPECT_EQ(parse_form_factor_merge("fixed-arrays"), FormFactorMerge::fixed_arrays);
+  EXPECT_STREQ(to_string(FormFactorMerge::fixed_arrays), "fixed-arrays");
   EXPECT_STREQ(to_string(FormFactorMerge::own_cells), "own-cells");
   EXPECT_THROW(parse_form_factor_merge("whole"), std::invalid_argument);
 }

@@ -18,6 +18,7 @@ struct Variant {
   bool aggregate;
   bool keep_links = false;
   CellAssignment cells = CellAssignment::cyclic;
+  SideFaces side_faces = SideFaces::half;
 };
 
 ParallelOutcome run(const Scene& scene, const ParallelOptions& o, int nodes, parix::RunResult* result = nullptr) {
@@ -40,6 +41,8 @@ TEST(ParallelRadiosity, EveryVariantEqualsSequentialOnEveryNodeCount) {
       {ParallelAlgorithm::patch, parix::BcastAlgo::sequential, false},
       {ParallelAlgorithm::hemicube_fixed, parix::BcastAlgo::sequential, false, false, CellAssignment::block},
       {ParallelAlgorithm::hemicube_hierarchical, parix::BcastAlgo::tree, false, false, CellAssignment::block},
+      {ParallelAlgorithm::hemicube_fixed, parix::BcastAlgo::tree, false, false, CellAssignment::block, SideFaces::full},
+      {ParallelAlgorithm::hemicube_fixed, parix::BcastAlgo::sequential, false, false, CellAssignment::cyclic, SideFaces::full},
   };
   for (const Variant& v : variants) {
     // Every K for the thesis's variant; K = 2 (the thesis's) for the others, to keep the suite short.
@@ -55,6 +58,7 @@ TEST(ParallelRadiosity, EveryVariantEqualsSequentialOnEveryNodeCount) {
       o.aggregate = v.aggregate;
       o.keep_links = v.keep_links;
       o.cell_assignment = v.cells;
+      o.side_faces = v.side_faces;
       o.hierarchical_levels = 2;
       SolverOptions seq = o.solver;
       if (v.algorithm == ParallelAlgorithm::hemicube_hierarchical) seq.hemicube.hierarchical_levels = 2;
@@ -67,7 +71,7 @@ TEST(ParallelRadiosity, EveryVariantEqualsSequentialOnEveryNodeCount) {
         // Bit-identical, not merely close.
         ASSERT_EQ(out.element_radiosity, reference.state.element_radiosity())
             << to_string(v.algorithm) << " K " << k << " nodes " << nodes << (v.aggregate ? " aggregated" : "")
-            << " cells " << to_string(v.cells);
+            << " cells " << to_string(v.cells) << ", side faces " << to_string(v.side_faces);
       }
     }
   }

@@ -97,11 +97,14 @@ void RadiosityExperiment::print_setup(int nodes) const {
   const ParallelOptions& o = options_;
   fmt::print("scene     {}: {} instances, {} surfaces, {} patches, {} elements, {} vertices\n", scene_.name, c.instances,
              c.surfaces, c.patches, c.elements, c.vertices);
-  fmt::print("solver    {} on {} nodes, bcast {}{}{}{}{}{}{}, hemicube {}, {} shooters per loop, energy {}\n",
+  fmt::print("solver    {} on {} nodes, bcast {}{}{}{}{}{}{}{}, hemicube {}, {} shooters per loop, energy {}\n",
              to_string(o.algorithm), nodes, solve_.bcast, o.aggregate ? ", aggregated" : "", o.keep_links ? ", links kept" : "",
              o.solver.order == ShootingOrder::energy ? "" : fmt::format(", order {}", to_string(o.solver.order)),
              o.cell_assignment == CellAssignment::cyclic ? "" : ", cells in blocks",
-             o.merge == FormFactorMerge::own_cells ? "" : ", parts merged over the whole hemicube",
+             o.side_faces == SideFaces::half ? "" : ", full side faces",
+             o.merge == FormFactorMerge::own_cells        ? ""
+             : o.merge == FormFactorMerge::whole_hemicube ? ", parts merged over the whole hemicube"
+                                                          : ", parts merged over the whole hemicube in fixed arrays",
              o.ff_exchange == FormFactorExchange::per_shooter ? "" : ", form factors exchanged together",
              o.solver.hemicube.resolution, o.solver.shooters, o.solver.energy);
   const HemicubeOptions& hc = o.solver.hemicube;
@@ -121,6 +124,7 @@ nlohmann::json run_json(const Scene& scene, const ParallelOptions& o, const std:
           {"aggregate", o.aggregate},
           {"keep_links", o.keep_links},
           {"cell_assignment", to_string(o.cell_assignment)},
+          {"side_faces", to_string(o.side_faces)},
           {"ff_merge", to_string(o.merge)},
           {"ff_exchange", to_string(o.ff_exchange)},
           {"order", to_string(o.solver.order)},

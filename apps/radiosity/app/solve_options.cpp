@@ -77,12 +77,19 @@ void add_parallel_options(CLI::App* cmd, SolveFlags& f) {
                   "whose region sees most of the scene sets the pace). Same radiosities either way")
       ->check(CLI::IsMember({"cyclic", "block"}))
       ->capture_default_str();
+  cmd->add_option("--side-faces", f.side_faces,
+                  "The mesh those shares are cut from: half (each side face is its T x T/2 cells above the "
+                  "horizon) or full (each side face a whole T x T square whose lower half, below the horizon, "
+                  "is empty: five equal faces; apps/radiosity/cell_assignment.hpp). Same radiosities either way")
+      ->check(CLI::IsMember({"half", "full"}))
+      ->capture_default_str();
   cmd->add_option("--ff-merge", f.merge,
                   "How a node adds up the form factors the exchange brought: own-cells (each part over the cells it "
-                  "holds) or whole-hemicube (each of the N parts over every cell and element, inside the exchange, "
-                  "so it counts as communication: the reading of the thesis's tables 4.5 and 4.8, "
+                  "holds), whole-hemicube (each of the N parts over every cell and element, inside the exchange, "
+                  "so it counts as communication: the reading of the thesis's tables 4.5 and 4.8) or fixed-arrays "
+                  "(as whole-hemicube over 256 element slots per cell, whatever the scene: tables 4.2 and 4.5; "
                   "apps/radiosity/form_factor_merge.hpp). Same radiosities either way")
-      ->check(CLI::IsMember({"own-cells", "whole-hemicube"}))
+      ->check(CLI::IsMember({"own-cells", "whole-hemicube", "fixed-arrays"}))
       ->capture_default_str();
   cmd->add_option("--ff-exchange", f.ff_exchange,
                   "How a loop's form factors travel: per-shooter (one all-node exchange per shooter after the "
@@ -151,6 +158,7 @@ ParallelOptions parallel_options(const SolveFlags& f) {
   o.keep_links = f.keep_links;
   o.hierarchical_levels = f.levels;
   o.cell_assignment = parse_cell_assignment(f.cell_assignment);
+  o.side_faces = parse_side_faces(f.side_faces);
   o.merge = parse_form_factor_merge(f.merge);
   o.ff_exchange = parse_form_factor_exchange(f.ff_exchange);
   // Fail early, with the reason, on an impossible hemicube / partition combination.

@@ -21,6 +21,7 @@ struct SolveFlags {
   int levels = 3;
   int cells = 8;
   std::string cell_assignment = "cyclic";
+  std::string side_faces = "half";
   std::string merge = "own-cells";
   std::string ff_exchange = "per-shooter";
   int near_field_samples = 2;   // HemicubeOptions::max_shooter_samples
