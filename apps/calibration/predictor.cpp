@@ -174,6 +174,7 @@ void Predictor::run_radiosity(const std::vector<RunKey>& keys, const machine::Ma
     radiosity::ParallelOptions o;
     o.solver = solver_options();
     o.cell_assignment = settings_.cell_assignment;
+    o.side_faces = settings_.side_faces;
     o.merge = settings_.merge;
     o.ff_exchange = settings_.ff_exchange;
     o.bcast = tree ? parix::BcastAlgo::tree : parix::BcastAlgo::sequential;

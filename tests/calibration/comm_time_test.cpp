@@ -32,6 +32,7 @@ TEST(CommTimeOf, IsTheRootsOrTheMeanOfADirectRun) {
   o.solver.hemicube.resolution = 32;
   o.solver.energy = 0.9;
   o.cell_assignment = s.cell_assignment;
+  o.side_faces = s.side_faces;
   o.merge = s.merge;
   o.ff_exchange = s.ff_exchange;
   o = radiosity::with_shared_projections(o);

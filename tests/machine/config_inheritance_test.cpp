@@ -119,7 +119,7 @@ TEST_F(Inheritance, ShippedFilesEqualTheirOldFullCopies) {
   fitted.link_bandwidth = calibrated.link_bandwidth;
   for (const char* op : {"hemicube_pixel", "form_factor_merge"}) fitted.cycles_per_op[op] = calibrated.cycles_per_op.at(op);
   expect_same_machine(calibrated, fitted);
-  EXPECT_EQ(calibrated.calibrated_on, (std::vector<std::string>{"4.6", "4.3@1+8+CORNELL+PICROOM"}));
+  EXPECT_EQ(calibrated.calibrated_on, (std::vector<std::string>{"4.6", "4.3@1+32+CORNELL+PICROOM"}));
   MachineConfig big = gc;
   big.nodes = 1024;
   big.mesh_width = big.mesh_height = 32;

@@ -35,7 +35,8 @@ struct PredictFlags {
   int hemicube = 256;
   double energy = 0.999;
   std::string cell_assignment = "block";
-  std::string merge = "whole-hemicube";
+  std::string side_faces = "full";
+  std::string merge = "fixed-arrays";
   std::string ff_exchange = "together";
   std::string workload = "thesis-loops";
   std::string comm_time = "root";
@@ -53,15 +54,23 @@ void add_predict_options(CLI::App* cmd, PredictFlags& f) {
       ->capture_default_str();
   cmd->add_option("--cell-assignment", f.cell_assignment,
                   "Radiosity tables: which hemicube cells each node computes: block (one region of the hemicube per "
-                  "node, as the thesis's figure 4.1 draws it; fitted on 4.6 and 4.3@1+8 it predicts the other "
+                  "node, as the thesis's figure 4.1 draws it; fitted on 4.6 and two rows of 4.3 it predicts the other "
                   "radiosity cells better than cyclic: README, Calibration) or cyclic (`gcsim run radiosity`'s default)")
       ->check(CLI::IsMember({"cyclic", "block"}))
       ->capture_default_str();
+  cmd->add_option("--side-faces", f.side_faces,
+                  "Radiosity tables: the mesh the blocks are cut from: full (each side face a whole square whose "
+                  "lower half, below the horizon, is empty: five equal faces; what the thesis's 2-, 4- and 8-node "
+                  "rows imply together: README, Calibration) or half (`gcsim run radiosity`'s default)")
+      ->check(CLI::IsMember({"half", "full"}))
+      ->capture_default_str();
   cmd->add_option("--ff-merge", f.merge,
-                  "Radiosity tables: how each node adds up the exchanged form factors: whole-hemicube (each of the N "
-                  "parts over every cell and element, counted as communication: what tables 4.5 and 4.8 imply together; "
-                  "README, Calibration) or own-cells (`gcsim run radiosity`'s default)")
-      ->check(CLI::IsMember({"own-cells", "whole-hemicube"}))
+                  "Radiosity tables: how each node adds up the exchanged form factors: fixed-arrays (each of the N "
+                  "parts as an array over every cell and 256 element slots, whatever the scene, counted as "
+                  "communication: what tables 4.5 and 4.8 imply together, and 4.2 with 4.5 that it does not grow with "
+                  "the elements; README, Calibration), whole-hemicube (the same over the scene's elements) or "
+                  "own-cells (`gcsim run radiosity`'s default)")
+      ->check(CLI::IsMember({"own-cells", "whole-hemicube", "fixed-arrays"}))
       ->capture_default_str();
   cmd->add_option("--ff-exchange", f.ff_exchange,
                   "Radiosity tables: together (2 exchanges per loop: the proposals, then every shooter's form factors "
@@ -96,6 +105,7 @@ std::string non_default_flags(const PredictFlags& f) {
   if (f.hemicube != d.hemicube) out += fmt::format(" --hemicube {}", f.hemicube);
   if (f.energy != d.energy) out += fmt::format(" --energy {}", f.energy);
   if (f.cell_assignment != d.cell_assignment) out += " --cell-assignment " + f.cell_assignment;
+  if (f.side_faces != d.side_faces) out += " --side-faces " + f.side_faces;
   if (f.merge != d.merge) out += " --ff-merge " + f.merge;
   if (f.ff_exchange != d.ff_exchange) out += " --ff-exchange " + f.ff_exchange;
   if (f.workload != d.workload) out += " --workload " + f.workload;
@@ -109,6 +119,7 @@ cal::PredictionSettings settings(const PredictFlags& f) {
   s.hemicube = f.hemicube;
   s.energy = f.energy;
   s.cell_assignment = radiosity::parse_cell_assignment(f.cell_assignment);
+  s.side_faces = radiosity::parse_side_faces(f.side_faces);
   s.merge = radiosity::parse_form_factor_merge(f.merge);
   s.ff_exchange = radiosity::parse_form_factor_exchange(f.ff_exchange);
   s.jobs = f.jobs;
@@ -242,7 +253,7 @@ void add_calibrate(CommandGroups& g) {
   add_predict_options(cmd, f->predict);
   cmd->footer(
       "\n\nExample (the shipped configs/gc-powerplus-calibrated.toml):\n"
-      "  cd configs && gcsim calibrate --fit 4.6,4.3@1+8+CORNELL+PICROOM \\\n"
+      "  cd configs && gcsim calibrate --fit 4.6,4.3@1+32+CORNELL+PICROOM \\\n"
       "      --free network.connect_base_us,network.connect_per_hop_us,network.link_bandwidth_mbps,"
       "ops.hemicube_pixel,ops.form_factor_merge \\\n"
       "      --config gc-powerplus-mechanisms.toml --out gc-powerplus-calibrated.toml");
