@@ -11,6 +11,12 @@ namespace gcsim::machine {
 
 enum class Direction : std::uint8_t { east = 0, west = 1, north = 2, south = 3 };
 
+// The name of a channel's direction (channel = node * 4 + direction), as the trace writers print it.
+inline const char* direction_name(int channel) {
+  static constexpr const char* names[] = {"east", "west", "north", "south"};
+  return names[channel % 4];
+}
+
 class Mesh final : public Routing {
  public:
   Mesh(int width, int height);

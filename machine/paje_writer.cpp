@@ -77,11 +77,6 @@ std::string ms(SimTime t) {
   return fmt::format("{}.{:09d}", t / kMillisecond, t % kMillisecond);
 }
 
-const char* direction_name(int channel) {
-  static constexpr const char* names[] = {"east", "west", "north", "south"};
-  return names[channel % 4];
-}
-
 // One timed Paje event to emit; sorted by (time, phase, sequence) so that at equal times an
 // interval's end comes before the next one's start, and the order is otherwise the record order.
 struct TimedEvent {

@@ -59,11 +59,6 @@ std::string_view clean_label(std::string_view label, std::string& scratch) {
   return scratch;
 }
 
-const char* direction_name(int channel) {
-  static constexpr const char* names[] = {"east", "west", "north", "south"};
-  return names[channel % 4];
-}
-
 }  // namespace
 
 TraceWriter::TraceWriter(const TraceOptions& options, int processors, int mesh_width, int mesh_height)

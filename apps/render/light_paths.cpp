@@ -9,7 +9,6 @@ namespace gcsim::render {
 
 namespace {
 
-double largest(const scene::Rgb& c) { return std::max({c.r, c.g, c.b}); }
 
 // The plane of a polygon side: unit normal (turned for the back) and a point on it.
 struct Plane {
@@ -49,7 +48,7 @@ bool in_front(const scene::SceneDescription& d, const Plane& plane, const Surfac
 }  // namespace
 
 bool only_bounds_medium(const scene::Material& m) {
-  return m.medium && largest(m.diffuse) == 0.0 && largest(m.emission) == 0.0 && m.mirror == 0.0 &&
+  return m.medium && scene::largest(m.diffuse) == 0.0 && scene::largest(m.emission) == 0.0 && m.mirror == 0.0 &&
          m.transmittance == 0.0 && m.specular == 0.0;
 }
 

@@ -32,7 +32,6 @@ namespace {
 using scene::Material;
 using scene::SceneDescription;
 
-double largest(const scene::Rgb& c) { return std::max({c.r, c.g, c.b}); }
 
 std::string quoted_list(const std::set<std::string>& names) {
   std::string out;
@@ -51,14 +50,14 @@ struct Analysis {
   std::set<int> used_materials;
 
   const Material& material(const SurfaceSide& s) const { return d.materials[s.material]; }
-  bool diffuse(const SurfaceSide& s) const { return largest(material(s).diffuse) > 0.0; }
-  bool emitter(const SurfaceSide& s) const { return largest(material(s).emission) > 0.0; }
+  bool diffuse(const SurfaceSide& s) const { return scene::largest(material(s).diffuse) > 0.0; }
+  bool emitter(const SurfaceSide& s) const { return scene::largest(material(s).emission) > 0.0; }
 };
 
 Analysis analyse(const SceneDescription& d) {
   Analysis a{d, visible_sides(d), {}, false, {}, {}, {}};
   for (const auto& light : d.lights)
-    std::visit([&](const auto& l) { if (largest(l.intensity) > 0.0) a.light_positions.push_back(l.position); }, light);
+    std::visit([&](const auto& l) { if (scene::largest(l.intensity) > 0.0) a.light_positions.push_back(l.position); }, light);
   for (const auto& s : d.shapes) {
     a.used_materials.insert(s.material);
     if (s.back_material >= 0) a.used_materials.insert(s.back_material);
@@ -190,14 +189,14 @@ PassPlan plan_media(const Analysis& a, SceneFacts& facts) {
     const Material& mat = a.d.materials[m];
     if (!mat.medium) continue;
     const scene::Medium& md = *mat.medium;
-    if (largest(md.sigma_s) > 0) {
+    if (scene::largest(md.sigma_s) > 0) {
       scattering.insert(mat.name);
       facts.media_opacity += opacity(a.d, m);
       const scene::Rgb sigma_t = md.sigma_s + md.sigma_a;
       for (int c = 0; c < 3; ++c)
         if (sigma_t[c] > 0) facts.largest_albedo = std::max(facts.largest_albedo, md.sigma_s[c] / sigma_t[c]);
       if (md.phase != scene::PhaseKind::isotropic && md.phase_g != 0.0) anisotropic.insert(mat.name);
-    } else if (largest(md.sigma_a) > 0) {
+    } else if (scene::largest(md.sigma_a) > 0) {
       absorbing.insert(mat.name);
     } else {
       empty.insert(mat.name);

@@ -2,6 +2,7 @@
 // two or three neighbouring nodes of the published GC, with times worked out by hand from its
 // parameters.
 #include "parix/simulated_runtime.hpp"
+#include "tests/support/published_machine.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,27 +13,17 @@
 namespace gcsim::parix {
 namespace {
 
+using test_support::on_nodes;
+using test_support::kConnectNeighbour;
+using test_support::kEmptyMessageNeighbour;
+using test_support::bytes_of;
+
 using machine::kMicrosecond;
 using machine::kMillisecond;
 
-SimulationOptions on_nodes(int n, const std::string& model = "") {
-  SimulationOptions o;
-  o.config = machine::with_nodes(machine::default_machine_config(), n);
-  if (!model.empty()) o.config.network_model = model;  // "": the machine file's own
-  return o;
-}
-
 // The published GC: neighbours connect in 0.55 + 0.24 ms; a message pays 5 us set-up and 60 us
 // latency, then its bytes cross one channel at 35 MB/s per node over 16 links, 4 per channel.
-constexpr SimTime kConnectNeighbour = 790 * kMicrosecond;
-constexpr SimTime kEmptyMessageNeighbour = 65 * kMicrosecond;
 SimTime bytes_time(std::int64_t n) { return machine::from_seconds(static_cast<double>(n) / (4 * 35e6 / 16)); }
-
-Bytes bytes_of(std::string_view s) {
-  Bytes b(s.size());
-  std::memcpy(b.data(), s.data(), s.size());
-  return b;
-}
 
 TEST(Cancel, AnUnmatchedReceiveIsWithdrawnAndTheMessageGoesToTheNextReceive) {
   Bytes first, second, withdrawn_data = bytes_of("untouched");

@@ -5,16 +5,12 @@
 #include <numeric>
 
 #include "parix/simulated_runtime.hpp"
+#include "tests/support/published_machine.hpp"
 
 namespace gcsim::parix {
 namespace {
 
-SimulationOptions on_nodes(int n) {
-  SimulationOptions o;
-  o.config = machine::default_machine_config();
-  o.config = machine::with_nodes(o.config, n);
-  return o;
-}
+using test_support::on_nodes;
 
 struct Case {
   int nodes;

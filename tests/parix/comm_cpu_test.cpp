@@ -5,15 +5,16 @@
 
 #include "machine/machine_config.hpp"
 #include "parix/simulated_runtime.hpp"
+#include "tests/support/published_machine.hpp"
 
 namespace gcsim::parix {
 namespace {
 
+using test_support::kConnectNeighbour;
+using test_support::kEmptyMessageNeighbour;
+
 using machine::kMicrosecond;
 using machine::SimTime;
-
-constexpr SimTime kConnectNeighbour = 790 * kMicrosecond;
-constexpr SimTime kEmptyMessageNeighbour = 65 * kMicrosecond;
 
 SimulationOptions with_costs(SimTime send, SimTime recv, SimTime connect, double ns_per_byte, int cpus = 2) {
   SimulationOptions o;

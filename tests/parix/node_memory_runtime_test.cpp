@@ -15,7 +15,7 @@ namespace {
 
 constexpr std::int64_t kMB = std::int64_t(1) << 20;
 
-SimulationOptions on_nodes(int n, machine::MemoryLimit limit = machine::MemoryLimit::enforce) {
+SimulationOptions limited_nodes(int n, machine::MemoryLimit limit = machine::MemoryLimit::enforce) {
   SimulationOptions o;
   o.config = machine::default_machine_config();  // 32 MB a node
   o.config = machine::with_nodes(o.config, n);
@@ -33,7 +33,7 @@ std::string error_of(const SimulationOptions& o, const std::function<void(Proces
 }
 
 TEST(NodeMemoryRuntime, AReservationIsReleasedWhenItGoesOutOfScope) {
-  run_simulated(on_nodes(1), [](Processor& p) {
+  run_simulated(limited_nodes(1), [](Processor& p) {
     {
       const MemoryReservation a = p.reserve_memory(20 * kMB, "scene");
       EXPECT_THROW((void)p.reserve_memory(20 * kMB, "hemicube"), OutOfMemoryError);
@@ -44,7 +44,7 @@ TEST(NodeMemoryRuntime, AReservationIsReleasedWhenItGoesOutOfScope) {
 }
 
 TEST(NodeMemoryRuntime, TheErrorNamesTheProcessorWhatItHoldsAndTheLimit) {
-  const std::string what = error_of(on_nodes(4), [](Processor& p) {
+  const std::string what = error_of(limited_nodes(4), [](Processor& p) {
     const MemoryReservation scene = p.reserve_memory(2 * kMB, "scene");
     if (p.id() == 3) (void)p.reserve_memory(576 * kMB, "hemicube");
   });
@@ -56,7 +56,7 @@ TEST(NodeMemoryRuntime, TheErrorNamesTheProcessorWhatItHoldsAndTheLimit) {
 
 TEST(NodeMemoryRuntime, AMessageIsHeldByTheReceiverUntilReceived) {
   // Processor 1 holds 20 MB and has not yet posted its receive when 16 MB arrive: over its 32 MB.
-  const std::string what = error_of(on_nodes(2), [](Processor& p) {
+  const std::string what = error_of(limited_nodes(2), [](Processor& p) {
     Link l = p.connect(1 - p.id());
     if (p.id() == 0) {
       const Bytes data(16 * kMB);
@@ -70,7 +70,7 @@ TEST(NodeMemoryRuntime, AMessageIsHeldByTheReceiverUntilReceived) {
   });
   EXPECT_NE(what.find("processor 1: out of node memory: messages received 16.0 MB"), std::string::npos) << what;
   // Received at once (the receive posted first), the same message needs no buffer on node 1.
-  EXPECT_NO_THROW(run_simulated(on_nodes(2), [](Processor& p) {
+  EXPECT_NO_THROW(run_simulated(limited_nodes(2), [](Processor& p) {
     Link l = p.connect(1 - p.id());
     if (p.id() == 0) {
       p.compute("cycle", 80'000'000);
@@ -83,21 +83,21 @@ TEST(NodeMemoryRuntime, AMessageIsHeldByTheReceiverUntilReceived) {
 }
 
 TEST(NodeMemoryRuntime, ABroadcastOfMoreThanANodeHoldsFailsAtOnce) {
-  const std::string what = error_of(on_nodes(4), [](Processor& p) { programs::all_node_broadcast(p, 100 * kMB, BcastAlgo::tree); });
+  const std::string what = error_of(limited_nodes(4), [](Processor& p) { programs::all_node_broadcast(p, 100 * kMB, BcastAlgo::tree); });
   EXPECT_NE(what.find("out of node memory: broadcast data 100.0 MB"), std::string::npos) << what;
   // 8 MB: the data and one message copy fit in 32 MB.
-  EXPECT_NO_THROW(run_simulated(on_nodes(4), [](Processor& p) { programs::all_node_broadcast(p, 8 * kMB, BcastAlgo::tree); }));
+  EXPECT_NO_THROW(run_simulated(limited_nodes(4), [](Processor& p) { programs::all_node_broadcast(p, 8 * kMB, BcastAlgo::tree); }));
 }
 
 TEST(NodeMemoryRuntime, WarnFinishesTheRunAndReportsThePeak) {
-  const RunResult r = run_simulated(on_nodes(4, machine::MemoryLimit::warn),
+  const RunResult r = run_simulated(limited_nodes(4, machine::MemoryLimit::warn),
                                     [](Processor& p) { programs::all_node_broadcast(p, 20 * kMB, BcastAlgo::sequential); });
   EXPECT_GE(r.memory_peak, 40 * kMB);  // the data and a message copy on one node
   EXPECT_EQ(r.memory_capacity, 32 * kMB);
   EXPECT_NE(r.memory_warning.find("node memory over its limit"), std::string::npos) << r.memory_warning;
   EXPECT_TRUE(r.to_json().contains("memory"));
   // Under the limit nothing is reported, and the JSON is as before.
-  const RunResult fits = run_simulated(on_nodes(4), [](Processor& p) { programs::all_node_broadcast(p, 1024, BcastAlgo::tree); });
+  const RunResult fits = run_simulated(limited_nodes(4), [](Processor& p) { programs::all_node_broadcast(p, 1024, BcastAlgo::tree); });
   EXPECT_TRUE(fits.memory_warning.empty());
   EXPECT_FALSE(fits.to_json().contains("memory"));
 }

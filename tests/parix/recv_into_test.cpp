@@ -14,13 +14,9 @@
 namespace gcsim::parix {
 namespace {
 
-using test_support::published_machine;
+using test_support::bytes_of;
 
-Bytes bytes_of(std::string_view s) {
-  Bytes b(s.size());
-  if (!s.empty()) std::memcpy(b.data(), s.data(), s.size());  // an empty vector's data() may be null
-  return b;
-}
+using test_support::published_machine;
 
 // Processor 0 sends `text` after computing `sender_ops` cycles; processor 1 receives it with
 // recv(link) or recv(link, into) after `receiver_ops` cycles (800,000 cycles: 10 ms, long enough

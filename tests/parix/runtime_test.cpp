@@ -1,4 +1,5 @@
 #include "parix/simulated_runtime.hpp"
+#include "tests/support/published_machine.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,26 +13,13 @@
 namespace gcsim::parix {
 namespace {
 
+using test_support::on_nodes;
+using test_support::kConnectNeighbour;
+using test_support::kEmptyMessageNeighbour;
+using test_support::bytes_of;
+
 using machine::kMicrosecond;
 using machine::kMillisecond;
-
-SimulationOptions on_nodes(int n, const std::string& model = "") {
-  SimulationOptions o;
-  o.config = machine::default_machine_config();
-  o.config = machine::with_nodes(o.config, n);
-  if (!model.empty()) o.config.network_model = model;  // "": the machine file's own
-  return o;
-}
-
-// The published GC: neighbours connect in 0.55 + 0.24 ms; a message pays 5 us set-up and 60 us latency.
-constexpr SimTime kConnectNeighbour = 790 * kMicrosecond;
-constexpr SimTime kEmptyMessageNeighbour = 65 * kMicrosecond;
-
-Bytes bytes_of(std::string_view s) {
-  Bytes b(s.size());
-  std::memcpy(b.data(), s.data(), s.size());
-  return b;
-}
 
 TEST(Runtime, EveryProcessorKnowsItsIdAndTheCount) {
   std::vector<int> seen(8, 0);

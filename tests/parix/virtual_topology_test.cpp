@@ -8,16 +8,12 @@
 
 #include "machine/mesh.hpp"
 #include "parix/simulated_runtime.hpp"
+#include "tests/support/published_machine.hpp"
 
 namespace gcsim::parix {
 namespace {
 
-SimulationOptions on_nodes(int n) {
-  SimulationOptions o;
-  o.config = machine::default_machine_config();
-  o.config = machine::with_nodes(o.config, n);
-  return o;
-}
+using test_support::on_nodes;
 
 TEST(VirtualTopology, EachProcessorSeesItsRingNeighbours) {
   std::vector<std::vector<int>> seen(8);

@@ -7,6 +7,7 @@
 #include "apps/common/scene/description_to_world.hpp"
 #include "apps/radiosity/entity_builder.hpp"
 #include "apps/radiosity/object_builder.hpp"
+#include "tests/radiosity/same_world.hpp"
 
 namespace gcsim::radiosity {
 namespace {
@@ -27,26 +28,7 @@ void furnish(Builder& b) {
   b.box_separate({1, 0, 1}, {1.5, 0.25, 2}, F::kTop | F::kMinX | F::kMaxZ, [&](F f) { return f == F::kMaxZ ? back : front; });
 }
 
-void expect_same_records(const std::vector<PolygonRecord>& a, const std::vector<PolygonRecord>& b) {
-  ASSERT_EQ(a.size(), b.size());
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    EXPECT_EQ(a[i].owner, b[i].owner) << i;
-    EXPECT_EQ(a[i].count, b[i].count) << i;
-    EXPECT_EQ(a[i].vertex, b[i].vertex) << i;
-  }
-}
-
-void expect_same_entity(const Entity& a, const Entity& b) {
-  EXPECT_EQ(a.name, b.name);
-  EXPECT_EQ(a.vertices, b.vertices);
-  ASSERT_EQ(a.surfaces.size(), b.surfaces.size());
-  for (std::size_t i = 0; i < a.surfaces.size(); ++i) {
-    EXPECT_EQ(a.surfaces[i].reflectance, b.surfaces[i].reflectance) << i;
-    EXPECT_EQ(a.surfaces[i].exitance, b.surfaces[i].exitance) << i;
-  }
-  expect_same_records(a.patches, b.patches);
-  expect_same_records(a.elements, b.elements);
-}
+using test_support::expect_same_entity;
 
 TEST(ObjectBuilder, LowersToTheEntityBuilderEntity) {
   EntityBuilder direct("furniture");

@@ -5,6 +5,8 @@
 // at-a-time rays equal its single ones bit for bit.
 #include <gtest/gtest.h>
 
+#include "tests/support/same_bits.hpp"
+
 #include <array>
 #include <cstring>
 #include <string_view>
@@ -22,7 +24,7 @@
 namespace gcsim::raytrace {
 namespace {
 
-bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using test_support::same_bits;
 
 void expect_same_tally(const TestTally& a, const TestTally& b, int lane) {
   EXPECT_EQ(a.boxes, b.boxes) << "lane " << lane;

@@ -7,6 +7,8 @@
 // one-primitive trees, over every built-in scene and its subtrees.
 #include <gtest/gtest.h>
 
+#include "tests/support/same_bits.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -27,7 +29,7 @@
 namespace gcsim::raytrace {
 namespace {
 
-bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using test_support::same_bits;
 
 // The walk's slab test of one child box, plainly: near and far planes picked by the direction's
 // sign (so a NaN from 0 * inf, a ray lying in a slab plane, is skipped on either side, where

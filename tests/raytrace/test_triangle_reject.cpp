@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/same_bits.hpp"
+
 #include "apps/common/geometry/traversal.hpp"
 #include "apps/common/geometry/triangle_finish.hpp"
 #include "apps/common/geometry/triangle_reject.hpp"
@@ -22,7 +24,7 @@ struct Agreement {
   int hits = 0, misses = 0, rejected = 0, inside = 0;
 };
 
-bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using test_support::same_bits;
 
 #if defined(__AVX__)
 // Two triangles rejected at once (a tree node whose children are both triangles) answer as each

@@ -25,13 +25,13 @@ using test_support::published_machine;
 
 const std::string kSmall = (std::filesystem::path(GCSIM_SOURCE_DIR) / "scenes" / "media-small.toml").string();
 
-struct Rendered {
+struct Sampled {
   double photons_end = 0, view_start = 0, end = 0;
   apps::Image image;
 };
 
 // The render's program (no radiosity in MEDIA-SMALL), as `gcsim render` runs it.
-Rendered render(const scene::SceneDescription& d, int nodes, std::size_t photons) {
+Sampled render_sampled(const scene::SceneDescription& d, int nodes, std::size_t photons) {
   const Plan plan = make_plan(d);
   const RenderSetup setup = prepare_render(d, plan, kSmall, {}, photons);
   ViewSettings view;
@@ -60,7 +60,7 @@ TEST(MediaSample, ASampleOfEveryPhotonAndTilePredictsThePassExactly) {
     SCOPED_TRACE(nodes);
     const MediaSample s = sample_media(d, plan, kSmall, published_machine(nodes), {.photons = 3000, .photon_divisor = 1, .tile_stride = 1});
     ASSERT_EQ(s.tiles_rendered, s.tiles);
-    const Rendered r = render(d, nodes, 3000);
+    const Sampled r = render_sampled(d, nodes, 3000);
     EXPECT_DOUBLE_EQ(s.photon_seconds, r.photons_end);
     EXPECT_DOUBLE_EQ(s.photon_seconds + s.grid_seconds, r.view_start);
     EXPECT_DOUBLE_EQ(s.view_seconds, r.end - r.view_start);
@@ -73,11 +73,11 @@ TEST(MediaSample, ASampleOfEveryPhotonAndTilePredictsThePassExactly) {
 TEST(MediaSample, ASampleLandsNearThePassAndChangesNothingInTheRender) {
   const scene::SceneDescription d = small_scene();
   const Plan plan = make_plan(d);
-  const Rendered before = render(d, 2, 8000);
+  const Sampled before = render_sampled(d, 2, 8000);
   const MediaSample s = sample_media(d, plan, kSmall, published_machine(2), {.photons = 8000, .photon_divisor = 8, .tile_stride = 2});
   EXPECT_EQ(s.traced, 1000u);
   EXPECT_LT(s.tiles_rendered, s.tiles);
-  const Rendered after = render(d, 2, 8000);
+  const Sampled after = render_sampled(d, 2, 8000);
   const double predicted = s.photon_seconds + s.grid_seconds + s.view_seconds;
   EXPECT_NEAR(predicted, before.end, 0.25 * before.end);
   EXPECT_NEAR(s.photon_seconds, before.photons_end, 0.25 * before.photons_end);
@@ -108,7 +108,7 @@ TEST(MediaSample, ThePlansMediaRowLandsNearTheRenders) {
   scene::SceneDescription d = scene::load_scene_file(kSmall);
   d.image.width = 96, d.image.height = 64;
   const Plan plan = make_plan(d);
-  const Rendered r = render(d, 2, 4000);
+  const Sampled r = render_sampled(d, 2, 4000);
   const double marching = (r.end - r.view_start) - sample_view(d, plan, kSmall, published_machine(2), {.tile_stride = 1}).seconds();
   const MediaSample s = sample_media(d, plan, kSmall, published_machine(2), {.photons = 4000, .photon_divisor = 8, .tile_stride = 4});
   ASSERT_EQ(s.tiles_rendered * 4, s.tiles);

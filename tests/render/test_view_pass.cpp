@@ -42,13 +42,13 @@ radiosity::ParallelOptions small_solve() {
 
 using test_support::published_machine;
 
-struct Rendered {
+struct ViewRendered {
   std::unique_ptr<UnifiedRender> out;
   parix::RunResult run;
 };
 
-Rendered render_on(const scene::SceneDescription& d, const radiosity::Scene* mesh, int nodes, ViewSettings view = {}) {
-  Rendered r{std::make_unique<UnifiedRender>(nodes), {}};
+ViewRendered render_on(const scene::SceneDescription& d, const radiosity::Scene* mesh, int nodes, ViewSettings view = {}) {
+  ViewRendered r{std::make_unique<UnifiedRender>(nodes), {}};
   const radiosity::ParallelOptions o = small_solve();
   r.run = parix::run_simulated(published_machine(nodes), [&](parix::Processor& p) { unified_render_program(p, d, mesh, o, view, nullptr, *r.out); });
   finish(*r.out);
@@ -63,7 +63,7 @@ scene::SceneDescription small_image(scene::SceneDescription d) {
 TEST(ViewPass, RadiosityPassIsTheRadiosityProgram) {
   const auto d = small_image(scene_file("cornell.toml"));
   const radiosity::Scene mesh = radiosity::flatten(scene::to_world(d));
-  const Rendered unified = render_on(d, &mesh, 2);
+  const ViewRendered unified = render_on(d, &mesh, 2);
   radiosity::ParallelOutcome alone;
   const auto run = parix::run_simulated(published_machine(2), [&](parix::Processor& p) {
     radiosity::radiosity_program(p, mesh, small_solve(), &alone);
@@ -76,7 +76,7 @@ TEST(ViewPass, RadiosityPassIsTheRadiosityProgram) {
 TEST(ViewPass, ImageIsTheSameOnAnyNodeCount) {
   const auto d = small_image(scene_file("cornell-mirror-glass.toml"));
   const radiosity::Scene mesh = radiosity::flatten(scene::to_world(d));
-  const Rendered one = render_on(d, &mesh, 1), three = render_on(d, &mesh, 3);
+  const ViewRendered one = render_on(d, &mesh, 1), three = render_on(d, &mesh, 3);
   ASSERT_EQ(one.out->view->result.image.pixels().size(), three.out->view->result.image.pixels().size());
   EXPECT_EQ(one.out->view->result.image.pixels(), three.out->view->result.image.pixels());
   EXPECT_EQ(one.out->view->scene.sphere_count(), 2);  // the mirror and the glass, as true spheres
@@ -88,7 +88,7 @@ TEST(ViewPass, ImageIsTheSameOnAnyNodeCount) {
 TEST(ViewPass, CornellAgreesWithTheGouraudDisplay) {
   const auto d = small_image(scene_file("cornell.toml"));
   const radiosity::Scene mesh = radiosity::flatten(scene::to_world(d));
-  const Rendered r = render_on(d, &mesh, 2);
+  const ViewRendered r = render_on(d, &mesh, 2);
   radiosity::RenderOptions ro;
   ro.width = ro.height = 64;
   ro.exposure = r.out->view->exposure;
@@ -138,8 +138,8 @@ TEST(ViewPass, ForcingAPassThePlanSkipsChangesNoPixel) {
     const auto d = small_image(scene_file(file));
     const radiosity::Scene mesh = radiosity::flatten(scene::to_world(d));
     const bool radiosity = std::string(file) == "cornell.toml";
-    const Rendered planned = render_on(d, radiosity ? &mesh : nullptr, 2, ViewSettings{false, false});
-    const Rendered forced = render_on(d, radiosity ? &mesh : nullptr, 2, ViewSettings{true, true});
+    const ViewRendered planned = render_on(d, radiosity ? &mesh : nullptr, 2, ViewSettings{false, false});
+    const ViewRendered forced = render_on(d, radiosity ? &mesh : nullptr, 2, ViewSettings{true, true});
     EXPECT_EQ(planned.out->view->result.image.pixels(), forced.out->view->result.image.pixels());
     EXPECT_EQ(planned.out->view->result.counters.shadow_rays, 0);
     if (!radiosity) {
@@ -248,12 +248,12 @@ TEST(ViewPass, PointLightsAddTheirDirectLightToRadiositySurfaces) {
 TEST(ViewPass, CornellWithAPointLightIsBrighterNowhereDarker) {
   auto d = small_image(scene_file("cornell.toml"));
   const radiosity::Scene mesh = radiosity::flatten(scene::to_world(d));
-  const Rendered plain = render_on(d, &mesh, 2);
+  const ViewRendered plain = render_on(d, &mesh, 2);
   scene::SceneDescription lamp = d;
   lamp.lights.push_back(scene::PointLight{{278, 300, 150}, scene::Rgb(2e5)});
   ViewSettings same;
   same.exposure = plain.out->view->exposure;  // the plain render's, so pixels compare
-  const Rendered lit = render_on(lamp, &mesh, 2, same);
+  const ViewRendered lit = render_on(lamp, &mesh, 2, same);
   int brighter = 0;
   for (std::size_t i = 0; i < plain.out->view->result.image.pixels().size(); ++i)
     for (int c = 0; c < 3; ++c) {
@@ -322,8 +322,8 @@ TEST(ViewPass, ForcingRadiosityWhereThePlanSkipsItChangesNoPixel) {
     const radiosity::Scene mesh = radiosity::flatten(scene::to_world(c.d));
     ViewSettings forced_view;
     forced_view.shows_radiosity = false;
-    const Rendered planned = render_on(c.d, nullptr, 2);
-    const Rendered forced = render_on(c.d, &mesh, 2, forced_view);
+    const ViewRendered planned = render_on(c.d, nullptr, 2);
+    const ViewRendered forced = render_on(c.d, &mesh, 2, forced_view);
     EXPECT_EQ(planned.out->view->result.image.pixels(), forced.out->view->result.image.pixels());
     EXPECT_EQ(reflected_light(mesh, forced.out->radiosity.element_radiosity).element, -1);
     ASSERT_EQ(forced.out->radiosity.element_radiosity.size(), mesh.elements.size());
@@ -339,7 +339,7 @@ TEST(ViewPass, ForcingRadiosityWhereThePlanSkipsItChangesNoPixel) {
 TEST(ViewPass, AnEmitterWithoutARadiosityPassShowsItsEmission) {
   const auto d = lamp_scene(0.0, true);
   ASSERT_FALSE(make_plan(d).pass(PassId::radiosity).on);
-  const Rendered r = render_on(d, nullptr, 1);
+  const ViewRendered r = render_on(d, nullptr, 1);
   const auto& image = r.out->view->result.image;
   int lamp = 0;  // pixels showing the emission, to the image's 8-bit encoding (the floor and background are black)
   for (const glm::vec3& c : image.pixels())
@@ -352,7 +352,7 @@ TEST(ViewPass, AnEmitterWithoutARadiosityPassShowsItsEmission) {
   auto from_above = d;
   from_above.camera->eye = glm::dvec3(0, 8, -0.5);
   from_above.camera->look_at = glm::dvec3(0, 3, 0);
-  const Rendered above = render_on(from_above, nullptr, 1);
+  const ViewRendered above = render_on(from_above, nullptr, 1);
   for (const glm::vec3& c : above.out->view->result.image.pixels()) ASSERT_EQ(c, glm::vec3(0.0f));
 }
 

@@ -27,7 +27,7 @@ void one_by_one(const PrimitiveArrays& prims, const PackedTree& tree, const Ray 
 
 #if defined(GCSIM_PACKET_AVX2)
 
-constexpr int kStackSize = 256;  // traverse_ordered's: a deeper walk falls back to it
+constexpr int kPacketStackSize = 256;  // traverse_ordered's: a deeper walk falls back to it
 
 // The per-lane constants, one array of eight per quantity (lane i in element i).
 struct Lanes {
@@ -294,7 +294,7 @@ GCSIM_AVX2 void prepare_lanes(const PrimitiveArrays& prims, const PackedTree& tr
 // Pushes a child for `lanes` with their entries; false when the single-ray stack would be full.
 GCSIM_AVX2 inline bool push(Entry* stack, int& top, NodeRef node, unsigned lanes, __m256 near) {
   if (!lanes) return true;
-  if (top >= kStackSize) return false;
+  if (top >= kPacketStackSize) return false;
   Entry& e = stack[top++];
   _mm256_store_ps(e.entry, near);
   e.node = node;
@@ -333,7 +333,7 @@ GCSIM_AVX2 bool walk(const PrimitiveArrays& prims, const PackedTree& tree, const
   count(k.boxes, lanes);
   __m256 root_entry;
   const unsigned live = lanes & root_box(tree.root_box, l, _mm256_load_ps(s.t), root_entry);
-  thread_local Entry stack[kStackSize];  // fiber stacks are small
+  thread_local Entry stack[kPacketStackSize];  // fiber stacks are small
   int top = 0;
   // The node to expand next stays in registers: the entry the walk would push last, and so pop
   // at once, is taken without the trip through the stack (same order and checks).
@@ -369,7 +369,7 @@ GCSIM_AVX2 bool walk(const PrimitiveArrays& prims, const PackedTree& tree, const
         if (!ok) return false;
         const unsigned last = c0_first ? first0 | only0 : first1 | only1;
         if (last) {
-          if (top >= kStackSize) return false;  // where its push would have failed
+          if (top >= kPacketStackSize) return false;  // where its push would have failed
           node = c0_first ? c0 : c1;
           node_lanes = last;
           node_entry = c0_first ? near0 : near1;

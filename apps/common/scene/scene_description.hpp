@@ -3,6 +3,7 @@
 // scene from its primitives): shapes with a material each, lights, one camera and the image.
 // Radiosity lowers it to its patch/element mesh, the ray tracer to float primitive arrays, the
 // media renderer to its volumes. Loaders (WORLD/ENTITY, OBJ, built-ins) build it.
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -18,6 +19,9 @@
 namespace gcsim::scene {
 
 using Rgb = glm::dvec3;
+
+// The largest of a colour's three channels: zero means the colour is black.
+inline double largest(const Rgb& c) { return std::max({c.r, c.g, c.b}); }
 
 // A participating medium inside a closed bounding surface (the shape that carries the material).
 enum class PhaseKind { isotropic, henyey_greenstein, schlick };

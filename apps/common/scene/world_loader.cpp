@@ -164,7 +164,7 @@ PolygonRecord polygon_record(Cursor& c, const char* owner_name, int owners, int 
 }
 
 void check_area(Cursor& c, const Entity& e, const PolygonRecord& r, int line, const char* what) {
-  Polygon p;
+  geometry::Polygon p;
   p.count = r.count;
   for (int k = 0; k < r.count; ++k) p.v[k] = e.vertices[r.vertex[k]];
   double a = polygon_area(p);
