@@ -1,7 +1,9 @@
 #pragma once
 // One entry point for running an SPMD program: the backend is a name in RunOptions, so an
 // application never calls a particular runtime. "simulated" runs the program on the discrete-event
-// model of the machine (simulated_runtime.hpp); another backend (e.g. "mpi") registers beside it.
+// model of the machine (simulated_runtime.hpp) and is always there; another backend (parix/mpi/)
+// registers itself beside it with a BackendRegistrar from its own folder, and a build without it
+// simply does not offer its name.
 #include <functional>
 #include <string>
 #include <string_view>
@@ -30,11 +32,16 @@ using BackendRunner = RunResult (*)(const RunOptions& options, const Program& pr
 
 struct Backend {
   std::string_view name;
-  std::string_view summary;
+  std::string_view summary;  // one line for --help
   BackendRunner run;
 };
 
-// The backends this build has, "simulated" first.
+// Adds a backend when its translation unit is linked (a namespace-scope constant in its folder).
+struct BackendRegistrar {
+  explicit BackendRegistrar(const Backend& backend);
+};
+
+// The backends this build has, "simulated" first, then in registration order.
 const std::vector<Backend>& backends();
 std::vector<std::string> backend_names();
 

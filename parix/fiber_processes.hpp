@@ -5,7 +5,7 @@
 // suspends or returns, and a process's suspend() switches straight back to the main context.
 // FIFO is the order Boost.Fiber's round_robin scheduler gave (used here before), so simulated
 // results and traces did not change; dropping it saved its ready queue, its thread-local look-ups
-// of the active fiber and its dispatcher (issue 12). Nothing is thread-local: each simulation
+// of the active fiber and its dispatcher. Nothing is thread-local: each simulation
 // (one per host thread) has its own queue. Another implementation would replace this file only.
 #include <cstddef>
 #include <exception>

@@ -22,7 +22,12 @@ struct ProcessorStats {
   std::map<std::string, std::int64_t, std::less<>> ops;  // counted operations
 };
 
+// Whose clock a run's times are: the simulated machine's, or the host's (a backend of real
+// processes, which measured its run instead of simulating it).
+enum class Clock { simulated, wall };
+
 struct RunResult {
+  Clock clock = Clock::simulated;
   std::string model;              // network model name
   std::string config_name;
   int nodes = 0;

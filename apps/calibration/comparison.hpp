@@ -1,6 +1,6 @@
 #pragma once
 // Measured against predicted, cell by cell, and per table: the largest and median relative error
-// and how many cells fall within 15 % and 25 % (the targets of issue 11).
+// and how many cells fall within 15 % and 25 % (the calibration's targets: within 15 % is a good prediction, within 25 % a usable one).
 #include <string>
 #include <vector>
 

@@ -31,7 +31,7 @@ struct PredictionSettings {
   int shooters = 2;      //                 patches shot per loop (the thesis: 2)
   double energy = 0.999; //                 shot fraction at which a run stops (the thesis: 99.9%)
   radiosity::CellAssignment cell_assignment = radiosity::CellAssignment::block;  // the thesis's figure 4.1
-  radiosity::SideFaces side_faces = radiosity::SideFaces::full;  // five equal faces: README, Calibration
+  radiosity::SideFaces side_faces = radiosity::SideFaces::full;  // five equal faces: docs/calibration.md
   radiosity::FormFactorMerge merge = radiosity::FormFactorMerge::fixed_arrays;  // tables 4.5 and 4.8, 4.2 and 4.5
   radiosity::FormFactorExchange ff_exchange = radiosity::FormFactorExchange::together;  // 4.4.1: two exchanges per loop
   int jobs = 1;          // simulations run side by side on this many host threads

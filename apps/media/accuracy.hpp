@@ -1,5 +1,5 @@
 #pragma once
-// What accuracy costs in time (issue 9 §3): each estimator renders a scene at equal budgets of
+// What accuracy costs in time: each estimator renders a scene at equal budgets of
 // simulated time (one CPU of the machine, from counted operations, so the budgets are deterministic),
 // and its RMSE is taken against a high-sample reference on the same photon map, so the error is the
 // estimator's alone. Also the noise spread over the image, the grid's share of the render time, and

@@ -54,7 +54,7 @@ MediaScene small_scene();
 // parameters from the paper; light, camera, k and IOR chosen (unstated in the paper).
 MediaScene experiment1_scene(Exp1Reading reading);
 MediaScene experiment2_scene();
-// Uniformly lit fog (issue 9 §3): no object, a box of thin fog under a Lambertian disk as wide as the
+// Uniformly lit fog: no object, a box of thin fog under a Lambertian disk as wide as the
 // box, so the in-scattered radiance varies little along a ray and transmittance sampling is near ideal.
 MediaScene uniform_fog_scene();
 // The scanned model of the paper's experiments: the Stanford bunny (scenes/meshes/bunny.obj) where the

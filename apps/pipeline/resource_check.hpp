@@ -1,5 +1,5 @@
 #pragma once
-// Resources checked before the work (issue 13): what a run will hold on each simulated node and
+// Resources checked before the work: what a run will hold on each simulated node and
 // on the host is compared with what there is before anything is allocated, so that an argument
 // too large fails at once with the amount needed instead of after minutes or by exhausting the host.
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// Runs that cannot or did not converge (issue 13): refused up front, or reported as failures.
+// Runs that cannot or did not converge: refused up front, or reported as failures.
 #include <optional>
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// What the near field costs and buys (issue 13, `gcsim accuracy radiosity` table 4): per near-field
+// What the near field costs and buys (`gcsim accuracy radiosity` table 4): per near-field
 // ratio (a shooter splits until each part is at most ratio x its distance to the nearest receiver,
 // up to max_shooter_samples per side), the error on the two closed-form hard cases and the time of
 // solving a real scene with it. The first row is the thesis's one point per shooter.

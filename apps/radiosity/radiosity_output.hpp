@@ -1,5 +1,5 @@
 #pragma once
-// Per-element radiosities as a user can check them without decoding an image (issue 13): one row per
+// Per-element radiosities as a user can check them without decoding an image: one row per
 // element with its id, patch, surface, area and radiosity r, g, b. CSV or JSON, chosen by the file
 // name (.json: JSON, anything else: CSV). Numbers are written with 17 significant digits, so they
 // read back to the same doubles.

@@ -1,5 +1,5 @@
 #pragma once
-// Where a shooting patch's hemicubes sit (issue 13). The thesis puts one hemicube at the patch
+// Where a shooting patch's hemicubes sit. The thesis puts one hemicube at the patch
 // centre, which treats the whole patch as a point: exact far away, but a patch as large as its
 // distance to a receiver is badly misjudged (two facing unit squares one unit apart: +20%; the
 // elements along a closed box's edges: -18% to +12%). A shooter whose size exceeds `ratio` times

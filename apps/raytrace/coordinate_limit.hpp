@@ -1,7 +1,7 @@
 #pragma once
 // The largest vertex coordinate a scene file may give: the WORLD parser's limit (1e15), so both
 // loaders accept the same geometry. Beyond it, squared lengths and areas leave float's range; the
-// builders and kernels cope (issue 13), but a file with such numbers is almost surely wrong.
+// builders and kernels cope, but a file with such numbers is almost surely wrong.
 // Kept apart from the OBJ loader so that any loader (tinyobjloader's included) can call it.
 #include <cmath>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// The effects plan (issue 10): from the scene description alone, which passes a render needs, each
+// The effects plan: from the scene description alone, which passes a render needs, each
 // on or off with the reason in words and what it depends on. Passes:
 //   view       primary rays from the camera with direct lighting (always on)
 //   radiosity  diffuse interreflection, the thesis's progressive refinement (view-independent)

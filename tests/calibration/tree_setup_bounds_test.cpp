@@ -1,9 +1,9 @@
-// Why table 4.7 cannot be closed by a connection set-up rule (README, Calibration). Table 4.6 fixes
+// Why table 4.7 cannot be closed by a connection set-up rule (docs/calibration.md). Table 4.6 fixes
 // what one set-up costs but not how set-ups overlap, since its root opens one link at a time. With
 // those costs, every concurrency rule lies between two extremes: all set-ups at once (`parallel`)
 // and one at a time in the whole machine (`serialized`). The thesis's 4-node tree is near the
 // first and its 8- and 16-node trees are beyond the second, so no one rule serves both; if a model
-// or cost change ever breaks this bracket, the README's argument (and issue 11's) must be redone.
+// or cost change ever breaks this bracket, the argument in docs/calibration.md must be redone.
 #include <gtest/gtest.h>
 
 #include "apps/calibration/calibration.hpp"

@@ -1,5 +1,5 @@
 // Fuzz target: Wavefront OBJ files for the ray tracer, loaded and then built into a BVH (where a
-// vertex at 1e23 used to crash, issue 13). Errors must be ObjError or Scene::validate's
+// vertex at 1e23 used to crash). Errors must be ObjError or Scene::validate's
 // invalid_argument.
 #include <sstream>
 #include <stdexcept>

@@ -17,7 +17,7 @@
 #include "apps/raytrace/parallel_render.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "parix/collectives.hpp"
-#include "parix/mpi_runtime.hpp"
+#include "parix/mpi/mpi_runtime.hpp"
 #include "parix/simulated_runtime.hpp"
 
 using namespace gcsim;

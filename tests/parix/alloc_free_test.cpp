@@ -1,4 +1,4 @@
-// Steady-state messages allocate nothing (issue 12, "a leaner kernel"): this binary replaces the
+// Steady-state messages allocate nothing: this binary replaces the
 // global operator new with one that counts calls, runs the ring benchmark's program for N and for
 // 2N iterations and compares the counts. Both runs pay the same set-up (fibers, links, the pools
 // growing to their peak), so any difference is the per-message cost. Its own binary, because the

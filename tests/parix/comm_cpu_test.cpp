@@ -1,4 +1,4 @@
-// The CPU side of communication ([comm_cpu], issue 11): per send, per receive, per connection and
+// The CPU side of communication ([comm_cpu]): per send, per receive, per connection and
 // per byte copied, charged to the node's CPUs, so it competes with compute. Times by hand from the
 // published GC: neighbours connect in 790 us; a message pays 65 us + bytes / 8.75 MB/s.
 #include <gtest/gtest.h>

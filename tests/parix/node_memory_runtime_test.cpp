@@ -1,4 +1,4 @@
-// Node memory through the PARIX API (issue 13): reservations by kind, message buffers charged to
+// Node memory through the PARIX API: reservations by kind, message buffers charged to
 // the nodes that hold them, a run over a node's memory stopped at once (enforce) or finished with
 // its peak reported (warn), and the broadcast experiment's arguments checked before the run.
 #include <gtest/gtest.h>

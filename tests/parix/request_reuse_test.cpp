@@ -1,4 +1,4 @@
-// A process reuses the state of its last send request once nothing else holds it (issue 12: no pool
+// A process reuses the state of its last send request once nothing else holds it (no pool
 // round trip per isend), and never while the program or a message still does: a request the
 // program keeps stays what it was, and a message that waits for its receive holds only a
 // synchronous send's request.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""One way to fail (issue 13): each kind of mistake gives one `gcsim: error: ...` line on stderr
+"""One way to fail: each kind of mistake gives one `gcsim: error: ...` line on stderr
 and its documented exit status (README "Errors, exit codes and interrupted runs"), before any
 simulation runs when the mistake is in the command line or an output path.
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Interrupted long commands besides run and sweep (issue 13): SIGINT to a real gcsim process once
+"""Interrupted long commands besides run and sweep: SIGINT to a real gcsim process once
 it has visibly finished part of its work, then what it leaves behind.
 
   interrupt_commands_test.py GCSIM WORKDIR CASE

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Interrupted runs lose nothing (issue 13): sends SIGINT or SIGTERM to real gcsim processes and
+"""Interrupted runs lose nothing: sends SIGINT or SIGTERM to real gcsim processes and
 checks what they leave behind.
 
   interrupt_test.py GCSIM WORKDIR sweep   SIGINT halfway through a sweep: exit 130, the CSV holds

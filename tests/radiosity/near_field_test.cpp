@@ -1,4 +1,4 @@
-// Hard cases held to closed forms (issue 13): a shooter large relative to its distance to the
+// Hard cases held to closed forms: a shooter large relative to its distance to the
 // receivers. One-point shooting from the patch centre put two facing unit squares 20% off and the
 // elements of a closed furnace box from -7.6% to +4.2%; shooting from several points fixes both.
 #include <gtest/gtest.h>

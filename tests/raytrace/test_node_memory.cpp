@@ -1,4 +1,4 @@
-// A picture too big for one node's memory that fits on eight (issue 13): with the static
+// A picture too big for one node's memory that fits on eight: with the static
 // distribution every node holds the scene and the packed pixels of its share of the tiles, node 0
 // also the image it assembles and the others' pixels that reach it before it takes them. On nodes
 // that hold the scene, the image and three quarters of the image's packed pixels more, one node

@@ -55,33 +55,33 @@ void add_predict_options(CLI::App* cmd, PredictFlags& f) {
   cmd->add_option("--cell-assignment", f.cell_assignment,
                   "Radiosity tables: which hemicube cells each node computes: block (one region of the hemicube per "
                   "node, as the thesis's figure 4.1 draws it; fitted on 4.6 and two rows of 4.3 it predicts the other "
-                  "radiosity cells better than cyclic: README, Calibration) or cyclic (`gcsim run radiosity`'s default)")
+                  "radiosity cells better than cyclic: docs/calibration.md) or cyclic (`gcsim run radiosity`'s default)")
       ->check(CLI::IsMember({"cyclic", "block"}))
       ->capture_default_str();
   cmd->add_option("--side-faces", f.side_faces,
                   "Radiosity tables: the mesh the blocks are cut from: full (each side face a whole square whose "
                   "lower half, below the horizon, is empty: five equal faces; what the thesis's 2-, 4- and 8-node "
-                  "rows imply together: README, Calibration) or half (`gcsim run radiosity`'s default)")
+                  "rows imply together: docs/calibration.md) or half (`gcsim run radiosity`'s default)")
       ->check(CLI::IsMember({"half", "full"}))
       ->capture_default_str();
   cmd->add_option("--ff-merge", f.merge,
                   "Radiosity tables: how each node adds up the exchanged form factors: fixed-arrays (each of the N "
                   "parts as an array over every cell and 256 element slots, whatever the scene, counted as "
                   "communication: what tables 4.5 and 4.8 imply together, and 4.2 with 4.5 that it does not grow with "
-                  "the elements; README, Calibration), whole-hemicube (the same over the scene's elements) or "
+                  "the elements; docs/calibration.md), whole-hemicube (the same over the scene's elements) or "
                   "own-cells (`gcsim run radiosity`'s default)")
       ->check(CLI::IsMember({"own-cells", "whole-hemicube", "fixed-arrays"}))
       ->capture_default_str();
   cmd->add_option("--ff-exchange", f.ff_exchange,
                   "Radiosity tables: together (2 exchanges per loop: the proposals, then every shooter's form factors "
-                  "in one, the thesis's 4.4.1 \"two synchronizations per loop\"; README, Calibration) or per-shooter "
+                  "in one, the thesis's 4.4.1 \"two synchronizations per loop\"; docs/calibration.md) or per-shooter "
                   "(K + 1: each shooter's form factors on their own, `gcsim run radiosity`'s default)")
       ->check(CLI::IsMember({"per-shooter", "together"}))
       ->capture_default_str();
   cmd->add_option("--workload", f.workload,
                   "Radiosity tables: thesis-loops (each scene's reflectances scaled by the one factor that makes it "
                   "take table 4.2's loops at --energy, since a run's time is its loops times the machine's time per "
-                  "loop: CORNELL as built takes 254 loops to 99.9 % where the thesis's took 302; README, Calibration) "
+                  "loop: CORNELL as built takes 254 loops to 99.9 % where the thesis's took 302; docs/calibration.md) "
                   "or as-built (the scenes as `gcsim run radiosity` builds them)")
       ->check(CLI::IsMember({"thesis-loops", "as-built"}))
       ->capture_default_str();

@@ -149,7 +149,7 @@ void print_target(const std::string& what, const std::vector<double>& values, do
 }
 
 void print_targets(const std::vector<SceneAccuracy>& all, const AccuracyOptions& o) {
-  fmt::print("\n== issue 9 section 3 targets, as measured\n");
+  fmt::print("\n== accuracy targets, as measured\n");
   for (const SceneAccuracy& s : all) {
     // Experiment 2 and its variants (exp2-bunny) have the 0.8 target; the fog 1.1; the rest 0.6.
     const double limit = s.scene.rfind("exp2", 0) == 0 ? 0.8 : s.scene == "fog" ? 1.1 : 0.6;
@@ -270,7 +270,7 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
       "of simulated time (one CPU of the machine, from counted operations: deterministic), RMSE against a\n"
       "high-sample reference (radiance sampling, two seeds) on the same photon map (so only the estimators differ), the noise spread\n"
       "over the image, the SH grid's share of the render time, the photon count's effect at fixed samples,\n"
-      "and the targets of issue 9 as measured. Wall times are the host's.");
+      "and the accuracy targets as measured. Wall times are the host's.");
   cmd->add_option("--scenes", f->scenes, "Scenes (exp1, exp2, fog, small, exp1-literal, exp1-bunny, exp2-bunny)")->capture_default_str();
   cmd->add_option("--estimators", f->estimators, "Estimators to compare")->capture_default_str();
   cmd->add_option("--budgets", f->budgets, "Budgets in units (the transmittance estimator's time at M = unit-b S)")

@@ -37,7 +37,7 @@ struct AccuracyFlags {
 };
 
 // The rows so far (JSON), the table being measured and the progress line: an interrupted run
-// writes what it finished (issue 13).
+// writes what it finished.
 struct AccuracyReport {
   nlohmann::json j = nlohmann::json::object();
   pipeline::ProgressLine progress;

@@ -118,7 +118,7 @@ class RenderExperiment : public pipeline::Experiment {
     const UnifiedRender& u = *o.render;
     const double radiosity_s = u.radiosity_seconds();
     // Under MPI the clocks are this rank's wall clock, and only this rank's pass end is known here.
-    const bool real = o.run.model.starts_with("mpi");
+    const bool real = o.run.clock == parix::Clock::wall;
     report_media(u, real, extra);  // the photons run first: radiosity receives what they leave on the walls
     if (!runs(PassId::radiosity)) {
       fmt::print("radiosity skipped: {}\n", plan_.pass(PassId::radiosity).reason);

@@ -1,4 +1,4 @@
-#include "parix/mpi_processor.hpp"
+#include "parix/mpi/mpi_processor.hpp"
 
 #include <mpi.h>
 

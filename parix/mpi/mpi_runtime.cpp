@@ -1,4 +1,4 @@
-#include "parix/mpi_runtime.hpp"
+#include "parix/mpi/mpi_runtime.hpp"
 
 #include <mpi.h>
 
@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "parix/mpi_processor.hpp"
+#include "parix/mpi/mpi_processor.hpp"
 #include "parix/simulation.hpp"  // checked_placement
 
 namespace gcsim::parix {
@@ -182,6 +182,7 @@ MpiRunResult run_mpi(const SimulationOptions& options, const std::function<void(
   const std::vector<Bytes> parts = gather_parts(pack(state, finish), size);
   MpiRunResult out;
   out.root = state.rank == 0;
+  out.result.clock = Clock::wall;
   out.result.model = "mpi (wall-clock)";
   out.result.config_name = config.name;
   out.result.nodes = size;
