@@ -14,6 +14,7 @@
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/option_checks.hpp"
 #include "apps/pipeline/app_registry.hpp"
+#include "apps/pipeline/version.hpp"
 
 namespace gcsim::cli {
 
@@ -74,6 +75,7 @@ std::string gcsim_description() {
 }
 
 void declare_commands(CLI::App* app) {
+  app->set_version_flag("--version", std::string(pipeline::version_line()));
   app->require_subcommand(1);
   CommandGroups g{app};
   g.run = app->add_subcommand("run", "Run an application on the simulated machine");

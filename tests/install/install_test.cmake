@@ -1,0 +1,51 @@
+# cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK=... -DCXX_FLAGS=... -DGENERATOR=... -P install_test.cmake
+function(step)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "failed (${status}): ${ARGN}\n${out}\n${err}")
+  endif()
+  set(step_output "${out}" PARENT_SCOPE)
+endfunction()
+
+file(REMOVE_RECURSE ${WORK})
+set(prefix ${WORK}/prefix)
+step(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+
+# The example sees the prefix and nothing else of gcsim's.
+step(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/ring -B ${WORK}/ring -G ${GENERATOR}
+     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}")
+step(${CMAKE_COMMAND} --build ${WORK}/ring)
+step(${WORK}/ring/gcsim-ring run ring --nodes 5 --laps 3)
+if(NOT step_output MATCHES "ring      token 15 after 3 laps" OR NOT step_output MATCHES "simulated +[0-9.]+ s")
+  message(FATAL_ERROR "gcsim-ring did not pass the token 15 times:\n${step_output}")
+endif()
+file(STRINGS ${WORK}/ring/CMakeCache.txt cache REGEX "${SOURCE_DIR}/(machine|parix|apps)")
+if(cache)
+  message(FATAL_ERROR "the example's build names gcsim's source tree: ${cache}")
+endif()
+
+# Without CMake: the PARIX API from a main() of one's own, flags from pkg-config.
+find_program(PKG_CONFIG pkg-config)
+if(PKG_CONFIG)
+  step(${CMAKE_COMMAND} -E env PKG_CONFIG_PATH=${prefix}/lib/pkgconfig ${PKG_CONFIG} --cflags --libs gcsim)
+  string(STRIP "${step_output}" flags)
+  separate_arguments(flags UNIX_COMMAND "${flags}")
+  separate_arguments(cxx_flags UNIX_COMMAND "${CXX_FLAGS}")
+  step(c++ ${cxx_flags} ${SOURCE_DIR}/tests/install/hello_parix.cpp ${flags} -o ${WORK}/hello_parix)
+  step(${WORK}/hello_parix)
+  if(NOT step_output MATCHES "greeted 3, simulated [0-9.]+ s")
+    message(FATAL_ERROR "hello_parix printed: ${step_output}")
+  endif()
+endif()
+
+# The installed gcsim finds its machine files' data and plotting package under prefix/share.
+step(${prefix}/bin/gcsim --version)
+if(NOT step_output MATCHES "^gcsim [0-9]+[.][0-9]+[.][0-9]+ [(]commit ")
+  message(FATAL_ERROR "gcsim --version printed: ${step_output}")
+endif()
+step(${CMAKE_COMMAND} -E env GCSIM_TRACES_DIR= ${prefix}/bin/gcsim bcast --nodes 4 --size 1KB --trace ${WORK}/t.json)
+step(${CMAKE_COMMAND} -E env GCSIM_TRACES_DIR= ${prefix}/bin/gcsim plot ${WORK}/t.json --out ${WORK}/plots)
+if(NOT EXISTS ${WORK}/plots/gantt.png)
+  message(FATAL_ERROR "the installed gcsim plot wrote no gantt.png")
+endif()
+message(STATUS "installed into ${prefix}; examples/ring built against it and passed the token 15 times")
