@@ -1,9 +1,12 @@
-// Why table 4.7 cannot be closed by a connection set-up rule (docs/calibration.md). Table 4.6 fixes
-// what one set-up costs but not how set-ups overlap, since its root opens one link at a time. With
-// those costs, every concurrency rule lies between two extremes: all set-ups at once (`parallel`)
-// and one at a time in the whole machine (`serialized`). The thesis's 4-node tree is near the
-// first and its 8- and 16-node trees are beyond the second, so no one rule serves both; if a model
-// or cost change ever breaks this bracket, the argument in docs/calibration.md must be redone.
+// Why table 4.7 cannot be closed by a connection set-up rule, for the shipped cost form
+// (docs/calibration.md): a set-up costs connect_base_us plus connect_per_hop_us per hop between
+// its ends. Table 4.6 fixes those two values but cannot confirm the form (every set-up there
+// involves processor 0) nor tell how set-ups overlap, since its root opens one link at a time.
+// With those costs, every concurrency rule lies between two extremes: all set-ups at once
+// (`parallel`) and one at a time in the whole machine (`serialized`). The thesis's 4-node tree is
+// near the first and its 8- and 16-node trees are beyond the second, so no one rule serves both
+// (the shipped rule's misses are at 4 and 64 nodes). If a model or cost change ever breaks this
+// bracket, the argument in docs/calibration.md must be redone.
 #include <gtest/gtest.h>
 
 #include "apps/calibration/calibration.hpp"
