@@ -89,6 +89,7 @@ void declare_commands(CLI::App* app) {
   add_machine_commands(g);
   pipeline::add_app_commands(g);  // run APP, sweep APP, every app's commands and command family's (calibrate, ...)
   add_trace_commands(g);
+  add_help_command(app);
   summarize_descriptions(app);
   pipeline::reject_non_finite_numbers(app);
   // Verbs that no application or command family filled in are hidden rather than offered empty.

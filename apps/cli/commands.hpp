@@ -19,5 +19,7 @@ using pipeline::write_json_file;
 
 void add_machine_commands(CommandGroups& g);
 void add_trace_commands(CommandGroups& g);
+// `gcsim help COMMAND...`: prints what `gcsim COMMAND... --help` prints.
+void add_help_command(CLI::App* root);
 
 }  // namespace gcsim::cli
