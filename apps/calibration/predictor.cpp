@@ -9,7 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "apps/common/programs/broadcast_experiment.hpp"
+#include "apps/programs/broadcast_experiment.hpp"
 #include "apps/radiosity/builtin_scenes.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "parix/interruption.hpp"
