@@ -64,7 +64,7 @@ class Kernel {
   }
   void add_chunk();
 
-  RingBuffer<Key> in_order_;  // keys later than or equal to their predecessor, in (time, seq) order
+  RingBuffer<Key, 16> in_order_;  // keys later than or equal to their predecessor, in (time, seq) order
   // The time of the last key added to the in-order run: its back's while it holds any, else no
   // later than now_. A key at or after it extends the run (one comparison instead of the back's).
   SimTime run_end_ = 0;

@@ -15,11 +15,11 @@
 #include "machine/mesh.hpp"
 #include "machine/network_model.hpp"
 #include "machine/node.hpp"
+#include "machine/ring_buffer.hpp"
 #include "machine/trace.hpp"
 #include "parix/activity.hpp"
 #include "parix/connection_matcher.hpp"
 #include "parix/fiber_processes.hpp"
-#include "parix/fifo.hpp"
 #include "parix/in_order_delivery.hpp"
 #include "parix/link_table.hpp"
 #include "parix/payload_pool.hpp"
@@ -82,8 +82,8 @@ struct LinkEnd {
   bool open = true;
   std::int64_t sent = 0;                                 // messages sent from this end
   InOrderDelivery<Message> order;                        // holds messages that overtook a predecessor
-  Fifo<HeldMessage> arrived;                             // delivered, not yet received
-  Fifo<PostedReceive> receives;                          // posted, waiting for a message
+  machine::RingBuffer<HeldMessage> arrived;              // delivered, not yet received
+  machine::RingBuffer<PostedReceive> receives;           // posted, waiting for a message
   // Nothing the peer sent is still travelling or held, and nothing waits here: the slot may go.
   bool idle(const LinkEnd& peer) const {
     return peer.sent == order.delivered() && arrived.empty() && receives.empty();

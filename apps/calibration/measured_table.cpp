@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "apps/common/programs/broadcast_experiment.hpp"
+#include "apps/programs/broadcast_experiment.hpp"
 #include "apps/radiosity/thesis_tables.hpp"
 
 namespace gcsim::calibration {

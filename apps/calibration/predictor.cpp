@@ -1,15 +1,14 @@
 #include "apps/calibration/predictor.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cmath>
-#include <future>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
 
-#include "apps/common/programs/broadcast_experiment.hpp"
+#include "apps/common/ordered_parallel.hpp"
+#include "apps/programs/broadcast_experiment.hpp"
 #include "apps/radiosity/builtin_scenes.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "parix/interruption.hpp"
@@ -33,22 +32,6 @@ std::string scene_of(const std::string& column) {
 }
 
 bool is_broadcast(const MeasuredTable& t) { return t.id == "4.6" || t.id == "4.7"; }
-
-// Runs f(i) for i in [0, n) on up to `jobs` host threads; each call is an independent simulation.
-template <class F>
-void parallel_for(int n, int jobs, F f) {
-  if (jobs <= 1 || n <= 1) {
-    for (int i = 0; i < n; ++i) f(i);
-    return;
-  }
-  std::atomic<int> next{0};
-  std::vector<std::future<void>> workers;
-  for (int w = 0; w < std::min(jobs, n); ++w)
-    workers.push_back(std::async(std::launch::async, [&] {
-      for (int i = next++; i < n; i = next++) f(i);
-    }));
-  for (auto& w : workers) w.get();  // rethrows the first failure
-}
 
 int measured_cells(const MeasuredTable& t) {
   int n = 0;
@@ -79,7 +62,7 @@ void Predictor::predict_broadcast(const MeasuredTable& t, const machine::Machine
     for (std::size_t k = 0; k < t.columns.size(); ++k)
       if (!std::isnan(t.values[r][k])) cells.emplace_back(int(r), int(k));
   const MeasuredTable layout = thesis_table(t.id);  // t's columns may be a subset, in any order
-  parallel_for(int(cells.size()), settings_.jobs, [&](int i) {
+  apps::parallel_for(int(cells.size()), settings_.jobs, [&](int i) {
     const auto [r, k] = cells[i];
     const int column = layout.column_of(t.columns[k]);
     const std::int64_t bytes = programs::kThesisBroadcastSizes[column];
@@ -145,7 +128,7 @@ void Predictor::load_scenes(const std::vector<RunKey>& keys) {
       missing.push_back(std::get<0>(k));
   std::vector<radiosity::Scene> loaded(missing.size());
   std::vector<std::optional<LoopMatch>> matched(missing.size());
-  parallel_for(int(missing.size()), settings_.jobs, [&](int i) {
+  apps::parallel_for(int(missing.size()), settings_.jobs, [&](int i) {
     loaded[i] = radiosity::flatten(radiosity::load_scene_world(missing[i]));
     const std::optional<int> target = thesis_loops(missing[i], settings_.energy);
     if (!settings_.match_thesis_loops || !target) return;
@@ -168,7 +151,7 @@ void Predictor::run_radiosity(const std::vector<RunKey>& keys, const machine::Ma
   predict_total_ += int(todo.size());
   load_scenes(todo);
   std::mutex lock;
-  parallel_for(int(todo.size()), settings_.jobs, [&](int i) {
+  apps::parallel_for(int(todo.size()), settings_.jobs, [&](int i) {
     const auto& [scene_name, nodes, tree] = todo[i];
     const radiosity::Scene& scene = scenes_.at(scene_name);
     radiosity::ParallelOptions o;

@@ -7,10 +7,10 @@
 
 #include <fmt/format.h>
 
-#include "apps/common/programs/broadcast_experiment.hpp"
+#include "apps/programs/broadcast_experiment.hpp"
 #include "apps/cli/commands.hpp"
 #include "apps/pipeline/option_checks.hpp"
-#include "apps/common/programs/ring_program.hpp"
+#include "apps/programs/ring_program.hpp"
 #include "parix/backend.hpp"
 #include "machine/mesh.hpp"
 #include "machine/topology.hpp"

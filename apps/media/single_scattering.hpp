@@ -7,8 +7,11 @@
 #include <span>
 
 #include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
+#include "apps/media/distance_sampling.hpp"
 #include "apps/media/medium.hpp"
+#include "apps/media/phase.hpp"
 #include "apps/media/segment_estimator.hpp"
 
 namespace gcsim::media {

@@ -9,10 +9,10 @@
 
 #include <fmt/format.h>
 
+#include "apps/common/ordered_parallel.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/list_parsing.hpp"
 #include "apps/pipeline/machine_options.hpp"
-#include "apps/pipeline/ordered_parallel.hpp"
 #include "apps/pipeline/progress.hpp"
 #include "apps/pipeline/sweep_table.hpp"
 #include "parix/interruption.hpp"
@@ -107,7 +107,7 @@ void run_sweep(const SweepFlags& f, const Experiment& e) {
   ProgressLine progress("sweep", int(counts.size()));
   progress.update(0, fmt::format("running {} nodes", counts[0]));
   try {
-    run_ordered<std::unique_ptr<Outcome>>(
+    apps::run_ordered<std::unique_ptr<Outcome>>(
         int(counts.size()), f.jobs,
         [&](int i) {
           MachineOptions point = f.machine;

@@ -14,7 +14,7 @@
 #include "apps/raytrace/camera.hpp"
 #include "apps/raytrace/counters.hpp"
 #include "apps/common/geometry/hit.hpp"
-#include "apps/common/geometry/primitive_test.hpp"
+#include "apps/common/geometry/primitive_intersection.hpp"
 #include "apps/raytrace/geometry_names.hpp"
 
 namespace gcsim::raytrace {

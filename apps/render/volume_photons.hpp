@@ -16,7 +16,7 @@
 #include <glm/vec3.hpp>
 
 #include "apps/common/geometry/bvh.hpp"
-#include "apps/common/geometry/primitive_test.hpp"
+#include "apps/common/geometry/primitive_intersection.hpp"
 #include "apps/common/scene/scene_description.hpp"
 #include "apps/media/medium.hpp"
 #include "apps/media/photon_map.hpp"

@@ -14,7 +14,7 @@
 
 #include "apps/common/geometry/bvh.hpp"
 #include "apps/common/geometry/primitive_arrays.hpp"
-#include "apps/common/geometry/primitive_test.hpp"
+#include "apps/common/geometry/primitive_intersection.hpp"
 #include "apps/common/scene/scene_description.hpp"
 #include "apps/radiosity/scene.hpp"
 #include "parix/processor.hpp"

@@ -1,5 +1,6 @@
 #pragma once
-// The topology families gcsim ships; machine/topology_registry.cpp lists them by name.
+// The topology families gcsim ships, each defined in this folder (mesh and torus in
+// grid_topology.cpp); topology_families() in machine/topology.cpp lists them.
 #include "machine/topology.hpp"
 
 namespace gcsim::machine::topologies {

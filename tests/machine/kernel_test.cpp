@@ -1,5 +1,4 @@
 #include "machine/kernel.hpp"
-#include "machine/ring_buffer.hpp"
 
 #include <gtest/gtest.h>
 
@@ -155,31 +154,6 @@ TEST(Kernel, KeysAfterTheInOrderRunEmptiedRunInTimeOrder) {
   EXPECT_THROW(k.at(49, [] {}), std::logic_error);
   k.run();
   EXPECT_EQ(order, (std::vector<int>{50, 55, 56, 60, 100}));
-}
-
-TEST(RingBuffer, KeepsFifoOrderAcrossWrapsAndGrowth) {
-  RingBuffer<int> q;
-  int pushed = 0, popped = 0;
-  for (int round = 0; round < 200; ++round) {
-    // Push more than pop for a while (growth while wrapped), then drain partly.
-    const int in = round < 100 ? 7 : 3, out = round < 100 ? 5 : 5;
-    for (int i = 0; i < in; ++i) q.push_back(pushed++);
-    ASSERT_EQ(q.back(), pushed - 1);
-    for (int i = 0; i < out && !q.empty(); ++i) {
-      ASSERT_EQ(q.front(), popped++);
-      q.pop_front();
-    }
-    ASSERT_EQ(q.size(), static_cast<std::size_t>(pushed - popped));
-  }
-  EXPECT_EQ(q.capacity() & (q.capacity() - 1), 0u);  // a power of two
-  EXPECT_FALSE(q.full());
-  while (q.size() < q.capacity()) q.push_back(pushed++);
-  EXPECT_TRUE(q.full());
-  const std::size_t before = q.capacity();
-  q.push_back(pushed++);  // grows
-  EXPECT_EQ(q.capacity(), 2 * before);
-  EXPECT_FALSE(q.full());
-  for (; popped < pushed; ++popped, q.pop_front()) ASSERT_EQ(q.front(), popped);
 }
 
 TEST(KernelAction, MovesLeaveTheSourceEmpty) {

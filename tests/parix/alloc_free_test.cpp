@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <new>
 
-#include "apps/common/programs/ring_program.hpp"
+#include "apps/programs/ring_program.hpp"
 #include "parix/simulated_runtime.hpp"
 
 namespace {

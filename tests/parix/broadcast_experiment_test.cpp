@@ -1,6 +1,6 @@
 // The thesis's broadcast experiment (4.4.2) on the simulated GC: the shape the thesis reports,
 // and the sequential algorithm's figures within a stated tolerance of table 4.6.
-#include "apps/common/programs/broadcast_experiment.hpp"
+#include "apps/programs/broadcast_experiment.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "apps/common/programs/broadcast_experiment.hpp"
 #include "apps/pipeline/resource_check.hpp"
+#include "apps/programs/broadcast_experiment.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/simulated_runtime.hpp"
 

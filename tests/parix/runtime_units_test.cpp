@@ -9,7 +9,6 @@
 #include "parix/activity.hpp"
 #include "parix/connection_matcher.hpp"
 #include "parix/deadlock_report.hpp"
-#include "parix/fifo.hpp"
 #include "parix/in_order_delivery.hpp"
 #include "parix/processor.hpp"
 #include "parix/request_pool.hpp"
@@ -84,81 +83,6 @@ TEST(InOrderDelivery, AdmitHoldsAnEarlyMessageAndReleaseHeldDeliversTheNextOnes)
   EXPECT_EQ(got, (std::vector<std::string>{"a", "b", "c"}));
   EXPECT_FALSE(link.holds_any());
   EXPECT_EQ(link.delivered(), 3);
-}
-
-TEST(Fifo, KeepsOrderAndHoldsNothingUntilUsed) {
-  Fifo<int> q;
-  EXPECT_TRUE(q.empty());
-  EXPECT_EQ(q.slots(), 0u);
-  int next_in = 0, next_out = 0;
-  for (int round = 0; round < 50; ++round) {  // interleaved pushes and pops, never more than 5 held
-    for (int k = 0; k < 3; ++k) q.push_back(next_in++);
-    for (int k = 0; k < 2; ++k) {
-      ASSERT_EQ(q.front(), next_out++);
-      q.pop_front();
-    }
-    while (q.size() > 4) {
-      ASSERT_EQ(q.front(), next_out++);
-      q.pop_front();
-    }
-  }
-  while (!q.empty()) {
-    ASSERT_EQ(q.front(), next_out++);
-    q.pop_front();
-  }
-  EXPECT_EQ(next_out, next_in);
-  EXPECT_EQ(q.slots(), 8u);  // kept for the next use: its peak of 5, rounded up to a power of two
-}
-
-TEST(Fifo, AQueueThatNeverEmptiesStaysBounded) {
-  Fifo<std::unique_ptr<int>> q;
-  q.push_back(std::make_unique<int>(0));
-  for (int i = 1; i < 100000; ++i) {
-    q.push_back(std::make_unique<int>(i));
-    ASSERT_EQ(*q.front(), i - 1);
-    q.pop_front();
-    ASSERT_EQ(q.size(), 1u);
-    ASSERT_LE(q.slots(), 4u);
-  }
-}
-
-TEST(Fifo, EraseIfKeepsTheOthersInOrder) {
-  Fifo<int> q;
-  for (int i = 0; i < 10; ++i) q.push_back(i);
-  q.pop_front();                                  // 1..9
-  q.erase_if([](int v) { return v % 3 == 0; });  // drops 3, 6, 9
-  std::vector<int> left;
-  while (!q.empty()) {
-    left.push_back(q.front());
-    q.pop_front();
-  }
-  EXPECT_EQ(left, (std::vector<int>{1, 2, 4, 5, 7, 8}));
-  q.push_back(1);
-  q.erase_if([](int) { return true; });
-  EXPECT_TRUE(q.empty());
-  q.push_back(11);  // the slots are reused, from wherever the front stands
-  q.push_back(12);
-  EXPECT_EQ(q.front(), 11);
-  q.pop_front();
-  EXPECT_EQ(q.front(), 12);
-  EXPECT_EQ(q.slots(), 16u);
-}
-
-TEST(Fifo, KeepsOrderWhenItGrowsWrappedAround) {
-  Fifo<std::unique_ptr<int>> q;
-  int next_in = 0, next_out = 0;
-  for (int round = 0; round < 20; ++round) {  // the front moves on while the queue deepens
-    for (int k = 0; k < 3; ++k) q.push_back(std::make_unique<int>(next_in++));
-    ASSERT_EQ(*q.front(), next_out++);
-    q.pop_front();
-  }
-  while (!q.empty()) {
-    ASSERT_EQ(*q.front(), next_out++);
-    q.front().reset();  // moved out (here: released) by the caller, then dropped
-    q.drop_front();
-  }
-  EXPECT_EQ(next_out, next_in);
-  EXPECT_EQ(q.slots(), 64u);  // the peak of 40, rounded up
 }
 
 TEST(DeadlockReport, NamesEachBlockedProcessCallAndPeer) {

@@ -18,7 +18,7 @@
 
 #include "apps/common/geometry/bounds.hpp"
 #include "apps/common/geometry/bvh.hpp"
-#include "apps/common/geometry/primitive_test.hpp"
+#include "apps/common/geometry/primitive_intersection.hpp"
 #include "apps/common/geometry/traversal.hpp"
 #include "apps/common/rng.hpp"
 #include "apps/raytrace/builtin_scenes.hpp"

@@ -1,37 +1,16 @@
 """Measured against predicted (gcsim calibrate/validate --csv) and error against host time per
 network model (gcsim accuracy network --csv)."""
 
-import csv
 import os
 
 from gcsim_plots.errors import PlotError
+from gcsim_plots.media_accuracy import is_media_accuracy, plot_media_accuracy
+from gcsim_plots.render_accuracy import is_render_accuracy, plot_render_accuracy
 from gcsim_plots.style import DPI
+from gcsim_plots.table_csv import number, read_rows
 
 CALIBRATION_COLUMNS = ("table", "nodes", "case", "measured", "predicted", "error", "fitted")
 ACCURACY_COLUMNS = ("model", "table", "median_error", "max_error", "within_15", "cells", "wall_s")
-
-
-def read_rows(path, columns):
-    try:
-        with open(path, newline="") as f:
-            rows = list(csv.DictReader(f))
-    except OSError as e:
-        raise PlotError(f"{path}: cannot read: {e.strerror}")
-    except (UnicodeDecodeError, csv.Error) as e:
-        raise PlotError(f"{path}: not a CSV file ({e})")
-    if not rows:
-        raise PlotError(f"{path}: no rows (expected a header {','.join(columns)} and rows)")
-    missing = [c for c in columns if c not in rows[0]]
-    if missing:
-        raise PlotError(f"{path}: missing column(s) {', '.join(missing)} (expected {','.join(columns)})")
-    return rows
-
-
-def number(row, key, path, line):
-    try:
-        return float(row[key])
-    except (TypeError, ValueError):
-        raise PlotError(f"{path}:{line}: column {key!r} is {row[key]!r}, not a number")
 
 
 def plot_calibration(plt, path, out, title):
@@ -78,8 +57,6 @@ def plot_calibration(plt, path, out, title):
 def plot_accuracy(plt, path, out, title):
     """Median error against host seconds, one point per (model, table), a line per table; a CSV of
     gcsim accuracy media or gcsim accuracy render goes to its own plot."""
-    from gcsim_plots.media_accuracy import is_media_accuracy, plot_media_accuracy
-    from gcsim_plots.render_accuracy import is_render_accuracy, plot_render_accuracy
     try:
         if is_media_accuracy(path):
             return plot_media_accuracy(plt, path, out, title)

@@ -1,9 +1,9 @@
 """RMSE against simulated time per estimator, one panel per scene (gcsim accuracy media --csv)."""
 
-from gcsim_plots.calibration import number, read_rows
 from matplotlib.ticker import FormatStrFormatter, NullFormatter
 
 from gcsim_plots.style import DPI
+from gcsim_plots.table_csv import number, read_rows
 
 LINESTYLES = ("-", "--", "-.", ":", (0, (5, 1, 1, 1)))
 

@@ -1,8 +1,8 @@
 """Error against simulated time across a whole render (gcsim accuracy render --csv): one line per
 varied control, and the Pareto front of all renders (no other render is both faster and closer)."""
 
-from gcsim_plots.calibration import number, read_rows
 from gcsim_plots.style import DPI
+from gcsim_plots.table_csv import number, read_rows
 
 RENDER_ACCURACY_COLUMNS = ("pass", "control", "value", "relative_rmse", "simulated_s", "wall_s")
 

@@ -13,7 +13,7 @@
 // lanes are traced one by one with traverse_ordered.
 #include "apps/common/geometry/hit.hpp"
 #include "apps/common/geometry/packed_tree.hpp"
-#include "apps/common/geometry/primitive_test.hpp"
+#include "apps/common/geometry/primitive_intersection.hpp"
 
 namespace gcsim::geometry {
 

@@ -7,7 +7,7 @@
 // A primitive child is tested directly; only node children cost a box test.
 #include "apps/common/geometry/hit.hpp"
 #include "apps/common/geometry/packed_tree.hpp"
-#include "apps/common/geometry/primitive_test.hpp"
+#include "apps/common/geometry/primitive_intersection.hpp"
 
 namespace gcsim::geometry {
 
@@ -24,7 +24,7 @@ void traverse_ordered_generic(const PrimitiveArrays& prims, const PackedTree& tr
                               TestTally& tally);
 // True if any primitive is hit with tmin < t < tmax (shadow rays); stops at the first.
 bool traverse_any_hit(const PrimitiveArrays& prims, const PackedTree& tree, const Ray& ray, float tmax, TestTally& tally);
-// test_primitive (primitive_test.hpp) with the SSE rejection and, inside all three edges, the
+// test_primitive (primitive_intersection.hpp) with the SSE rejection and, inside all three edges, the
 // triangle test finished from its values: the same hit and count, fewer instructions.
 void test_primitive_quickly(const PrimitiveArrays& prims, int prim, const Ray& ray, Hit& hit, TestTally& tally);
 // Every primitive, no tree: the reference the tests compare with.

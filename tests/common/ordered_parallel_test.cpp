@@ -1,5 +1,6 @@
 // run_ordered: results arrive in index order whatever the number of threads and however long each
-// task takes, and an exception surfaces after the tasks before it were delivered.
+// task takes, and an exception surfaces after the tasks before it were delivered. parallel_for:
+// every task runs once, and a failure keeps what the tasks before it left.
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -7,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "apps/pipeline/ordered_parallel.hpp"
+#include "apps/common/ordered_parallel.hpp"
 
-namespace gcsim::pipeline {
+namespace gcsim::apps {
 namespace {
 
 // Later tasks finish first: task i spins longer the smaller i is.
@@ -68,5 +69,30 @@ TEST(OrderedParallel, FirstFailureInIndexOrderIsRethrownAfterEarlierRows) {
   }
 }
 
+TEST(ParallelFor, RunsEveryTaskOnceForEveryJobCount) {
+  constexpr int n = 12;
+  for (int jobs : {1, 2, 5, 32}) {
+    std::vector<int> runs(n, 0);  // one slot per task: no lock needed
+    parallel_for(n, jobs, [&](int i) { runs[i] += slow_square(i, n) == i * i; });
+    EXPECT_EQ(runs, std::vector<int>(n, 1)) << "jobs " << jobs;
+  }
+}
+
+TEST(ParallelFor, FirstFailureInIndexOrderIsRethrownAndEarlierTasksKeepTheirResults) {
+  for (int jobs : {1, 4}) {
+    std::vector<int> done(10, 0);
+    try {
+      parallel_for(10, jobs, [&](int i) {
+        if (i == 3 || i == 7) throw std::runtime_error("task " + std::to_string(i));
+        done[i] = 1;
+      });
+      FAIL() << "no exception with jobs " << jobs;
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), "task 3");
+    }
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(done[i], 1) << "task " << i << ", jobs " << jobs;
+  }
+}
+
 }  // namespace
-}  // namespace gcsim::pipeline
+}  // namespace gcsim::apps

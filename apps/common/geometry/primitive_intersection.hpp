@@ -1,5 +1,6 @@
 #pragma once
-// One ray-primitive test, counted, updating the nearest hit with the id tie-break of Hit.
+// A ray against one primitive (sphere or triangle) of PrimitiveArrays, counted: the nearest-hit
+// update with the id tie-break of Hit, and the any-hit test of shadow rays.
 #include <cstdint>
 
 #include "apps/common/geometry/hit.hpp"

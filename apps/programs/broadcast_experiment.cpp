@@ -1,4 +1,4 @@
-#include "apps/common/programs/broadcast_experiment.hpp"
+#include "apps/programs/broadcast_experiment.hpp"
 
 #include <cctype>
 #include <cerrno>

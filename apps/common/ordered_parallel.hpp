@@ -1,8 +1,9 @@
 #pragma once
-// Runs independent tasks 0..n-1 on up to `jobs` host threads and hands their results to `deliver`
-// on the calling thread in index order, each as soon as it and all before it are done. The
-// output is therefore the same as running them one after another. The first exception (in index
-// order) is rethrown once the tasks before it have been delivered; remaining tasks are abandoned.
+// Independent jobs on host threads (gcsim sweep --jobs, calibration's --jobs): runs tasks 0..n-1
+// on up to `jobs` host threads and hands their results to `deliver` on the calling thread in
+// index order, each as soon as it and all before it are done. The output is therefore the same
+// as running them one after another. The first exception (in index order) is rethrown once the
+// tasks before it have been delivered; remaining tasks are abandoned.
 #include <algorithm>
 #include <atomic>
 #include <condition_variable>
@@ -13,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-namespace gcsim::pipeline {
+namespace gcsim::apps {
 
 template <class Result>
 void run_ordered(int n, int jobs, const std::function<Result(int)>& task, const std::function<void(int, Result&)>& deliver) {
@@ -65,4 +66,18 @@ void run_ordered(int n, int jobs, const std::function<Result(int)>& task, const 
   }
 }
 
-}  // namespace gcsim::pipeline
+// For tasks that leave their results in place themselves (each its own slot, or under a lock):
+// task(i) for i in [0, n) as run_ordered runs them. On a failure, what the finished tasks left
+// stays, whichever index they had.
+template <class Task>
+void parallel_for(int n, int jobs, Task&& task) {
+  run_ordered<bool>(
+      n, jobs,
+      [&](int i) {
+        task(i);
+        return true;
+      },
+      [](int, bool&) {});
+}
+
+}  // namespace gcsim::apps

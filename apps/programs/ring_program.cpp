@@ -1,4 +1,4 @@
-#include "apps/common/programs/ring_program.hpp"
+#include "apps/programs/ring_program.hpp"
 
 namespace gcsim::programs {
 
