@@ -139,7 +139,7 @@ void add_bcast(CommandGroups& g) {
       "and back down (O(log N) steps). A connection (virtual link) is opened for every message.\n"
       "Message size: every message carries exactly --size bytes; data is not merged on the way, as in the\n"
       "thesis's measurements. --size 0 opens the connections and sends nothing (the 'connect only' column).");
-  add_machine_options(cmd, o->machine);
+  add_machine_options(cmd, o->machine, "every node of the machine");
   cmd->add_option("--size", o->size, "Bytes per message (suffixes: 1KB = 1024 bytes)")->capture_default_str();
   cmd->add_option("--algo", o->algo, "sequential or tree")->check(CLI::IsMember({"sequential", "tree"}))->capture_default_str();
   cmd->add_flag("--table", o->table, "Run the thesis's whole grid (N = 2..64; 0, 1, 4, 16 KB; both algorithms) and print it next to tables 4.6 and 4.7");
@@ -170,7 +170,7 @@ void add_bench_ring(CommandGroups& g) {
   cmd->footer(
       "Kernel throughput: every processor sends --size bytes to its right neighbour and receives from its\n"
       "left, --iterations times, over persistent links. Prints simulated messages per wall-clock second.");
-  add_machine_options(cmd, o->machine);
+  add_machine_options(cmd, o->machine, "every node of the machine");
   cmd->add_option("--iterations", o->iterations, "Messages each processor sends")->check(CLI::Range(1, 1 << 30))->capture_default_str();
   cmd->add_option("--size", o->size, "Bytes per message")->transform(CLI::AsSizeValue(false))->transform(pipeline::no_negative_size())->capture_default_str();
   cmd->callback([o] {
@@ -194,7 +194,7 @@ void add_demo(CommandGroups& g) {
   cmd->footer(
       "Two processors open a link and both receive first, so neither ever sends. The run stops at once\n"
       "with a report naming each blocked processor, its call and its peer, and exits with status 5.");
-  add_machine_options(cmd, *machine);
+  add_machine_options(cmd, *machine, "2");
   cmd->callback([machine] {
     const parix::RunOptions so = run_options(*machine, 2);
     parix::run(so, [](parix::Processor& p) {

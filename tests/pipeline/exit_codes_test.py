@@ -19,6 +19,7 @@ CASES = [
     (["run", "radiosity", "--no-such-option"], USAGE, "--no-such-option"),
     (["run", "radiosity", "--nodes", "65"], USAGE, "64 nodes"),
     (["run", "radiosity", "--nodes", "0"], USAGE, "--nodes"),
+    (["run", "radiosity", "--nodes", "0x10"], USAGE, "decimal"),
     (["run", "radiosity", "--camera", "nan,0,0,0,0,1"], USAGE, "finite"),
     (["run", "radiosity", "--camera", "0,1,0,0,0,0"], USAGE, "parallel to the up direction"),
     (["run", "radiosity", "--camera", "0,0,0,0,0,0"], USAGE, "coincide"),
