@@ -9,7 +9,9 @@
 
 #include "apps/common/programs/broadcast_experiment.hpp"
 #include "apps/cli/commands.hpp"
+#include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/option_checks.hpp"
+#include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/common/programs/ring_program.hpp"
 #include "parix/backend.hpp"
 #include "machine/mesh.hpp"
@@ -38,15 +40,14 @@ void add_topo(CommandGroups& g) {
       "D = maximum, d = mean processor distance (hops); R = maximum, r = mean relay load (shortest\n"
       "paths between other pairs through a processor); k = mean links per processor; B = broadcast\n"
       "distance from the best-placed managing processor.");
-  cmd->add_option("--config", o->config, "Machine file; default: the built-in GC-PowerPlus")->check(CLI::ExistingFile);
-  cmd->add_option("--topology", o->topology, "mesh, torus, ring, tree or hypercube")
+  pipeline::add_config_option(cmd, o->config);
+  cmd->add_option("--topology", o->topology, "Virtual topology: " + pipeline::topology_choices())
       ->check(CLI::IsMember(machine::topology_names()))
       ->capture_default_str();
-  cmd->add_option("--nodes", o->nodes, "Number of processors (hypercube: a power of two)")
-      ->check(CLI::Range(1, 1 << 16))
-      ->capture_default_str();
-  cmd->add_option("--json", o->json, "Write the parameters as JSON");
+  pipeline::add_nodes_option(cmd, o->nodes, "64 (a hypercube needs a power of two)", 1 << 16);
+  pipeline::add_json_option(cmd, o->json, "the parameters");
   cmd->callback([o] {
+    pipeline::check_writable(o->json, "--json");
     machine::MachineConfig c = o->config.empty() ? machine::default_machine_config() : machine::load_machine_config(o->config);
     c = machine::with_nodes(c, o->nodes);
     const machine::TopologyKind kind = machine::parse_topology_kind(o->topology);
