@@ -21,6 +21,7 @@ CASES = [
     (["run", "radiosity", "--nodes", "0"], USAGE, "--nodes"),
     (["run", "radiosity", "--nodes", "0x10"], USAGE, "decimal"),
     (["topo", "--nodes", "1e3"], USAGE, "decimal"),
+    (["accuracy", "network", "--models", "analytic,bogus"], USAGE, "not a network model"),
     (["run", "radiosity", "--camera", "nan,0,0,0,0,1"], USAGE, "finite"),
     (["run", "radiosity", "--camera", "0,1,0,0,0,0"], USAGE, "parallel to the up direction"),
     (["run", "radiosity", "--camera", "0,0,0,0,0,0"], USAGE, "coincide"),

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """One --model for every command: `gcsim plan` refuses an unknown model as a usage error naming
-the valid ones, as `gcsim run` does, and the --model help of run, plan and sweep lists
+the valid ones, as `gcsim run` does, and the --model help of run, plan, calibrate and validate lists
 the same models, each with its summary, as `gcsim run radiosity --help` does.
 
   model_option_test.py GCSIM SCENE.toml
@@ -38,7 +38,7 @@ def main(binary, scene):
     summaries = [s for s in found if s.split(":")[0] in models]  # not "default: ..."
     if sorted(s.split(":")[0] for s in summaries) != sorted(models):
         failures.append(f"run radiosity --model: summaries {summaries} do not match the models {models}")
-    for command in (["plan"], ["sweep", "radiosity"]):
+    for command in (["plan"], ["calibrate"], ["validate"], ["sweep", "radiosity"], ["accuracy", "network"]):
         names, text = model_line(binary, *command)
         if names != models:
             failures.append(f"{' '.join(command)} --model accepts {names}, run radiosity {models}")

@@ -11,6 +11,7 @@
 #include "apps/calibration/app/prediction_flags.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/machine_options.hpp"
+#include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/pipeline/progress.hpp"
 #include "parix/interruption.hpp"
 
@@ -130,10 +131,9 @@ void add_calibrate_command(pipeline::CommandGroups& g) {
       ->required();
   cmd->add_option("--free", f->free, "Keys to fit, comma-separated, as table.key: network.connect_base_us, ops.polygon_project, ...")
       ->required();
-  cmd->add_option("--config", f->config, "Base machine file; default: the built-in GC-PowerPlus as published")
-      ->check(CLI::ExistingFile);
+  pipeline::add_config_option(cmd, f->config, "Base machine file");
   cmd->add_option("--out", f->out, "Write the fitted machine file here")->required();
-  cmd->add_option("--json", f->json, "Write the fitted values and every cell as JSON");
+  pipeline::add_json_option(cmd, f->json, "the fitted values and every cell");
   cmd->add_option("--csv", f->csv, "Write every cell as CSV (gcsim plot --calibration draws it)");
   add_predict_options(cmd, f->predict);
   cmd->footer(

@@ -14,7 +14,9 @@
 #include "apps/calibration/app/prediction_flags.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/machine_options.hpp"
+#include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/pipeline/progress.hpp"
+#include "machine/network_registry.hpp"
 
 namespace gcsim::calibration::app {
 
@@ -25,8 +27,15 @@ using pipeline::write_json_file;
 // Table specs for `accuracy network`: the broadcast grid and the CORNELL sweeps.
 constexpr const char* kNetworkAccuracyTables = "4.6,4.7,4.3,4.8";
 
+// "analytic,flow,packet": every registered model, as --models takes them.
+std::string every_model() {
+  std::string out;
+  for (const std::string& m : machine::network_model_names()) out += (out.empty() ? "" : ",") + m;
+  return out;
+}
+
 struct NetworkAccuracyFlags {
-  std::string config, models = "analytic,flow,packet", tables = kNetworkAccuracyTables, scene = "CORNELL", json, csv;
+  std::string config, models = every_model(), tables = kNetworkAccuracyTables, scene = "CORNELL", json, csv;
   PredictFlags predict;
 };
 
@@ -108,14 +117,17 @@ void add_network_accuracy_command(pipeline::CommandGroups& g) {
   auto f = std::make_shared<NetworkAccuracyFlags>();
   CLI::App* cmd = g.accuracy->add_subcommand(
       "network",
-      "What each network model's fidelity buys and costs: the thesis's tables predicted under\n"
-      "analytic, flow and packet, with the error against the measured figures and the host time each\n"
-      "model took (the broadcast grid of tables 4.6/4.7 and one scene's columns of 4.3/4.8).");
-  cmd->add_option("--config", f->config, "Machine file; default: the built-in GC-PowerPlus as published")->check(CLI::ExistingFile);
-  cmd->add_option("--models", f->models, "Network models to compare")->capture_default_str();
+      "What each network model's fidelity buys and costs: the thesis's tables predicted under\n" +
+          pipeline::and_list(machine::network_model_names()) +
+          ", with the error against the measured figures and the host time each\n"
+          "model took (the broadcast grid of tables 4.6/4.7 and one scene's columns of 4.3/4.8).");
+  pipeline::add_config_option(cmd, f->config);
+  cmd->add_option("--models", f->models, "Network models to compare, comma-separated: " + pipeline::network_model_summaries())
+      ->check(pipeline::each_network_model())
+      ->capture_default_str();
   cmd->add_option("--tables", f->tables, "Tables, as for calibrate --fit")->capture_default_str();
   cmd->add_option("--scene", f->scene, "Radiosity tables: the scene column to predict (ROOM, PICROOM, CORNELL)")->capture_default_str();
-  cmd->add_option("--json", f->json, "Write the comparison as JSON");
+  pipeline::add_json_option(cmd, f->json, "the comparison");
   cmd->add_option("--csv", f->csv, "Write model,table,median,max,within_15,cells,wall_s as CSV (gcsim plot draws error against time)");
   add_predict_options(cmd, f->predict);
   cmd->callback([f] { run_network_accuracy(*f); });

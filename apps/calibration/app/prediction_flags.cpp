@@ -2,13 +2,12 @@
 
 #include <fmt/format.h>
 
-#include "machine/network_registry.hpp"
+#include "apps/pipeline/option_vocabulary.hpp"
 
 namespace gcsim::calibration::app {
 
 void add_predict_options(CLI::App* cmd, PredictFlags& f) {
-  cmd->add_option("--model", f.model, "Network model for every run; default: the machine file's")
-      ->check(CLI::IsMember(machine::network_model_names()));
+  pipeline::add_model_option(cmd, f.model, "Network model for every run");
   cmd->add_option("--hemicube", f.hemicube, "Radiosity tables: hemicube resolution of the runs")
       ->check(CLI::Range(8, 4096))
       ->capture_default_str();

@@ -13,6 +13,7 @@
 #include "apps/calibration/app/prediction_flags.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/machine_options.hpp"
+#include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/pipeline/progress.hpp"
 
 namespace gcsim::calibration::app {
@@ -97,9 +98,9 @@ void add_validate_command(pipeline::CommandGroups& g) {
       "By default every built-in thesis table (4.3-4.8) that the file's [calibration] section does not\n"
       "name as fitted; cells the fit used are marked and left out of the summaries. Per table: the\n"
       "largest and median relative error and the cells within 15 % and 25 %.");
-  cmd->add_option("--config", f->config, "Machine file; default: the built-in GC-PowerPlus as published")->check(CLI::ExistingFile);
+  pipeline::add_config_option(cmd, f->config);
   cmd->add_option("--tables", f->tables, "Tables to predict, as for calibrate --fit; default: every table not fitted");
-  cmd->add_option("--json", f->json, "Write every cell and the summaries as JSON");
+  pipeline::add_json_option(cmd, f->json, "every cell and the summaries");
   cmd->add_option("--csv", f->csv, "Write every cell as CSV (gcsim plot --calibration draws it)");
   add_predict_options(cmd, f->predict);
   cmd->callback([f] { run_validate(*f); });
