@@ -27,7 +27,7 @@ install(TARGETS ${GCSIM_EXPORTED_TARGETS} EXPORT gcsimTargets
 install(EXPORT gcsimTargets NAMESPACE gcsim:: DESTINATION ${GCSIM_CMAKE_DIR})
 
 # Headers keep the paths the sources include them by ("parix/processor.hpp").
-foreach(dir machine parix apps/common apps/pipeline apps/cli)
+foreach(dir machine parix apps/common apps/pipeline apps/programs apps/cli)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/gcsim/${dir}
           FILES_MATCHING PATTERN "*.hpp")
 endforeach()

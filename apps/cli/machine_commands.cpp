@@ -9,7 +9,9 @@
 
 #include "apps/programs/broadcast_experiment.hpp"
 #include "apps/cli/commands.hpp"
+#include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/option_checks.hpp"
+#include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/programs/ring_program.hpp"
 #include "parix/backend.hpp"
 #include "machine/mesh.hpp"
@@ -38,15 +40,14 @@ void add_topo(CommandGroups& g) {
       "D = maximum, d = mean processor distance (hops); R = maximum, r = mean relay load (shortest\n"
       "paths between other pairs through a processor); k = mean links per processor; B = broadcast\n"
       "distance from the best-placed managing processor.");
-  cmd->add_option("--config", o->config, "Machine file; default: the built-in GC-PowerPlus")->check(CLI::ExistingFile);
-  cmd->add_option("--topology", o->topology, "mesh, torus, ring, tree or hypercube")
+  pipeline::add_config_option(cmd, o->config);
+  cmd->add_option("--topology", o->topology, "Virtual topology: " + pipeline::topology_choices())
       ->check(CLI::IsMember(machine::topology_names()))
       ->capture_default_str();
-  cmd->add_option("--nodes", o->nodes, "Number of processors (hypercube: a power of two)")
-      ->check(CLI::Range(1, 1 << 16))
-      ->capture_default_str();
-  cmd->add_option("--json", o->json, "Write the parameters as JSON");
+  pipeline::add_nodes_option(cmd, o->nodes, "64 (a hypercube needs a power of two)", 1 << 16);
+  pipeline::add_json_option(cmd, o->json, "the parameters");
   cmd->callback([o] {
+    pipeline::check_writable(o->json, "--json");
     machine::MachineConfig c = o->config.empty() ? machine::default_machine_config() : machine::load_machine_config(o->config);
     c = machine::with_nodes(c, o->nodes);
     const machine::TopologyKind kind = machine::parse_topology_kind(o->topology);
@@ -139,7 +140,7 @@ void add_bcast(CommandGroups& g) {
       "and back down (O(log N) steps). A connection (virtual link) is opened for every message.\n"
       "Message size: every message carries exactly --size bytes; data is not merged on the way, as in the\n"
       "thesis's measurements. --size 0 opens the connections and sends nothing (the 'connect only' column).");
-  add_machine_options(cmd, o->machine);
+  add_machine_options(cmd, o->machine, "every node of the machine");
   cmd->add_option("--size", o->size, "Bytes per message (suffixes: 1KB = 1024 bytes)")->capture_default_str();
   cmd->add_option("--algo", o->algo, "sequential or tree")->check(CLI::IsMember({"sequential", "tree"}))->capture_default_str();
   cmd->add_flag("--table", o->table, "Run the thesis's whole grid (N = 2..64; 0, 1, 4, 16 KB; both algorithms) and print it next to tables 4.6 and 4.7");
@@ -170,7 +171,7 @@ void add_bench_ring(CommandGroups& g) {
   cmd->footer(
       "Kernel throughput: every processor sends --size bytes to its right neighbour and receives from its\n"
       "left, --iterations times, over persistent links. Prints simulated messages per wall-clock second.");
-  add_machine_options(cmd, o->machine);
+  add_machine_options(cmd, o->machine, "every node of the machine");
   cmd->add_option("--iterations", o->iterations, "Messages each processor sends")->check(CLI::Range(1, 1 << 30))->capture_default_str();
   cmd->add_option("--size", o->size, "Bytes per message")->transform(CLI::AsSizeValue(false))->transform(pipeline::no_negative_size())->capture_default_str();
   cmd->callback([o] {
@@ -194,7 +195,7 @@ void add_demo(CommandGroups& g) {
   cmd->footer(
       "Two processors open a link and both receive first, so neither ever sends. The run stops at once\n"
       "with a report naming each blocked processor, its call and its peer, and exits with status 5.");
-  add_machine_options(cmd, *machine);
+  add_machine_options(cmd, *machine, "2");
   cmd->callback([machine] {
     const parix::RunOptions so = run_options(*machine, 2);
     parix::run(so, [](parix::Processor& p) {

@@ -10,6 +10,7 @@
 #include "apps/pipeline/experiment.hpp"
 #include "apps/pipeline/machine_options.hpp"
 #include "apps/pipeline/failure.hpp"
+#include "apps/pipeline/option_vocabulary.hpp"
 
 namespace gcsim::pipeline {
 
@@ -34,8 +35,7 @@ void add_bench_threads_command(CLI::App& threads, const AppSpec& app) {
   auto f = std::make_shared<BenchFlags>();
   CLI::App* cmd = threads.add_subcommand(app.name, "What --host-threads buys for one " + app.name + " run on this host");
   add_machine_choice_options(cmd, f->machine);
-  cmd->add_option("--nodes", f->machine.nodes, "Simulated nodes of every run (default: the application's)")
-      ->check(CLI::Range(1, 1 << 20));
+  add_nodes_option(cmd, f->machine.nodes, fmt::format("the application's ({})", app.default_nodes));
   // Named apart from any application's own options (a test app has --rounds).
   cmd->add_option("--host-threads", f->threads, "Host threads compared with one")->check(CLI::Range(2, 256))->capture_default_str();
   cmd->add_option("--bench-rounds", f->rounds, "Rounds of one run on 1 host thread, then one on --host-threads")

@@ -9,9 +9,9 @@
 #include "machine/machine_config.hpp"
 #include "machine/network_model.hpp"
 #include "machine/node_memory.hpp"
-#include "machine/network_registry.hpp"
 #include "machine/trace.hpp"
 #include "apps/pipeline/failure.hpp"
+#include "apps/pipeline/option_vocabulary.hpp"
 #include "parix/interruption.hpp"
 
 namespace gcsim::pipeline {
@@ -23,33 +23,12 @@ void group_as_machine_options(CLI::App* cmd, std::initializer_list<const char*> 
   for (const char* name : names) cmd->get_option(name)->group("Machine and run");
 }
 
-// "1..64 on gc-powerplus": the built-in machine's range, read once from its file.
-const std::string& builtin_node_range() {
-  static const std::string range = [] {
-    const machine::MachineConfig c = machine::default_machine_config();
-    return fmt::format("1..{} on the built-in GC-PowerPlus", c.nodes);
-  }();
-  return range;
-}
-
-// Written from the registry, so a backend added (or left out of this build) is described as it is.
-std::string backend_help() {
-  std::string help = "Where the program runs:";
-  for (const parix::Backend& b : parix::backends()) help += fmt::format(" {}: {};", b.name, b.summary);
-  help.back() = '.';
-  return help;
-}
-
 }  // namespace
 
 void add_machine_choice_options(CLI::App* cmd, MachineOptions& o) {
-  cmd->add_option("--backend", o.backend, backend_help())
-      ->check(CLI::IsMember(parix::backend_names()))
-      ->capture_default_str();
-  cmd->add_option("--config", o.config, "Machine file (configs/*.toml); default: the built-in GC-PowerPlus as published")
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--model", o.model, "Network model: analytic (no contention), flow (links shared max-min fairly) or packet (packets queue for each link); default: the config's")
-      ->check(CLI::IsMember(machine::network_model_names()));
+  add_backend_option(cmd, o.backend);
+  add_config_option(cmd, o.config);
+  add_model_option(cmd, o.model);
   cmd->add_option("--memory-limit", o.memory_limit,
                   "A node's memory (the machine file's memory_mb) exceeded: enforce (the run fails at once, naming the "
                   "processor and what it holds) or warn (the run goes on and reports the peak)")
@@ -58,23 +37,18 @@ void add_machine_choice_options(CLI::App* cmd, MachineOptions& o) {
   group_as_machine_options(cmd, {"--backend", "--config", "--model", "--memory-limit"});
 }
 
-void add_machine_options(CLI::App* cmd, MachineOptions& o) {
+void add_machine_options(CLI::App* cmd, MachineOptions& o, std::string_view nodes_default) {
   add_machine_choice_options(cmd, o);
-  cmd->add_option("--nodes", o.nodes,
-                  "Use the first N nodes of the machine (" + builtin_node_range() +
-                      "; a --config file sets its own), in the GC's mesh shape (2=2x1, 4=2x2, 8=4x2, ...)")
-      ->check(CLI::Range(1, 1 << 20));
+  add_nodes_option(cmd, o.nodes, nodes_default);
   cmd->add_option("--shape", o.shape,
                   "Sub-mesh WxH the N nodes occupy (e.g. 8x1: a row); default: the machine file's [topology.shapes] "
                   "entry, else the most nearly square shape the GC uses")
       ->needs("--nodes");
-  cmd->add_option("--trace", o.trace,
-                  "Write a trace of simulated events: FILE.json (Chrome trace-event JSON, opens in Perfetto) with FILE.csv and "
-                  "FILE.paje (ViTE) beside it; `gcsim plot FILE.json` draws it");
+  add_trace_option(cmd, o.trace);
   cmd->add_option("--trace-level", o.trace_level, "summary (totals only), messages (no link records) or full")
       ->check(CLI::IsMember({"summary", "messages", "full"}))
       ->capture_default_str();
-  cmd->add_option("--json", o.json, "Write the run's simulated and wall times and counters as JSON");
+  add_json_option(cmd, o.json, "the run's simulated and wall times and counters");
   cmd->add_option("--host-threads", o.host_threads,
                   "Host threads for one simulated run: the simulation keeps one, the others compute ahead the work an "
                   "application can (radiosity and render's radiosity pass: each loop's hemicube cells; raytrace and "

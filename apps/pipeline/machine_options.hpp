@@ -1,6 +1,7 @@
 #pragma once
 // Options and reporting shared by every command that runs something on the simulated machine.
 #include <string>
+#include <string_view>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -23,9 +24,11 @@ struct MachineOptions {
   int host_threads = 1;                  // parix::RunOptions::host_threads
 };
 
-// Adds --config, --model, --nodes, --trace, --trace-level and --json to cmd.
-void add_machine_options(CLI::App* cmd, MachineOptions& o);
+// Adds the choice options below and --nodes, --shape, --trace, --trace-level, --json and
+// --host-threads to cmd; `nodes_default` says in --nodes's help what runs without it.
+void add_machine_options(CLI::App* cmd, MachineOptions& o, std::string_view nodes_default);
 // Adds only --backend, --config, --model and --memory-limit: for commands that run several node counts (sweeps).
+// Each option is declared by option_vocabulary.hpp, as every other command's of that name.
 void add_machine_choice_options(CLI::App* cmd, MachineOptions& o);
 // Loads the config (or the built-in one) restricted to o.nodes (or default_nodes) nodes.
 parix::SimulationOptions simulation_options(const MachineOptions& o, int default_nodes);

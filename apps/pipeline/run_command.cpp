@@ -1,6 +1,7 @@
 #include "apps/pipeline/run_command.hpp"
 
 #include <memory>
+#include <string>
 
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/machine_options.hpp"
@@ -11,7 +12,7 @@ namespace gcsim::pipeline {
 void add_run_command(CLI::App& run, const AppSpec& app) {
   auto machine = std::make_shared<MachineOptions>();
   CLI::App* cmd = run.add_subcommand(app.name, app.summary);
-  add_machine_options(cmd, *machine);
+  add_machine_options(cmd, *machine, std::to_string(app.default_nodes));
   ExperimentFactory prepare = app.options(*cmd, Verb::run);
   if (!app.run_footer.empty()) cmd->footer(app.run_footer);
   const int default_nodes = app.default_nodes;

@@ -13,6 +13,7 @@
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/list_parsing.hpp"
 #include "apps/pipeline/machine_options.hpp"
+#include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/pipeline/progress.hpp"
 #include "apps/pipeline/sweep_table.hpp"
 #include "parix/interruption.hpp"
@@ -32,7 +33,7 @@ void add_sweep_options(CLI::App* cmd, SweepFlags& f) {
   add_machine_choice_options(cmd, f.machine);
   cmd->add_option("--nodes,--node-counts", f.nodes, "Comma-separated node counts")->capture_default_str();
   cmd->add_option("--csv", f.csv, "Write the table as CSV");
-  cmd->add_option("--json", f.json, "Write every run's JSON summary");
+  add_json_option(cmd, f.json, "every run's summary");
   cmd->add_option("--jobs", f.jobs,
                   "Simulations run at once on host threads (default: the host's cores); the rows are the same "
                   "and in the same order whatever the number")

@@ -19,6 +19,9 @@ CASES = [
     (["run", "radiosity", "--no-such-option"], USAGE, "--no-such-option"),
     (["run", "radiosity", "--nodes", "65"], USAGE, "64 nodes"),
     (["run", "radiosity", "--nodes", "0"], USAGE, "--nodes"),
+    (["run", "radiosity", "--nodes", "0x10"], USAGE, "decimal"),
+    (["topo", "--nodes", "1e3"], USAGE, "decimal"),
+    (["accuracy", "network", "--models", "analytic,bogus"], USAGE, "not a network model"),
     (["run", "radiosity", "--camera", "nan,0,0,0,0,1"], USAGE, "finite"),
     (["run", "radiosity", "--camera", "0,1,0,0,0,0"], USAGE, "parallel to the up direction"),
     (["run", "radiosity", "--camera", "0,0,0,0,0,0"], USAGE, "coincide"),
@@ -35,6 +38,7 @@ CASES = [
     (["run", "radiosity", "--steps-csv", "{work}"], FILE, "is a directory"),
     (["run", "raytrace", "--image", "no/such/dir/t.png"], FILE, "--image"),
     (["sweep", "radiosity", "--csv", "no/such/dir/s.csv"], FILE, "--csv"),
+    (["topo", "--json", "no/such/dir/t.json"], FILE, "--json"),
     (["run", "radiosity", "--scene", "cornell", "--hemicube", "16", "--max-steps", "3"], RUN_FAILED, "step limit"),
     (["demo", "deadlock"], DEADLOCK, "deadlock"),
 ]

@@ -16,7 +16,9 @@
 #include "apps/media/app/commands.hpp"
 #include "apps/pipeline/list_parsing.hpp"
 #include "apps/pipeline/machine_options.hpp"
+#include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/option_checks.hpp"
+#include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/pipeline/progress.hpp"
 #include "parix/interruption.hpp"
 
@@ -220,6 +222,8 @@ void run_accuracy(AccuracyFlags f) {
     f.budgets = "2,8", f.photon_fractions = "0.5,1", f.o.reference_factor = 8, f.o.spread_repeats = 8;
     f.o.spread_budget = 0;
   }
+  pipeline::check_writable(f.csv, "--csv");  // before the renders
+  pipeline::check_writable(f.json, "--json");
   const machine::MachineConfig m = f.config.empty() ? machine::default_machine_config() : machine::load_machine_config(f.config);
   f.o.budgets = pipeline::parse_double_list(f.budgets, "--budgets");
   f.o.photon_fractions = f.photon_fractions.empty() ? std::vector<double>{} : pipeline::parse_double_list(f.photon_fractions, "--photon-fractions");
@@ -298,9 +302,9 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
       ->capture_default_str();
   cmd->add_option("--seed", f->o.seed, "Random seed")->capture_default_str();
   cmd->add_flag("--quick", f->quick, "CI-sized: 64x48, 20000 photons, budgets 2,8, reference x8, 8 repeats");
-  cmd->add_option("--config", f->config, "Machine file whose [ops] costs turn counts into seconds")->check(CLI::ExistingFile);
+  pipeline::add_config_option(cmd, f->config, "Machine file whose [ops] costs turn counts into seconds");
   cmd->add_option("--csv", f->csv, "Write scene,estimator,budget,b,sim_s,wall_s,samples,rmse,rel_rmse (gcsim plot --accuracy)");
-  cmd->add_option("--json", f->json, "Write every table as JSON");
+  pipeline::add_json_option(cmd, f->json, "every table");
   cmd->add_option("--images", f->images, "Write each estimator's image at the noise-spread budget, and the reference, as PNGs here");
   cmd->footer(
       "\nExamples:\n"

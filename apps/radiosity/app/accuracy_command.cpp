@@ -10,6 +10,7 @@
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/list_parsing.hpp"
 #include "apps/pipeline/machine_options.hpp"
+#include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/pipeline/progress.hpp"
 #include "apps/radiosity/accuracy.hpp"
 #include "apps/radiosity/app/commands.hpp"
@@ -242,8 +243,8 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
   cmd->add_option("--near-field-hemicube", f->near_field_hemicube, "Hemicube resolution for table 4")
       ->check(CLI::Range(16, 4096))
       ->capture_default_str();
-  cmd->add_option("--config", f->config, "Machine file whose [ops] costs turn counts into seconds")->check(CLI::ExistingFile);
-  cmd->add_option("--json", f->json, "Write every table as JSON");
+  pipeline::add_config_option(cmd, f->config, "Machine file whose [ops] costs turn counts into seconds");
+  pipeline::add_json_option(cmd, f->json, "every table");
   cmd->callback([f] { run_accuracy(*f); });
 }
 

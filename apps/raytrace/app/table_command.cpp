@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "apps/pipeline/command_groups.hpp"
+#include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/raytrace/algorithm.hpp"
 #include "apps/raytrace/app/commands.hpp"
 #include "apps/raytrace/builtin_scenes.hpp"
@@ -128,8 +129,7 @@ void add_table_command(pipeline::CommandGroups& g) {
   cmd->add_option("--tile", o->tile, "Subregion size of table 1 (the paper: 8)")->check(CLI::Range(2, 512))->capture_default_str();
   cmd->add_option("--which", o->which, "1, 2 or both")->check(CLI::IsMember({"1", "2", "both"}))->capture_default_str();
   cmd->add_option("--csv", o->csv, "Write PREFIX1.csv and PREFIX2.csv (e.g. --csv raytrace_table; default: no CSV)");
-  cmd->add_option("--config", o->config, "Machine file whose [ops] costs and clock give the time (default: built-in GC-PowerPlus)")
-      ->check(CLI::ExistingFile);
+  pipeline::add_config_option(cmd, o->config, "Machine file whose [ops] costs and clock give the time");
   cmd->callback([o] {
     const machine::MachineConfig config = o->config.empty() ? machine::default_machine_config() : machine::load_machine_config(o->config);
     std::vector<Scene> scenes;

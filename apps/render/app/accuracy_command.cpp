@@ -9,7 +9,7 @@
 #include "apps/common/scene/scene_file.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/machine_options.hpp"
-#include "apps/pipeline/option_checks.hpp"
+#include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/render/app/render_commands.hpp"
 #include "apps/render/render_accuracy.hpp"
 #include "parix/interruption.hpp"
@@ -43,6 +43,7 @@ void write_csv(const std::string& path, const std::vector<Row>& rows) {
 }
 
 void run(const AccuracyFlags& f) {
+  pipeline::check_writable(f.csv, "--csv");  // before the renders, which take minutes
   const scene::SceneDescription d = scene::load_scene_file(f.scene);
   const Plan plan = make_plan(d);
   const parix::SimulationOptions machine = pipeline::simulation_options(f.machine, 8);
@@ -89,8 +90,8 @@ void add_render_accuracy_command(pipeline::CommandGroups& g) {
       "a reference (hemicube 512, energy 0.9999, depth 10, 200000 photons, march 128) next to its simulated\n"
       "and wall time.");
   cmd->add_option("scene", f->scene, "a TOML scene file (scenes/*.toml)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--nodes", f->machine.nodes, "nodes of the machine (default 8)")->check(pipeline::positive_number());
-  cmd->add_option("--config", f->machine.config, "machine file (default: the built-in GC-PowerPlus)");
+  pipeline::add_nodes_option(cmd, f->machine.nodes, "8");
+  pipeline::add_config_option(cmd, f->machine.config);
   cmd->add_option("--csv", f->csv, "write pass,control,value,relative_rmse,simulated_s,wall_s");
   cmd->add_flag("--quick", f->quick, "fewer values and a hemicube-256 reference (about a minute on CORNELL)");
   cmd->footer("Example:\n  gcsim accuracy render scenes/cornell-mirror-glass.toml --csv acc.csv && gcsim plot --accuracy acc.csv");

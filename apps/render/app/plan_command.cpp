@@ -1,4 +1,4 @@
-// gcsim plan SCENE.toml [--nodes N] [--config F] [--json F]: the passes a scene needs, each on or
+// gcsim plan SCENE.toml [--nodes N] [--config F] [--model M] [--json F]: the passes a scene needs, each on or
 // off with the reason, and an estimate of its simulated time and memory per node.
 #include <algorithm>
 #include <memory>
@@ -8,7 +8,9 @@
 
 #include "apps/common/scene/scene_file.hpp"
 #include "apps/pipeline/machine_options.hpp"
+#include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/option_checks.hpp"
+#include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/raytrace/parallel_render.hpp"
 #include "apps/render/app/render_commands.hpp"
 #include "apps/render/plan_report.hpp"
@@ -88,10 +90,12 @@ void add_plan_command(pipeline::CommandGroups& g) {
       "media, shadows), say why each is on or off, and estimate each pass's simulated time and memory per\n"
       "node on the chosen machine before anything runs.");
   cmd->add_option("scene", f->scene, "a TOML scene file (see scenes/ and apps/common/scene/README.md)")->required();
-  cmd->add_option("--nodes", f->machine.nodes, "nodes the estimate is for (default 1)")->check(pipeline::positive_number());
-  cmd->add_option("--config", f->machine.config, "machine file (default: the built-in GC-PowerPlus)");
-  cmd->add_option("--json", f->machine.json, "also write the plan as JSON to this file");
-  cmd->add_option("--model", f->machine.model, "network model of the radiosity sample: analytic, flow or packet");
+  // Declared as every command declares them, so a bad --model or --nodes is a usage error before
+  // the scene is read or any sample runs.
+  pipeline::add_nodes_option(cmd, f->machine.nodes, "1");
+  pipeline::add_config_option(cmd, f->machine.config);
+  pipeline::add_json_option(cmd, f->machine.json, "the plan");
+  pipeline::add_model_option(cmd, f->machine.model, "Network model of the samples run on the simulated machine");
   cmd->add_option("--sample-loops", f->sample_loops,
                   "radiosity loops run on the simulated machine to measure a loop's time (communication\n"
                   "included); 0: count operations only, as for the other passes")
@@ -114,6 +118,7 @@ void add_plan_command(pipeline::CommandGroups& g) {
       ->capture_default_str()
       ->check(pipeline::positive_number());
   cmd->callback([f] {
+    pipeline::check_writable(f->machine.json, "--json");  // before the samples' runs
     const scene::SceneDescription d = scene::load_scene_file(f->scene);
     const machine::MachineConfig machine = pipeline::simulation_options(f->machine, 1).config;
     const int nodes = f->machine.nodes > 0 ? f->machine.nodes : 1;
