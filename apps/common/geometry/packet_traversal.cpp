@@ -92,6 +92,27 @@ GCSIM_AVX2 inline __m256 largest(const __m256 v[3]) {
                        _mm256_andnot_ps(sign, v[2]));
 }
 
+// The rounding bound on t for the lanes, term by term as triangle.cpp writes it.
+GCSIM_AVX2_INLINE __m256 t_error_bound(const __m256 (&zs)[3], const __m256 (&x)[3], const __m256 (&y)[3],
+                                       const __m256 (&e)[3], __m256 inv_det) {
+  const __m256 sign = _mm256_set1_ps(-0.0f);
+  const __m256 max_z = largest(zs), max_x = largest(x), max_y = largest(y), max_e = largest(e);
+  const __m256 g2 = _mm256_set1_ps(gamma_of<float>(2)), g3 = _mm256_set1_ps(gamma_of<float>(3)),
+               g5 = _mm256_set1_ps(gamma_of<float>(5));
+  const __m256 dz = _mm256_mul_ps(g3, max_z);
+  const __m256 dx = _mm256_mul_ps(g5, _mm256_add_ps(max_x, max_z));
+  const __m256 dy = _mm256_mul_ps(g5, _mm256_add_ps(max_y, max_z));
+  const __m256 de = _mm256_mul_ps(
+      _mm256_set1_ps(2.0f),
+      _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(_mm256_mul_ps(g2, max_x), max_y), _mm256_mul_ps(dy, max_x)),
+                    _mm256_mul_ps(dx, max_y)));
+  return _mm256_mul_ps(
+      _mm256_mul_ps(_mm256_set1_ps(3.0f),
+                    _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(_mm256_mul_ps(g3, max_e), max_z), _mm256_mul_ps(de, max_z)),
+                                  _mm256_mul_ps(dz, max_e))),
+      _mm256_andnot_ps(sign, inv_det));
+}
+
 // The watertight test of triangle.cpp (its float path) for the lanes of one axis permutation,
 // with the scalar test's float operations in its order, so each lane rounds as it would alone.
 // Hits are offered; returns the lanes the scalar test must decide: outside the float range, or
@@ -145,23 +166,7 @@ GCSIM_AVX2_INLINE unsigned intersect_lanes(const Triangle& tri, int prim, const 
   if (!hit) return scalar;
   const __m256 inv_det = _mm256_div_ps(_mm256_set1_ps(1.0f), det);
   const __m256 t = _mm256_mul_ps(t_scaled, inv_det);
-  // The rounding bound on t, term by term as triangle.cpp writes it.
-  const __m256 sign = _mm256_set1_ps(-0.0f);
-  const __m256 max_z = largest(zs), max_x = largest(x), max_y = largest(y), max_e = largest(e);
-  const __m256 g2 = _mm256_set1_ps(gamma_of<float>(2)), g3 = _mm256_set1_ps(gamma_of<float>(3)),
-               g5 = _mm256_set1_ps(gamma_of<float>(5));
-  const __m256 dz = _mm256_mul_ps(g3, max_z);
-  const __m256 dx = _mm256_mul_ps(g5, _mm256_add_ps(max_x, max_z));
-  const __m256 dy = _mm256_mul_ps(g5, _mm256_add_ps(max_y, max_z));
-  const __m256 de = _mm256_mul_ps(
-      _mm256_set1_ps(2.0f),
-      _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(_mm256_mul_ps(g2, max_x), max_y), _mm256_mul_ps(dy, max_x)),
-                    _mm256_mul_ps(dx, max_y)));
-  const __m256 dt = _mm256_mul_ps(
-      _mm256_mul_ps(_mm256_set1_ps(3.0f),
-                    _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(_mm256_mul_ps(g3, max_e), max_z), _mm256_mul_ps(de, max_z)),
-                                  _mm256_mul_ps(dz, max_e))),
-      _mm256_andnot_ps(sign, inv_det));
+  const __m256 dt = t_error_bound(zs, x, y, e, inv_det);
   const __m256 ok = _mm256_andnot_ps(_mm256_cmp_ps(t, dt, _CMP_LE_OQ),
                                      _mm256_and_ps(_mm256_cmp_ps(t, tmin, _CMP_GT_OQ), _mm256_cmp_ps(t, tmax, _CMP_LE_OQ)));
   hit &= unsigned(_mm256_movemask_ps(ok));
