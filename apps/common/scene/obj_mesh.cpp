@@ -11,8 +11,7 @@
 
 namespace gcsim::scene {
 
-ObjError::ObjError(const std::string& f, int l, const std::string& what)
-    : std::runtime_error(l > 0 ? f + ":" + std::to_string(l) + ": " + what : f + ": " + what), file(f), line(l) {}
+ObjError::ObjError(const std::string& f, int l, const std::string& message) : SceneError(f, l, message) {}
 
 namespace {
 

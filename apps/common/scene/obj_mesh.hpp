@@ -7,18 +7,16 @@
 // raises ObjError naming the file, the line and what was expected.
 #include <filesystem>
 #include <istream>
-#include <stdexcept>
 #include <string>
 
+#include "apps/common/scene/scene_error.hpp"
 #include "apps/common/scene/triangle_mesh.hpp"
 
 namespace gcsim::scene {
 
-class ObjError : public std::runtime_error {
+class ObjError : public SceneError {
  public:
-  ObjError(const std::string& file, int line, const std::string& what);
-  std::string file;
-  int line;
+  ObjError(const std::string& file, int line, const std::string& message);
 };
 
 constexpr double kMaxObjCoordinate = 1e15;
