@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "apps/common/scene/object_placement.hpp"
 #include "apps/raytrace/framing.hpp"
 
 namespace gcsim::raytrace {
@@ -78,6 +79,7 @@ void add_shape(Scene& out, const scene::Shape& shape) {
 }  // namespace
 
 Scene lower_scene(const scene::SceneDescription& d) {
+  if (scene::places_objects(d)) return lower_scene(scene::with_objects_placed(d));
   Scene out;
   out.name = d.name;
   for (std::size_t i = 0; i < d.materials.size(); ++i) out.add_material(lower_material(d.materials[i], i));
@@ -124,6 +126,7 @@ std::vector<PointLight> lower_lights(const scene::SceneDescription& d) {
 }
 
 Bounds3 lowered_bounds(const scene::SceneDescription& d) {
+  if (scene::places_objects(d)) return lowered_bounds(scene::with_objects_placed(d));
   Scene shapes;
   for (const auto& shape : d.shapes) add_shape(shapes, shape);
   return shapes.bounds();
