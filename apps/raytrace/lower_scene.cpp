@@ -105,6 +105,11 @@ Scene lower_scene(const scene::SceneDescription& d) {
   } else if (out.prim_count() > 0) {
     out.camera = frame_scene(out.bounds(), {0.6f, 0.5f, 1.0f}, {0, 1, 0}, 40.0f);
   }
+  if (d.light_above_camera && d.lights.empty() && out.prim_count() > 0) {
+    // Above the eye, bright enough for the scene's size (float, as the OBJ scenes always were).
+    const float r = 0.5f * glm::length(out.bounds().extent());
+    out.lights.push_back({glm::vec3(out.camera.eye) + glm::vec3(0, 2.0f * r, 0), glm::vec3(9.0f * r * r)});
+  }
   out.validate();
   return out;
 }
