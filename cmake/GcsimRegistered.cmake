@@ -1,8 +1,8 @@
-# gcsim_add_registered(KIND NAME BASE SOURCES LIBS): the one mechanism behind gcsim_add_app and
-# gcsim_add_backend. The sources register themselves from a static registrar, so they become an
+# gcsim_add_registered(KIND NAME BASE SOURCES LIBS): the one mechanism behind gcsim_add_app,
+# gcsim_add_backend and gcsim_add_scene_format. The sources register themselves from a static registrar, so they become an
 # OBJECT library gcsim_<kind>_<name> (a library would let the linker drop what nothing names),
 # linked to BASE and LIBS, and listed in the global property GCSIM_<KIND>S, or
-# GCSIM_<SET>_<KIND>S when GCSIM_<KIND>_SET is set (as tests/apps and tests/backends do).
+# GCSIM_<SET>_<KIND>S when GCSIM_<KIND>_SET is set (as tests/apps, tests/backends and tests/scene_formats do).
 function(gcsim_add_registered kind name base sources libs)
   string(TOUPPER ${kind} KIND)
   if(NOT name OR NOT sources)

@@ -6,9 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "apps/common/scene/obj_mesh.hpp"
-#include "apps/common/scene/scene_file.hpp"
-#include "apps/common/scene/world_loader.hpp"
+#include "apps/common/scene/scene_error.hpp"
 #include "apps/pipeline/command_groups.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/resource_check.hpp"
@@ -56,11 +54,7 @@ int report_failure(std::exception_ptr e) {
     return fail(x, kExitFile);
   } catch (const machine::ConfigError& x) {
     return fail(x, kExitFile);
-  } catch (const scene::ParseError& x) {
-    return fail(x, kExitFile);
-  } catch (const scene::SceneFileError& x) {
-    return fail(x, kExitFile);
-  } catch (const scene::ObjError& x) {
+  } catch (const scene::SceneError& x) {  // every scene loader's errors (TOML, OBJ, WORLD, ...)
     return fail(x, kExitFile);
   } catch (const RunFailure& x) {
     return fail(x, kExitRunFailed);

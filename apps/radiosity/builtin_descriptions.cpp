@@ -1,7 +1,5 @@
 #include "apps/radiosity/builtin_descriptions.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <string>
 
 #include "apps/radiosity/object_builder.hpp"
@@ -231,15 +229,6 @@ SceneDescription cornell_description() {
   cam.fov_y_degrees = 39.3;  // 35 mm focal length, 25 mm film
   d.camera = cam;
   return d;
-}
-
-std::optional<SceneDescription> builtin_description(std::string_view name) {
-  std::string lower(name);
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (lower == "room") return room_description();
-  if (lower == "picroom") return picroom_description();
-  if (lower == "cornell") return cornell_description();
-  return std::nullopt;
 }
 
 }  // namespace gcsim::radiosity

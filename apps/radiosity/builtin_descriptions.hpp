@@ -6,9 +6,6 @@
 //   PICROOM 10 / 27 / 176 / 205 / 343   furnished room, one light, three pictures on the walls
 //   CORNELL  8 /  9 / 112 / 166 / 274   the published Cornell box (geometry in mm, its colours)
 // Each shape's object is the thesis's entity, each material one of its surfaces.
-#include <optional>
-#include <string_view>
-
 #include "apps/common/scene/scene_description.hpp"
 
 namespace gcsim::radiosity {
@@ -16,8 +13,5 @@ namespace gcsim::radiosity {
 scene::SceneDescription room_description();
 scene::SceneDescription picroom_description();
 scene::SceneDescription cornell_description();
-
-// The description of a built-in scene by name (any case); none for other names.
-std::optional<scene::SceneDescription> builtin_description(std::string_view name);
 
 }  // namespace gcsim::radiosity

@@ -2,14 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <filesystem>
-#include <stdexcept>
-
-#include <fmt/format.h>
 
 #include "apps/common/scene/description_to_world.hpp"
-#include "apps/common/scene/scene_file.hpp"
-#include "apps/common/scene/world_loader.hpp"
+#include "apps/common/scene/scene_catalogue.hpp"
 #include "apps/radiosity/builtin_descriptions.hpp"
 
 namespace gcsim::radiosity {
@@ -20,15 +15,16 @@ World cornell_world() { return scene::to_world(cornell_description()); }
 
 std::vector<std::string> builtin_scene_names() { return {"room", "picroom", "cornell"}; }
 
-World load_scene_world(const std::string& name) {
-  if (auto d = builtin_description(name)) return scene::to_world(*d);
-  if (std::filesystem::exists(name)) {
-    if (std::filesystem::path(name).extension() == ".toml") return scene::to_world(scene::load_scene_file(name));
-    return load_world(name);
-  }
-  throw std::invalid_argument(fmt::format(
-      "unknown scene '{}': expected room, picroom, cornell or the path of a TOML scene file or a WORLD file", name));
-}
+World load_scene_world(const std::string& name_or_path) { return scene::to_world(scene::load_scene(name_or_path)); }
+
+namespace {
+
+// The thesis's three in the scene catalogue, so that every application and the one entry know them.
+const scene::BuiltinSceneRegistrar kRoom({"room", "radiosity", room_description});
+const scene::BuiltinSceneRegistrar kPicroom({"picroom", "radiosity", picroom_description});
+const scene::BuiltinSceneRegistrar kCornell({"cornell", "radiosity", cornell_description});
+
+}  // namespace
 
 SceneCounts thesis_counts(std::string_view name) {
   std::string lower(name);

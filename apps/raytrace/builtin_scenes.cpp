@@ -2,15 +2,13 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
 #include "apps/common/rng.hpp"
-#include "apps/common/scene/scene_file.hpp"
+#include "apps/common/scene/scene_catalogue.hpp"
 #include "apps/raytrace/framing.hpp"
 #include "apps/raytrace/lower_scene.hpp"
-#include "apps/raytrace/obj_loader.hpp"
 #include "apps/raytrace/teapot.hpp"
 
 namespace gcsim::raytrace {
@@ -195,26 +193,21 @@ scene::SceneDescription builtin_scene_description(std::string_view name) {
 
 std::span<const std::string_view> builtin_scene_names() { return kNames; }
 std::span<const std::string_view> paper_scene_names() { return std::span(kNames).first(5); }
-bool is_builtin_scene(std::string_view name) {
-  for (auto n : kNames)
-    if (n == name) return true;
-  return false;
-}
 
 Scene make_builtin_scene(std::string_view name) { return lower_scene(builtin_scene_description(name)); }
 
-scene::SceneDescription load_scene_description(const std::string& name_or_path) {
-  if (is_builtin_scene(name_or_path)) return builtin_scene_description(name_or_path);
-  auto ends_with = [&](std::string_view lower) {
-    if (name_or_path.size() <= lower.size()) return false;
-    const std::string_view tail = std::string_view(name_or_path).substr(name_or_path.size() - lower.size());
-    return std::equal(tail.begin(), tail.end(), lower.begin(), [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
-  };
-  if (ends_with(".obj")) return load_obj_description(name_or_path);
-  if (ends_with(".toml")) return scene::load_scene_file(name_or_path);
-  return builtin_scene_description(name_or_path);  // throws, listing the names
-}
+Scene load_scene(const std::string& name_or_path) { return lower_scene(scene::load_scene(name_or_path)); }
 
-Scene load_scene(const std::string& name_or_path) { return lower_scene(load_scene_description(name_or_path)); }
+namespace {
+
+// The six in the scene catalogue, so that every application and the one scene entry know them.
+struct CatalogueEntries {
+  CatalogueEntries() {
+    for (std::string_view name : kNames)
+      scene::BuiltinSceneRegistrar({std::string(name), "raytrace", [name] { return builtin_scene_description(name); }});
+  }
+} const kCatalogueEntries;
+
+}  // namespace
 
 }  // namespace gcsim::raytrace

@@ -18,14 +18,13 @@ namespace gcsim::raytrace {
 
 std::span<const std::string_view> builtin_scene_names();
 std::span<const std::string_view> paper_scene_names();  // the five of table 1, in its order
-bool is_builtin_scene(std::string_view name);
-// The built-in's scene description; throws std::invalid_argument listing the known names.
+// The built-in's scene description; throws std::invalid_argument listing the known names. The six
+// are registered in the scene catalogue (apps/common/scene/scene_catalogue.hpp) under these names.
 scene::SceneDescription builtin_scene_description(std::string_view name);
-// A built-in scene name, or else the path of a Wavefront OBJ file (.obj) or a TOML scene file
-// (.toml, apps/common/scene/README.md). Throws as the loaders do (ObjError, SceneFileError).
-scene::SceneDescription load_scene_description(const std::string& name_or_path);
-// The same lowered to the ray tracer's float primitives (lower_scene): one path for all three.
+// The same lowered to the ray tracer's float primitives (lower_scene).
 Scene make_builtin_scene(std::string_view name);
+// The scene catalogue's one entry (any built-in scene, any scene file format) lowered: throws as
+// scene::load_scene does, or lower_scene's invalid_argument for what the ray tracer cannot show.
 Scene load_scene(const std::string& name_or_path);
 
 }  // namespace gcsim::raytrace

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "apps/common/scene/object_placement.hpp"
 #include "apps/raytrace/framing.hpp"
 
 namespace gcsim::raytrace {
@@ -78,6 +79,7 @@ void add_shape(Scene& out, const scene::Shape& shape) {
 }  // namespace
 
 Scene lower_scene(const scene::SceneDescription& d) {
+  if (scene::places_objects(d)) return lower_scene(scene::with_objects_placed(d));
   Scene out;
   out.name = d.name;
   for (std::size_t i = 0; i < d.materials.size(); ++i) out.add_material(lower_material(d.materials[i], i));
@@ -103,6 +105,11 @@ Scene lower_scene(const scene::SceneDescription& d) {
   } else if (out.prim_count() > 0) {
     out.camera = frame_scene(out.bounds(), {0.6f, 0.5f, 1.0f}, {0, 1, 0}, 40.0f);
   }
+  if (d.light_above_camera && d.lights.empty() && out.prim_count() > 0) {
+    // Above the eye, bright enough for the scene's size (float, as the OBJ scenes always were).
+    const float r = 0.5f * glm::length(out.bounds().extent());
+    out.lights.push_back({glm::vec3(out.camera.eye) + glm::vec3(0, 2.0f * r, 0), glm::vec3(9.0f * r * r)});
+  }
   out.validate();
   return out;
 }
@@ -124,6 +131,7 @@ std::vector<PointLight> lower_lights(const scene::SceneDescription& d) {
 }
 
 Bounds3 lowered_bounds(const scene::SceneDescription& d) {
+  if (scene::places_objects(d)) return lowered_bounds(scene::with_objects_placed(d));
   Scene shapes;
   for (const auto& shape : d.shapes) add_shape(shapes, shape);
   return shapes.bounds();

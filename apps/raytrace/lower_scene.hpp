@@ -1,6 +1,7 @@
 #pragma once
 // The ray tracer's primitives from the shared scene description: spheres and triangles in float,
-// polygons and boxes split into triangles, materials and point lights carried over. What Whitted
+// polygons and boxes split into triangles, materials and point lights carried over, objects placed
+// as their layouts say (scene::with_objects_placed). What Whitted
 // ray tracing cannot show (participating media, glass it has no dielectric for) is refused by name,
 // never dropped.
 #include "apps/common/scene/scene_description.hpp"

@@ -33,6 +33,8 @@ CASES = [
     (["bench", "ring", "--size", "-1KB"], USAGE, "negative"),
     (["run", "radiosity", "--scene", "no/such.wld"], FILE, "does not exist"),
     (["run", "raytrace", "--scene", "no/such.obj"], FILE, "does not exist"),
+    (["run", "raytrace", "--scene", "no-such-scene"], USAGE, "unknown scene"),
+    (["run", "radiosity", "--scene", "no-such-scene"], USAGE, "unknown scene"),
     (["run", "radiosity", "--json", "no/such/dir/r.json"], FILE, "does not exist"),
     (["run", "radiosity", "--image", "no/such/dir/c.png"], FILE, "--image"),
     (["run", "radiosity", "--steps-csv", "{work}"], FILE, "is a directory"),

@@ -216,6 +216,7 @@ std::map<std::string, const ObjectLayout*> layouts_by_object(const SceneDescript
 }  // namespace
 
 World to_world(const SceneDescription& d) {
+  if (d.source_world) return *d.source_world;
   World w;
   w.name = d.name;
   std::vector<EntityLowering> entities;

@@ -17,6 +17,7 @@ namespace gcsim::scene {
 
 constexpr int kSphereSlices = 16, kSphereStacks = 8;
 
+// A description read from a WORLD file gives that file's World (SceneDescription::source_world).
 // Throws std::invalid_argument if a shape names a material that does not exist.
 World to_world(const SceneDescription& description);
 

@@ -11,8 +11,7 @@
 
 namespace gcsim::scene {
 
-ObjError::ObjError(const std::string& f, int l, const std::string& what)
-    : std::runtime_error(l > 0 ? f + ":" + std::to_string(l) + ": " + what : f + ": " + what), file(f), line(l) {}
+ObjError::ObjError(const std::string& f, int l, const std::string& message) : SceneError(f, l, message) {}
 
 namespace {
 
@@ -138,6 +137,29 @@ TriangleMesh load_obj_mesh(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) throw ObjError(file.string(), 0, "cannot open the file");
   return parse_obj_mesh(in, file.string());
+}
+
+SceneDescription obj_description(TriangleMesh mesh, const std::string& source) {
+  SceneDescription d;
+  d.name = source;
+  Material grey;
+  grey.name = "obj grey";
+  grey.diffuse = glm::dvec3(glm::vec3(0.75f, 0.75f, 0.72f));  // floats, as the ray tracer holds them
+  grey.specular = 0.3f;
+  const int material = d.add_material(grey);
+  Shape& shape = d.shapes.emplace_back();
+  shape.geometry = Mesh{std::move(mesh), {}};
+  shape.material = material;
+  d.light_above_camera = true;
+  return d;
+}
+
+SceneDescription load_obj_description(const std::filesystem::path& file) {
+  return obj_description(load_obj_mesh(file), file.string());
+}
+
+SceneDescription parse_obj_description(std::istream& in, const std::string& source) {
+  return obj_description(parse_obj_mesh(in, source), source);
 }
 
 }  // namespace gcsim::scene

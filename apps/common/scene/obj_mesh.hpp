@@ -7,23 +7,28 @@
 // raises ObjError naming the file, the line and what was expected.
 #include <filesystem>
 #include <istream>
-#include <stdexcept>
 #include <string>
 
+#include "apps/common/scene/scene_description.hpp"
+#include "apps/common/scene/scene_error.hpp"
 #include "apps/common/scene/triangle_mesh.hpp"
 
 namespace gcsim::scene {
 
-class ObjError : public std::runtime_error {
+class ObjError : public SceneError {
  public:
-  ObjError(const std::string& file, int line, const std::string& what);
-  std::string file;
-  int line;
+  ObjError(const std::string& file, int line, const std::string& message);
 };
 
 constexpr double kMaxObjCoordinate = 1e15;
 
 TriangleMesh load_obj_mesh(const std::filesystem::path& file);
 TriangleMesh parse_obj_mesh(std::istream& in, const std::string& source_name);
+
+// An OBJ file as a scene (named after the source): the mesh with one grey material, no camera and
+// no lights, so light_above_camera: the renderer that frames it lights it from above its camera.
+SceneDescription obj_description(TriangleMesh mesh, const std::string& source);
+SceneDescription load_obj_description(const std::filesystem::path& file);
+SceneDescription parse_obj_description(std::istream& in, const std::string& source);
 
 }  // namespace gcsim::scene

@@ -136,7 +136,14 @@ struct SceneDescription {
   std::vector<Light> lights;
   std::vector<ObjectLayout> layouts;  // per object, optional (radiosity's built-in scenes)
   std::optional<Camera> camera;  // none: each renderer frames the scene itself
+  // The format has no lights of its own (OBJ): a renderer that frames the scene puts a point light
+  // above its camera (the ray tracer's lowering does).
+  bool light_above_camera = false;
   ImageSettings image;
+  // Read from a WORLD file: the file's own entities, which to_world returns as they are (their
+  // patches and elements are the file's, not a grid's); the shapes above are the same patches
+  // placed, for the other renderers. Whoever edits the shapes must drop it.
+  std::optional<World> source_world;
 
   int add_material(const Material& m) {
     materials.push_back(m);

@@ -12,10 +12,7 @@
 namespace gcsim::scene {
 
 SceneFileError::SceneFileError(std::string f, int l, const std::string& m)
-    : std::runtime_error(l > 0 ? fmt::format("{}:{}: {}", f, l, m) : fmt::format("{}: {}", f, m)),
-      file(std::move(f)),
-      line(l),
-      message(m) {}
+    : SceneError(std::move(f), l, m) {}
 
 namespace file {
 namespace {

@@ -7,22 +7,19 @@
 // camera or polygon, a referenced file that is missing. Relative paths are resolved against the
 // folder of the scene file.
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 
 #include "apps/common/scene/scene_description.hpp"
+#include "apps/common/scene/scene_error.hpp"
 
 namespace gcsim::scene {
 
 // what() reads "FILE:LINE: MESSAGE", or "FILE: MESSAGE" (line 0) when the mistake has no line, e.g.
 // a missing scene file.
-class SceneFileError : public std::runtime_error {
+class SceneFileError : public SceneError {
  public:
   SceneFileError(std::string file, int line, const std::string& message);
-  std::string file;
-  int line;
-  std::string message;
 };
 
 SceneDescription load_scene_file(const std::filesystem::path& file);

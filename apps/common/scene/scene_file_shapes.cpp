@@ -8,6 +8,7 @@
 #include "apps/common/scene/obj_mesh.hpp"
 #include "apps/common/scene/scene_file.hpp"
 #include "apps/common/scene/scene_file_reader.hpp"
+#include "apps/common/scene/world_description.hpp"
 #include "apps/common/scene/world_loader.hpp"
 
 namespace gcsim::scene::file {
@@ -125,50 +126,6 @@ void read_mesh(const Reader& r, const toml::table& t, const MaterialIndex& mater
   out.shapes.push_back(std::move(s));
 }
 
-// Every placed patch of the WORLD becomes a polygon with its elements; each entity's surfaces become
-// materials "WORLD/ENTITY/surface K"; each instance is an object.
-void add_world(const World& w, const std::string& prefix, SceneDescription& out) {
-  std::vector<int> first_material(w.entities.size());
-  for (std::size_t e = 0; e < w.entities.size(); ++e) {
-    first_material[e] = int(out.materials.size());
-    for (std::size_t k = 0; k < w.entities[e].surfaces.size(); ++k) {
-      Material m;
-      m.name = fmt::format("{}/{}/surface {}", prefix, w.entities[e].name, k);
-      m.diffuse = w.entities[e].surfaces[k].reflectance;
-      m.emission = w.entities[e].surfaces[k].exitance;
-      out.add_material(m);
-    }
-  }
-  for (std::size_t i = 0; i < w.instances.size(); ++i) {
-    const Instance& inst = w.instances[i];
-    const Entity& e = w.entities.at(inst.entity);
-    const Vec3& sc = inst.placement.scale;
-    const bool mirrored = (sc.x < 0) != ((sc.y < 0) != (sc.z < 0));  // as radiosity's flatten
-    auto placed = [&](const PolygonRecord& rec, std::array<glm::dvec3, 4>& v) {
-      for (int k = 0; k < rec.count; ++k)
-        v[k] = inst.placement.apply(e.vertices.at(rec.vertex[mirrored ? rec.count - 1 - k : k]));
-    };
-    for (std::size_t pi = 0; pi < e.patches.size(); ++pi) {
-      Polygon p;
-      p.count = e.patches[pi].count;
-      placed(e.patches[pi], p.vertex);
-      for (const PolygonRecord& el : e.elements)
-        if (el.owner == int(pi)) {
-          ExplicitElement x;
-          x.count = el.count;
-          placed(el, x.vertex);
-          p.elements.push_back(x);
-        }
-      Shape s;
-      s.geometry = p;
-      s.material = first_material[inst.entity] + e.patches[pi].owner;
-      s.object = fmt::format("{}/{}#{}", prefix, e.name, i);
-      out.shapes.push_back(s);
-    }
-  }
-  if (!out.camera) out.camera = w.camera;
-}
-
 void read_world(const Reader& r, const toml::table& t, SceneDescription& out) {
   r.only_keys(t, "[[world]]", {"file"});
   const auto path = r.existing_file(t, "file", "[[world]]");
@@ -178,27 +135,7 @@ void read_world(const Reader& r, const toml::table& t, SceneDescription& out) {
   } catch (const ParseError& e) {
     r.fail(t.get("file"), std::string("in the WORLD file of [[world]]: ") + e.what());
   }
-  for (const Instance& inst : w.instances)
-    if (inst.entity < 0 || inst.entity >= int(w.entities.size()))
-      r.fail(t.get("file"), "the WORLD file of [[world]] places an entity it does not define");
-  for (const Entity& e : w.entities) {
-    auto valid = [&](const PolygonRecord& rec) {
-      if (rec.count < 3 || rec.count > 4) return false;
-      for (int k = 0; k < rec.count; ++k)
-        if (rec.vertex[k] < 0 || rec.vertex[k] >= int(e.vertices.size())) return false;
-      return true;
-    };
-    for (const auto* records : {&e.patches, &e.elements})
-      for (const PolygonRecord& rec : *records)
-        if (!valid(rec))
-          r.fail(t.get("file"), fmt::format("entity '{}' of [[world]] has a polygon with a bad vertex list", e.name));
-    for (const PolygonRecord& p : e.patches)
-      if (p.owner < 0 || p.owner >= int(e.surfaces.size()))
-        r.fail(t.get("file"), fmt::format("entity '{}' of [[world]] has a patch of an unknown surface", e.name));
-    for (const PolygonRecord& el : e.elements)
-      if (el.owner < 0 || el.owner >= int(e.patches.size()))
-        r.fail(t.get("file"), fmt::format("entity '{}' of [[world]] has an element of an unknown patch", e.name));
-  }
+  if (const std::string problem = world_problem(w, " of [[world]]"); !problem.empty()) r.fail(t.get("file"), problem);
   add_world(w, path.stem().string(), out);
 }
 

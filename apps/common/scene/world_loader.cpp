@@ -16,7 +16,7 @@ namespace gcsim::scene {
 using namespace gcsim::geometry;  // the double-precision polygons the area checks use
 
 ParseError::ParseError(std::string f, int l, const std::string& m)
-    : std::runtime_error(fmt::format("{}:{}: {}", f, l, m)), file(std::move(f)), line(l), message(m) {}
+    : SceneError(f, l, m, fmt::format("{}:{}: {}", f, l, m)) {}
 
 Vec3 Placement::apply(const Vec3& p0) const {
   Vec3 p = p0 * scale;

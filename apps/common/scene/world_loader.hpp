@@ -5,21 +5,18 @@
 // vertices) and ELEMENT (patch index and vertices) sections. Comments are /* ... */ and COMMENT lines.
 // As an extension a WORLD may hold `CAMERA < eye > < target > < up > fov_y_degrees` before END_FILE.
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 
+#include "apps/common/scene/scene_error.hpp"
 #include "apps/common/scene/world_format.hpp"
 
 namespace gcsim::scene {
 
-// A malformed file: what() reads "FILE:LINE: MESSAGE".
-class ParseError : public std::runtime_error {
+// A malformed file: what() reads "FILE:LINE: MESSAGE" (line 0 included).
+class ParseError : public SceneError {
  public:
   ParseError(std::string file, int line, const std::string& message);
-  std::string file;
-  int line;
-  std::string message;
 };
 
 World load_world(const std::filesystem::path& world_file);

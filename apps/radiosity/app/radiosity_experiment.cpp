@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "apps/common/scene/scene_catalogue.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/list_parsing.hpp"
 #include "apps/pipeline/option_checks.hpp"
@@ -19,7 +20,7 @@ namespace {
 
 // A scene name that looks like a path must name an existing file (before "unknown scene").
 const std::string& checked_scene_name(const std::string& name) {
-  pipeline::check_scene_file(name, builtin_scene_names());
+  pipeline::check_scene_file(name, scene::builtin_scene_names());
   return name;
 }
 

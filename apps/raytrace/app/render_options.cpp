@@ -5,10 +5,10 @@
 
 #include <fmt/format.h>
 
+#include "apps/common/scene/scene_catalogue.hpp"
 #include "apps/raytrace/algorithm.hpp"
 #include "apps/raytrace/builtin_scenes.hpp"
 #include "apps/pipeline/option_checks.hpp"
-#include "apps/raytrace/obj_loader.hpp"
 
 namespace gcsim::raytrace::app {
 
@@ -17,7 +17,8 @@ namespace {
 const std::string kScenesHelp =
     "Scene: spheres-a, spheres-b (512 spheres on an 8x8x8 grid, two radii: the paper's photos 1, 2), "
     "spheres-random (photo 3), teapot (552 triangles, photo 4), teapots (4416, photo 5), whitted (mirror and "
-    "glass spheres: secondary rays), or a .obj file or a .toml scene file (point lights only)";
+    "glass spheres: secondary rays), another application's built-in scene it can lower, or a scene file: "
+    ".toml (point and spot lights), .obj, .wld (the thesis's WORLD files)";
 const std::string kAlgoHelp =
     "Primary-ray algorithm: A1 (BVH only), A2 (BVH + front-to-back child sorting and pruning), A2p = A2' "
     "(per-subregion dynamic subtree), A3 (subtree + sorting), A4 (A3 + subregion uniformity test), "
@@ -56,10 +57,9 @@ RenderSettings settings_of(const RenderOptions& o, const Scene& scene) {
 }
 
 Scene load_scene_or_fail(const std::string& name) {
-  const auto names = builtin_scene_names();
-  pipeline::check_scene_file(name, std::vector<std::string>(names.begin(), names.end()));
+  pipeline::check_scene_file(name, scene::builtin_scene_names());
   try {
-    return load_scene(name);  // an ObjError names the file and line and ends with the file exit code
+    return load_scene(name);  // a loader's SceneError names the file and line and ends with the file exit code
   } catch (const std::invalid_argument& e) {
     throw CLI::ValidationError("--scene", e.what());
   }

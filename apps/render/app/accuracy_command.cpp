@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "apps/common/scene/scene_file.hpp"
+#include "apps/common/scene/scene_catalogue.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/machine_options.hpp"
 #include "apps/pipeline/option_vocabulary.hpp"
@@ -44,7 +44,7 @@ void write_csv(const std::string& path, const std::vector<Row>& rows) {
 
 void run(const AccuracyFlags& f) {
   pipeline::check_writable(f.csv, "--csv");  // before the renders, which take minutes
-  const scene::SceneDescription d = scene::load_scene_file(f.scene);
+  const scene::SceneDescription d = scene::load_scene(f.scene);
   const Plan plan = make_plan(d);
   const parix::SimulationOptions machine = pipeline::simulation_options(f.machine, 8);
   const std::vector<ControlSweep> sweeps = control_sweeps(plan, f.quick);
@@ -89,7 +89,7 @@ void add_render_accuracy_command(pipeline::CommandGroups& g) {
       "the default with the others held, each render run on the simulated machine, its image's error against\n"
       "a reference (hemicube 512, energy 0.9999, depth 10, 200000 photons, march 128) next to its simulated\n"
       "and wall time.");
-  cmd->add_option("scene", f->scene, "a TOML scene file (scenes/*.toml)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("scene", f->scene, "a scene file (scenes/*.toml, .obj, .wld) or a built-in scene's name")->required();
   pipeline::add_nodes_option(cmd, f->machine.nodes, "8");
   pipeline::add_config_option(cmd, f->machine.config);
   cmd->add_option("--csv", f->csv, "write pass,control,value,relative_rmse,simulated_s,wall_s");

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "apps/common/scene/scene_file.hpp"
+#include "apps/common/scene/scene_catalogue.hpp"
 #include "apps/pipeline/machine_options.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/option_checks.hpp"
@@ -89,7 +89,7 @@ void add_plan_command(pipeline::CommandGroups& g) {
       "Decide from a scene file alone which passes a render needs (view, radiosity, specular ray tracing,\n"
       "media, shadows), say why each is on or off, and estimate each pass's simulated time and memory per\n"
       "node on the chosen machine before anything runs.");
-  cmd->add_option("scene", f->scene, "a TOML scene file (see scenes/ and apps/common/scene/README.md)")->required();
+  cmd->add_option("scene", f->scene, "a scene file (scenes/*.toml, .obj, .wld; apps/common/scene/README.md) or a built-in scene's name")->required();
   // Declared as every command declares them, so a bad --model or --nodes is a usage error before
   // the scene is read or any sample runs.
   pipeline::add_nodes_option(cmd, f->machine.nodes, "1");
@@ -119,7 +119,7 @@ void add_plan_command(pipeline::CommandGroups& g) {
       ->check(pipeline::positive_number());
   cmd->callback([f] {
     pipeline::check_writable(f->machine.json, "--json");  // before the samples' runs
-    const scene::SceneDescription d = scene::load_scene_file(f->scene);
+    const scene::SceneDescription d = scene::load_scene(f->scene);
     const machine::MachineConfig machine = pipeline::simulation_options(f->machine, 1).config;
     const int nodes = f->machine.nodes > 0 ? f->machine.nodes : 1;
     const Plan plan = make_plan(d);

@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "apps/common/scene/description_to_world.hpp"
-#include "apps/common/scene/scene_file.hpp"
+#include "apps/common/scene/scene_catalogue.hpp"
 #include "apps/pipeline/app_registry.hpp"
 #include "apps/pipeline/progress.hpp"
 #include "apps/pipeline/run_command.hpp"
@@ -49,7 +49,7 @@ class RenderExperiment : public pipeline::Experiment {
  public:
   RenderExperiment(const std::string& scene_file, ImageOutput image, const std::vector<std::string>& forced,
                    double error_budget, std::size_t photons, std::uint64_t seed, bool progress)
-      : description_(scene::load_scene_file(scene_file)), plan_(make_plan(description_)), image_(std::move(image)),
+      : description_(scene::load_scene(scene_file)), plan_(make_plan(description_)), image_(std::move(image)),
         progress_(progress) {
     for (const std::string& name : forced) force(name);
     if (error_budget > 0) budget_ = {error_budget, controls_for_budget(description_, plan_, error_budget)};
@@ -283,7 +283,7 @@ class RenderExperiment : public pipeline::Experiment {
 pipeline::AppSpec spec() {
   pipeline::AppSpec s;
   s.name = "render";
-  s.summary = "Render a TOML scene file with the passes its plan needs (radiosity, the media's photons, then the ray-traced view).";
+  s.summary = "Render a scene (a scene file or a built-in scene) with the passes its plan needs (radiosity, the media's photons, then the ray-traced view).";
   s.examples = {"gcsim plan scenes/cornell.toml --nodes 8  which passes a scene needs, and why",
                 "gcsim render scenes/cornell-mirror-glass.toml --nodes 8 --image out.png  radiosity, then the ray-traced view",
                 "gcsim render scenes/cornell-fog.toml --nodes 8 --image fog.png  radiosity, photons, view through the fog"};
@@ -297,7 +297,7 @@ pipeline::AppSpec spec() {
     auto budget = std::make_shared<double>(0.0);
     auto photons = std::make_shared<std::size_t>(kDefaultPhotons);
     auto seed = std::make_shared<std::uint64_t>(1);
-    cmd.add_option("scene,--scene", *scene, "a TOML scene file (scenes/*.toml)")->required();
+    cmd.add_option("scene,--scene", *scene, "a scene file (scenes/*.toml, .obj, .wld) or a built-in scene's name")->required();
     cmd.add_option("--image", image->path, "write the view pass's image (PNG, the scene's [image] size)");
     cmd.add_flag("--tone-map", image->tone_map,
                  "tone-map the PNG: an automatic exposure (the 99th percentile of the lit pixels to white) and\n"
