@@ -1,8 +1,9 @@
-# gcsim_add_registered(KIND NAME BASE SOURCES LIBS): the one mechanism behind gcsim_add_app and
-# gcsim_add_backend. The sources register themselves from a static registrar, so they become an
-# OBJECT library gcsim_<kind>_<name> (a library would let the linker drop what nothing names),
-# linked to BASE and LIBS, and listed in the global property GCSIM_<KIND>S, or
-# GCSIM_<SET>_<KIND>S when GCSIM_<KIND>_SET is set (as tests/apps and tests/backends do).
+# gcsim_add_registered(KIND NAME BASE SOURCES LIBS): the one mechanism behind gcsim_add_app,
+# gcsim_add_backend, gcsim_add_interconnect and gcsim_add_network_model. The sources register
+# themselves from a static registrar, so they become an OBJECT library gcsim_<kind>_<name> (a
+# library would let the linker drop what nothing names), linked to BASE and LIBS, and listed in the
+# global property GCSIM_<KIND>S, or GCSIM_<SET>_<KIND>S when GCSIM_<KIND>_SET is set (as the test
+# folders tests/apps, tests/backends, tests/interconnects and tests/networks do).
 function(gcsim_add_registered kind name base sources libs)
   string(TOUPPER ${kind} KIND)
   if(NOT name OR NOT sources)
