@@ -10,11 +10,17 @@
 # and `cpack -G DEB` in the build directory makes a Debian package of the same files.
 include(CMakePackageConfigHelpers)
 
-# The libraries a user's program links, exported as gcsim::<name>.
-set(GCSIM_EXPORTED machine parix common scene programs pipeline cli)
+# The libraries a user's program links, exported as gcsim::<name>. gcsim::machine is an interface
+# over machine_core (libgcsim_machine.a) and machine_registered, linked whole (machine/CMakeLists.txt).
+set(GCSIM_EXPORTED machine machine_core machine_registered parix common scene programs pipeline cli)
 foreach(name ${GCSIM_EXPORTED})
   set_target_properties(gcsim_${name} PROPERTIES EXPORT_NAME ${name})
-  target_compile_features(gcsim_${name} PUBLIC cxx_std_20)
+  get_target_property(type gcsim_${name} TYPE)
+  if(type STREQUAL "INTERFACE_LIBRARY")
+    target_compile_features(gcsim_${name} INTERFACE cxx_std_20)
+  else()
+    target_compile_features(gcsim_${name} PUBLIC cxx_std_20)
+  endif()
 endforeach()
 list(TRANSFORM GCSIM_EXPORTED PREPEND gcsim_ OUTPUT_VARIABLE GCSIM_EXPORTED_TARGETS)
 

@@ -23,8 +23,8 @@ void AnalyticNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Act
 void AnalyticNetwork::transfer_slow(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival) {
   if (ctx_.trace) return transfer_traced(src, dst, bytes, std::move(on_arrival));
   if (channel_bytes_.empty()) {
-    channel_bytes_.assign(ctx_.mesh.channel_count(), 0);
-    channel_busy_.assign(ctx_.mesh.channel_count(), 0);
+    channel_bytes_.assign(ctx_.interconnect.channel_count(), 0);
+    channel_busy_.assign(ctx_.interconnect.channel_count(), 0);
   }
   RouteCache::Entry& r = routes_.find(src, dst, channel_bytes_, channel_busy_);
   r.latency = latency(r.hops);  // the pair may be new
@@ -35,12 +35,12 @@ void AnalyticNetwork::transfer_slow(int src, int dst, std::int64_t bytes, Kernel
 
 void AnalyticNetwork::transfer_traced(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival) {
   ++messages_;
-  const int hops = ctx_.mesh.hops(src, dst);
+  const int hops = ctx_.interconnect.hops(src, dst);
   const SimTime start = ctx_.kernel.now();
   const SimTime lat = latency(hops);
   const SimTime end = start + lat + (hops > 0 ? serialization(bytes) : 0);  // uncontended_time, lat reused
   if (hops > 0) {
-    ctx_.mesh.route(src, dst, route_);
+    ctx_.interconnect.route(src, dst, route_);
     account(route_, bytes, start + lat, end);
   }
   ctx_.kernel.at(end, std::move(on_arrival));
@@ -49,5 +49,10 @@ void AnalyticNetwork::transfer_traced(int src, int dst, std::int64_t bytes, Kern
 void AnalyticNetwork::settle() {
   if (!channel_bytes_.empty()) routes_.flush(channel_bytes_, channel_busy_);
 }
+
+namespace {
+const NetworkModelRegistrar analytic_registrar{
+    {"analytic", "latency + size / bandwidth, no contention", network_model_factory<AnalyticNetwork>, 10}};
+}  // namespace
 
 }  // namespace gcsim::machine

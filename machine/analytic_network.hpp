@@ -7,7 +7,7 @@ namespace gcsim::machine {
 
 class AnalyticNetwork final : public NetworkModel {
  public:
-  explicit AnalyticNetwork(NetworkContext ctx) : NetworkModel(ctx), routes_(ctx.mesh) {}
+  explicit AnalyticNetwork(NetworkContext ctx) : NetworkModel(ctx), routes_(ctx.interconnect) {}
   std::string_view name() const override { return "analytic"; }
   void transfer(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival) override;
 

@@ -4,14 +4,15 @@
 
 namespace gcsim::machine {
 
-ConnectionService::ConnectionService(const MachineConfig& config, const Mesh& mesh) : config_(config), mesh_(mesh) {
+ConnectionService::ConnectionService(const MachineConfig& config, const Interconnect& interconnect)
+    : config_(config), net_(interconnect) {
   switch (config.connect_model) {
     case ConnectModel::parallel: break;
     case ConnectModel::serialized: servers_.resize(1); break;
-    case ConnectModel::route: servers_.resize(static_cast<std::size_t>(mesh.nodes()) * 2); break;
+    case ConnectModel::route: servers_.resize(static_cast<std::size_t>(net_.link_count())); break;
     case ConnectModel::servers: {
-      const int bx = (mesh.width() + config.connect_block_width - 1) / config.connect_block_width;
-      const int by = (mesh.height() + config.connect_block_height - 1) / config.connect_block_height;
+      const int bx = (net_.width() + config.connect_block_width - 1) / config.connect_block_width;
+      const int by = (net_.height() + config.connect_block_height - 1) / config.connect_block_height;
       servers_.resize(static_cast<std::size_t>(bx) * by);
       break;
     }
@@ -20,26 +21,21 @@ ConnectionService::ConnectionService(const MachineConfig& config, const Mesh& me
 
 int ConnectionService::server_of(int node) const {
   if (config_.connect_model == ConnectModel::serialized) return 0;
-  const int bx = (mesh_.width() + config_.connect_block_width - 1) / config_.connect_block_width;
-  return (mesh_.y(node) / config_.connect_block_height) * bx + mesh_.x(node) / config_.connect_block_width;
+  const int bx = (net_.width() + config_.connect_block_width - 1) / config_.connect_block_width;
+  const NodeCoordinates at = net_.coordinates(node);
+  return (at.y / config_.connect_block_height) * bx + at.x / config_.connect_block_width;
 }
 
 SimTime ConnectionService::duration(int a, int b) const {
-  return config_.connect_base + SimTime(mesh_.hops(a, b)) * config_.connect_per_hop;
+  return config_.connect_base + SimTime(net_.hops(a, b)) * config_.connect_per_hop;
 }
 
 void ConnectionService::held_by(int a, int b, std::vector<Calendar*>& out) {
   out.clear();
   if (config_.connect_model == ConnectModel::route) {
-    // A link is named by its western or southern node: 2 * node for east-west, 2 * node + 1 for
-    // north-south, so both directions of a link are one calendar.
-    mesh_.route(a, b, route_);
-    for (int ch : route_) {
-      const MeshChannel e = mesh_.channel_ends(ch);
-      const bool horizontal = mesh_.y(e.from) == mesh_.y(e.to);
-      const int low = std::min(e.from, e.to);
-      out.push_back(&servers_[static_cast<std::size_t>(low) * 2 + (horizontal ? 0 : 1)]);
-    }
+    // Both directions of a link are one calendar.
+    net_.route(a, b, route_);
+    for (int ch : route_) out.push_back(&servers_[static_cast<std::size_t>(net_.link_of(ch))]);
     return;
   }
   const int sa = server_of(a), sb = server_of(b);

@@ -6,16 +6,16 @@ namespace gcsim::machine {
 
 void FlowNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival) {
   ++messages_;
-  const int hops = ctx_.mesh.hops(src, dst);
+  const int hops = ctx_.interconnect.hops(src, dst);
   const SimTime lat = latency(hops);
   if (hops == 0 || bytes <= 0) {
     // Nothing crosses a channel: the latency is all there is.
     ctx_.kernel.after(lat, std::move(on_arrival));
     return;
   }
-  if (!solver_) solver_ = std::make_unique<MaxMinSolver>(ctx_.mesh.channel_count(), ctx_.config.channel_bandwidth());
+  if (!solver_) solver_ = std::make_unique<MaxMinSolver>(ctx_.interconnect.channel_count(), ctx_.config.channel_bandwidth());
   const int slot = solver_->open();
-  ctx_.mesh.route(src, dst, solver_->route(slot));
+  ctx_.interconnect.route(src, dst, solver_->route(slot));
   if (flows_.size() <= static_cast<std::size_t>(slot)) flows_.resize(static_cast<std::size_t>(slot) + 1);
   Flow& f = flows_[static_cast<std::size_t>(slot)];
   f = Flow{};
@@ -61,5 +61,10 @@ void FlowNetwork::reschedule() {
     ctx_.kernel.at(eta, [this, slot, v = f.version] { finish_flow(slot, v); });
   }
 }
+
+namespace {
+const NetworkModelRegistrar flow_registrar{
+    {"flow", "channels shared max-min fairly among the messages crossing them", network_model_factory<FlowNetwork>, 20}};
+}  // namespace
 
 }  // namespace gcsim::machine

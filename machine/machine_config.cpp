@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "machine/config_inheritance.hpp"
+#include "machine/interconnect_registry.hpp"
 #include "machine/network_registry.hpp"
 
 namespace gcsim::machine {
@@ -208,8 +209,12 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
   c.name = r.string(root, "name", "the file", std::string("unnamed machine"));
 
   const toml::table& topo = r.table(root, "topology");
-  r.only_keys(topo, "[topology]", {"nodes", "mesh", "shapes"});
+  r.only_keys(topo, "[topology]", {"nodes", "interconnect", "mesh", "shapes"});
   c.nodes = r.integer(topo, "nodes", "[topology]", 1, 1 << 20);
+  c.interconnect = r.string(topo, "interconnect", "[topology]", std::string("mesh"));
+  if (!is_interconnect(c.interconnect)) {
+    r.fail(topo.get("interconnect"), "'interconnect' in [topology] is '" + c.interconnect + "'; expected one of: " + interconnect_list());
+  }
   const toml::node* mesh = topo.get("mesh");
   if (!mesh) r.fail(&topo, "missing key 'mesh' in [topology] (expected mesh = [width, height])");
   const toml::array* m = mesh->as_array();

@@ -30,7 +30,10 @@ struct MachineConfig {
 
   // Topology
   int nodes = 64;
-  int mesh_width = 8;                  // x extent of the physical 2D mesh
+  // The physical interconnect, by its registered name (machine/interconnect_registry.hpp):
+  // [topology] interconnect, "mesh" (the GC's) when the file gives none.
+  std::string interconnect = "mesh";
+  int mesh_width = 8;                  // x extent of the grid of nodes the interconnect wires
   int mesh_height = 8;                 // y extent
   // Sub-meshes that `--nodes N` uses instead of the GC's default shape ([topology.shapes]).
   std::map<int, MeshShape> shapes;

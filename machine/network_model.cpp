@@ -13,15 +13,15 @@ SimTime NetworkModel::serialization(std::int64_t bytes) const {
 
 void NetworkModel::account(const std::vector<int>& route, std::int64_t bytes, SimTime start, SimTime end) {
   if (channel_bytes_.empty()) {
-    channel_bytes_.assign(ctx_.mesh.channel_count(), 0);
-    channel_busy_.assign(ctx_.mesh.channel_count(), 0);
+    channel_bytes_.assign(ctx_.interconnect.channel_count(), 0);
+    channel_busy_.assign(ctx_.interconnect.channel_count(), 0);
   }
   const bool per_channel_trace = ctx_.trace && ctx_.trace->level() == TraceLevel::full;  // asked once a message
   for (int ch : route) {
     channel_bytes_[ch] += bytes;
     channel_busy_[ch] += end - start;
     if (per_channel_trace) {
-      const MeshChannel e = ctx_.mesh.channel_ends(ch);
+      const ChannelEnds e = ctx_.interconnect.channel_ends(ch);
       ctx_.trace->record({TraceKind::link, e.from, e.to, start, end, bytes, ch, "link"});
     }
   }

@@ -1,5 +1,5 @@
 #pragma once
-// How long a message takes to cross the physical mesh. Every model shares one interface so a run
+// How long a message takes to cross the physical interconnect. Every model shares one interface so a run
 // can name the fidelity it wants; they agree exactly for a message alone on an idle network.
 //   analytic: set-up + latency + per-hop latency + size / channel bandwidth; no contention.
 //   flow:     the same latency, but each channel's bandwidth is shared max-min fairly among the
@@ -13,14 +13,14 @@
 #include "machine/kernel.hpp"
 #include "machine/machine_config.hpp"
 #include "machine/network_registry.hpp"
-#include "machine/routing.hpp"
+#include "machine/interconnect.hpp"
 #include "machine/trace.hpp"
 
 namespace gcsim::machine {
 
 struct NetworkContext {
   Kernel& kernel;
-  const Routing& mesh;  // the physical network's routes (machine/mesh.hpp for the GC)
+  const Interconnect& interconnect;  // the physical network's routes (machine/mesh.hpp for the GC)
   const MachineConfig& config;
   TraceWriter* trace;  // may be null
 };
@@ -47,7 +47,7 @@ class NetworkModel {
   SimTime uncontended_time(int hops, std::int64_t bytes) const { return latency(hops) + (hops > 0 ? serialization(bytes) : 0); }
 
   std::uint64_t messages() const { return messages_; }
-  // Bytes and busy time per mesh channel (indexed like Mesh channels); a model that defers its
+  // Bytes and busy time per channel (indexed like the interconnect's channels); a model that defers its
   // accounting settles it first.
   const std::vector<std::int64_t>& channel_bytes() {
     settle();
@@ -67,6 +67,13 @@ class NetworkModel {
   std::vector<std::int64_t> channel_bytes_;
   std::vector<SimTime> channel_busy_;
 };
+
+// The factory of a model constructed from its context, for its registrar:
+//   const NetworkModelRegistrar registrar{{"mine", "one-line summary", network_model_factory<Mine>}};
+template <class Model>
+std::unique_ptr<NetworkModel> network_model_factory(NetworkContext ctx) {
+  return std::make_unique<Model>(ctx);
+}
 
 // Builds the model registered under name (machine/network_registry.hpp).
 // Throws std::invalid_argument listing the valid names if name is unknown.

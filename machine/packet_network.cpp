@@ -8,15 +8,15 @@ PacketNetwork::PacketNetwork(NetworkContext ctx) : NetworkModel(ctx), packet_byt
 
 void PacketNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action&& on_arrival) {
   ++messages_;
-  const int hops = ctx_.mesh.hops(src, dst);
+  const int hops = ctx_.interconnect.hops(src, dst);
   const SimTime now = ctx_.kernel.now();
   const SimTime lat = latency(hops);
   if (hops == 0 || bytes <= 0) {
     ctx_.kernel.at(now + lat, std::move(on_arrival));
     return;
   }
-  if (calendar_.empty()) calendar_.resize(ctx_.mesh.channel_count());
-  ctx_.mesh.route(src, dst, route_);
+  if (calendar_.empty()) calendar_.resize(ctx_.interconnect.channel_count());
+  ctx_.interconnect.route(src, dst, route_);
   const SimTime hop = ctx_.config.hop_latency;
   // The head of the first packet may enter the first channel after set-up and network latency.
   ready_.assign(route_.size(), 0);
@@ -42,5 +42,10 @@ void PacketNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Actio
   account(route_, bytes, first_start, arrival);
   ctx_.kernel.at(arrival, std::move(on_arrival));
 }
+
+namespace {
+const NetworkModelRegistrar packet_registrar{
+    {"packet", "packets queue for each channel of their route (cut-through)", network_model_factory<PacketNetwork>, 30}};
+}  // namespace
 
 }  // namespace gcsim::machine

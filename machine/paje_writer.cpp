@@ -8,7 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "machine/mesh.hpp"
+#include "machine/interconnect.hpp"
+#include "machine/interconnect_registry.hpp"
 
 namespace gcsim::machine {
 
@@ -139,44 +140,44 @@ struct Containers {
   SimTime last = 0;
 };
 
-Containers find_containers(const TraceCsv& trace, const Mesh& mesh) {
+Containers find_containers(const TraceCsv& trace, const Interconnect& net) {
   Containers c;
   for (const StoredTraceRecord& r : trace.records) {
-    if (r.kind == TraceKind::link && r.id >= 0 && r.id < mesh.channel_count()) c.channels.insert(static_cast<int>(r.id));
+    if (r.kind == TraceKind::link && r.id >= 0 && r.id < net.channel_count()) c.channels.insert(static_cast<int>(r.id));
     if (is_state(r.kind) && r.thread > 0 && r.proc >= 0 && r.proc < trace.processors) c.threads.insert({r.proc, r.thread});
     c.last = std::max(c.last, r.end);
   }
   return c;
 }
 
-void create_containers(PajeFile& out, const TraceCsv& trace, const Mesh& mesh, const Containers& c) {
-  out.line("{} {} gc M 0 \"GC-PowerPlus {} processors, mesh {}x{}\"", int(kCreateContainer), ms(0), trace.processors,
-           trace.mesh_width, trace.mesh_height);
+void create_containers(PajeFile& out, const TraceCsv& trace, const Interconnect& net, const Containers& c) {
+  out.line("{} {} gc M 0 \"GC-PowerPlus {} processors, {} {}x{}\"", int(kCreateContainer), ms(0), trace.processors,
+           net.name(), trace.mesh_width, trace.mesh_height);
   for (int p = 0; p < trace.processors; ++p) {
-    out.line("{} {} p{} N gc \"P{} ({},{})\"", int(kCreateContainer), ms(0), p, p, mesh.x(p), mesh.y(p));
+    const NodeCoordinates at = net.coordinates(p);
+    out.line("{} {} p{} N gc \"P{} ({},{})\"", int(kCreateContainer), ms(0), p, p, at.x, at.y);
   }
   for (const auto& [p, t] : c.threads) {
     out.line("{} {} p{}t{} T p{} \"P{} thread {}\"", int(kCreateContainer), ms(0), p, t, p, p, t);
   }
   for (int ch : c.channels) {
-    const MeshChannel e = mesh.channel_ends(ch);
+    const ChannelEnds e = net.channel_ends(ch);
     if (e.from >= trace.processors) continue;
     out.line("{} {} c{} C p{} \"channel {} P{}->P{} {}\"", int(kCreateContainer), ms(0), ch, e.from, ch, e.from, e.to,
-             direction_name(ch));
+             net.channel_label(ch));
     out.line("{} {} V c{} 0", int(kSetVariable), ms(0), ch);
   }
 }
 
 // Every record's start and end, in time order; records of containers that do not exist are left out.
-std::vector<TimedEvent> timed_events(const TraceCsv& trace, const Mesh& mesh, const Containers& c) {
+std::vector<TimedEvent> timed_events(const TraceCsv& trace, const Interconnect& net, const Containers& c) {
   std::vector<TimedEvent> events;
   events.reserve(trace.records.size() * 2);
   auto in_range = [&](int p) { return p >= 0 && p < trace.processors; };
   for (std::size_t i = 0; i < trace.records.size(); ++i) {
     const StoredTraceRecord& r = trace.records[i];
     if (r.kind == TraceKind::link) {
-      const MeshChannel e = mesh.channel_ends(static_cast<int>(r.id));
-      if (!c.channels.count(static_cast<int>(r.id)) || e.from >= trace.processors) continue;
+      if (!c.channels.count(static_cast<int>(r.id)) || net.channel_ends(static_cast<int>(r.id)).from >= trace.processors) continue;
     } else if (r.kind == TraceKind::message) {
       if (!in_range(r.proc) || !in_range(r.peer)) continue;
     } else if (!in_range(r.proc) || r.end <= r.start) {
@@ -206,9 +207,9 @@ void write_event(PajeFile& out, const TimedEvent& e, const StoredTraceRecord& r)
 }
 
 // Closing the containers at the last event, innermost first.
-void close_containers(PajeFile& out, const TraceCsv& trace, const Mesh& mesh, const Containers& c) {
+void close_containers(PajeFile& out, const TraceCsv& trace, const Interconnect& net, const Containers& c) {
   for (int ch : c.channels) {
-    if (mesh.channel_ends(ch).from < trace.processors) out.line("{} {} C c{}", int(kDestroyContainer), ms(c.last), ch);
+    if (net.channel_ends(ch).from < trace.processors) out.line("{} {} C c{}", int(kDestroyContainer), ms(c.last), ch);
   }
   for (const auto& [p, t] : c.threads) out.line("{} {} T p{}t{}", int(kDestroyContainer), ms(c.last), p, t);
   for (int p = 0; p < trace.processors; ++p) out.line("{} {} N p{}", int(kDestroyContainer), ms(c.last), p);
@@ -218,14 +219,16 @@ void close_containers(PajeFile& out, const TraceCsv& trace, const Mesh& mesh, co
 }  // namespace
 
 void write_paje(const TraceCsv& trace, const std::string& path) {
+  // The interconnect the trace names (the GC's mesh unless its header says otherwise).
+  const std::unique_ptr<Interconnect> net =
+      make_interconnect(trace.interconnect, std::max(1, trace.mesh_width), std::max(1, trace.mesh_height));
   PajeFile out(path);
   out.raw(kHeader);
-  const Mesh mesh(std::max(1, trace.mesh_width), std::max(1, trace.mesh_height));
   write_types(out);
-  const Containers containers = find_containers(trace, mesh);
-  create_containers(out, trace, mesh, containers);
-  for (const TimedEvent& e : timed_events(trace, mesh, containers)) write_event(out, e, trace.records[e.record]);
-  close_containers(out, trace, mesh, containers);
+  const Containers containers = find_containers(trace, *net);
+  create_containers(out, trace, *net, containers);
+  for (const TimedEvent& e : timed_events(trace, *net, containers)) write_event(out, e, trace.records[e.record]);
+  close_containers(out, trace, *net, containers);
   out.flush();
 }
 

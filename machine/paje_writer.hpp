@@ -4,7 +4,7 @@
 // so the export sorts them and is written from the trace CSV when the run closes its trace.
 // Layout (traces/README.md has the full description):
 //   Machine container "gc" > one Node container per processor ("P3 (3,0)")
-//                          > at level full, one Channel container per used mesh channel, in its source node
+//                          > at level full, one Channel container per used channel of the interconnect, in its source node
 //   Node state "Activity": compute, send, recv, wait, connect (PajePushState / PajePopState)
 //   Channel variable "transfers": messages occupying the channel (PajeAddVariable / PajeSubVariable)
 //   Link "Message" from the sending to the receiving Node, key = message id

@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "machine/routing.hpp"
+#include "machine/interconnect.hpp"
 #include "machine/sim_time.hpp"
 
 namespace gcsim::machine {
@@ -32,7 +32,7 @@ class RouteCache {
   };
 
   // Enough entries for every pair of `nodes` nodes, up to max_entries (a power of two).
-  explicit RouteCache(const Routing& routing, std::size_t max_entries = 4096) : routing_(routing) {
+  explicit RouteCache(const Interconnect& routing, std::size_t max_entries = 4096) : routing_(routing) {
     const auto n = static_cast<std::size_t>(routing.nodes());
     std::size_t want = n > 0 && n * n < max_entries ? n * n : max_entries;
     entries_.resize(std::bit_ceil(std::max<std::size_t>(want, 2)));  // 2+: the hash's shift stays below 64
@@ -80,7 +80,7 @@ class RouteCache {
     routing_.route(src, dst, e.route);
   }
 
-  const Routing& routing_;
+  const Interconnect& routing_;
   std::vector<Entry> entries_;
   int shift_ = 63;  // 64 - log2(entries)
 };

@@ -6,36 +6,40 @@
 #include <stdexcept>
 #include <string>
 
-#include "machine/topologies/families.hpp"
+#include "machine/registry.hpp"
 
 namespace gcsim::machine {
 
 // ---- registry ------------------------------------------------------------------------------------
 
-const std::vector<const TopologyFamily*>& topology_families() {
-  // One line per topology (machine/topologies/): adding one is a new file and a line here.
-  static const std::vector<const TopologyFamily*> families = {
-      &topologies::mesh(), &topologies::torus(), &topologies::ring(), &topologies::binary_tree(), &topologies::hypercube(),
-  };
+namespace {
+
+// Each file of machine/topologies/ adds its family with a TopologyRegistrar.
+struct TopologyEntry {
+  std::string_view name;
+  const TopologyFamily* family;
+  int order;
+};
+Registry<TopologyEntry>& topology_registry() { return Registry<TopologyEntry>::instance(); }
+
+}  // namespace
+
+TopologyRegistrar::TopologyRegistrar(const TopologyFamily& family, int order) {
+  topology_registry().add({family.name(), &family, order});
+}
+
+std::vector<const TopologyFamily*> topology_families() {
+  std::vector<const TopologyFamily*> families;
+  for (const TopologyEntry& e : topology_registry().entries()) families.push_back(e.family);
   return families;
 }
 
-std::vector<std::string> topology_names() {
-  std::vector<std::string> names;
-  for (const auto* f : topology_families()) names.emplace_back(f->name());
-  return names;
-}
+std::vector<std::string> topology_names() { return topology_registry().names(); }
 
-std::string topology_name_list() {
-  std::string list;
-  for (const auto* f : topology_families()) list += (list.empty() ? "" : ", ") + std::string(f->name());
-  return list;
-}
+std::string topology_name_list() { return topology_registry().list(); }
 
 const TopologyFamily& topology_family(std::string_view name) {
-  for (const auto* f : topology_families()) {
-    if (f->name() == name) return *f;
-  }
+  if (const TopologyEntry* e = topology_registry().find(name)) return *e->family;
   throw std::invalid_argument("unknown topology '" + std::string(name) + "' (expected one of: " + topology_name_list() + ")");
 }
 
@@ -136,18 +140,24 @@ TopologyMetrics exact_metrics(const VirtualTopology& t) {
 
 // ---- mapping -------------------------------------------------------------------------------------
 
-MeshMapping map_onto_mesh(const VirtualTopology& t, const Mesh& mesh) {
+PhysicalMapping map_onto(const VirtualTopology& t, const Interconnect& net) {
   const int n = t.size();
-  if (n > mesh.nodes()) throw std::invalid_argument("topology has more processors than the mesh has nodes");
-  MeshMapping m;
-  m.node_of = topology_family(t.kind).placement(t, mesh);
-  std::vector<int> load(mesh.channel_count(), 0);
+  if (n > net.nodes()) throw std::invalid_argument("topology has more processors than the " + std::string(net.name()) + " has nodes");
+  PhysicalMapping m;
+  m.node_of = topology_family(t.kind).placement(t, net);
+  for (int node : m.node_of) {
+    if (node < 0 || node >= net.nodes()) {
+      throw std::invalid_argument("the " + std::string(t.kind) + " placement does not fit the " + std::to_string(net.width()) +
+                                  "x" + std::to_string(net.height()) + " " + std::string(net.name()));
+    }
+  }
+  std::vector<int> load(net.channel_count(), 0);
   std::vector<int> route;
   double hop_sum = 0;
   int edges = 0;
   for (int v = 0; v < n; ++v) {
     for (int w : t.neighbours[v]) {
-      mesh.route(m.node_of[v], m.node_of[w], route);
+      net.route(m.node_of[v], m.node_of[w], route);
       for (int ch : route) m.congestion = std::max(m.congestion, ++load[ch]);
       m.dilation = std::max(m.dilation, static_cast<int>(route.size()));
       hop_sum += static_cast<double>(route.size());

@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "machine/mesh.hpp"
 #include "machine/paje_writer.hpp"
 #include "machine/trace_csv.hpp"
 
@@ -61,8 +60,8 @@ std::string_view clean_label(std::string_view label, std::string& scratch) {
 
 }  // namespace
 
-TraceWriter::TraceWriter(const TraceOptions& options, int processors, int mesh_width, int mesh_height)
-    : level_(options.level), processors_(processors), mesh_width_(mesh_width) {
+TraceWriter::TraceWriter(const TraceOptions& options, int processors, const Interconnect& interconnect)
+    : level_(options.level), processors_(processors), net_(interconnect) {
   if (options.path.empty()) return;
   json_path_ = options.path;
   csv_path_ = trace_sibling_path(options.path, ".csv");
@@ -81,23 +80,27 @@ TraceWriter::TraceWriter(const TraceOptions& options, int processors, int mesh_w
   json_buffer_ += R"js(,
 {"ph":"M","pid":0,"name":"process_sort_index","args":{"sort_index":0}})js";
   for (int p = 0; p < processors; ++p) {
+    const NodeCoordinates at = net_.coordinates(p);
     json_buffer_ += fmt::format(
         ",\n{{\"ph\":\"M\",\"pid\":0,\"tid\":{},\"name\":\"thread_name\",\"args\":{{\"name\":\"P{} node ({},{})\"}}}}", p, p,
-        p % mesh_width, p / mesh_width);
+        at.x, at.y);
     json_buffer_ += fmt::format(
         ",\n{{\"ph\":\"M\",\"pid\":0,\"tid\":{},\"name\":\"thread_sort_index\",\"args\":{{\"sort_index\":{}}}}}", p,
         sort_index(p, 0));
   }
   if (level_ == TraceLevel::full) {
-    // pid 1 holds the mesh channels' occupancy (see record()).
+    // pid 1 holds the interconnect's channels' occupancy (see record()).
     json_buffer_ += fmt::format(
-        ",\n{{\"ph\":\"M\",\"pid\":1,\"name\":\"process_name\",\"args\":{{\"name\":\"mesh channels ({}x{})\"}}}}",
-        mesh_width, mesh_height);
+        ",\n{{\"ph\":\"M\",\"pid\":1,\"name\":\"process_name\",\"args\":{{\"name\":\"{} channels ({}x{})\"}}}}",
+        net_.name(), net_.width(), net_.height());
     json_buffer_ += R"js(,
 {"ph":"M","pid":1,"name":"process_sort_index","args":{"sort_index":1}})js";
   }
-  csv_buffer_ += fmt::format("# gcsim trace; level {}; {} processors; mesh {}x{}; times in picoseconds\n",
-                             to_string(level_), processors, mesh_width, mesh_height);
+  // "mesh WxH" is the grid of nodes whatever wires it; another interconnect than the GC's mesh is
+  // named after it, so that the Paje export (and `gcsim paje`) rebuilds the same one.
+  const std::string wiring = net_.name() == "mesh" ? "" : fmt::format("; interconnect {}", net_.name());
+  csv_buffer_ += fmt::format("# gcsim trace; level {}; {} processors; mesh {}x{}{}; times in picoseconds\n",
+                             to_string(level_), processors, net_.width(), net_.height(), wiring);
   csv_buffer_ += "kind,proc,peer,start_ps,end_ps,bytes,id,label,thread\n";
   flush_buffers();
 }
@@ -134,7 +137,7 @@ void TraceWriter::record(const TraceRecord& r) {
     case TraceKind::link: {
       // Messages sharing a channel overlap without nesting, which slices of one track may not do:
       // async begin/end pairs (one track per channel name, laid out in lanes) may.
-      const std::string name = fmt::format("ch {} P{}->P{} {}", r.id, r.proc, r.peer, direction_name(static_cast<int>(r.id)));
+      const std::string name = fmt::format("ch {} P{}->P{} {}", r.id, r.proc, r.peer, net_.channel_label(static_cast<int>(r.id)));
       const std::int64_t occupancy = link_records_++;
       json_buffer_ += fmt::format(
           ",\n{{\"ph\":\"b\",\"pid\":1,\"tid\":{},\"ts\":{},\"cat\":\"link\",\"name\":\"{}\",\"id\":{},\"args\":{{\"bytes\":{}}}}}",

@@ -12,6 +12,7 @@
 #include <string>
 #include <string_view>
 
+#include "machine/interconnect.hpp"
 #include "machine/sim_time.hpp"
 
 namespace gcsim::machine {
@@ -46,7 +47,9 @@ struct TraceRecord {
 
 class TraceWriter {
  public:
-  TraceWriter(const TraceOptions& options, int processors, int mesh_width, int mesh_height);
+  // Nodes are labelled by the interconnect's coordinates, link records by its channel labels; it
+  // must outlive the writer.
+  TraceWriter(const TraceOptions& options, int processors, const Interconnect& interconnect);
   ~TraceWriter();
   TraceWriter(const TraceWriter&) = delete;
   TraceWriter& operator=(const TraceWriter&) = delete;
@@ -71,7 +74,7 @@ class TraceWriter {
   std::set<std::pair<int, int>> named_threads_;  // (processor, thread) tracks already named in the JSON
   std::string json_buffer_;  // whole records only, so the files always end on a record boundary
   std::string csv_buffer_;
-  int mesh_width_;
+  const Interconnect& net_;
 };
 
 }  // namespace gcsim::machine

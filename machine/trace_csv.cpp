@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "machine/interconnect_registry.hpp"
+
 namespace gcsim::machine {
 
 namespace {
@@ -70,6 +72,14 @@ TraceCsv read_trace_csv(const std::string& path) {
     throw bad_line(path, 1, fmt::format("mesh {}x{} in the header; expected W x H of at most {} nodes", width, height,
                                         kMaxMeshNodes));
   t.processors = int(processors), t.mesh_width = int(width), t.mesh_height = int(height);
+  constexpr std::string_view kInterconnect = "; interconnect ";
+  if (const auto at = line.find(kInterconnect); at != std::string::npos) {
+    const auto from = at + kInterconnect.size();
+    t.interconnect = line.substr(from, line.find(';', from) - from);
+    if (!is_interconnect(t.interconnect))
+      throw bad_line(path, 1, fmt::format("interconnect '{}' in the header; expected one of: {}", t.interconnect,
+                                          interconnect_list()));
+  }
   t.level = level;
   if (!std::getline(in, line) || (line != kColumns && line != kColumnsWithoutThread)) {
     throw bad_line(path, 2, fmt::format("expected the column line '{}'", kColumns));

@@ -25,8 +25,9 @@ struct StoredTraceRecord {
 struct TraceCsv {
   std::string level;  // summary, messages or full
   int processors = 0;
-  int mesh_width = 0;
+  int mesh_width = 0;   // the grid of nodes ("mesh WxH" in the header)
   int mesh_height = 0;
+  std::string interconnect = "mesh";  // "; interconnect NAME" after it, when not the GC's mesh
   std::vector<std::string> labels;  // distinct labels, in order of first use
   std::vector<StoredTraceRecord> records;
 };

@@ -20,7 +20,7 @@ struct SimulationOptions {
   machine::MachineConfig config;
   machine::TraceOptions trace;         // no path: no trace
   // Processor i runs on node placement[i]; empty: processor i on node i. A permutation of the
-  // nodes, e.g. machine::map_onto_mesh(...).node_of for a virtual topology (parix/virtual_topology.hpp).
+  // nodes, e.g. machine::map_onto(...).node_of for a virtual topology (parix/virtual_topology.hpp).
   std::vector<int> placement;
   // A node's memory exceeded: the run fails at once (enforce) or goes on and reports its peak (warn).
   machine::MemoryLimit memory_limit = machine::MemoryLimit::enforce;

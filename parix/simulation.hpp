@@ -12,7 +12,8 @@
 
 #include "machine/connection_service.hpp"
 #include "machine/kernel.hpp"
-#include "machine/mesh.hpp"
+#include "machine/interconnect.hpp"
+#include "machine/interconnect_registry.hpp"
 #include "machine/network_model.hpp"
 #include "machine/node.hpp"
 #include "machine/ring_buffer.hpp"
@@ -194,11 +195,11 @@ class Simulation {
  public:
   explicit Simulation(const SimulationOptions& o)
       : config(o.config),
-        mesh(config.mesh_width, config.mesh_height),
-        trace(o.trace, config.nodes, config.mesh_width, config.mesh_height),
+        interconnect(machine::make_interconnect(config)),
+        trace(o.trace, config.nodes, *interconnect),
         network(machine::make_network_model(config.network_model,
-                                            {kernel, mesh, config, trace.enabled() ? &trace : nullptr})),
-        connections(config, mesh),
+                                            {kernel, *interconnect, config, trace.enabled() ? &trace : nullptr})),
+        connections(config, *interconnect),
         fibers(static_cast<std::size_t>(config.fiber_stack_bytes)) {
     for (int n = 0; n < config.nodes; ++n) {
       nodes.emplace_back(kernel, config.cpus_per_node, config.memory_bytes, o.memory_limit);
@@ -327,7 +328,7 @@ class Simulation {
   // processor -> its node's memory: what every message declares to, without the deque's lookup.
   std::vector<machine::NodeMemory*> memory_of;
   machine::Kernel kernel;
-  machine::Mesh mesh;
+  std::unique_ptr<const machine::Interconnect> interconnect;  // [topology] interconnect (the GC's mesh)
   machine::TraceWriter trace;
   std::unique_ptr<machine::NetworkModel> network;
   machine::ConnectionService connections;

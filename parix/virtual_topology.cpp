@@ -2,7 +2,8 @@
 
 #include <stdexcept>
 
-#include "machine/mesh.hpp"
+#include "machine/interconnect.hpp"
+#include "machine/interconnect_registry.hpp"
 
 namespace gcsim::parix {
 
@@ -17,8 +18,7 @@ VirtualTopologyView virtual_topology(const Processor& p, std::string_view name) 
 std::vector<int> topology_placement(const machine::MachineConfig& config, std::string_view name, int nodes) {
   const machine::MachineConfig c = nodes > 0 ? machine::with_nodes(config, nodes) : config;
   try {
-    const machine::Mesh mesh(c.mesh_width, c.mesh_height);
-    return machine::map_onto_mesh(machine::make_topology(name, c.nodes), mesh).node_of;
+    return machine::map_onto(machine::make_topology(name, c.nodes), *machine::make_interconnect(c)).node_of;
   } catch (const std::invalid_argument& e) {
     throw ParixError(std::string("topology_placement: ") + e.what());
   }

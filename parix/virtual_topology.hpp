@@ -39,7 +39,7 @@ class VirtualTopologyView {
 VirtualTopologyView virtual_topology(const Processor& p, std::string_view name);
 
 // For SimulationOptions::placement: where the named topology on `nodes` processors (0: all of
-// the config's) puts each processor on the config's mesh (machine::map_onto_mesh).
+// the config's) puts each processor on the config's interconnect (machine::map_onto).
 std::vector<int> topology_placement(const machine::MachineConfig& config, std::string_view name, int nodes = 0);
 
 }  // namespace gcsim::parix

@@ -14,7 +14,8 @@
 #include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/programs/ring_program.hpp"
 #include "parix/backend.hpp"
-#include "machine/mesh.hpp"
+#include "machine/interconnect.hpp"
+#include "machine/interconnect_registry.hpp"
 #include "machine/topology.hpp"
 
 namespace gcsim::cli {
@@ -36,7 +37,8 @@ void add_topo(CommandGroups& g) {
   CLI::App* cmd = g.app->add_subcommand("topo", "Interconnect parameters of a virtual topology (thesis table 2.1) and its mapping");
   cmd->footer(
       "Interconnect parameters of a virtual topology (thesis table 2.1), computed exactly on its graph\n"
-      "next to the thesis's formulas, and the dilation and congestion of its mapping onto the mesh.\n"
+      "next to the thesis's formulas, and the dilation and congestion of its mapping onto the machine's\n"
+      "physical interconnect ([topology] interconnect, the GC's mesh by default).\n"
       "D = maximum, d = mean processor distance (hops); R = maximum, r = mean relay load (shortest\n"
       "paths between other pairs through a processor); k = mean links per processor; B = broadcast\n"
       "distance from the best-placed managing processor.");
@@ -54,11 +56,11 @@ void add_topo(CommandGroups& g) {
     const machine::VirtualTopology t = machine::make_topology(kind, o->nodes);
     const machine::TopologyMetrics exact = machine::exact_metrics(t);
     const machine::TopologyMetrics thesis = machine::thesis_formulas(kind, o->nodes);
-    const machine::Mesh mesh(c.mesh_width, c.mesh_height);
-    const machine::MeshMapping map = machine::map_onto_mesh(t, mesh);
+    const std::unique_ptr<machine::Interconnect> net = machine::make_interconnect(c);
+    const machine::PhysicalMapping map = machine::map_onto(t, *net);
 
-    fmt::print("{} of {} processors on {} ({}x{} physical mesh)\n\n", o->topology, o->nodes, c.name, c.mesh_width,
-               c.mesh_height);
+    fmt::print("{} of {} processors on {} ({}x{} physical {})\n\n", o->topology, o->nodes, c.name, c.mesh_width,
+               c.mesh_height, net->name());
     fmt::print("  parameter                 exact    thesis formula\n");
     const struct {
       const char* name;
@@ -67,12 +69,13 @@ void add_topo(CommandGroups& g) {
                 {"R  max relay load", exact.R, thesis.R},        {"r  mean relay load", exact.r, thesis.r},
                 {"k  mean links/processor", exact.k, thesis.k}, {"B  broadcast distance", exact.B, thesis.B}};
     for (const auto& r : rows) fmt::print("  {:<24} {:>8.2f}  {:>12}\n", r.name, r.exact, formula(r.thesis));
-    fmt::print("\n  mapping onto the physical mesh: dilation {} (mean {:.2f} hops per virtual link), congestion {}\n",
-               map.dilation, map.mean_dilation, map.congestion);
+    fmt::print("\n  mapping onto the physical {}: dilation {} (mean {:.2f} hops per virtual link), congestion {}\n",
+               net->name(), map.dilation, map.mean_dilation, map.congestion);
     if (!o->json.empty()) {
       auto num = [](double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); };
       nlohmann::json j{{"topology", o->topology},
                        {"nodes", o->nodes},
+                       {"interconnect", std::string(net->name())},
                        {"mesh", {c.mesh_width, c.mesh_height}},
                        {"D", exact.D},
                        {"d", exact.d},

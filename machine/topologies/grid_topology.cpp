@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "machine/machine_config.hpp"
-#include "machine/topologies/families.hpp"
+#include "machine/topology.hpp"
 
 namespace gcsim::machine::topologies {
 namespace {
@@ -34,7 +34,7 @@ class Grid final : public TopologyFamily {
   }
 
   // Meshes as they are; tori folded so that wrap edges stay short.
-  std::vector<int> placement(const VirtualTopology& t, const Mesh& mesh) const override {
+  std::vector<int> placement(const VirtualTopology& t, const Interconnect& net) const override {
     std::vector<int> node_of(t.size());
     for (int v = 0; v < t.size(); ++v) {
       int x = v % t.width, y = v / t.width;
@@ -42,8 +42,8 @@ class Grid final : public TopologyFamily {
         x = fold(x, t.width);
         y = fold(y, t.height);
       }
-      if (t.width <= mesh.width() && t.height <= mesh.height()) node_of[v] = mesh.node_at(x, y);
-      else node_of[v] = mesh.node_at(y, x);  // the virtual grid is the turned physical one
+      if (t.width <= net.width() && t.height <= net.height()) node_of[v] = net.node_at(x, y);
+      else node_of[v] = net.node_at(y, x);  // the virtual grid is the turned physical one
     }
     return node_of;
   }
@@ -59,16 +59,10 @@ class Grid final : public TopologyFamily {
   bool wraps_;
 };
 
+const Grid mesh_family(false);
+const Grid torus_family(true);
+const TopologyRegistrar mesh_topology_registrar{mesh_family, 10};
+const TopologyRegistrar torus_topology_registrar{torus_family, 20};
+
 }  // namespace
-
-const TopologyFamily& mesh() {
-  static const Grid g(false);
-  return g;
-}
-
-const TopologyFamily& torus() {
-  static const Grid g(true);
-  return g;
-}
-
 }  // namespace gcsim::machine::topologies

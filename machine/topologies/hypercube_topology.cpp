@@ -1,10 +1,10 @@
 // Hypercube: processors differing in one address bit are neighbours; the low address bits run
-// along the mesh's x, the high bits along y.
+// along the interconnect's x, the high bits along y.
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "machine/topologies/families.hpp"
+#include "machine/topology.hpp"
 
 namespace gcsim::machine::topologies {
 namespace {
@@ -27,13 +27,13 @@ class Hypercube final : public TopologyFamily {
     t.finish();
     return t;
   }
-  std::vector<int> placement(const VirtualTopology& t, const Mesh& mesh) const override {
+  std::vector<int> placement(const VirtualTopology& t, const Interconnect& net) const override {
     const int n = t.size();
     int xbits = 0;
-    while ((1 << (xbits + 1)) <= mesh.width() && (1 << (xbits + 1)) <= n) ++xbits;
+    while ((1 << (xbits + 1)) <= net.width() && (1 << (xbits + 1)) <= n) ++xbits;
     const int xmask = (1 << xbits) - 1;
     std::vector<int> node_of(n);
-    for (int v = 0; v < n; ++v) node_of[v] = mesh.node_at(v & xmask, v >> xbits);
+    for (int v = 0; v < n; ++v) node_of[v] = net.node_at(v & xmask, v >> xbits);
     return node_of;
   }
   // Eqs. 2.13-2.17.
@@ -43,11 +43,8 @@ class Hypercube final : public TopologyFamily {
   }
 };
 
+const Hypercube hypercube_family;
+const TopologyRegistrar hypercube_topology_registrar{hypercube_family, 50};
+
 }  // namespace
-
-const TopologyFamily& hypercube() {
-  static const Hypercube h;
-  return h;
-}
-
 }  // namespace gcsim::machine::topologies

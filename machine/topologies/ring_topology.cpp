@@ -1,13 +1,13 @@
-// Ring: processor v next to v - 1 and v + 1 (mod n), laid along a Hamiltonian cycle of the mesh.
-#include "machine/topologies/families.hpp"
+// Ring: processor v next to v - 1 and v + 1 (mod n), laid along a Hamiltonian cycle of the grid of nodes.
+#include "machine/topology.hpp"
 
 namespace gcsim::machine::topologies {
 namespace {
 
-// Mesh nodes in the order of a Hamiltonian cycle (height even, or width even by symmetry), or of a
+// Nodes in the order of a Hamiltonian cycle of the grid (height even, or width even by symmetry), or of a
 // boustrophedon path when neither dimension is even.
-std::vector<int> ring_order(const Mesh& mesh, int n) {
-  const int w = mesh.width(), h = mesh.height();
+std::vector<int> ring_order(const Interconnect& net, int n) {
+  const int w = net.width(), h = net.height();
   std::vector<int> order;
   if (n != w * h) {
     for (int v = 0; v < n; ++v) order.push_back(v);
@@ -15,7 +15,7 @@ std::vector<int> ring_order(const Mesh& mesh, int n) {
   }
   auto walk = [&](bool transpose) {
     const int W = transpose ? h : w, H = transpose ? w : h;
-    auto at = [&](int x, int y) { return transpose ? mesh.node_at(y, x) : mesh.node_at(x, y); };
+    auto at = [&](int x, int y) { return transpose ? net.node_at(y, x) : net.node_at(x, y); };
     std::vector<int> o;
     for (int y = 0; y < H; ++y) {
       if (y % 2 == 0) {
@@ -30,7 +30,7 @@ std::vector<int> ring_order(const Mesh& mesh, int n) {
   if (w >= 2 && h >= 2 && h % 2 == 0) return walk(false);
   if (w >= 2 && h >= 2 && w % 2 == 0) return walk(true);
   for (int y = 0; y < h; ++y) {
-    for (int i = 0; i < w; ++i) order.push_back(mesh.node_at(y % 2 == 0 ? i : w - 1 - i, y));
+    for (int i = 0; i < w; ++i) order.push_back(net.node_at(y % 2 == 0 ? i : w - 1 - i, y));
   }
   return order;
 }
@@ -45,16 +45,13 @@ class Ring final : public TopologyFamily {
     t.finish();
     return t;
   }
-  std::vector<int> placement(const VirtualTopology& t, const Mesh& mesh) const override {
-    return ring_order(mesh, t.size());
+  std::vector<int> placement(const VirtualTopology& t, const Interconnect& net) const override {
+    return ring_order(net, t.size());
   }
 };
 
+const Ring ring_family;
+const TopologyRegistrar ring_topology_registrar{ring_family, 30};
+
 }  // namespace
-
-const TopologyFamily& ring() {
-  static const Ring r;
-  return r;
-}
-
 }  // namespace gcsim::machine::topologies

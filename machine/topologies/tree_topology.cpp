@@ -1,7 +1,7 @@
 // Binary tree: processor v's parent is (v - 1) / 2; placed in breadth-first order.
 #include <cmath>
 
-#include "machine/topologies/families.hpp"
+#include "machine/topology.hpp"
 
 namespace gcsim::machine::topologies {
 namespace {
@@ -15,7 +15,7 @@ class BinaryTree final : public TopologyFamily {
     t.finish();
     return t;
   }
-  std::vector<int> placement(const VirtualTopology& t, const Mesh&) const override {
+  std::vector<int> placement(const VirtualTopology& t, const Interconnect&) const override {
     std::vector<int> node_of(t.size());
     for (int v = 0; v < t.size(); ++v) node_of[v] = v;
     return node_of;
@@ -27,11 +27,8 @@ class BinaryTree final : public TopologyFamily {
   }
 };
 
+const BinaryTree binary_tree_family;
+const TopologyRegistrar binary_tree_topology_registrar{binary_tree_family, 40};
+
 }  // namespace
-
-const TopologyFamily& binary_tree() {
-  static const BinaryTree t;
-  return t;
-}
-
 }  // namespace gcsim::machine::topologies

@@ -10,6 +10,8 @@
 
 #include <fmt/format.h>
 
+#include "machine/interconnect.hpp"
+#include "machine/interconnect_registry.hpp"
 #include "parix/mpi/mpi_processor.hpp"
 #include "parix/simulation.hpp"  // checked_placement
 
@@ -103,7 +105,8 @@ void write_trace(const SimulationOptions& o, const machine::MachineConfig& c, st
   std::sort(records.begin(), records.end(), [](const auto& a, const auto& b) {
     return a.start != b.start ? a.start < b.start : a.proc < b.proc;
   });
-  machine::TraceWriter trace(o.trace, c.nodes, c.mesh_width, c.mesh_height);
+  const std::unique_ptr<machine::Interconnect> interconnect = machine::make_interconnect(c);
+  machine::TraceWriter trace(o.trace, c.nodes, *interconnect);
   for (const auto& r : records) trace.record(r);
   trace.close();
 }

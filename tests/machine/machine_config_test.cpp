@@ -128,6 +128,17 @@ TEST(MachineConfig, UnknownNetworkModelIsRejected) {
             std::string::npos);
 }
 
+// [topology] interconnect names a registered physical interconnect; the GC's mesh without it.
+TEST(MachineConfig, InterconnectDefaultsToTheMeshAndIsCheckedAgainstTheRegistry) {
+  EXPECT_EQ(parse_machine_config(kValid, "tiny.toml").interconnect, "mesh");
+  EXPECT_EQ(default_machine_config().interconnect, "mesh");
+  EXPECT_EQ(parse_machine_config(with("nodes = 4", "nodes = 4\ninterconnect = \"mesh\""), "tiny.toml").interconnect, "mesh");
+  const std::string e = error_of(with("nodes = 4", "nodes = 4\ninterconnect = \"hypercube\""));
+  EXPECT_NE(e.find("bad.toml:4: 'interconnect' in [topology] is 'hypercube'; expected one of: mesh"), std::string::npos) << e;
+  const std::string t = error_of(with("nodes = 4", "nodes = 4\ninterconnect = 3"));
+  EXPECT_NE(t.find("bad.toml:4: 'interconnect' in [topology] must be a string"), std::string::npos) << t;
+}
+
 TEST(MachineConfig, MissingFileIsAClearError) {
   try {
     load_machine_config("no/such/machine.toml");

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include "machine/interconnect_registry.hpp"
+#include "machine/machine_config.hpp"
+
 namespace gcsim::machine {
 namespace {
 
@@ -39,7 +42,7 @@ TEST(Mesh, RouteLengthIsManhattanDistanceForEveryPair) {
       int at = a;
       for (int ch : r) {
         ASSERT_TRUE(m.channel_exists(ch));
-        const MeshChannel e = m.channel_ends(ch);
+        const ChannelEnds e = m.channel_ends(ch);
         ASSERT_EQ(e.from, at);
         at = e.to;
       }
@@ -54,6 +57,35 @@ TEST(Mesh, EdgeChannelsDoNotExist) {
   EXPECT_FALSE(m.channel_exists(m.channel(0, Direction::west)));
   EXPECT_FALSE(m.channel_exists(m.channel(0, Direction::north)));
   EXPECT_EQ(m.hops(0, 1), 1);
+}
+
+// The machine file's default interconnect is this mesh, built from [topology] mesh.
+TEST(Mesh, IsTheRegisteredDefaultInterconnect) {
+  EXPECT_EQ(interconnect_names(), (std::vector<std::string>{"mesh"}));
+  const std::unique_ptr<Interconnect> net = make_interconnect(with_nodes(default_machine_config(), 32));
+  EXPECT_EQ(net->name(), "mesh");
+  EXPECT_EQ(net->width(), 8);
+  EXPECT_EQ(net->height(), 4);
+  EXPECT_EQ(net->hops(0, 31), 7 + 3);
+  MachineConfig c = default_machine_config();
+  c.interconnect = "hypercube";
+  EXPECT_THROW(make_interconnect(c), std::invalid_argument);
+}
+
+// What the trace writers, placements and the connection service ask of it.
+TEST(Mesh, LabelsLinksAndCoordinates) {
+  const Mesh m(4, 3);
+  EXPECT_EQ(m.channel_label(m.channel(5, Direction::north)), "north");
+  EXPECT_EQ(m.coordinates(6).x, 2);
+  EXPECT_EQ(m.coordinates(6).y, 1);
+  EXPECT_EQ(m.node_at(4, 0), -1);
+  EXPECT_EQ(m.node_at(0, -1), -1);
+  // A channel and its reverse are one link, named by the western or southern node.
+  EXPECT_EQ(m.link_of(m.channel(5, Direction::east)), 2 * 5);
+  EXPECT_EQ(m.link_of(m.channel(6, Direction::west)), 2 * 5);
+  EXPECT_EQ(m.link_of(m.channel(5, Direction::north)), 2 * 5 + 1);
+  EXPECT_EQ(m.link_of(m.channel(9, Direction::south)), 2 * 5 + 1);
+  EXPECT_EQ(m.link_count(), 24);
 }
 
 }  // namespace

@@ -161,10 +161,10 @@ TEST(NetworkRegistry, EveryRegisteredNameBuildsThatModel) {
   EXPECT_FALSE(is_network_model("carrier-pigeon"));
 }
 
-// Models see the network only through Routing, so a mesh behind the interface routes the same.
-TEST(NetworkRegistry, MeshRoutesThroughTheRoutingInterface) {
+// Models see the network only through Interconnect, so a mesh behind the interface routes the same.
+TEST(NetworkRegistry, MeshRoutesThroughTheInterconnectInterface) {
   const Mesh mesh(4, 3);
-  const Routing& r = mesh;
+  const Interconnect& r = mesh;
   EXPECT_EQ(r.nodes(), 12);
   EXPECT_EQ(r.hops(0, 11), 5);
   EXPECT_EQ(r.route(0, 11).size(), 5u);

@@ -80,7 +80,7 @@ TEST(Topology, HypercubeNeedsPowerOfTwo) {
 
 TEST(Mapping, MeshOntoItselfHasDilationOne) {
   const Mesh mesh(8, 8);
-  const MeshMapping m = map_onto_mesh(make_topology("mesh", 64), mesh);
+  const PhysicalMapping m = map_onto(make_topology("mesh", 64), mesh);
   EXPECT_EQ(m.dilation, 1);
   EXPECT_EQ(m.congestion, 1);
 }
@@ -88,7 +88,7 @@ TEST(Mapping, MeshOntoItselfHasDilationOne) {
 TEST(Mapping, RingFollowsAHamiltonianCycle) {
   for (auto [w, h] : {std::pair{8, 8}, std::pair{8, 4}, std::pair{4, 2}, std::pair{2, 2}}) {
     const Mesh mesh(w, h);
-    const MeshMapping m = map_onto_mesh(make_topology("ring", w * h), mesh);
+    const PhysicalMapping m = map_onto(make_topology("ring", w * h), mesh);
     EXPECT_EQ(m.dilation, 1) << w << "x" << h;
     EXPECT_EQ(m.congestion, 1) << w << "x" << h;
   }
@@ -96,14 +96,14 @@ TEST(Mapping, RingFollowsAHamiltonianCycle) {
 
 TEST(Mapping, FoldedTorusKeepsWrapLinksShort) {
   const Mesh mesh(8, 8);
-  const MeshMapping m = map_onto_mesh(make_topology("torus", 64), mesh);
+  const PhysicalMapping m = map_onto(make_topology("torus", 64), mesh);
   EXPECT_EQ(m.dilation, 2);
 }
 
 TEST(Mapping, EveryProcessorGetsItsOwnNode) {
   const Mesh mesh(8, 4);
   for (const std::string& k : topology_names()) {
-    const MeshMapping m = map_onto_mesh(make_topology(k, 32), mesh);
+    const PhysicalMapping m = map_onto(make_topology(k, 32), mesh);
     std::vector<int> seen(32, 0);
     for (int n : m.node_of) {
       ASSERT_GE(n, 0);

@@ -1,6 +1,7 @@
 // Trace runs beyond the small one's exact times: repeatability, trace levels, spawned threads,
 // interrupted traces, and the CSV reader's errors.
 #include "tests/trace/trace_test_support.hpp"
+#include "machine/mesh.hpp"
 
 namespace gcsim {
 namespace {
@@ -115,7 +116,8 @@ TEST(TraceExport, AnInterruptedTraceEndsOnARecordBoundary) {
   const fs::path d = fresh_dir("interrupted");
   machine::TraceOptions options;
   options.path = (d / "t.json").string();
-  machine::TraceWriter writer(options, 2, 2, 1);
+  const machine::Mesh row(2, 1);
+  machine::TraceWriter writer(options, 2, row);
   for (int i = 0; i < 5000; ++i) {  // well past one flush of the buffers
     writer.record({machine::TraceKind::compute, i % 2, -1, SimTime(i) * kMicrosecond, SimTime(i + 1) * kMicrosecond, 0,
                    -1, "work"});

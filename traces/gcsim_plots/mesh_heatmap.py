@@ -1,6 +1,8 @@
 """Plot 2: the physical mesh, each directed channel coloured by the bytes it carried and by the
 fraction of the window it was busy. Channel ids follow machine/mesh.hpp: node * 4 + direction
-(0 east, 1 west, 2 north = +y, 3 south = -y)."""
+(0 east, 1 west, 2 north = +y, 3 south = -y). A trace of another interconnect (its CSV header says
+"interconnect NAME") is drawn from its link records alone: each used channel as an arrow from its
+source node towards its destination (away from the grid when it wraps around)."""
 
 import numpy as np
 from matplotlib.colors import Normalize
@@ -12,6 +14,40 @@ from .style import DPI, human_bytes
 from .trace_data import KIND_CODE
 
 STEP = {0: (1, 0), 1: (-1, 0), 2: (0, 1), 3: (0, -1)}
+
+
+def is_mesh(trace):
+    return getattr(trace, "interconnect", "mesh") == "mesh"
+
+
+def channel_count(trace):
+    nch = trace.mesh_width * trace.mesh_height * 4
+    if not is_mesh(trace):
+        links = (trace.kind == KIND_CODE["link"]) & (trace.id >= 0)
+        if links.any():
+            nch = max(nch, int(trace.id[links].max()) + 1)
+    return nch
+
+
+def channel_ends(trace):
+    """Another interconnect's channels as its link records name them: id -> (source, destination)."""
+    links = (trace.kind == KIND_CODE["link"]) & (trace.id >= 0) & (trace.proc >= 0) & (trace.peer >= 0)
+    ids, first = np.unique(trace.id[links], return_index=True)
+    return {int(c): (int(trace.proc[links][i]), int(trace.peer[links][i])) for c, i in zip(ids, first)}
+
+
+def channel_step(trace, ch, ends):
+    """(source x, y) and the unit step (dx, dy) of the arrow of channel ch, or None if it is not drawn."""
+    if is_mesh(trace):
+        if channel_target(trace, ch) is None:
+            return None
+        return trace.node_xy(ch // 4), STEP[ch % 4]
+    if ch not in ends:
+        return None
+    (x, y), (tx, ty) = trace.node_xy(ends[ch][0]), trace.node_xy(ends[ch][1])
+    # A hop of more than one cell wraps around the grid: the arrow points off its edge.
+    step = [int(np.sign(d)) if abs(d) <= 1 else -int(np.sign(d)) for d in (tx - x, ty - y)]
+    return (x, y), tuple(step)
 
 
 def channel_target(trace, ch):
@@ -54,7 +90,7 @@ def route_messages(trace, src, dst):
 
 def channel_load(trace, window):
     """Bytes and busy milliseconds per channel id in the window, and where they came from."""
-    nch = trace.mesh_width * trace.mesh_height * 4
+    nch = channel_count(trace)
     in_window = window.overlapping(trace)
     links = in_window & (trace.kind == KIND_CODE["link"]) & (trace.id >= 0) & (trace.id < nch)
     if links.any():
@@ -63,6 +99,10 @@ def channel_load(trace, window):
         ends = np.minimum(trace.end[links], window.t1)
         source = "link records (trace level full)"
         nbytes = trace.bytes[links]
+    elif not is_mesh(trace):
+        # Only gcsim knows another interconnect's routes: without link records there is nothing to draw.
+        zero = np.zeros(nch)
+        return zero, zero, f"no link records (rerun with --trace-level full to see the {trace.interconnect}'s channels)"
     else:
         msgs = in_window & (trace.kind == KIND_CODE["message"])
         msgs &= (trace.proc >= 0) & (trace.peer >= 0)
@@ -98,11 +138,12 @@ def draw_mesh(ax, trace, window, values, norm, cmap, lw):
                     color="#222222" if chosen else "#999999")
     # One quiver per panel (used channels coloured, unused grey): hundreds of arrows cost one artist.
     used, unused = [], []
-    for ch in range(w * h * 4):
-        if channel_target(trace, ch) is None:
+    ends = {} if is_mesh(trace) else channel_ends(trace)
+    for ch in range(len(values)):
+        drawn = channel_step(trace, ch, ends)
+        if drawn is None:
             continue
-        x, y = trace.node_xy(ch // 4)
-        dx, dy = STEP[ch % 4]
+        (x, y), (dx, dy) = drawn
         ox, oy = dy * 0.1, -dx * 0.1  # keep right: the two directions of a pair side by side
         (used if values[ch] > 0 else unused).append((x + 0.2 * dx + ox, y + 0.2 * dy + oy, 0.6 * dx, 0.6 * dy, values[ch]))
     for arrows, width in ((unused, lw / 3), (used, lw if not big else 6.0)):
@@ -120,8 +161,8 @@ def draw_mesh(ax, trace, window, values, norm, cmap, lw):
     ax.set_aspect("equal")
     ax.set_xticks(range(0, w, max(1, w // 16)))
     ax.set_yticks(range(0, h, max(1, h // 16)))
-    ax.set_xlabel("mesh x (east \u2192)")
-    ax.set_ylabel("mesh y (north \u2192)")
+    ax.set_xlabel(f"{getattr(trace, 'interconnect', 'mesh')} x (east \u2192)")
+    ax.set_ylabel(f"{getattr(trace, 'interconnect', 'mesh')} y (north \u2192)")
 
 
 def plot_mesh_heatmap(plt, trace, window, title, path):
@@ -152,7 +193,7 @@ def plot_mesh_heatmap(plt, trace, window, title, path):
     cb.set_label("busy fraction of the window")
     cb.ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:.0%}"))
     subset = "; outlined: the selected processors" if window.subset else ""
-    fig.suptitle(f"{title}\nmesh channels {w}x{h}, {window.describe()}; from {source}; grey: unused{subset}",
+    fig.suptitle(f"{title}\n{getattr(trace, 'interconnect', 'mesh')} channels {w}x{h}, {window.describe()}; from {source}; grey: unused{subset}",
                  fontsize=10)
     fig.tight_layout()
     fig.savefig(path)

@@ -14,6 +14,8 @@ KIND_CODE = {k: i for i, k in enumerate(KINDS)}
 COLUMNS = "kind,proc,peer,start_ps,end_ps,bytes,id,label,thread"
 COLUMNS_WITHOUT_THREAD = "kind,proc,peer,start_ps,end_ps,bytes,id,label"  # traces written before threads were recorded
 HEADER = re.compile(r"^# gcsim trace; level (\w+); (\d+) processors; mesh (\d+)x(\d+)")
+# After "mesh WxH" (the grid of nodes) when the machine's interconnect is not the GC's mesh.
+INTERCONNECT = re.compile(r"; interconnect ([\w.-]+)")
 PS_PER_MS = 1e9
 
 
@@ -21,8 +23,9 @@ class Trace:
     """Columns of the records, one numpy array each; times in simulated milliseconds."""
 
     def __init__(self, path, level, processors, mesh_width, mesh_height, kind, proc, peer, start_ps, end_ps, nbytes, ident,
-                 thread):
+                 thread, interconnect="mesh"):
         self.path = path
+        self.interconnect = interconnect  # "mesh": the GC's, whose channels and routes the plots know
         self.level = level
         self.processors = processors
         self.mesh_width = mesh_width
@@ -81,6 +84,8 @@ def load_trace(path):
     if second not in (COLUMNS, COLUMNS_WITHOUT_THREAD):
         raise PlotError(f"{csv}: expected the column line '{COLUMNS}', found {second[:60]!r}")
     level, processors, width, height = m.group(1), int(m.group(2)), int(m.group(3)), int(m.group(4))
+    wiring = INTERCONNECT.search(first)
+    interconnect = wiring.group(1) if wiring else "mesh"
     if not rest.strip():
         why = (" (level summary keeps totals only: rerun with --trace-level messages or full)"
                if level == "summary" else "")
@@ -104,7 +109,7 @@ def load_trace(path):
     thread = table[:, 7].astype(np.int32) if table.shape[1] > 7 else np.zeros(len(table), dtype=np.int32)
     return Trace(csv, level, processors, width, height, kind, numbers[:, 0].astype(np.int32),
                  numbers[:, 1].astype(np.int32), numbers[:, 2].astype(np.float64), numbers[:, 3].astype(np.float64),
-                 numbers[:, 4], numbers[:, 5], thread)
+                 numbers[:, 4], numbers[:, 5], thread, interconnect)
 
 
 def parse_procs(spec, processors, where):
