@@ -166,4 +166,20 @@ MPI_Count elements_of(MPI_Count bytes, const Datatype& type) {
   return rest == 0 ? elements : MPI_UNDEFINED;
 }
 
+MPI_Count bytes_of_elements(MPI_Count elements, const Datatype& type) {
+  if (elements < 0) fail(MPI_ERR_COUNT, "negative count");
+  if (type.elements() == 0) {
+    if (elements != 0) fail(MPI_ERR_ARG, "a type without elements holds no elements");
+    return 0;
+  }
+  MPI_Count bytes = checked_multiply(elements / type.elements(), type.size());
+  MPI_Count rest = elements % type.elements();
+  for (const Run& r : type.runs()) {
+    const MPI_Count n = std::min(r.count, rest);
+    bytes += n * static_cast<MPI_Count>(basic_size(r.basic));
+    rest -= n;
+  }
+  return bytes;
+}
+
 }  // namespace gcsim::mpi_layer

@@ -37,5 +37,8 @@ SignatureMatch match_signatures(const Datatype& sent, MPI_Count count_sent, cons
 MPI_Count count_of(MPI_Count bytes, const Datatype& type);
 // MPI_Get_elements: basic elements of type's map in bytes, MPI_UNDEFINED if bytes ends inside one.
 MPI_Count elements_of(MPI_Count bytes, const Datatype& type);
+// The inverse (MPI_Status_set_elements): the bytes of the first elements basic elements of a
+// sequence of type's elements.
+MPI_Count bytes_of_elements(MPI_Count elements, const Datatype& type);
 
 }  // namespace gcsim::mpi_layer

@@ -5,25 +5,14 @@
 #include <vector>
 
 #include "apps/mpi/error.hpp"
+#include "tests/mpi_layer/mpi_test_support.hpp"
 #include "apps/mpi/type_constructors.hpp"
 
 namespace gcsim::mpi_layer {
 namespace {
 
-const Datatype int_type = Datatype::of_basic(Basic::Int);
-const Datatype double_type = Datatype::of_basic(Basic::Double);
-const Datatype char_type = Datatype::of_basic(Basic::Char);
 
-int error_of(auto&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.code();
-  }
-  return MPI_SUCCESS;
-}
-
-TEST(Datatype, BasicTypesHaveTheirCSizes) {
+TEST(MpiDatatype, BasicTypesHaveTheirCSizes) {
   EXPECT_EQ(Datatype::of_basic(Basic::Int).size(), static_cast<MPI_Count>(sizeof(int)));
   EXPECT_EQ(Datatype::of_basic(Basic::LongDouble).extent(), static_cast<MPI_Aint>(sizeof(long double)));
   EXPECT_EQ(Datatype::of_basic(Basic::Bool).size(), static_cast<MPI_Count>(sizeof(bool)));
@@ -34,7 +23,7 @@ TEST(Datatype, BasicTypesHaveTheirCSizes) {
   EXPECT_FALSE(basic_of_handle(MPI_2INT).has_value());
 }
 
-TEST(Datatype, ContiguousMergesIntoOneRun) {
+TEST(MpiDatatype, ContiguousMergesIntoOneRun) {
   const Datatype t = type_contiguous(5, int_type);
   ASSERT_EQ(t.runs().size(), 1u);
   EXPECT_EQ(t.runs()[0], (mpi_layer::Run{0, Basic::Int, 5}));
@@ -44,7 +33,7 @@ TEST(Datatype, ContiguousMergesIntoOneRun) {
   EXPECT_TRUE(t.is_dense());
 }
 
-TEST(Datatype, VectorHasHolesBetweenBlocks) {
+TEST(MpiDatatype, VectorHasHolesBetweenBlocks) {
   // 3 blocks of 2 doubles, 4 doubles apart: the standard's extent ends at the last block.
   const Datatype t = type_vector(3, 2, 4, double_type);
   ASSERT_EQ(t.runs().size(), 3u);
@@ -58,14 +47,14 @@ TEST(Datatype, VectorHasHolesBetweenBlocks) {
   EXPECT_EQ(type_vector(3, 2, 2, double_type).runs().size(), 1u);
 }
 
-TEST(Datatype, HvectorStrideIsInBytes) {
+TEST(MpiDatatype, HvectorStrideIsInBytes) {
   const Datatype t = type_hvector(2, 1, 6, int_type);
   EXPECT_EQ(t.runs()[1].offset, 6);
   EXPECT_EQ(t.extent(), 12);  // 6 + 4 = 10, rounded up to int's alignment
   EXPECT_EQ(t.true_extent(), 10);
 }
 
-TEST(Datatype, NegativeDisplacementsMoveTheLowerBound) {
+TEST(MpiDatatype, NegativeDisplacementsMoveTheLowerBound) {
   const std::vector<int> lengths{1, 2};
   const std::vector<MPI_Aint> displacements{16, -8};
   const Datatype t = type_hindexed(lengths, displacements, int_type);
@@ -79,7 +68,7 @@ TEST(Datatype, NegativeDisplacementsMoveTheLowerBound) {
   EXPECT_EQ(t.runs()[1], (mpi_layer::Run{-8, Basic::Int, 2}));
 }
 
-TEST(Datatype, IndexedDisplacementsAreInExtents) {
+TEST(MpiDatatype, IndexedDisplacementsAreInExtents) {
   const std::vector<int> lengths{2, 1}, displacements{0, 5};
   const Datatype t = type_indexed(lengths, displacements, double_type);
   EXPECT_EQ(t.runs()[1].offset, 40);
@@ -105,7 +94,7 @@ Datatype char_double_int() {
   return type_struct(lengths, displacements, types);
 }
 
-TEST(Datatype, StructExtentIsPaddedToTheCStruct) {
+TEST(MpiDatatype, StructExtentIsPaddedToTheCStruct) {
   const Datatype t = char_double_int();
   EXPECT_EQ(t.size(), 13);
   EXPECT_EQ(t.extent(), static_cast<MPI_Aint>(sizeof(CharDoubleInt)));
@@ -118,7 +107,7 @@ TEST(Datatype, StructExtentIsPaddedToTheCStruct) {
   EXPECT_EQ(type_struct(lengths, displacements, types).extent(), 8);
 }
 
-TEST(Datatype, PairTypesAreTheirCStructs) {
+TEST(MpiDatatype, PairTypesAreTheirCStructs) {
   struct DoubleInt { double v; int i; };
   struct ShortInt { short v; int i; };
   struct LongDoubleInt { long double v; int i; };
@@ -132,7 +121,7 @@ TEST(Datatype, PairTypesAreTheirCStructs) {
   EXPECT_TRUE(pair_type(MPI_FLOAT_INT).committed());
 }
 
-TEST(Datatype, ResizedSetsBoundsAndCopiesStepByTheNewExtent) {
+TEST(MpiDatatype, ResizedSetsBoundsAndCopiesStepByTheNewExtent) {
   const Datatype r = type_resized(int_type, -4, 12);
   EXPECT_EQ(r.lb(), -4);
   EXPECT_EQ(r.extent(), 12);
@@ -158,7 +147,7 @@ TEST(Datatype, ResizedSetsBoundsAndCopiesStepByTheNewExtent) {
   EXPECT_EQ(s.true_extent(), 104);
 }
 
-TEST(Datatype, NestedVectorsOfStructs) {
+TEST(MpiDatatype, NestedVectorsOfStructs) {
   const Datatype s = char_double_int();
   const Datatype row = type_vector(2, 1, 3, s);   // structs 0 and 3 of a row of structs
   const Datatype grid = type_vector(2, 1, 2, row);  // rows 0 and 2, each row's extent apart
@@ -169,7 +158,7 @@ TEST(Datatype, NestedVectorsOfStructs) {
   EXPECT_EQ(grid.runs().back().offset, 2 * row.extent() + 3 * s.extent() + static_cast<MPI_Aint>(offsetof(CharDoubleInt, i)));
 }
 
-TEST(Datatype, ZeroCountsMakeEmptyTypes) {
+TEST(MpiDatatype, ZeroCountsMakeEmptyTypes) {
   for (const Datatype& t : {type_contiguous(0, int_type), type_vector(0, 3, 4, int_type), type_vector(3, 0, 4, int_type)}) {
     EXPECT_EQ(t.size(), 0);
     EXPECT_EQ(t.extent(), 0);
@@ -183,7 +172,7 @@ TEST(Datatype, ZeroCountsMakeEmptyTypes) {
   EXPECT_EQ(s.extent(), 4);
 }
 
-TEST(Datatype, ConstructorsCheckTheirArguments) {
+TEST(MpiDatatype, ConstructorsCheckTheirArguments) {
   EXPECT_EQ(error_of([] { type_contiguous(-1, int_type); }), MPI_ERR_COUNT);
   EXPECT_EQ(error_of([] { type_vector(2, -1, 1, int_type); }), MPI_ERR_ARG);
   const std::vector<int> lengths{1, -2};
@@ -193,7 +182,7 @@ TEST(Datatype, ConstructorsCheckTheirArguments) {
   EXPECT_EQ(error_of([] { pair_type(MPI_INT); }), MPI_ERR_TYPE);
 }
 
-TEST(Datatype, DupKeepsTheMapAndTheCommittedState) {
+TEST(MpiDatatype, DupKeepsTheMapAndTheCommittedState) {
   Datatype v = type_vector(2, 1, 3, int_type);
   EXPECT_FALSE(type_dup(v).committed());
   v.commit();

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "apps/mpi/error.hpp"
+#include "tests/mpi_layer/mpi_test_support.hpp"
 #include "apps/mpi/group.hpp"
 
 namespace gcsim::mpi_layer {
@@ -11,18 +12,9 @@ namespace {
 
 std::vector<int> members(const Group& g) { return {g.members().begin(), g.members().end()}; }
 
-int error_of(auto&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.code();
-  }
-  return MPI_SUCCESS;
-}
-
 const Group world = Group::world(8);
 
-TEST(Group, RanksAndMembers) {
+TEST(MpiGroup, RanksAndMembers) {
   const Group g({5, 2, 7});
   EXPECT_EQ(g.size(), 3);
   EXPECT_EQ(g.rank_of(2), 1);
@@ -30,7 +22,7 @@ TEST(Group, RanksAndMembers) {
   EXPECT_EQ(Group().size(), 0);
 }
 
-TEST(Group, SetOperationsKeepTheFirstGroupsOrder) {
+TEST(MpiGroup, SetOperationsKeepTheFirstGroupsOrder) {
   const Group a({1, 4, 6, 2}), b({2, 3, 4});
   EXPECT_EQ(members(group_union(a, b)), (std::vector<int>{1, 4, 6, 2, 3}));
   EXPECT_EQ(members(group_intersection(a, b)), (std::vector<int>{4, 2}));
@@ -39,7 +31,7 @@ TEST(Group, SetOperationsKeepTheFirstGroupsOrder) {
   EXPECT_EQ(members(group_union(Group(), b)), members(b));
 }
 
-TEST(Group, InclExclFollowTheListedOrder) {
+TEST(MpiGroup, InclExclFollowTheListedOrder) {
   const std::vector<int> ranks{6, 0, 3};
   EXPECT_EQ(members(group_incl(world, ranks)), ranks);
   EXPECT_EQ(members(group_excl(world, ranks)), (std::vector<int>{1, 2, 4, 5, 7}));
@@ -49,7 +41,7 @@ TEST(Group, InclExclFollowTheListedOrder) {
   EXPECT_EQ(error_of([] { group_excl(world, std::vector<int>{8}); }), MPI_ERR_RANK);
 }
 
-TEST(Group, RangesWithPositiveAndNegativeStrides) {
+TEST(MpiGroup, RangesWithPositiveAndNegativeStrides) {
   const std::vector<RankRange> ranges{{1, 7, 3}, {6, 2, -4}};  // 1 4 7, then 6 2
   EXPECT_EQ(members(group_range_incl(world, ranges)), (std::vector<int>{1, 4, 7, 6, 2}));
   EXPECT_EQ(members(group_range_excl(world, ranges)), (std::vector<int>{0, 3, 5}));
@@ -59,14 +51,14 @@ TEST(Group, RangesWithPositiveAndNegativeStrides) {
   EXPECT_EQ(error_of([] { group_range_incl(world, std::vector<RankRange>{{0, 4, 2}, {4, 5, 1}}); }), MPI_ERR_RANK);
 }
 
-TEST(Group, TranslateRanks) {
+TEST(MpiGroup, TranslateRanks) {
   const Group a({3, 5, 1}), b({1, 2, 3});
   const std::vector<int> ranks{0, 1, 2, MPI_PROC_NULL};
   EXPECT_EQ(translate_ranks(a, ranks, b), (std::vector<int>{2, MPI_UNDEFINED, 0, MPI_PROC_NULL}));
   EXPECT_EQ(error_of([&] { translate_ranks(a, std::vector<int>{3}, b); }), MPI_ERR_RANK);
 }
 
-TEST(Group, Compare) {
+TEST(MpiGroup, Compare) {
   EXPECT_EQ(compare_groups(Group({1, 2, 3}), Group({1, 2, 3})), MPI_IDENT);
   EXPECT_EQ(compare_groups(Group({1, 2, 3}), Group({3, 1, 2})), MPI_SIMILAR);
   EXPECT_EQ(compare_groups(Group({1, 2, 3}), Group({1, 2, 4})), MPI_UNEQUAL);

@@ -11,6 +11,7 @@
 
 #include "apps/mpi/basic_dispatch.hpp"
 #include "apps/mpi/error.hpp"
+#include "tests/mpi_layer/mpi_test_support.hpp"
 #include "apps/mpi/reduction.hpp"
 #include "apps/mpi/type_constructors.hpp"
 
@@ -52,7 +53,7 @@ double expected_2_op_3(PredefinedOp op) {
   }
 }
 
-TEST(Reduction, EveryPredefinedOpOnEveryTypeItIsDefinedFor) {
+TEST(MpiReduction, EveryPredefinedOpOnEveryTypeItIsDefinedFor) {
   int defined = 0;
   for (int i = 0; i < basic_type_count; ++i) {
     const auto b = static_cast<Basic>(i);
@@ -77,7 +78,7 @@ TEST(Reduction, EveryPredefinedOpOnEveryTypeItIsDefinedFor) {
   EXPECT_EQ(defined, 21 * 10 + 3 * 4 + 3 * 2 + 3 + 3);
 }
 
-TEST(Reduction, TheStandardsTableOfUndefinedPairs) {
+TEST(MpiReduction, TheStandardsTableOfUndefinedPairs) {
   EXPECT_EQ(op_error(PredefinedOp::Sum, Basic::Char), MPI_ERR_OP);  // text, not a number
   EXPECT_EQ(op_error(PredefinedOp::Max, Basic::FloatComplex), MPI_ERR_OP);
   EXPECT_EQ(op_error(PredefinedOp::Land, Basic::Double), MPI_ERR_OP);
@@ -88,7 +89,7 @@ TEST(Reduction, TheStandardsTableOfUndefinedPairs) {
   EXPECT_EQ(op_error(PredefinedOp::Replace, Basic::WChar), MPI_SUCCESS);
 }
 
-TEST(Reduction, IntegerSumAndProductWrapAsTwosComplement) {
+TEST(MpiReduction, IntegerSumAndProductWrapAsTwosComplement) {
   EXPECT_EQ(reduce_one<int>(PredefinedOp::Sum, INT_MAX, 1, Basic::Int), INT_MIN);
   EXPECT_EQ(reduce_one<long long>(PredefinedOp::Sum, LLONG_MIN, -1, Basic::LongLong), LLONG_MAX);
   EXPECT_EQ(reduce_one<std::int8_t>(PredefinedOp::Prod, 100, 3, Basic::Int8), std::int8_t{44});
@@ -98,7 +99,7 @@ TEST(Reduction, IntegerSumAndProductWrapAsTwosComplement) {
   EXPECT_EQ(reduce_one<unsigned>(PredefinedOp::Sum, UINT_MAX, 2, Basic::Unsigned), 1u);
 }
 
-TEST(Reduction, FloatingAndComplexArithmetic) {
+TEST(MpiReduction, FloatingAndComplexArithmetic) {
   EXPECT_FLOAT_EQ(reduce_one<float>(PredefinedOp::Sum, 0.1f, 0.2f, Basic::Float), 0.1f + 0.2f);
   EXPECT_EQ(reduce_one<double>(PredefinedOp::Min, -0.5, 2.0, Basic::Double), -0.5);
   EXPECT_EQ(reduce_one<long double>(PredefinedOp::Prod, 1.5L, 4.0L, Basic::LongDouble), 6.0L);
@@ -106,7 +107,7 @@ TEST(Reduction, FloatingAndComplexArithmetic) {
   EXPECT_EQ(reduce_one<std::complex<double>>(PredefinedOp::Prod, i, i, Basic::DoubleComplex), std::complex<double>(-1, 0));
 }
 
-TEST(Reduction, LogicalAndBitwiseOps) {
+TEST(MpiReduction, LogicalAndBitwiseOps) {
   EXPECT_EQ(reduce_one<int>(PredefinedOp::Land, 2, 7, Basic::Int), 1);
   EXPECT_EQ(reduce_one<int>(PredefinedOp::Lor, 0, 0, Basic::Int), 0);
   EXPECT_EQ(reduce_one<long>(PredefinedOp::Lxor, 5, 0, Basic::Long), 1);
@@ -115,7 +116,7 @@ TEST(Reduction, LogicalAndBitwiseOps) {
   EXPECT_EQ(reduce_one<bool>(PredefinedOp::Lxor, true, true, Basic::Bool), false);
 }
 
-TEST(Reduction, MinlocAndMaxlocTakeTheLowerIndexOnTies) {
+TEST(MpiReduction, MinlocAndMaxlocTakeTheLowerIndexOnTies) {
   struct DoubleInt { double v; int i; };
   std::array<DoubleInt, 3> in{{{1.0, 4}, {5.0, 2}, {3.0, 9}}};
   std::array<DoubleInt, 3> inout{{{1.0, 1}, {2.0, 0}, {7.0, 3}}};
@@ -142,7 +143,7 @@ TEST(Reduction, MinlocAndMaxlocTakeTheLowerIndexOnTies) {
   EXPECT_EQ(s_inout.i, 7);
 }
 
-TEST(Reduction, LocOpsOnDerivedTypesOfPairs) {
+TEST(MpiReduction, LocOpsOnDerivedTypesOfPairs) {
   struct FloatInt { float v; int i; };
   std::array<FloatInt, 2> in{{{1.0f, 0}, {9.0f, 0}}}, inout{{{2.0f, 1}, {3.0f, 1}}};
   const Datatype t = type_contiguous(2, pair_type(MPI_FLOAT_INT));
@@ -154,14 +155,13 @@ TEST(Reduction, LocOpsOnDerivedTypesOfPairs) {
   EXPECT_THROW(apply_op(Op::predefined(PredefinedOp::Minloc), in.data(), inout.data(), 1, type_contiguous(2, d), 0), Error);
 }
 
-TEST(Reduction, PredefinedOpsWalkADerivedTypesElementsAndSkipItsHoles) {
+TEST(MpiReduction, PredefinedOpsWalkADerivedTypesElementsAndSkipItsHoles) {
   std::array<int, 6> in{1, 100, 2, 100, 3, 100}, inout{10, -7, 20, -7, 30, -7};
   const Datatype every_other = type_vector(3, 1, 2, Datatype::of_basic(Basic::Int));
   apply_op(Op::predefined(PredefinedOp::Sum), in.data(), inout.data(), 1, every_other, 0);
   EXPECT_EQ(inout, (std::array<int, 6>{11, -7, 22, -7, 33, -7}));
 
   struct IntDouble { int i; double d; };
-  const Datatype int_type = Datatype::of_basic(Basic::Int), double_type = Datatype::of_basic(Basic::Double);
   const std::vector<int> ones{1, 1};
   const std::vector<MPI_Aint> displacements{offsetof(IntDouble, i), offsetof(IntDouble, d)};
   const Datatype* types[] = {&int_type, &double_type};
@@ -170,12 +170,11 @@ TEST(Reduction, PredefinedOpsWalkADerivedTypesElementsAndSkipItsHoles) {
   apply_op(Op::predefined(PredefinedOp::Prod), a.data(), b.data(), 2, s, 0);
   EXPECT_EQ(b[1].i, 8);
   EXPECT_EQ(b[1].d, 3.0);
-  const Datatype char_type = Datatype::of_basic(Basic::Char);
   const Datatype* with_char[] = {&int_type, &char_type};
   EXPECT_THROW(apply_op(Op::predefined(PredefinedOp::Sum), a.data(), b.data(), 1, type_struct(ones, displacements, with_char), 0), Error);
 }
 
-TEST(Reduction, ReplaceCopiesAndNoOpKeeps) {
+TEST(MpiReduction, ReplaceCopiesAndNoOpKeeps) {
   std::array<int, 2> in{1, 2}, inout{5, 6};
   const Datatype t = Datatype::of_basic(Basic::Int);
   apply_op(Op::predefined(PredefinedOp::NoOp), in.data(), inout.data(), 2, t, MPI_INT);
@@ -202,7 +201,7 @@ void matrix_product(void* invec, void* inoutvec, int* len, MPI_Datatype* type) {
   }
 }
 
-TEST(Reduction, NonCommutativeUserOpsApplyInRankOrder) {
+TEST(MpiReduction, NonCommutativeUserOpsApplyInRankOrder) {
   const Op op = Op::user(&matrix_product, false);
   EXPECT_FALSE(op.commutative());
   EXPECT_FALSE(op.is_predefined());
@@ -232,7 +231,7 @@ void add_ints(void* invec, void* inoutvec, int* len, MPI_Datatype*) {
   }
 }
 
-TEST(Reduction, UserFunctionsGetTheWholeCount) {
+TEST(MpiReduction, UserFunctionsGetTheWholeCount) {
   std::vector<int> in(1000, 2), inout(1000, 5);
   apply_op(Op::user(&add_ints, true), in.data(), inout.data(), 1000, Datatype::of_basic(Basic::Int), MPI_INT);
   EXPECT_EQ(inout.front(), 7);

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "apps/mpi/error.hpp"
+#include "tests/mpi_layer/mpi_test_support.hpp"
 #include "apps/mpi/topology.hpp"
 
 namespace gcsim::mpi_layer {
@@ -14,23 +15,14 @@ std::vector<int> dims_of(int nnodes, std::vector<int> dims) {
   return dims;
 }
 
-int error_of(auto&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.code();
-  }
-  return MPI_SUCCESS;
-}
-
-TEST(DimsCreate, TheStandardsExamples) {
+TEST(MpiDimsCreate, TheStandardsExamples) {
   EXPECT_EQ(dims_of(6, {0, 0}), (std::vector<int>{3, 2}));
   EXPECT_EQ(dims_of(7, {0, 0}), (std::vector<int>{7, 1}));
   EXPECT_EQ(dims_of(6, {0, 3, 0}), (std::vector<int>{2, 3, 1}));
   EXPECT_EQ(error_of([] { dims_of(7, {0, 3, 0}); }), MPI_ERR_DIMS);
 }
 
-TEST(DimsCreate, BalancedAndNonIncreasing) {
+TEST(MpiDimsCreate, BalancedAndNonIncreasing) {
   EXPECT_EQ(dims_of(64, {0, 0}), (std::vector<int>{8, 8}));
   EXPECT_EQ(dims_of(64, {0, 0, 0}), (std::vector<int>{4, 4, 4}));
   EXPECT_EQ(dims_of(32, {0, 0}), (std::vector<int>{8, 4}));
@@ -50,7 +42,7 @@ TEST(DimsCreate, BalancedAndNonIncreasing) {
   }
 }
 
-TEST(DimsCreate, Errors) {
+TEST(MpiDimsCreate, Errors) {
   EXPECT_EQ(error_of([] { dims_of(8, {2, 3}); }), MPI_ERR_DIMS);
   EXPECT_EQ(error_of([] { dims_of(8, {-1, 0}); }), MPI_ERR_DIMS);
   EXPECT_EQ(error_of([] { dims_of(0, {0}); }), MPI_ERR_ARG);
@@ -58,7 +50,7 @@ TEST(DimsCreate, Errors) {
   EXPECT_EQ(error_of([] { dims_of(5, {}); }), MPI_ERR_DIMS);  // no dimensions hold one node only
 }
 
-TEST(CartTopology, RowMajorRanksAndCoordinates) {
+TEST(MpiCartTopology, RowMajorRanksAndCoordinates) {
   const CartTopology t({2, 3, 4}, {false, false, false});
   EXPECT_EQ(t.size(), 24);
   EXPECT_EQ(t.rank(std::vector<int>{1, 2, 3}), 23);
@@ -69,14 +61,14 @@ TEST(CartTopology, RowMajorRanksAndCoordinates) {
   EXPECT_EQ(error_of([&] { t.coords(24); }), MPI_ERR_RANK);
 }
 
-TEST(CartTopology, PeriodicCoordinatesWrap) {
+TEST(MpiCartTopology, PeriodicCoordinatesWrap) {
   const CartTopology t({3, 4}, {true, false});
   EXPECT_EQ(t.rank(std::vector<int>{-1, 2}), t.rank(std::vector<int>{2, 2}));
   EXPECT_EQ(t.rank(std::vector<int>{7, 0}), t.rank(std::vector<int>{1, 0}));
   EXPECT_EQ(error_of([&] { t.rank(std::vector<int>{0, 4}); }), MPI_ERR_ARG);
 }
 
-TEST(CartTopology, ShiftGivesProcNullOffNonPeriodicEnds) {
+TEST(MpiCartTopology, ShiftGivesProcNullOffNonPeriodicEnds) {
   const CartTopology t({3, 4}, {true, false});
   const int corner = t.rank(std::vector<int>{0, 0});
   // Periodic dimension 0: source wraps to the last row.
@@ -90,7 +82,7 @@ TEST(CartTopology, ShiftGivesProcNullOffNonPeriodicEnds) {
   EXPECT_EQ(error_of([&] { t.shift(corner, 2, 1); }), MPI_ERR_ARG);
 }
 
-TEST(CartTopology, SubGridsSplitByTheDroppedCoordinates) {
+TEST(MpiCartTopology, SubGridsSplitByTheDroppedCoordinates) {
   const CartTopology t({2, 3, 4}, {true, false, true});
   const std::vector<bool> remain{true, false, true};
   const CartTopology s = t.sub(remain);
@@ -113,7 +105,7 @@ TEST(CartTopology, SubGridsSplitByTheDroppedCoordinates) {
   EXPECT_EQ(t.map(24), MPI_UNDEFINED);
 }
 
-TEST(GraphTopology, NeighboursFromIndexAndEdges) {
+TEST(MpiGraphTopology, NeighboursFromIndexAndEdges) {
   // The standard's example: 4 nodes, 0-1 0-3 1-0 2-3 3-0 3-2.
   const GraphTopology g({2, 3, 4, 6}, {1, 3, 0, 3, 0, 2});
   EXPECT_EQ(g.nnodes(), 4);

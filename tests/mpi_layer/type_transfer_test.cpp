@@ -8,16 +8,13 @@
 #include <vector>
 
 #include "apps/mpi/error.hpp"
+#include "tests/mpi_layer/mpi_test_support.hpp"
 #include "apps/mpi/type_constructors.hpp"
 #include "apps/mpi/type_transfer.hpp"
 
 namespace gcsim::mpi_layer {
 namespace {
 
-const Datatype int_type = Datatype::of_basic(Basic::Int);
-const Datatype double_type = Datatype::of_basic(Basic::Double);
-const Datatype float_type = Datatype::of_basic(Basic::Float);
-const Datatype packed_type = Datatype::of_basic(Basic::Packed);
 
 struct IntDouble {
   int i;
@@ -37,7 +34,7 @@ std::vector<std::byte> iota_bytes(std::size_t n) {
   return v;
 }
 
-TEST(TypeTransfer, PackTakesTheElementsInTypeMapOrder) {
+TEST(MpiTypeTransfer, PackTakesTheElementsInTypeMapOrder) {
   const std::array<int, 8> a{0, 1, 2, 3, 4, 5, 6, 7};
   const Datatype every_other = type_vector(4, 1, 2, int_type);
   std::array<int, 4> packed{};
@@ -47,7 +44,7 @@ TEST(TypeTransfer, PackTakesTheElementsInTypeMapOrder) {
   EXPECT_EQ(packed, (std::array<int, 4>{0, 2, 4, 6}));
 }
 
-TEST(TypeTransfer, PackAppendsAtThePositionAndRefusesOverflow) {
+TEST(MpiTypeTransfer, PackAppendsAtThePositionAndRefusesOverflow) {
   const std::array<double, 2> d{1.5, -2.5};
   const int i = 42;
   std::vector<std::byte> out(20);
@@ -74,7 +71,7 @@ TEST(TypeTransfer, PackAppendsAtThePositionAndRefusesOverflow) {
 
 // For a type with holes, negative displacements and a resized extent: packing then unpacking
 // writes exactly the data bytes, as a direct typed copy does, and leaves the holes alone.
-TEST(TypeTransfer, PackUnpackRoundTripEqualsDirectCopy) {
+TEST(MpiTypeTransfer, PackUnpackRoundTripEqualsDirectCopy) {
   const std::vector<int> lengths{2, 1};
   const std::vector<MPI_Aint> displacements{-8, 12};
   const Datatype holes = type_resized(type_hindexed(lengths, displacements, int_type), -8, 32);
@@ -105,7 +102,7 @@ TEST(TypeTransfer, PackUnpackRoundTripEqualsDirectCopy) {
   EXPECT_EQ(unpacked, expected);
 }
 
-TEST(TypeTransfer, ZeroCountsMoveNothing) {
+TEST(MpiTypeTransfer, ZeroCountsMoveNothing) {
   std::vector<std::byte> out(4);
   MPI_Count position = 2;
   pack(nullptr, 0, int_type, out, position);
@@ -118,7 +115,7 @@ TEST(TypeTransfer, ZeroCountsMoveNothing) {
 }
 
 // A receive into a different type map with the same signature: a matrix column arrives as a row.
-TEST(TypeTransfer, CopyBetweenDifferentMapsWithTheSameSignature) {
+TEST(MpiTypeTransfer, CopyBetweenDifferentMapsWithTheSameSignature) {
   std::array<int, 16> matrix{};
   std::iota(matrix.begin(), matrix.end(), 0);
   const Datatype column = type_vector(4, 1, 4, int_type);
@@ -134,7 +131,7 @@ TEST(TypeTransfer, CopyBetweenDifferentMapsWithTheSameSignature) {
     for (int c = 0; c < 4; ++c) EXPECT_EQ(transposed[r * 4 + c], matrix[c * 4 + r]);
 }
 
-TEST(TypeTransfer, StructsArriveIntoPackedArrays) {
+TEST(MpiTypeTransfer, StructsArriveIntoPackedArrays) {
   const std::array<IntDouble, 2> s{{{1, 0.5}, {2, 0.25}}};
   const Datatype t = int_double();
   struct Out {
@@ -154,7 +151,7 @@ TEST(TypeTransfer, StructsArriveIntoPackedArrays) {
   EXPECT_EQ(out.d[1], 0.25);
 }
 
-TEST(TypeTransfer, SignaturesDecideTruncationAndMismatch) {
+TEST(MpiTypeTransfer, SignaturesDecideTruncationAndMismatch) {
   const Datatype three_ints = type_contiguous(3, int_type);
   EXPECT_EQ(match_signatures(int_type, 3, three_ints, 1), SignatureMatch::Match);
   EXPECT_EQ(match_signatures(int_type, 2, three_ints, 1), SignatureMatch::Match);  // a short message
@@ -169,7 +166,7 @@ TEST(TypeTransfer, SignaturesDecideTruncationAndMismatch) {
   EXPECT_EQ(match_signatures(packed_type, 16, int_double(), 1), SignatureMatch::Truncate);
 }
 
-TEST(TypeTransfer, CountsFromBytes) {
+TEST(MpiTypeTransfer, CountsFromBytes) {
   const Datatype t = int_double();  // 12 bytes, 2 elements
   EXPECT_EQ(count_of(24, t), 2);
   EXPECT_EQ(count_of(16, t), MPI_UNDEFINED);
