@@ -80,6 +80,14 @@ int MPI_Type_create_struct(int count, const int array_of_blocklengths[], const M
   });
 }
 
+int MPI_Type_create_subarray(int ndims, const int array_of_sizes[], const int array_of_subsizes[],
+                             const int array_of_starts[], int order, MPI_Datatype oldtype, MPI_Datatype* newtype) {
+  return construct(oldtype, newtype, [&](const Datatype& old) {
+    return type_subarray(array_arg(array_of_sizes, ndims), array_arg(array_of_subsizes, ndims),
+                         array_arg(array_of_starts, ndims), order, old);
+  });
+}
+
 int MPI_Type_create_resized(MPI_Datatype oldtype, MPI_Aint lb, MPI_Aint extent, MPI_Datatype* newtype) {
   return construct(oldtype, newtype, [&](const Datatype& old) { return type_resized(old, lb, extent); });
 }

@@ -1,4 +1,4 @@
-// The C entry points of error texts, the version and MPI_Dims_create: no runtime involved.
+// The C entry points of error texts, versions, MPI_Pcontrol and MPI_Dims_create: no runtime involved.
 #include <algorithm>
 #include <cstring>
 #include <span>
@@ -34,6 +34,22 @@ int MPI_Get_version(int* version, int* subversion) {
     out_arg(version) = MPI_VERSION;
     out_arg(subversion) = MPI_SUBVERSION;
   });
+}
+
+int MPI_Get_library_version(char* version, int* resultlen) {
+  return c_call([&](Registry&) {
+    if (!version) fail(MPI_ERR_ARG, "null string");
+    const std::string_view text = "gcsim MPI layer for the simulated Parsytec GC-PowerPlus (MPI 3.1 subset)";
+    std::memcpy(version, text.data(), text.size());
+    version[text.size()] = '\0';
+    out_arg(resultlen) = static_cast<int>(text.size());
+  });
+}
+
+// Profiling control: gcsim's traces record every run whole, so levels change nothing.
+int MPI_Pcontrol(const int level, ...) {
+  (void)level;
+  return MPI_SUCCESS;
 }
 
 int MPI_Dims_create(int nnodes, int ndims, int dims[]) {

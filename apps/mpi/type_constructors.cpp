@@ -106,6 +106,31 @@ Datatype type_resized(const Datatype& old, MPI_Aint lb, MPI_Aint extent) {
 
 Datatype type_dup(const Datatype& old) { return old; }
 
+Datatype type_subarray(std::span<const int> sizes, std::span<const int> subsizes, std::span<const int> starts,
+                       int order, const Datatype& old) {
+  const std::size_t n = sizes.size();
+  if (n == 0 || subsizes.size() != n || starts.size() != n) fail(MPI_ERR_ARG, "subarray needs ndims > 0 entries of each");
+  if (order != MPI_ORDER_C && order != MPI_ORDER_FORTRAN) fail(MPI_ERR_ARG, "invalid array order");
+  for (std::size_t d = 0; d < n; ++d)
+    if (sizes[d] <= 0 || subsizes[d] <= 0 || subsizes[d] > sizes[d] || starts[d] < 0 || starts[d] > sizes[d] - subsizes[d])
+      fail(MPI_ERR_ARG, "the subarray does not lie inside the array");
+  // Dimension k from the fastest-varying one outwards.
+  const auto dim = [&](std::size_t k) { return order == MPI_ORDER_C ? n - 1 - k : k; };
+  Datatype block = type_contiguous(subsizes[dim(0)], old);
+  MPI_Aint stride = old.extent();  // bytes between neighbours in dimension dim(k)
+  MPI_Aint offset = checked_multiply(starts[dim(0)], stride);
+  for (std::size_t k = 1; k < n; ++k) {
+    stride = checked_multiply(stride, sizes[dim(k - 1)]);
+    block = type_hvector(subsizes[dim(k)], 1, stride, block);
+    offset = checked_add(offset, checked_multiply(starts[dim(k)], stride));
+  }
+  const MPI_Aint whole = checked_multiply(stride, sizes[dim(n - 1)]);
+  TypeBuilder b;
+  b.add(block, offset);
+  b.set_bounds(0, whole);  // the standard puts the bounds at 0 and the whole array
+  return b.finish();
+}
+
 Datatype pair_type(MPI_Datatype handle) {
   switch (handle) {
     case MPI_FLOAT_INT: {

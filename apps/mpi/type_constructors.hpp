@@ -22,6 +22,11 @@ Datatype type_hindexed_block(MPI_Count blocklength, std::span<const MPI_Aint> di
 Datatype type_struct(std::span<const int> blocklengths, std::span<const MPI_Aint> displacements_bytes,
                      std::span<const Datatype* const> types);
 Datatype type_resized(const Datatype& old, MPI_Aint lb, MPI_Aint extent);
+// MPI_Type_create_subarray: the block subsizes at starts of an array of sizes elements of old,
+// in row-major (MPI_ORDER_C) or column-major (MPI_ORDER_FORTRAN) order; its extent is the whole
+// array's. MPI_ERR_ARG if the block does not lie inside the array.
+Datatype type_subarray(std::span<const int> sizes, std::span<const int> subsizes, std::span<const int> starts,
+                       int order, const Datatype& old);
 // A copy, uncommitted unless old is (MPI_Type_dup keeps the committed state).
 Datatype type_dup(const Datatype& old);
 

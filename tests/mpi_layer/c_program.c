@@ -1,5 +1,5 @@
 /* A C99 program against gcsim's <mpi.h>, through the C ABI only: the runtime-independent calls
- * (datatypes, pack, status counts, local reductions, groups, Dims_create, error texts). It is
+ * (datatypes, subarrays, pack, status counts, local reductions, groups, Dims_create, error texts). It is
  * compiled with -std=c99 -Wall -Wextra -pedantic -Werror; it exits non-zero naming the first
  * check that fails. */
 #include <mpi.h>
@@ -63,6 +63,23 @@ static void check_pack_round_trip(void) {
   CHECK(MPI_Type_free(&(MPI_Datatype){MPI_INT}) == MPI_ERR_TYPE);
 }
 
+static void check_subarray(void) {
+  int grid[4][5], halo[3] = {0}, sizes[2] = {4, 5}, subsizes[2] = {3, 1}, starts[2] = {1, 4}, position = 0;
+  char buffer[12];
+  MPI_Datatype column;
+  MPI_Aint lb, extent;
+  for (int i = 0; i < 20; ++i) grid[i / 5][i % 5] = i;
+  CHECK(MPI_Type_create_subarray(2, sizes, subsizes, starts, MPI_ORDER_C, MPI_INT, &column) == MPI_SUCCESS);
+  MPI_Type_commit(&column);
+  MPI_Type_get_extent(column, &lb, &extent);
+  CHECK(lb == 0 && extent == (MPI_Aint)sizeof grid);
+  MPI_Pack(grid, 1, column, buffer, sizeof buffer, &position, MPI_COMM_SELF);
+  position = 0;
+  MPI_Unpack(buffer, sizeof buffer, &position, halo, 3, MPI_INT, MPI_COMM_SELF);
+  CHECK(halo[0] == 9 && halo[1] == 14 && halo[2] == 19);
+  MPI_Type_free(&column);
+}
+
 static void check_status_counts(void) {
   MPI_Status status;
   int count = 0;
@@ -112,8 +129,10 @@ static void check_reductions(void) {
 
 static void check_groups_dims_errors(void) {
   int size = -1, result = -1, dims[3] = {0, 0, 0}, length = 0;
-  char text[MPI_MAX_ERROR_STRING];
+  char text[MPI_MAX_ERROR_STRING], library[MPI_MAX_LIBRARY_VERSION_STRING];
   MPI_Group g = MPI_GROUP_EMPTY;
+  CHECK(MPI_Get_library_version(library, &length) == MPI_SUCCESS && strstr(library, "gcsim") != NULL);
+  CHECK(MPI_Pcontrol(1) == MPI_SUCCESS);
   CHECK(MPI_Group_size(MPI_GROUP_EMPTY, &size) == MPI_SUCCESS && size == 0);
   CHECK(MPI_Group_compare(MPI_GROUP_EMPTY, MPI_GROUP_EMPTY, &result) == MPI_SUCCESS && result == MPI_IDENT);
   CHECK(MPI_Group_union(MPI_GROUP_EMPTY, MPI_GROUP_EMPTY, &g) == MPI_SUCCESS && g == MPI_GROUP_EMPTY);
@@ -127,6 +146,7 @@ static void check_groups_dims_errors(void) {
 int main(void) {
   check_struct_type();
   check_pack_round_trip();
+  check_subarray();
   check_status_counts();
   check_reductions();
   check_groups_dims_errors();

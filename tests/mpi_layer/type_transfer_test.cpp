@@ -131,6 +131,29 @@ TEST(MpiTypeTransfer, CopyBetweenDifferentMapsWithTheSameSignature) {
     for (int c = 0; c < 4; ++c) EXPECT_EQ(transposed[r * 4 + c], matrix[c * 4 + r]);
 }
 
+std::vector<int> packed_ints(const void* buffer, const Datatype& t) {
+  std::vector<int> out(static_cast<std::size_t>(t.size()) / sizeof(int));
+  MPI_Count position = 0;
+  pack(buffer, 1, t, std::as_writable_bytes(std::span(out)), position);
+  return out;
+}
+
+TEST(MpiTypeTransfer, SubarraysInBothOrders) {
+  std::array<int, 20> a{};
+  std::iota(a.begin(), a.end(), 0);
+  const std::array<int, 2> sizes{4, 5}, subsizes{2, 3}, starts{1, 1};
+  const Datatype c = type_subarray(sizes, subsizes, starts, MPI_ORDER_C, int_type);
+  EXPECT_EQ(c.lb(), 0);
+  EXPECT_EQ(c.extent(), 80);  // the whole array
+  EXPECT_EQ(c.size(), 24);
+  EXPECT_EQ(packed_ints(a.data(), c), (std::vector<int>{6, 7, 8, 11, 12, 13}));
+  const Datatype f = type_subarray(sizes, subsizes, starts, MPI_ORDER_FORTRAN, int_type);
+  EXPECT_EQ(packed_ints(a.data(), f), (std::vector<int>{5, 6, 9, 10, 13, 14}));
+  const std::array<int, 2> too_far{3, 1};
+  EXPECT_EQ(error_of([&] { type_subarray(sizes, subsizes, too_far, MPI_ORDER_C, int_type); }), MPI_ERR_ARG);
+  EXPECT_EQ(error_of([&] { type_subarray(sizes, subsizes, starts, 3, int_type); }), MPI_ERR_ARG);
+}
+
 TEST(MpiTypeTransfer, StructsArriveIntoPackedArrays) {
   const std::array<IntDouble, 2> s{{{1, 0.5}, {2, 0.25}}};
   const Datatype t = int_double();

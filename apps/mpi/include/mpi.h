@@ -131,6 +131,7 @@ typedef struct MPI_Status {
 #define MPI_MAX_PROCESSOR_NAME 256
 #define MPI_MAX_ERROR_STRING 256
 #define MPI_MAX_OBJECT_NAME 64
+#define MPI_MAX_LIBRARY_VERSION_STRING 256
 #define MPI_BSEND_OVERHEAD 0
 
 /* Attribute keys of MPI_COMM_WORLD (MPI_Comm_get_attr) and the invalid key. */
@@ -185,6 +186,10 @@ typedef struct MPI_Status {
 #define MPI_THREAD_MULTIPLE 3
 #define MPI_COMM_TYPE_SHARED 1
 
+/* Array orders of MPI_Type_create_subarray. */
+#define MPI_ORDER_C 56
+#define MPI_ORDER_FORTRAN 57
+
 /* User functions. */
 typedef void MPI_User_function(void* invec, void* inoutvec, int* len, MPI_Datatype* datatype);
 typedef void MPI_Comm_errhandler_function(MPI_Comm* comm, int* error_code, ...);
@@ -206,6 +211,7 @@ int MPI_Is_thread_main(int* flag);
 int MPI_Abort(MPI_Comm comm, int errorcode);
 int MPI_Get_processor_name(char* name, int* resultlen);
 int MPI_Get_version(int* version, int* subversion);
+int MPI_Get_library_version(char* version, int* resultlen);
 double MPI_Wtime(void);
 double MPI_Wtick(void);
 int MPI_Pcontrol(const int level, ...);
@@ -291,6 +297,8 @@ int MPI_Type_create_hindexed_block(int count, int blocklength, const MPI_Aint ar
                                    MPI_Datatype oldtype, MPI_Datatype* newtype);
 int MPI_Type_create_struct(int count, const int array_of_blocklengths[], const MPI_Aint array_of_displacements[],
                            const MPI_Datatype array_of_types[], MPI_Datatype* newtype);
+int MPI_Type_create_subarray(int ndims, const int array_of_sizes[], const int array_of_subsizes[],
+                             const int array_of_starts[], int order, MPI_Datatype oldtype, MPI_Datatype* newtype);
 int MPI_Type_create_resized(MPI_Datatype oldtype, MPI_Aint lb, MPI_Aint extent, MPI_Datatype* newtype);
 int MPI_Type_dup(MPI_Datatype oldtype, MPI_Datatype* newtype);
 int MPI_Type_commit(MPI_Datatype* datatype);
