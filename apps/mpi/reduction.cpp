@@ -4,6 +4,7 @@
 #include <climits>
 #include <vector>
 
+#include "apps/mpi/address.hpp"
 #include "apps/mpi/basic_dispatch.hpp"
 #include "apps/mpi/error.hpp"
 #include "apps/mpi/reduction_kernels.hpp"
@@ -30,7 +31,7 @@ std::vector<Element> elements_of_instance(const Datatype& type) {
   return out;
 }
 
-void apply_loc(PredefinedOp op, const std::byte* in, std::byte* inout, MPI_Count count, const Datatype& type) {
+void apply_loc(PredefinedOp op, const void* in, void* inout, MPI_Count count, const Datatype& type) {
   const std::vector<Element> elements = elements_of_instance(type);
   if (elements.size() % 2 != 0) fail(MPI_ERR_OP, "MINLOC/MAXLOC need (value, index) pairs");
   for (std::size_t i = 0; i < elements.size(); i += 2)
@@ -42,26 +43,31 @@ void apply_loc(PredefinedOp op, const std::byte* in, std::byte* inout, MPI_Count
       const MPI_Aint value = base + elements[i].offset, index = base + elements[i + 1].offset;
       visit_basic(elements[i].basic, [&]<class T>(BasicTag<T>) {
         if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>)
-          combine_loc<T>(op == PredefinedOp::Minloc, in + value, in + index, inout + value, inout + index);
+          combine_loc<T>(op == PredefinedOp::Minloc, address_at(in, value), address_at(in, index),
+                         address_at(inout, value), address_at(inout, index));
       });
     }
   }
 }
 
-void apply_predefined(PredefinedOp op, const std::byte* in, std::byte* inout, MPI_Count count, const Datatype& type) {
+void apply_predefined(PredefinedOp op, const void* in, void* inout, MPI_Count count, const Datatype& type) {
   if (op == PredefinedOp::NoOp) return;
   if (is_loc(op)) return apply_loc(op, in, inout, count, type);
   for (const Run& r : type.runs())
     if (!op_defined_on(op, r.basic)) fail(MPI_ERR_OP, "the operation is not defined on this datatype");
   if (type.is_dense() && count > 0) {  // all elements are one run
     const Run& r = type.runs().front();
-    visit_basic(r.basic, [&]<class T>(BasicTag<T>) { combine_run<T>(op, in + r.offset, inout + r.offset, r.count * count); });
+    visit_basic(r.basic, [&]<class T>(BasicTag<T>) {
+      combine_run<T>(op, address_at(in, r.offset), address_at(inout, r.offset), r.count * count);
+    });
     return;
   }
   for (MPI_Count k = 0; k < count; ++k) {
     const MPI_Aint base = type.extent() * k;
     for (const Run& r : type.runs())
-      visit_basic(r.basic, [&]<class T>(BasicTag<T>) { combine_run<T>(op, in + base + r.offset, inout + base + r.offset, r.count); });
+      visit_basic(r.basic, [&]<class T>(BasicTag<T>) {
+        combine_run<T>(op, address_at(in, base + r.offset), address_at(inout, base + r.offset), r.count);
+      });
   }
 }
 
@@ -93,15 +99,13 @@ bool op_defined_on(PredefinedOp op, Basic b) {
 
 void apply_op(const Op& op, const void* in, void* inout, MPI_Count count, const Datatype& type, MPI_Datatype handle) {
   if (count < 0) fail(MPI_ERR_COUNT, "negative count");
-  const auto* src = static_cast<const std::byte*>(in);
-  auto* dst = static_cast<std::byte*>(inout);
-  if (op.is_predefined()) return apply_predefined(op.which(), src, dst, count, type);
+  if (op.is_predefined()) return apply_predefined(op.which(), in, inout, count, type);
   // A user function takes an int count: longer reductions go in slices.
   for (MPI_Count done = 0; done < count;) {
     int len = static_cast<int>(std::min<MPI_Count>(count - done, INT_MAX));
     const MPI_Aint shift = type.extent() * done;
     MPI_Datatype t = handle;
-    op.function()(const_cast<std::byte*>(src + shift), dst + shift, &len, &t);
+    op.function()(const_cast<std::byte*>(address_at(in, shift)), address_at(inout, shift), &len, &t);
     done += len;
   }
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "apps/mpi/address.hpp"
 #include "apps/mpi/error.hpp"
 
 namespace gcsim::mpi_layer {
@@ -95,9 +96,8 @@ void pack(const void* buffer, MPI_Count count, const Datatype& type, std::span<s
   if (position < 0 || position > static_cast<MPI_Count>(out.size()) ||
       bytes > static_cast<MPI_Count>(out.size()) - position)
     fail(MPI_ERR_TRUNCATE, "packed data do not fit the output buffer");
-  const auto* base = static_cast<const std::byte*>(buffer);
   for (BlockCursor c(type, count); !c.at_end(); c.advance(c.remaining())) {
-    std::memcpy(out.data() + position, base + c.offset(), static_cast<std::size_t>(c.remaining()));
+    std::memcpy(out.data() + position, address_at(buffer, c.offset()), static_cast<std::size_t>(c.remaining()));
     position += c.remaining();
   }
 }
@@ -107,22 +107,19 @@ void unpack(std::span<const std::byte> in, MPI_Count& position, void* buffer, MP
   if (position < 0 || position > static_cast<MPI_Count>(in.size()) ||
       bytes > static_cast<MPI_Count>(in.size()) - position)
     fail(MPI_ERR_TRUNCATE, "the packed buffer holds fewer bytes than the elements need");
-  auto* base = static_cast<std::byte*>(buffer);
   for (BlockCursor c(type, count); !c.at_end(); c.advance(c.remaining())) {
-    std::memcpy(base + c.offset(), in.data() + position, static_cast<std::size_t>(c.remaining()));
+    std::memcpy(address_at(buffer, c.offset()), in.data() + position, static_cast<std::size_t>(c.remaining()));
     position += c.remaining();
   }
 }
 
 MPI_Count copy_typed(const void* source, MPI_Count count_from, const Datatype& from, void* destination,
                      MPI_Count count_to, const Datatype& to) {
-  const auto* src = static_cast<const std::byte*>(source);
-  auto* dst = static_cast<std::byte*>(destination);
   MPI_Count copied = 0;
   BlockCursor in(from, count_from), out(to, count_to);
   while (!in.at_end() && !out.at_end()) {
     const MPI_Count n = std::min(in.remaining(), out.remaining());
-    std::memmove(dst + out.offset(), src + in.offset(), static_cast<std::size_t>(n));
+    std::memmove(address_at(destination, out.offset()), address_at(source, in.offset()), static_cast<std::size_t>(n));
     in.advance(n);
     out.advance(n);
     copied += n;
