@@ -1,0 +1,64 @@
+#pragma once
+// The objects behind one rank's handles. Predefined datatypes, ops and MPI_GROUP_EMPTY are fixed
+// and shared; objects a rank creates live in its Registry under handles from first_user_handle
+// up, never reused, so a freed handle stays invalid. The C entry points use the calling rank's
+// registry: the one a RegistryScope installed on this host thread (the runtime will install each
+// rank's as its fiber runs), else this thread's own default one, as for a single process.
+#include <unordered_map>
+
+#include "apps/mpi/datatype.hpp"
+#include "apps/mpi/group.hpp"
+#include "apps/mpi/reduction.hpp"
+
+namespace gcsim::mpi_layer {
+
+inline constexpr int first_user_handle = 1000;
+
+template <class T>
+class HandleTable {
+ public:
+  int insert(T object) {
+    const int handle = next_++;
+    objects_.emplace(handle, std::move(object));
+    return handle;
+  }
+  T* find(int handle) {
+    const auto it = objects_.find(handle);
+    return it == objects_.end() ? nullptr : &it->second;
+  }
+  bool erase(int handle) { return objects_.erase(handle) == 1; }
+  std::size_t live() const { return objects_.size(); }
+
+ private:
+  std::unordered_map<int, T> objects_;
+  int next_ = first_user_handle;
+};
+
+struct Registry {
+  HandleTable<Datatype> datatypes;
+  HandleTable<Op> ops;
+  HandleTable<Group> groups;
+  int world_rank = 0;  // this rank in MPI_COMM_WORLD (MPI_Group_rank)
+};
+
+Registry& current_registry();
+
+class RegistryScope {
+ public:
+  explicit RegistryScope(Registry& r);
+  ~RegistryScope();
+  RegistryScope(const RegistryScope&) = delete;
+  RegistryScope& operator=(const RegistryScope&) = delete;
+
+ private:
+  Registry* previous_;
+};
+
+// The object a handle names, predefined or the registry's; null for an invalid handle.
+const Datatype* find_datatype(Registry& r, MPI_Datatype handle);
+Datatype* find_user_datatype(Registry& r, MPI_Datatype handle);
+const Op* find_op(Registry& r, MPI_Op handle);
+const Group* find_group(Registry& r, MPI_Group handle);
+bool is_predefined_datatype(MPI_Datatype handle);
+
+}  // namespace gcsim::mpi_layer
