@@ -79,6 +79,14 @@ TraceWriter::TraceWriter(const TraceOptions& options, int processors, const Inte
   json_buffer_ += R"js({"ph":"M","pid":0,"name":"process_name","args":{"name":"processors"}})js";
   json_buffer_ += R"js(,
 {"ph":"M","pid":0,"name":"process_sort_index","args":{"sort_index":0}})js";
+  if (!options.machine.empty()) {
+    // Perfetto shows process_labels beside the track group's name; gcsim plot reads it for its subtitles.
+    std::string machine = options.machine;
+    for (char& c : machine) {
+      if (c == '"' || c == '\\' || static_cast<unsigned char>(c) < 0x20) c = '_';
+    }
+    json_buffer_ += fmt::format(",\n{{\"ph\":\"M\",\"pid\":0,\"name\":\"process_labels\",\"args\":{{\"labels\":\"{}\"}}}}", machine);
+  }
   for (int p = 0; p < processors; ++p) {
     const NodeCoordinates at = net_.coordinates(p);
     json_buffer_ += fmt::format(

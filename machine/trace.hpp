@@ -28,6 +28,7 @@ std::string_view to_string(TraceLevel l);
 struct TraceOptions {
   std::string path;                // FILE.json (Chrome) with FILE.csv and FILE.paje beside it; "" = no trace
   TraceLevel level = TraceLevel::full;
+  std::string machine;             // machine and network model, for the plots' subtitles (JSON metadata only)
 };
 
 enum class TraceKind { compute, send, recv, wait, connect, link, message };

@@ -4,6 +4,7 @@
 
   plot_trace.py TRACE --out DIR [--from-ms A] [--to-ms B] [--procs 0-7,12] [--title T]
       writes DIR/gantt.png, DIR/mesh_heatmap.png, DIR/message_matrix.png, DIR/utilization.png
+      (and DIR/utilization.json: the mean busy / communicating / waiting / idle shares)
   plot_trace.py --sweep CSV --out DIR [--title T]
       writes DIR/sweep_<name of CSV>.png
   plot_trace.py --calibration CSV --out DIR     (gcsim calibrate/validate --csv)
@@ -84,8 +85,10 @@ def plot_trace(args, plt):
     trace = load_trace(args.trace)
     window = Window(trace, args.from_ms, args.to_ms, args.procs)
     loaded = time.monotonic()
-    title = args.title or (f"{os.path.basename(trace.path)}: {trace.processors} processors, mesh "
-                           f"{trace.mesh_width}x{trace.mesh_height}, trace level {trace.level}, {len(trace)} records")
+    from gcsim_plots.style import machine_line
+    # Every plot's title block: the user's title (or the trace's name), then the machine, nodes and model.
+    title = args.title or f"{os.path.basename(trace.path)}: trace level {trace.level}, {len(trace)} records"
+    title = f"{title}\n{machine_line(trace, len(window.procs))}"
     wanted = PLOTS if not args.only else [p.strip() for p in args.only.split(",")]
     for name in wanted:
         if name not in PLOTS:
@@ -97,7 +100,9 @@ def plot_trace(args, plt):
         path = os.path.join(args.out, name + ".png")
         began = time.monotonic()
         try:
-            draw[name](plt, trace, window, title, path)
+            drawn = draw[name](plt, trace, window, title, path)
+            if name == "utilization":
+                write_shares(args.out, *drawn)
         except OSError as e:
             raise PlotError(f"cannot write {path}: {e.strerror}")
         print(f"wrote {path} ({time.monotonic() - began:.2f} s)")
@@ -105,8 +110,19 @@ def plot_trace(args, plt):
           f"(reading the trace {loaded - started:.2f} s)")
 
 
+def write_shares(out, means, idle):
+    """DIR/utilization.json: the mean shares of the utilization plot, for gcsim report's headline."""
+    import json
+    from gcsim_plots.activity_split import SHARES
+    shares = {name: round(float(m), 3) for name, m in zip(SHARES, means)}
+    shares["idle"] = round(float(idle), 3)
+    shares["definition"] = "traces/README.md, Busy, communicating, waiting"
+    with open(os.path.join(out, "utilization.json"), "w") as f:
+        json.dump(shares, f, indent=1)
+
+
 def plot_sweep(args, plt):
-    from gcsim_plots.sweep import plot_sweep as draw
+    from gcsim_plots.sweep_plot import plot_sweep as draw
     make_out_dir(args.out)
     stem = os.path.splitext(os.path.basename(args.sweep))[0]
     path = os.path.join(args.out, f"sweep_{stem}.png")

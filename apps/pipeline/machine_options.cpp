@@ -73,6 +73,7 @@ parix::SimulationOptions simulation_options(const MachineOptions& o, int default
   s.memory_limit = machine::parse_memory_limit(o.memory_limit);
   s.trace.path = o.trace;
   s.trace.level = machine::parse_trace_level(o.trace_level);
+  s.trace.machine = fmt::format("{}, network model {}", s.config.name, s.config.network_model);
   return s;
 }
 

@@ -91,7 +91,15 @@ void report_interrupted_sweep(const SweepFlags& f, const std::vector<int>& count
   fmt::print("json {}\n", f.json);
 }
 
-void run_sweep(const SweepFlags& f, const Experiment& e) {
+// The CSV's first row, for the plot's title (traces/README.md, "Sweep CSV"); readers skip '#' rows.
+std::string sweep_comment(const std::string& app, const std::string& scene, const MachineOptions& m, int nodes) {
+  const parix::SimulationOptions s = simulation_options(m, nodes);
+  std::string line = "# gcsim sweep " + app;
+  if (!scene.empty()) line += "; scene " + scene;
+  return line + fmt::format("; machine {}; model {}", s.config.name, s.config.network_model);
+}
+
+void run_sweep(const SweepFlags& f, const Experiment& e, const std::string& app) {
   const std::vector<int> counts = parse_int_list(f.nodes, "--nodes");
   check_writable(f.csv, "--csv");
   check_writable(f.json, "--json");
@@ -102,7 +110,7 @@ void run_sweep(const SweepFlags& f, const Experiment& e) {
   if (!f.csv.empty()) {
     csv.open(f.csv);
     if (!csv) throw FileError("cannot write CSV file '" + f.csv + "'");
-    csv << table->csv_header() << '\n';
+    csv << sweep_comment(app, table->scene(), f.machine, counts[0]) << '\n' << table->csv_header() << '\n';
   }
   RowWriter writer{*table, csv, e};
   ProgressLine progress("sweep", int(counts.size()));
@@ -151,7 +159,7 @@ void add_sweep_command(CLI::App& sweep, const AppSpec& app) {
   ExperimentFactory prepare = app.options(*cmd, Verb::sweep);
   add_sweep_options(cmd, *flags);
   if (!app.sweep_footer.empty()) cmd->footer(app.sweep_footer);
-  cmd->callback([flags, prepare] {
+  cmd->callback([flags, prepare, name = app.name] {
     parse_int_list(flags->nodes, "--nodes");  // a bad list fails before the scene is loaded
     // Under mpirun the ranks are the machine: one node count per job, so a sweep is one mpirun per point.
     if (flags->machine.backend != "simulated")
@@ -159,7 +167,7 @@ void add_sweep_command(CLI::App& sweep, const AppSpec& app) {
                                   ": a sweep needs the simulated backend (under MPI the node count is the number of "
                                   "ranks: run `mpirun -np N gcsim run ...` once per node count)");
     const std::unique_ptr<Experiment> e = prepare();
-    run_sweep(*flags, *e);
+    run_sweep(*flags, *e, name);
   });
 }
 

@@ -40,6 +40,8 @@ class SweepTable {
   virtual nlohmann::json json_document(nlohmann::json rows) const { return rows; }
   // Whether the sweep prints "csv  FILE" / "json FILE" after the table.
   virtual bool announce_files() const { return true; }
+  // The scene swept, for the CSV's comment row (and so the plot's title); "" when none.
+  virtual std::string scene() const { return {}; }
 };
 
 // nodes, simulated s, speedup, comm s (mean per node), wall s.

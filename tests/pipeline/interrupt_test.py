@@ -46,7 +46,8 @@ def data_lines(path):
     if not os.path.exists(path):
         return 0
     with open(path) as f:
-        return max(0, sum(1 for line in f if line.endswith("\n")) - 1)  # minus the header
+        # minus the header; '#' rows say what was swept
+        return max(0, sum(1 for line in f if line.endswith("\n") and not line.startswith("#")) - 1)
 
 
 def finish(proc, sig):
@@ -79,7 +80,7 @@ def sweep(gcsim, work):
         text = f.read()
     if not text.endswith("\n"):
         fail("the CSV's last line is incomplete")
-    rows = list(csv.DictReader(text.splitlines()))
+    rows = list(csv.DictReader(line for line in text.splitlines() if not line.startswith("#")))
     nodes = [int(r["nodes"]) for r in rows]
     if len(nodes) < 2 or len(nodes) >= len(counts) or nodes != counts[:len(nodes)]:
         fail(f"CSV rows for nodes {nodes}: expected the first finished points of {counts}, not all of them")

@@ -18,6 +18,13 @@ STATE_COLORS = {
     "connect": "#984ea3",
 }
 IDLE_COLOR = "#f0f0f0"
+# Busy, communicating, waiting (gcsim_plots/activity_split.py): a palette of their own, so that they
+# are not read as the activity kinds above.
+SHARE_COLORS = {"busy": "#1b9e77", "communicating": "#386cb0", "waiting": "#f0a30a"}
+SHARE_LABELS = {"busy": "busy (compute)", "communicating": "communicating (bytes moving, link set-up)",
+                "waiting": "waiting (for a peer to send or connect)"}
+# Markers and line styles told apart without colour: gcsim's own series, then overlays.
+SERIES_MARKERS = ("o", "D", "^", "v", "P", "X")
 MESSAGE_COLOR = "#222222"
 
 DPI = 120
@@ -42,3 +49,23 @@ def human_duration(ms):
     if ms >= 1e-3:
         return f"{ms * 1e3:.3g} \u00b5s"
     return f"{ms * 1e6:.3g} ns"
+
+
+def time_unit(span_ms, end_ms=0.0):
+    """The unit a time axis of this span (ending at end_ms) reads best in: (factor from ms, unit
+    name). A short window late in a long run goes up a unit rather than print 40,000 ms."""
+    units = ((1e3, "\u00b5s"), (1.0, "ms"), (1e-3, "s"))
+    i = 0 if span_ms < 2.0 else 1 if span_ms < 2000.0 else 2
+    while i < 2 and end_ms * units[i][0] >= 1e4:
+        i += 1
+    return units[i]
+
+
+def machine_line(trace, shown=None):
+    """'Parsytec GC-PowerPlus ..., 8 nodes, network model analytic': for every plot's subtitle."""
+    nodes = f"{trace.processors} nodes (mesh {trace.mesh_width}x{trace.mesh_height})"
+    if shown is not None and shown != trace.processors:
+        nodes += f", {shown} shown"
+    if trace.machine:
+        return f"{trace.machine}; {nodes}"
+    return f"{nodes}; machine and network model not recorded in this trace"

@@ -112,82 +112,39 @@ def series(data):
     return out
 
 
-def plot_sweep(plt, path, out_path, title=None):
-    data = read_sweep(path)
-    fig, (ax_time, ax_speedup, ax_comm) = plt.subplots(1, 3, figsize=(17, 5.4), dpi=DPI)
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    overlays = []
-    all_nodes = sorted(set(data["nodes"].tolist()))
-    for k, ((scene, broadcast), idx) in enumerate(series(data)):
-        color = colors[k % len(colors)]
-        nodes = data["nodes"][idx]
-        sim = data["simulated_s"][idx]
-        comm = data["comm_s"][idx]
-        name = " ".join(v for v in (scene, broadcast) if v)
-        suffix = f" ({name})" if name else ""
-        label = f"gcsim simulated{suffix}"
-        ax_time.plot(nodes, sim, "o-", color=color, label=label)
-        if "wall_s" in data:
-            ax_time.plot(nodes, data["wall_s"][idx], "x:", color=color, alpha=0.7, label=f"host wall-clock{suffix}")
-        if "speedup" in data and not np.isnan(data["speedup"][idx]).all():
-            speedup = data["speedup"][idx]
-        else:
-            speedup = sim[0] / sim  # relative to the smallest node count of the series
-        ax_speedup.plot(nodes, speedup, "o-", color=color, label=label)
-        ax_comm.plot(nodes, 100.0 * comm / sim, "o-", color=color, label=label)
 
-        # The thesis's measurements: from the file's thesis_* columns, else from its tables.
-        thesis = None
-        if "thesis_s" in data and not np.isnan(data["thesis_s"][idx]).all():
-            t_time = data["thesis_s"][idx]
-            t_speedup = present(data, "thesis_speedup", idx)
-            if t_speedup is None:
-                t_speedup = t_time[0] / t_time
-            t_comm = present(data, "thesis_comm_s", idx)
-            thesis = (f"thesis measured{suffix} (the file's thesis_* columns)", nodes, t_time, t_speedup, t_comm)
-        else:
-            curve = thesis_curve(scene, broadcast)
-            if curve:
-                tn = np.array(sorted(curve["time"]))
-                t_time = np.array([curve["time"][n] for n in tn])
-                t_speedup = np.array([curve["speedup"].get(n, math.nan) for n in tn]) if curve["speedup"] else None
-                t_comm = np.array([curve["comm"].get(n, math.nan) for n in tn]) if curve["comm"] else None
-                thesis = (curve["label"], tn, t_time, t_speedup, t_comm)
-        if thesis:
-            label_t, tn, t_time, t_speedup, t_comm = thesis
-            overlays.append(label_t)
-            all_nodes = sorted(set(all_nodes) | set(float(n) for n in tn))
-            ax_time.plot(tn, t_time, "s--", color=color, alpha=0.55, label=label_t)
-            if t_speedup is not None:
-                ax_speedup.plot(tn, t_speedup, "s--", color=color, alpha=0.55, label=label_t)
-            if t_comm is not None:
-                ax_comm.plot(tn, 100.0 * t_comm / t_time, "s--", color=color, alpha=0.55, label=label_t)
 
-    sweep_nodes = sorted(set(data["nodes"].tolist()))
-    ideal = np.array(sweep_nodes) / sweep_nodes[0]
-    top = ax_speedup.get_ylim()[1]
-    ax_speedup.plot(sweep_nodes, ideal, color="#999999", linewidth=0.8, linestyle="-.", label="ideal (linear)")
-    ax_speedup.set_ylim(0, max(top, 1.2))
-    for ax in (ax_time, ax_speedup, ax_comm):
-        ax.set_xscale("log", base=2)
-        ax.set_xticks(all_nodes)
-        ax.set_xticklabels([f"{int(n)}" for n in all_nodes])
-        ax.set_xlabel("nodes")
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
-    values = data["simulated_s"][~np.isnan(data["simulated_s"])]
-    if values.size and values.max() / max(values.min(), 1e-12) > 30:
-        ax_time.set_yscale("log")
-    ax_time.set_ylabel("time (s)")
-    ax_time.set_title("simulated time against node count")
-    ax_speedup.set_ylabel("speedup (time on fewest nodes / time)")
-    ax_speedup.set_title("speedup")
-    ax_comm.set_ylabel("communication share of the time (%)")
-    ax_comm.set_ylim(0, 105)
-    ax_comm.set_title("communication share (comm_s / simulated_s)")
-    note = "; overlaid: " + "; ".join(overlays) if overlays else "; no thesis table matches (no overlay)"
-    fig.suptitle(f"{title or os.path.basename(path)}{note}", fontsize=11)
-    print(note.lstrip("; "))
-    fig.tight_layout()
-    fig.savefig(out_path)
-    plt.close(fig)
+def read_meta(path):
+    """What the sweep ran, from its comment rows: '# gcsim sweep APP; scene S; machine M; model X'
+    gives {'app': APP, 'scene': S, 'machine': M, 'model': X}. CSVs written before these rows (or by
+    hand) give {}."""
+    meta = {}
+    try:
+        with open(path, encoding="utf-8", errors="replace") as f:
+            comments = [line[1:].strip() for line in f if line.startswith("#")]
+    except OSError:
+        return meta
+    for line in comments:
+        parts = [p.strip() for p in line.split(";")]
+        if not parts[0].startswith("gcsim sweep"):
+            continue
+        meta["app"] = parts[0][len("gcsim sweep"):].strip()
+        for part in parts[1:]:
+            key, _, value = part.partition(" ")
+            if key and value:
+                meta[key] = value.strip()
+    return meta
+
+
+def describe_sweep(meta, path):
+    """The figure's title and machine line, from the comment rows (or the file's name)."""
+    what = " ".join(v for v in (meta.get("app"), "sweep") if v)
+    if meta.get("scene"):
+        what += f", scene {meta['scene']}"
+    if not meta.get("app"):
+        what = f"{os.path.basename(path)}: node-count sweep"
+    if meta.get("machine"):
+        machine = f"{meta['machine']}; network model {meta.get('model', 'not recorded')}"
+    else:
+        machine = "machine and network model not recorded in this CSV (written before gcsim sweep named them)"
+    return what, machine

@@ -1,6 +1,7 @@
 """Loads a gcsim trace CSV (FILE.csv beside FILE.json) into numpy arrays, and selects a window
 of time and a subset of processors. Format: traces/README.md."""
 
+import json
 import os
 import re
 import warnings
@@ -8,6 +9,7 @@ import warnings
 import numpy as np
 
 from .errors import PlotError
+from .style import time_unit
 
 KINDS = ("compute", "send", "recv", "wait", "connect", "link", "message")
 KIND_CODE = {k: i for i, k in enumerate(KINDS)}
@@ -38,6 +40,7 @@ class Trace:
         self.bytes = nbytes
         self.id = ident
         self.thread = thread  # 0: the processor itself; 1, 2, ...: threads it spawned
+        self.machine = machine_of(path)  # "" when the trace does not say
 
     def __len__(self):
         return len(self.kind)
@@ -61,6 +64,28 @@ def csv_path_for(path):
     if ext in (".json", ".paje"):
         return stem + ".csv"
     return path + ".csv" if not os.path.exists(path) else path
+
+
+MACHINE_EVENT = re.compile(r'^,?(\{"ph":"M","pid":0,"name":"process_labels".*\}),?$')
+
+
+def machine_of(csv):
+    """The machine and network model, from the Chrome JSON beside the CSV: its metadata event
+    process_labels (Perfetto shows it on the processors' track group). "" when absent."""
+    path = os.path.splitext(csv)[0] + ".json"
+    try:
+        with open(path, "r", encoding="utf-8", errors="replace") as f:
+            head = [f.readline() for _ in range(6)]  # it follows the two process events
+    except OSError:
+        return ""
+    for line in head:
+        m = MACHINE_EVENT.match(line.strip())
+        if m:
+            try:
+                return str(json.loads(m.group(1))["args"]["labels"])
+            except (ValueError, KeyError, TypeError):
+                return ""
+    return ""
 
 
 def load_trace(path):
@@ -160,5 +185,10 @@ class Window:
         """Records whose interval meets the window."""
         return (trace.end >= self.t0) & (trace.start <= self.t1)
 
+    def unit(self):
+        """(factor from ms, unit name) of this window's time axis."""
+        return time_unit(self.length, self.t1)
+
     def describe(self):
-        return f"{self.t0:g} to {self.t1:g} ms"
+        factor, unit = self.unit()
+        return f"{self.t0 * factor:.4g} to {self.t1 * factor:.4g} {unit}"

@@ -34,6 +34,7 @@ class ThesisSweepTable : public pipeline::SweepTable {
     return j;
   }
   void print_footer() override;
+  std::string scene() const override { return scene_name_; }
 
  private:
   struct Thesis {

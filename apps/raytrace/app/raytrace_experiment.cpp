@@ -92,6 +92,7 @@ void RaytraceExperiment::report(const pipeline::Outcome& out, nlohmann::json& ex
   extra["raytrace"]["size"] = settings_.width;
   extra["raytrace"]["distribution"] = std::string(name_of(distribution_));
   extra["raytrace"]["tiles_per_node"] = r.tiles_per_node;
+  if (!flags_.image.empty()) extra["raytrace"]["image"] = flags_.image;  // gcsim report shows it
 }
 
 void RaytraceExperiment::print_sweep_setup() const {
@@ -124,6 +125,7 @@ class EfficiencyTable : public pipeline::SweepTable {
   }
   nlohmann::json json_document(nlohmann::json rows) const override { return {{"sweep", rows}, {"scene", scene_}}; }
   bool announce_files() const override { return false; }
+  std::string scene() const override { return scene_; }
 
  private:
   std::string scene_;
