@@ -1,5 +1,6 @@
 // Connection set-up models on cases worked out by hand (0.55 ms + 0.24 ms per hop on the GC file).
 #include "machine/connection_service.hpp"
+#include "machine/mesh.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,5 @@
 #include "machine/topology.hpp"
+#include "machine/mesh.hpp"
 
 #include <gtest/gtest.h>
 
