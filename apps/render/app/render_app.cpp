@@ -16,7 +16,7 @@
 #include "apps/pipeline/progress.hpp"
 #include "apps/pipeline/run_command.hpp"
 #include "apps/common/image.hpp"
-#include "apps/media/tone_map.hpp"
+#include "apps/common/tone_map.hpp"
 #include "apps/radiosity/gouraud_renderer.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "apps/radiosity/scene.hpp"
@@ -152,8 +152,8 @@ class RenderExperiment : public pipeline::Experiment {
     if (budget_) report_budget(o, extra);
     if (image_.path.empty()) return;
     if (image_.tone_map) {
-      const double exposure = media::auto_exposure(v.image);
-      apps::write_png(image_.path, media::tone_mapped(v.image, exposure));
+      const double exposure = apps::auto_exposure(v.image);
+      apps::write_png(image_.path, apps::tone_mapped(v.image, exposure));
       fmt::print("image     {} (view pass, assembled on node 0; tone-mapped: exposure {:.4g}, extended Reinhard)\n",
                  image_.path, exposure);
       extra["image_tone_map_exposure"] = exposure;
