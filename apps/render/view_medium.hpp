@@ -12,7 +12,7 @@
 #include "apps/common/media/photon_map.hpp"
 #include "apps/common/media/radiance_grid.hpp"
 #include "apps/common/media/segment_march.hpp"
-#include "apps/raytrace/ray_media.hpp"
+#include "apps/raytrace/raytrace.hpp"
 #include "apps/render/medium_region.hpp"
 
 namespace gcsim::render {

@@ -13,7 +13,7 @@
 #include "apps/common/geometry/traversal.hpp"
 #include "apps/common/rng.hpp"
 #include "apps/common/media/sampling.hpp"
-#include "apps/raytrace/optics.hpp"
+#include "apps/raytrace/raytrace.hpp"
 
 namespace gcsim::render {
 

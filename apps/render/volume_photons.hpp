@@ -20,7 +20,7 @@
 #include "apps/common/scene/scene_description.hpp"
 #include "apps/common/media/medium.hpp"
 #include "apps/common/media/photon_map.hpp"
-#include "apps/raytrace/scene.hpp"
+#include "apps/raytrace/raytrace.hpp"
 #include "apps/render/medium_region.hpp"
 
 namespace gcsim::render {

@@ -17,16 +17,14 @@
 #include "apps/pipeline/run_command.hpp"
 #include "apps/common/image.hpp"
 #include "apps/common/tone_map.hpp"
-#include "apps/radiosity/gouraud_renderer.hpp"
-#include "apps/radiosity/parallel_radiosity.hpp"
-#include "apps/radiosity/scene.hpp"
+#include "apps/radiosity/radiosity.hpp"
 #include "apps/render/app/render_commands.hpp"
 #include "apps/render/error_budget.hpp"
 #include "apps/render/plan.hpp"
 #include "apps/render/render_accuracy.hpp"
 #include "apps/render/render_setup.hpp"
 #include "apps/render/unified_render.hpp"
-#include "apps/raytrace/lower_scene.hpp"
+#include "apps/raytrace/raytrace.hpp"
 
 namespace gcsim::render::app {
 
