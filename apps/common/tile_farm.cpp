@@ -10,7 +10,6 @@ namespace {
 parix::Bytes encode(AssignmentFormat format, const std::optional<TileRun>& run) {
   const std::int32_t first = run ? run->first : -1, count = run ? run->count : 0;
   if (format == AssignmentFormat::single_tile) {
-    if (run && count != 1) throw parix::ParixError("tile farm: a single-tile farm was given a run of several tiles");
     parix::Bytes b(sizeof first);
     std::memcpy(b.data(), &first, sizeof first);
     return b;
@@ -19,6 +18,17 @@ parix::Bytes encode(AssignmentFormat format, const std::optional<TileRun>& run) 
   std::memcpy(b.data(), &first, sizeof first);
   std::memcpy(b.data() + sizeof first, &count, sizeof count);
   return b;
+}
+
+// The pool's next run, refused if the farm cannot send it (checked wherever a run is drawn, so
+// also when node 0 renders it itself).
+std::optional<TileRun> take_run(const TileFarm& farm) {
+  std::optional<TileRun> run = farm.next_run();
+  if (run && (run->first < 0 || run->count < 1))
+    throw parix::ParixError("tile farm: the pool gave a run with no tiles or a negative first tile");
+  if (run && farm.format == AssignmentFormat::single_tile && run->count != 1)
+    throw parix::ParixError("tile farm: a single-tile farm was given a run of several tiles");
+  return run;
 }
 
 std::optional<TileRun> decode(AssignmentFormat format, const parix::Bytes& b) {
@@ -106,7 +116,7 @@ class Master {
   // Sends worker w its next run; when the pool is dry, its stop (StopTiming::when_dry) or nothing.
   // False when the pool is dry.
   bool hand_out(int w) {
-    const std::optional<TileRun> run = farm_.next_run();
+    const std::optional<TileRun> run = take_run(farm_);
     if (run) {
       ++outstanding_[w], ++stats_.assignments;
       send(w, run);
@@ -150,7 +160,7 @@ TileFarmStats run_tile_farm(parix::Processor& p, const TileFarm& farm) {
   }
   // The master's own CPU-bound work runs on a thread (the node's second CPU) sharing the pool.
   parix::Thread local = p.spawn([&farm](parix::Processor& q) {
-    for (std::optional<TileRun> run = farm.next_run(); run; run = farm.next_run())
+    for (std::optional<TileRun> run = take_run(farm); run; run = take_run(farm))
       for (int t = run->first; t < run->first + run->count; ++t) farm.assemble(q, farm.render(q, t));
   });
   const TileFarmStats stats = Master(p, farm).run();
