@@ -9,6 +9,7 @@
 #include <cstring>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "apps/common/tile_farm.hpp"
@@ -133,7 +134,13 @@ TEST_P(TileFarmTest, ARunIsDeterministic) {
 INSTANTIATE_TEST_SUITE_P(Forms, TileFarmTest,
                          ::testing::Values(FarmCase{AssignmentFormat::single_tile, StopTiming::at_end, 1},
                                            FarmCase{AssignmentFormat::tile_run, StopTiming::when_dry, 3},
-                                           FarmCase{AssignmentFormat::tile_run, StopTiming::at_end, 2}));
+                                           FarmCase{AssignmentFormat::tile_run, StopTiming::at_end, 2}),
+                         [](const ::testing::TestParamInfo<FarmCase>& info) {
+                           const FarmCase& c = info.param;
+                           return std::string(c.format == AssignmentFormat::single_tile ? "SingleTiles" : "RunsOf") +
+                                  (c.format == AssignmentFormat::single_tile ? "" : std::to_string(c.longest_run)) +
+                                  (c.stops == StopTiming::when_dry ? "StopWhenDry" : "StopAtEnd");
+                         });
 
 TEST(TileFarm, ASingleTileFarmRefusesARunOfSeveralTiles) {
   TileFarm farm{.tag = 7, .format = AssignmentFormat::single_tile};
