@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "apps/programs/broadcast_experiment.hpp"
-#include "apps/radiosity/thesis_tables.hpp"
+#include "apps/radiosity/radiosity.hpp"
 
 namespace gcsim::calibration {
 namespace {

@@ -9,8 +9,7 @@
 
 #include "apps/common/ordered_parallel.hpp"
 #include "apps/programs/broadcast_experiment.hpp"
-#include "apps/radiosity/builtin_scenes.hpp"
-#include "apps/radiosity/parallel_radiosity.hpp"
+#include "apps/radiosity/radiosity.hpp"
 #include "parix/interruption.hpp"
 #include "parix/simulated_runtime.hpp"
 

@@ -11,9 +11,7 @@
 
 #include "apps/calibration/measured_table.hpp"
 #include "apps/calibration/thesis_workload.hpp"
-#include "apps/radiosity/cell_assignment.hpp"
-#include "apps/radiosity/form_factor_exchange.hpp"
-#include "apps/radiosity/form_factor_merge.hpp"
+#include "apps/radiosity/radiosity.hpp"
 #include "machine/machine_config.hpp"
 
 namespace gcsim::calibration {

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "apps/radiosity/thesis_tables.hpp"
+#include "apps/radiosity/radiosity.hpp"
 #include "parix/interruption.hpp"
 
 namespace gcsim::calibration {

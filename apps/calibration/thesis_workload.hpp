@@ -10,8 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "apps/radiosity/progressive_solver.hpp"
-#include "apps/radiosity/scene.hpp"
+#include "apps/radiosity/radiosity.hpp"
 
 namespace gcsim::calibration {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/media/estimator.hpp"
+#include "apps/common/media/estimator.hpp"
 #include "apps/media/frame.hpp"
 #include "apps/media/media_scene.hpp"
 

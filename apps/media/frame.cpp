@@ -45,15 +45,6 @@ double render_seconds(const RenderCounters& c, std::size_t k, const machine::Mac
   return (ops_cycles(render_ops(c, k), m) + ops_cycles(boundary_ops(c.boundary), m)) / m.clock_hz;
 }
 
-std::vector<parix::OpCount> grid_build_ops(const GridBuildCounts& c) {
-  auto n = [](std::uint64_t v) { return static_cast<std::int64_t>(v); };
-  return {{"media_knn_lookup", n(c.knn_queries + c.range_queries)},  // a tree descent either way
-          {"media_knn_photon", n(c.knn_photons)},
-          {"media_range_candidate", n(c.range_candidates)},
-          {"media_sh_project", n(c.projections)},
-          {"media_sh_accumulate", n(c.photon_adds)}};
-}
-
 double grid_build_seconds(const GridBuildCounts& c, const machine::MachineConfig& m) {
   return ops_cycles(grid_build_ops(c), m) / m.clock_hz;
 }

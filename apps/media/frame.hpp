@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "apps/common/image.hpp"
+#include "apps/common/media/grid_build_ops.hpp"
 #include "apps/media/media_render.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/processor.hpp"
@@ -27,8 +28,6 @@ std::vector<parix::OpCount> boundary_ops(const BoundaryTally& t);
 double render_seconds(const RenderCounters& c, std::size_t k, const machine::MachineConfig& m);
 // Seconds of one CPU to build SH grids (the k nearest photons per voxel, Funk–Hecke per photon).
 double grid_build_seconds(const GridBuildCounts& c, const machine::MachineConfig& m);
-// The same work as the [ops] counts parix::Processor::compute charges.
-std::vector<parix::OpCount> grid_build_ops(const GridBuildCounts& c);
 
 // Renders every stride-th pixel in x and y (stride 1: the whole image; others: a pilot whose cost,
 // scaled by stride², predicts the whole image's). Pixels not rendered stay zero.

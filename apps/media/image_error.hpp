@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "apps/common/image.hpp"
+#include "apps/common/quantile.hpp"
 
 namespace gcsim::media {
 
@@ -40,12 +41,7 @@ inline apps::Image mean_image(const std::vector<apps::Image>& images) {
   return out;
 }
 
-// The q-quantile of non-empty `values` (the element at rank q (n − 1), rounded down); reorders them.
-inline double quantile(std::vector<double>& values, double q) {
-  const auto at = values.begin() + static_cast<std::ptrdiff_t>(std::clamp(q, 0.0, 1.0) * double(values.size() - 1));
-  std::nth_element(values.begin(), at, values.end());
-  return *at;
-}
+using apps::quantile;
 
 // Per pixel, the relative standard deviation of repeated renders: the sample standard deviation about
 // their own mean (so the reference's noise does not add a floor that is the same for every estimator)

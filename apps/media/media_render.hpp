@@ -10,7 +10,7 @@
 #include "apps/common/image.hpp"
 #include "apps/media/boundary.hpp"
 #include "apps/media/scene_caches.hpp"
-#include "apps/media/segment_march.hpp"
+#include "apps/common/media/segment_march.hpp"
 
 namespace gcsim::media {
 

@@ -9,10 +9,10 @@
 #include "apps/common/scene/camera.hpp"
 #include "apps/media/boundary.hpp"
 #include "apps/media/fresnel.hpp"
-#include "apps/media/grid_dda.hpp"
-#include "apps/media/medium.hpp"
+#include "apps/common/media/grid_dda.hpp"
+#include "apps/common/media/medium.hpp"
 #include "apps/media/mesh_boundary.hpp"
-#include "apps/media/single_scattering.hpp"
+#include "apps/common/media/single_scattering.hpp"
 
 namespace gcsim::media {
 

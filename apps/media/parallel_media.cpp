@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 
+#include "apps/common/tile_farm.hpp"
 #include "apps/media/frame.hpp"
-#include "apps/media/tile_farm.hpp"
 #include "parix/collectives.hpp"
 #include "parix/processor.hpp"
 
@@ -97,7 +98,6 @@ PixelTile render_pixel_tile(const MediaScene& scene, const SceneCaches& caches, 
   return out;
 }
 
-// Tiles handed out dynamically (tile_farm.hpp); a tile's record is its pixels' luminance as floats.
 // Node 0, with host threads: workers that render the tiles ahead from node 0's caches, in the
 // order the farm hands them out.
 void start_workers(MediaHostThreads& host, const MediaScene& scene, const SceneCaches& caches,
@@ -110,12 +110,16 @@ void start_workers(MediaHostThreads& host, const MediaScene& scene, const SceneC
   host.ahead = std::make_unique<apps::WorkAhead<PixelTile>>(tiles, std::move(order), std::move(computes));
 }
 
-TileFarmStats render_tiles(parix::Processor& p, const MediaScene& scene, const SceneCaches& caches,
-                           const MarchSettings& settings, std::uint64_t seed, apps::Image& image,
-                           std::vector<RenderCounters>& per_node, MediaHostThreads* host) {
+// The farm's settings for media: single tiles in index order, one int32 per assignment, stops
+// once every result is in, tag 41; a record is [int32 tile][its pixels' luminance as floats].
+constexpr int kTileTag = 41;
+
+apps::TileFarmStats render_tiles(parix::Processor& p, const MediaScene& scene, const SceneCaches& caches,
+                                 const MarchSettings& settings, std::uint64_t seed, apps::Image& image,
+                                 std::vector<RenderCounters>& per_node, MediaHostThreads* host) {
   const Tiling tiling{scene.image.width, scene.image.height};
-  TileFarm farm;
-  farm.tiles = tiling.count();
+  const int tiles = tiling.count();
+  apps::TileFarm farm{.tag = kTileTag, .format = apps::AssignmentFormat::single_tile, .stops = apps::StopTiming::at_end};
   // Node 0's workers read its caches: they stop when this returns, even on a cancelled run.
   struct StopWorkers {
     MediaHostThreads* host;
@@ -125,29 +129,42 @@ TileFarmStats render_tiles(parix::Processor& p, const MediaScene& scene, const S
       host->ahead.reset();
     }
   } stop{p.id() == 0 ? host : nullptr};
-  if (host && host->workers > 0 && p.id() == 0) start_workers(*host, scene, caches, settings, seed, farm.tiles);
+  if (host && host->workers > 0 && p.id() == 0) start_workers(*host, scene, caches, settings, seed, tiles);
+  int next = 0;
+  farm.next_run = [&next, tiles]() -> std::optional<apps::TileRun> {
+    if (next >= tiles) return std::nullopt;
+    return apps::TileRun{next++, 1};
+  };
   farm.render = [&](parix::Processor& q, int t) {
     const auto here = [&](int tile) { return render_pixel_tile(scene, caches, settings, seed, tile); };
     PixelTile r = host && host->ahead ? host->ahead->take(t, here) : here(t);
     r.counters.tile_seconds = charge_render(q, r.counters, scene.k_nearest);
     per_node[static_cast<std::size_t>(q.id())].add(r.counters);
-    const auto bytes = std::as_bytes(std::span<const float>(r.pixels));
-    return parix::Bytes(bytes.begin(), bytes.end());
+    const std::int32_t tile = t;
+    parix::Bytes record(sizeof tile + r.pixels.size() * sizeof(float));
+    std::memcpy(record.data(), &tile, sizeof tile);
+    if (!r.pixels.empty()) std::memcpy(record.data() + sizeof tile, r.pixels.data(), r.pixels.size() * sizeof(float));
+    return record;
   };
-  farm.assemble = [&](parix::Processor& q, int t, std::span<const std::byte> record) {
+  farm.assemble = [&](parix::Processor& q, std::span<const std::byte> record) {
+    std::int32_t t;
+    if (record.size() < sizeof t) throw parix::ParixError("media: truncated tile record");
+    std::memcpy(&t, record.data(), sizeof t);
+    if (t < 0 || t >= tiles) throw parix::ParixError("media: tile record names no tile");
+    const std::span<const std::byte> pixels = record.subspan(sizeof t);
     const std::size_t expected =
         std::size_t(tiling.x1(t) - tiling.x0(t)) * std::size_t(tiling.y1(t) - tiling.y0(t)) * sizeof(float);
-    if (record.size() != expected) throw parix::ParixError("media: tile record of the wrong size");
-    const std::byte* at = record.data();
+    if (pixels.size() != expected) throw parix::ParixError("media: tile record of the wrong size");
+    const std::byte* at = pixels.data();
     for (int y = tiling.y0(t); y < tiling.y1(t); ++y)
       for (int x = tiling.x0(t); x < tiling.x1(t); ++x, at += sizeof(float)) {
         float v;
         std::memcpy(&v, at, sizeof v);
         image.at(x, y) = glm::vec3(v);
       }
-    q.compute("memcpy_byte", static_cast<std::int64_t>(record.size()));
+    q.compute("memcpy_byte", static_cast<std::int64_t>(pixels.size()));
   };
-  return run_tile_farm(p, farm);  // on node 0: every tile is assembled, nothing is left to take
+  return apps::run_tile_farm(p, farm);  // on node 0: every tile is assembled, nothing is left to take
 }
 
 }  // namespace
@@ -170,7 +187,7 @@ void media_program(parix::Processor& p, const MediaScene& scene, const MarchSett
   // Node 0 assembles the whole image; the others hold a tile at a time.
   const std::int64_t image_bytes = id == 0 ? std::int64_t(width) * height * std::int64_t(sizeof(glm::vec3)) : 0;
   const parix::MemoryReservation image_held = p.reserve_memory(image_bytes, "image");
-  const TileFarmStats farm = render_tiles(p, scene, caches, settings, seed, result.image, per_node, host);
+  const apps::TileFarmStats farm = render_tiles(p, scene, caches, settings, seed, result.image, per_node, host);
   if (id != 0) return;
   result.tiles = static_cast<std::size_t>(Tiling{width, height}.count());
   result.tile_messages = farm.assignments;

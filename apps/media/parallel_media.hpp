@@ -2,7 +2,7 @@
 // The media renderer on the simulated GC (parix): photons traced in parallel (photon i on its own
 // random stream, so any split gives the same photons), the photon maps replicated by all-gather, the
 // SH grids built voxel-slice by voxel-slice and all-gathered, image tiles handed out dynamically by
-// node 0 (tile_farm.hpp). Compute is charged from counted operations ([ops] media_* in the machine file).
+// node 0 (apps/common/tile_farm.hpp). Compute is charged from counted operations ([ops] media_* in the machine file).
 #include <cstdint>
 #include <memory>
 #include <vector>

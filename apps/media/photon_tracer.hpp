@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "apps/media/media_scene.hpp"
-#include "apps/media/photon_map.hpp"
+#include "apps/common/media/photon_map.hpp"
 
 namespace gcsim::media {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "apps/common/rng.hpp"
-#include "apps/media/sampling.hpp"
+#include "apps/common/media/sampling.hpp"
 
 namespace gcsim::media {
 

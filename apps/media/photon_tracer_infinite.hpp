@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "apps/media/medium.hpp"
-#include "apps/media/photon_map.hpp"
+#include "apps/common/media/medium.hpp"
+#include "apps/common/media/photon_map.hpp"
 
 namespace gcsim::media {
 

@@ -4,17 +4,6 @@
 
 namespace gcsim::media {
 
-UniformGrid grid_for_photons(const std::vector<Photon>& photons, std::size_t k) {
-  glm::dvec3 lo(1e300), hi(-1e300);
-  for (const Photon& p : photons) {
-    lo = glm::min(lo, glm::dvec3(p.position));
-    hi = glm::max(hi, glm::dvec3(p.position));
-  }
-  const glm::dvec3 pad = 1e-6 * glm::max(hi - lo, glm::dvec3(1.0));
-  lo -= pad, hi += pad;
-  return {lo, hi, radiance_grid_dims(lo, hi, photons.size(), k)};
-}
-
 namespace {
 
 RegionCache build_region(std::vector<Photon> photons, const HomogeneousMedium& medium, std::size_t k,

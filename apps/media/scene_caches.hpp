@@ -6,7 +6,7 @@
 
 #include "apps/media/media_scene.hpp"
 #include "apps/media/photon_tracer.hpp"
-#include "apps/media/radiance_grid.hpp"
+#include "apps/common/media/radiance_grid.hpp"
 
 namespace gcsim::media {
 
@@ -19,9 +19,6 @@ struct SceneCaches {
   RegionCache outside, inside;
   GridBuildCounts grid_build;  // the work of building both grids
 };
-
-// The grid geometry for a photon set: its bounding box (slightly padded) and eq. (12–13) dimensions.
-UniformGrid grid_for_photons(const std::vector<Photon>& photons, std::size_t k);
 
 // The photon maps and, with_grids, the SH grids (only the radiance, mis and grid estimators need them).
 SceneCaches build_caches(const MediaScene& scene, PhotonPassResult photons, bool with_grids = true);

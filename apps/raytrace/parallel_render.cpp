@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cstring>
-#include <deque>
 #include <memory>
 #include <stdexcept>
 
+#include "apps/common/tile_farm.hpp"
 #include "apps/raytrace/pixel_encoding.hpp"
 #include "apps/raytrace/render.hpp"
 #include "apps/raytrace/scene.hpp"
@@ -124,17 +124,6 @@ struct NodeWork {
   }
 };
 
-// Node 0 opens links to every other node at once: one thread per connection, so the set-up times
-// (0.55 ms + 0.24 ms per hop on the GC) overlap instead of adding up over 63 peers.
-std::vector<parix::Link> connect_root_to_all(parix::Processor& p) {
-  std::vector<parix::Link> links(p.count());
-  std::vector<parix::Thread> openers;
-  for (int w = 1; w < p.count(); ++w)
-    openers.push_back(p.spawn([&links, w](parix::Processor& q) { links[w] = q.connect(w, kTileTag); }));
-  for (auto& t : openers) t.join();
-  return links;
-}
-
 void run_static(parix::Processor& p, NodeWork& work, Distribution d) {
   const int n = p.count(), me = p.id(), tiles = work.tiling.count();
   std::vector<int> my_tiles;
@@ -161,7 +150,7 @@ void run_static(parix::Processor& p, NodeWork& work, Distribution d) {
   }
   work.assemble(p, mine);
   if (n == 1) return;
-  std::vector<parix::Link> links = connect_root_to_all(p);
+  std::vector<parix::Link> links = apps::connect_root_to_all(p, kTileTag);
   std::vector<parix::Request> recvs(n);
   std::vector<parix::Request*> waiting;
   std::vector<int> who;
@@ -184,108 +173,33 @@ void run_static(parix::Processor& p, NodeWork& work, Distribution d) {
 // 1/(4N) of what is left (at least one, at most kRunTiles). Early runs are long, so there are few messages and
 // neighbouring tiles share their row planes (2.2.1); the last runs are single tiles, so the
 // nodes finish together.
-
-struct Chunk {
-  std::int32_t first = -1;  // -1: no more work
-  std::int32_t count = 0;
-};
-
 // next: a position in order (the tiles to hand out, whole rows of them, by index). scale: image
 // tiles per tile of order (a sample's runs sized as the whole image's would be there).
-Chunk next_chunk(int& next, const std::vector<int>& order, int tiles_x, int nodes, double scale) {
+std::optional<apps::TileRun> next_run(int& next, const std::vector<int>& order, int tiles_x, int nodes, double scale) {
   const int tiles = int(order.size());
-  if (next >= tiles) return {};
+  if (next >= tiles) return std::nullopt;
   const int first = order[std::size_t(next)], left_in_row = tiles_x - first % tiles_x;
   int consecutive = 1;  // a run is consecutive tiles of one row (a sample's order skips some)
   while (consecutive < std::min(left_in_row, kRunTiles) && next + consecutive < tiles &&
          order[std::size_t(next + consecutive)] == first + consecutive)
     ++consecutive;
   const int count = std::clamp(int(double(tiles - next) * scale) / (4 * nodes), 1, consecutive);
-  const Chunk c{first, count};
   next += count;
-  return c;
+  return apps::TileRun{first, count};
 }
 
+// The tile farm (apps/common/tile_farm.hpp) with the guided runs: each assignment is a run (int32
+// first and count), a worker asking when the pool is dry gets its stop at once, and a run's
+// records travel in one message; two runs ahead per worker, so none idles during a round trip.
 void run_dynamic(parix::Processor& p, NodeWork& work, const std::vector<int>& order, double scale) {
-  const int n = p.count(), me = p.id(), tiles = int(order.size()), tiles_x = work.tiling.tiles_x();
-  if (me != 0) {
-    parix::Link master = p.connect(0, kTileTag);
-    std::deque<Chunk> queue;
-    bool stopped = false;
-    std::vector<parix::Request> sends;
-    parix::Request pending = p.irecv(master);
-    parix::Bytes b;  // each assignment, received in place (take_into recycles the storage)
-    for (;;) {
-      // Take in every assignment that has arrived; block only when there is nothing to do.
-      while (!stopped && (pending.done() || queue.empty())) {
-        p.wait(pending);
-        pending.take_into(b);
-        Chunk c;
-        if (b.size() != sizeof c) throw parix::ParixError("raytrace: malformed tile assignment");
-        std::memcpy(&c, b.data(), sizeof c);
-        if (c.first < 0) stopped = true;
-        else queue.push_back(c);
-        if (!stopped) pending = p.irecv(master);
-      }
-      if (queue.empty()) break;
-      const Chunk c = queue.front();
-      queue.pop_front();
-      parix::Bytes result;  // the run's pixels; sending them also asks for more work
-      for (int t = c.first; t < c.first + c.count; ++t) {
-        const parix::Bytes b = work.render(p, t);
-        result.insert(result.end(), b.begin(), b.end());
-      }
-      sends.push_back(p.isend(master, result));
-    }
-    for (auto& s : sends) p.wait(s);
-    return;
-  }
-
-  // Node 0: the master, and a worker thread on the node's second CPU sharing the tile pool.
-  int next = 0;
-  parix::Thread local = p.spawn([&](parix::Processor& q) {
-    for (Chunk c = next_chunk(next, order, tiles_x, n, scale); c.first >= 0; c = next_chunk(next, order, tiles_x, n, scale))
-      for (int t = c.first; t < c.first + c.count; ++t) work.assemble(q, work.render(q, t));
-  });
-  std::vector<parix::Link> links = connect_root_to_all(p);
-  std::vector<int> outstanding(n, 0);  // runs assigned to a worker and not yet returned
-  std::vector<bool> stop_sent(n, false);
-  std::vector<Chunk> sent;             // kept alive until the sends complete
-  sent.reserve(std::size_t(tiles) + std::size_t(n));
-  std::vector<parix::Request> sends;
-  auto assign = [&](int w) {
-    sent.push_back(next_chunk(next, order, tiles_x, n, scale));
-    if (sent.back().first >= 0) ++outstanding[w];
-    else stop_sent[w] = true;
-    sends.push_back(p.isend(links[w], std::as_bytes(std::span(&sent.back(), 1))));
-  };
-  // Two runs each to start with, so a worker never idles during a round trip.
-  for (int w = 1; w < n; ++w)
-    for (int k = 0; k < 2 && !stop_sent[w]; ++k) assign(w);
-  std::vector<parix::Request> recvs(n);
-  for (int w = 1; w < n; ++w)
-    if (outstanding[w] > 0) recvs[w] = p.irecv(links[w]);
-  parix::Bytes result;  // each run's pixels, received in place (take_into recycles the storage)
-  for (;;) {
-    std::vector<parix::Request*> waiting;
-    std::vector<int> who;
-    for (int w = 1; w < n; ++w)
-      if (outstanding[w] > 0) {
-        waiting.push_back(&recvs[w]);
-        who.push_back(w);
-      }
-    if (waiting.empty()) break;
-    const int w = who[p.wait_any(waiting)];
-    recvs[w].take_into(result);
-    --outstanding[w];
-    work.assemble(p, result);
-    if (!stop_sent[w]) assign(w);
-    if (outstanding[w] > 0) recvs[w] = p.irecv(links[w]);
-  }
-  for (int w = 1; w < n; ++w)
-    if (!stop_sent[w]) assign(w);
-  for (auto& s : sends) p.wait(s);
-  local.join();
+  const int n = p.count(), tiles_x = work.tiling.tiles_x();
+  int next = 0;  // node 0's pool
+  apps::TileFarm farm{.tag = kTileTag, .prefetch = 2, .format = apps::AssignmentFormat::tile_run,
+                      .stops = apps::StopTiming::when_dry};
+  farm.next_run = [&]() { return next_run(next, order, tiles_x, n, scale); };
+  farm.render = [&work](parix::Processor& q, int t) { return work.render(q, t); };
+  farm.assemble = [&work](parix::Processor& q, std::span<const std::byte> records) { work.assemble(q, records); };
+  apps::run_tile_farm(p, farm);
 }
 
 }  // namespace

@@ -8,7 +8,8 @@
 //   dynamic      node 0 is a master handing out runs of tiles on request (guided
 //                self-scheduling: long runs first, single tiles at the end); every worker keeps
 //                two requests outstanding so it does not idle during the round trip, and a
-//                worker thread on node 0's second CPU takes runs from the same pool
+//                worker thread on node 0's second CPU takes runs from the same pool (the tile
+//                farm of apps/common/tile_farm.hpp, shared with the media renderer)
 #include <cstdint>
 #include <functional>
 #include <memory>

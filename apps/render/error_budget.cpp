@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "apps/common/scene/description_to_world.hpp"
-#include "apps/radiosity/scene.hpp"
+#include "apps/radiosity/radiosity.hpp"
 #include "apps/render/medium_region.hpp"
 
 namespace gcsim::render {

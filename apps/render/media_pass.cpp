@@ -4,7 +4,7 @@
 #include <optional>
 #include <span>
 
-#include "apps/media/frame.hpp"
+#include "apps/common/media/grid_build_ops.hpp"
 #include "parix/collectives.hpp"
 
 namespace gcsim::render {

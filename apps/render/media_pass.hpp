@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "apps/common/geometry/bvh.hpp"
-#include "apps/media/photon_map.hpp"
-#include "apps/media/radiance_grid.hpp"
-#include "apps/raytrace/scene.hpp"
+#include "apps/common/media/photon_map.hpp"
+#include "apps/common/media/radiance_grid.hpp"
+#include "apps/raytrace/raytrace.hpp"
 #include "apps/render/medium_region.hpp"
 #include "apps/render/view_medium.hpp"
 #include "apps/render/volume_photons.hpp"

@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "apps/radiosity/path_transmittance.hpp"
+#include "apps/radiosity/radiosity.hpp"
 #include "apps/render/medium_region.hpp"
 
 namespace gcsim::render {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "apps/common/scene/description_to_world.hpp"
-#include "apps/radiosity/parallel_radiosity.hpp"
+#include "apps/radiosity/radiosity.hpp"
 #include "apps/render/medium_region.hpp"
 #include "apps/render/radiosity_media.hpp"
 

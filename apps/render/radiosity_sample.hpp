@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "apps/common/scene/scene_description.hpp"
-#include "apps/radiosity/progressive_solver.hpp"
+#include "apps/radiosity/radiosity.hpp"
 #include "parix/simulated_runtime.hpp"
 
 namespace gcsim::render {

@@ -3,8 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "apps/radiosity/parallel_radiosity.hpp"
-#include "apps/radiosity/scene.hpp"
+#include "apps/radiosity/radiosity.hpp"
 #include "apps/render/render_setup.hpp"
 #include "apps/render/unified_render.hpp"
 

@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "apps/common/scene/description_to_world.hpp"
-#include "apps/raytrace/lower_scene.hpp"
+#include "apps/raytrace/raytrace.hpp"
 
 namespace gcsim::render {
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "apps/radiosity/scene.hpp"
+#include "apps/radiosity/radiosity.hpp"
 #include "apps/render/media_pass.hpp"
 #include "apps/render/medium_region.hpp"
 #include "apps/render/plan.hpp"

@@ -4,8 +4,7 @@
 #include <memory>
 #include <numeric>
 
-#include "apps/raytrace/render.hpp"
-#include "apps/raytrace/render_settings.hpp"
+#include "apps/raytrace/raytrace.hpp"
 
 namespace gcsim::render {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "apps/common/scene/scene_description.hpp"
-#include "apps/radiosity/scene.hpp"
+#include "apps/radiosity/radiosity.hpp"
 #include "apps/render/render_setup.hpp"
 #include "apps/render/view_pass.hpp"
 #include "parix/simulated_runtime.hpp"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "apps/common/scene/scene_description.hpp"
-#include "apps/radiosity/parallel_radiosity.hpp"
+#include "apps/radiosity/radiosity.hpp"
 #include "apps/render/view_pass.hpp"
 #include "parix/processor.hpp"
 

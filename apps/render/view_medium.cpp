@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "apps/media/scene_caches.hpp"
+#include "apps/common/media/radiance_grid.hpp"
 #include "apps/render/volume_photons.hpp"
 
 namespace gcsim::render {

@@ -9,10 +9,10 @@
 #include <memory>
 #include <vector>
 
-#include "apps/media/photon_map.hpp"
-#include "apps/media/radiance_grid.hpp"
-#include "apps/media/segment_march.hpp"
-#include "apps/raytrace/ray_media.hpp"
+#include "apps/common/media/photon_map.hpp"
+#include "apps/common/media/radiance_grid.hpp"
+#include "apps/common/media/segment_march.hpp"
+#include "apps/raytrace/raytrace.hpp"
 #include "apps/render/medium_region.hpp"
 
 namespace gcsim::render {

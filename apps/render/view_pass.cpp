@@ -1,7 +1,7 @@
 #include "apps/render/view_pass.hpp"
 
-#include "apps/radiosity/gouraud_renderer.hpp"
-#include "apps/raytrace/lower_scene.hpp"
+#include "apps/radiosity/radiosity.hpp"
+#include "apps/raytrace/raytrace.hpp"
 #include "apps/render/view_scene.hpp"
 
 namespace gcsim::render {

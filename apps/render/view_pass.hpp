@@ -7,10 +7,8 @@
 
 #include "apps/common/geometry/bvh.hpp"
 #include "apps/common/scene/scene_description.hpp"
-#include "apps/radiosity/scene.hpp"
-#include "apps/raytrace/parallel_render.hpp"
-#include "apps/raytrace/scene.hpp"
-#include "apps/raytrace/tile_prefetch.hpp"
+#include "apps/radiosity/radiosity.hpp"
+#include "apps/raytrace/raytrace.hpp"
 #include "apps/render/media_pass.hpp"
 #include "apps/render/view_medium.hpp"
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "apps/common/scene/scene_description.hpp"
-#include "apps/radiosity/scene.hpp"
+#include "apps/radiosity/radiosity.hpp"
 #include "apps/render/plan.hpp"
 #include "parix/simulated_runtime.hpp"
 

@@ -6,8 +6,8 @@
 #include <map>
 #include <stdexcept>
 
-#include "apps/radiosity/element_corners.hpp"
-#include "apps/raytrace/lower_scene.hpp"
+#include "apps/radiosity/radiosity.hpp"
+#include "apps/raytrace/raytrace.hpp"
 
 namespace gcsim::render {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "apps/common/scene/scene_description.hpp"
-#include "apps/radiosity/scene.hpp"
-#include "apps/raytrace/scene.hpp"
+#include "apps/radiosity/radiosity.hpp"
+#include "apps/raytrace/raytrace.hpp"
 
 namespace gcsim::render {
 

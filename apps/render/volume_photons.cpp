@@ -12,8 +12,8 @@
 #include "apps/common/geometry/ray_offset.hpp"
 #include "apps/common/geometry/traversal.hpp"
 #include "apps/common/rng.hpp"
-#include "apps/media/sampling.hpp"
-#include "apps/raytrace/optics.hpp"
+#include "apps/common/media/sampling.hpp"
+#include "apps/raytrace/raytrace.hpp"
 
 namespace gcsim::render {
 

@@ -18,9 +18,9 @@
 #include "apps/common/geometry/bvh.hpp"
 #include "apps/common/geometry/primitive_intersection.hpp"
 #include "apps/common/scene/scene_description.hpp"
-#include "apps/media/medium.hpp"
-#include "apps/media/photon_map.hpp"
-#include "apps/raytrace/scene.hpp"
+#include "apps/common/media/medium.hpp"
+#include "apps/common/media/photon_map.hpp"
+#include "apps/raytrace/raytrace.hpp"
 #include "apps/render/medium_region.hpp"
 
 namespace gcsim::render {

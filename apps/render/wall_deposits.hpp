@@ -16,7 +16,7 @@
 #include "apps/common/geometry/primitive_arrays.hpp"
 #include "apps/common/geometry/primitive_intersection.hpp"
 #include "apps/common/scene/scene_description.hpp"
-#include "apps/radiosity/scene.hpp"
+#include "apps/radiosity/radiosity.hpp"
 #include "parix/processor.hpp"
 
 namespace gcsim::render {

@@ -7,7 +7,7 @@
 #include "apps/common/rng.hpp"
 #include "apps/media/accuracy.hpp"
 #include "apps/media/image_error.hpp"
-#include "apps/media/tone_map.hpp"
+#include "apps/common/tone_map.hpp"
 
 namespace gcsim::media {
 namespace {
@@ -69,13 +69,13 @@ TEST(ImageError, NoiseMapIsAboutTheRendersOwnMean) {
 TEST(ToneMap, ThePercentileMapsToWhiteAndFaintValuesKeepTheirRatio) {
   apps::Image im(100, 1);
   for (int x = 0; x < 100; ++x) im.at(x, 0) = glm::vec3(float(x + 1));  // 1 .. 100
-  const ToneMap t{0.99, 4.0};
-  const double exposure = auto_exposure(im, t);
+  const apps::ToneMap t{0.99, 4.0};
+  const double exposure = apps::auto_exposure(im, t);
   EXPECT_NEAR(exposure, 4.0 / 99.0, 1e-9);  // the 99th percentile of 1..100 (index 98) is 99
-  const apps::Image out = tone_mapped(im, exposure, t);
+  const apps::Image out = apps::tone_mapped(im, exposure, t);
   EXPECT_NEAR(out.at(98, 0).x, 1.0, 1e-6);  // x = white → 1
   for (int x = 1; x < 100; ++x) EXPECT_GT(out.at(x, 0).x, out.at(x - 1, 0).x);  // monotone
-  EXPECT_EQ(auto_exposure(filled(3, 3, 0.0f), t), 1.0);  // all black: no division by zero
+  EXPECT_EQ(apps::auto_exposure(filled(3, 3, 0.0f), t), 1.0);  // all black: no division by zero
 }
 
 MediaScene tiny(const std::string& name) {

@@ -4,7 +4,7 @@
 #include "apps/common/rng.hpp"
 #include "apps/media/boundary.hpp"
 #include "apps/media/fresnel.hpp"
-#include "apps/media/sampling.hpp"
+#include "apps/common/media/sampling.hpp"
 
 namespace gcsim::media {
 namespace {

@@ -5,9 +5,9 @@
 #include <algorithm>
 
 #include "apps/common/rng.hpp"
-#include "apps/media/distance_sampling.hpp"
-#include "apps/media/medium.hpp"
-#include "apps/media/segment_estimator.hpp"
+#include "apps/common/media/distance_sampling.hpp"
+#include "apps/common/media/medium.hpp"
+#include "apps/common/media/segment_estimator.hpp"
 #include "tests/media/quadrature.hpp"
 
 namespace gcsim::media {

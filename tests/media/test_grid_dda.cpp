@@ -6,7 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "apps/common/rng.hpp"
-#include "apps/media/grid_dda.hpp"
+#include "apps/common/media/grid_dda.hpp"
 
 namespace gcsim::media {
 namespace {

@@ -14,7 +14,7 @@
 #include "apps/media/fresnel.hpp"
 #include "apps/media/media_scene.hpp"
 #include "apps/media/mesh_boundary.hpp"
-#include "apps/media/sampling.hpp"
+#include "apps/common/media/sampling.hpp"
 #include "apps/media/scene_data.hpp"
 
 namespace gcsim::media {

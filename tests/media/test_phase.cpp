@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "apps/common/rng.hpp"
-#include "apps/media/phase.hpp"
+#include "apps/common/media/phase.hpp"
 #include "tests/media/quadrature.hpp"
 
 namespace gcsim::media {

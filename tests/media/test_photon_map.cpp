@@ -4,9 +4,9 @@
 #include <glm/geometric.hpp>
 
 #include "apps/common/rng.hpp"
-#include "apps/media/photon_map.hpp"
+#include "apps/common/media/photon_map.hpp"
 #include "apps/media/photon_tracer_infinite.hpp"
-#include "apps/media/single_scattering.hpp"
+#include "apps/common/media/single_scattering.hpp"
 #include "tests/media/quadrature.hpp"
 
 namespace gcsim::media {

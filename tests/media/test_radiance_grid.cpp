@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "apps/media/photon_tracer_infinite.hpp"
-#include "apps/media/radiance_grid.hpp"
+#include "apps/common/media/radiance_grid.hpp"
 #include "apps/common/rng.hpp"
 #include "tests/media/quadrature.hpp"
 

@@ -9,7 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "apps/media/photon_tracer_infinite.hpp"
-#include "apps/media/segment_march.hpp"
+#include "apps/common/media/segment_march.hpp"
 
 namespace gcsim::media {
 namespace {

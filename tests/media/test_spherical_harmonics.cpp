@@ -4,7 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include "apps/common/rng.hpp"
-#include "apps/media/spherical_harmonics.hpp"
+#include "apps/common/media/spherical_harmonics.hpp"
 #include "tests/media/quadrature.hpp"
 
 namespace gcsim::media {

@@ -12,7 +12,7 @@
 
 #include "apps/media/accuracy.hpp"
 #include "apps/media/image_error.hpp"
-#include "apps/media/tone_map.hpp"
+#include "apps/common/tone_map.hpp"
 #include "apps/media/app/commands.hpp"
 #include "apps/pipeline/list_parsing.hpp"
 #include "apps/pipeline/machine_options.hpp"
@@ -76,16 +76,16 @@ void write_noise_maps(const std::string& file, const SceneAccuracy& a) {
 
 void write_images(const std::string& dir, const SceneAccuracy& a, double budget) {
   std::filesystem::create_directories(dir);
-  const double exposure = auto_exposure(a.reference);
+  const double exposure = apps::auto_exposure(a.reference);
   auto path = [&](const std::string& what) { return (std::filesystem::path(dir) / ("media-" + a.scene + "-" + what + ".png")).string(); };
-  apps::write_png(path("reference"), tone_mapped(a.reference, exposure), 1.0f);
+  apps::write_png(path("reference"), apps::tone_mapped(a.reference, exposure), 1.0f);
   const Estimator side[] = {Estimator::uniform, Estimator::transmittance, Estimator::radiance};
   apps::Image strip(3 * a.width + 2 * 2, a.height);
   for (auto& px : strip.pixels()) px = glm::vec3(1.0f);  // white gaps
   int column = 0;
   for (const BudgetRow& r : a.rows) {
     if (r.budget != budget || !r.fits) continue;
-    const apps::Image shown = tone_mapped(r.image, exposure);
+    const apps::Image shown = apps::tone_mapped(r.image, exposure);
     apps::write_png(path(std::string(estimator_name(r.estimator))), shown, 1.0f);
     for (int i = 0; i < 3; ++i)
       if (side[i] == r.estimator) {

@@ -10,7 +10,7 @@
 #include "apps/common/image.hpp"
 #include "apps/media/app/commands.hpp"
 #include "apps/media/parallel_media.hpp"
-#include "apps/media/tone_map.hpp"
+#include "apps/common/tone_map.hpp"
 #include "apps/pipeline/app_registry.hpp"
 #include "apps/pipeline/option_checks.hpp"
 
@@ -99,10 +99,10 @@ void MediaExperiment::report(const pipeline::Outcome& out, nlohmann::json& extra
   fmt::print("compute   SH grids {:.3f} s, tiles {:.3f} s, summed over the nodes: the grids are {:.1f} % of the render\n",
              grid_s, render_s, render_s > 0.0 ? 100.0 * grid_s / render_s : 0.0);
   if (!flags_.image.empty()) {
-    const double exposure = flags_.exposure > 0.0 ? flags_.exposure : auto_exposure(r.image);
-    apps::write_png(flags_.image, tone_mapped(r.image, exposure), 1.0f);
+    const double exposure = flags_.exposure > 0.0 ? flags_.exposure : apps::auto_exposure(r.image);
+    apps::write_png(flags_.image, apps::tone_mapped(r.image, exposure), 1.0f);
     fmt::print("image     {} (exposure {:.4g}{}, extended Reinhard, white {})\n", flags_.image, exposure,
-               flags_.exposure > 0.0 ? "" : ": the 99th percentile of the lit pixels at white", ToneMap{}.white);
+               flags_.exposure > 0.0 ? "" : ": the 99th percentile of the lit pixels at white", apps::ToneMap{}.white);
   }
   extra["media"] = {{"scene", scene_.name},
                     {"estimator", flags_.estimator},

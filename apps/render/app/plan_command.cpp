@@ -11,7 +11,7 @@
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/option_checks.hpp"
 #include "apps/pipeline/option_vocabulary.hpp"
-#include "apps/raytrace/parallel_render.hpp"
+#include "apps/raytrace/raytrace.hpp"
 #include "apps/render/app/render_commands.hpp"
 #include "apps/render/plan_report.hpp"
 #include "apps/render/media_sample.hpp"

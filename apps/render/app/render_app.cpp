@@ -16,17 +16,15 @@
 #include "apps/pipeline/progress.hpp"
 #include "apps/pipeline/run_command.hpp"
 #include "apps/common/image.hpp"
-#include "apps/media/tone_map.hpp"
-#include "apps/radiosity/gouraud_renderer.hpp"
-#include "apps/radiosity/parallel_radiosity.hpp"
-#include "apps/radiosity/scene.hpp"
+#include "apps/common/tone_map.hpp"
+#include "apps/radiosity/radiosity.hpp"
 #include "apps/render/app/render_commands.hpp"
 #include "apps/render/error_budget.hpp"
 #include "apps/render/plan.hpp"
 #include "apps/render/render_accuracy.hpp"
 #include "apps/render/render_setup.hpp"
 #include "apps/render/unified_render.hpp"
-#include "apps/raytrace/lower_scene.hpp"
+#include "apps/raytrace/raytrace.hpp"
 
 namespace gcsim::render::app {
 
@@ -152,8 +150,8 @@ class RenderExperiment : public pipeline::Experiment {
     if (budget_) report_budget(o, extra);
     if (image_.path.empty()) return;
     if (image_.tone_map) {
-      const double exposure = media::auto_exposure(v.image);
-      apps::write_png(image_.path, media::tone_mapped(v.image, exposure));
+      const double exposure = apps::auto_exposure(v.image);
+      apps::write_png(image_.path, apps::tone_mapped(v.image, exposure));
       fmt::print("image     {} (view pass, assembled on node 0; tone-mapped: exposure {:.4g}, extended Reinhard)\n",
                  image_.path, exposure);
       extra["image_tone_map_exposure"] = exposure;

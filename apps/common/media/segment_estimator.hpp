@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-#include "apps/media/distance_sampling.hpp"
+#include "apps/common/media/distance_sampling.hpp"
 
 namespace gcsim::media {
 

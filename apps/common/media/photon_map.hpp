@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "apps/media/medium.hpp"
+#include "apps/common/media/medium.hpp"
 
 namespace gcsim::media {
 

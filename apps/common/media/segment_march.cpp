@@ -1,4 +1,4 @@
-#include "apps/media/segment_march.hpp"
+#include "apps/common/media/segment_march.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 // the closed forms of the transfer equation along one segment of length Δx.
 #include <cmath>
 
-#include "apps/media/phase.hpp"
+#include "apps/common/media/phase.hpp"
 
 namespace gcsim::media {
 

@@ -1,10 +1,10 @@
-#include "apps/media/distance_sampling.hpp"
+#include "apps/common/media/distance_sampling.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "apps/media/medium.hpp"
+#include "apps/common/media/medium.hpp"
 
 namespace gcsim::media {
 

@@ -6,7 +6,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "apps/media/phase.hpp"
+#include "apps/common/media/phase.hpp"
 
 namespace gcsim::media {
 

@@ -6,10 +6,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "apps/media/grid_dda.hpp"
-#include "apps/media/medium.hpp"
-#include "apps/media/photon_map.hpp"
-#include "apps/media/spherical_harmonics.hpp"
+#include "apps/common/media/grid_dda.hpp"
+#include "apps/common/media/medium.hpp"
+#include "apps/common/media/photon_map.hpp"
+#include "apps/common/media/spherical_harmonics.hpp"
 
 namespace gcsim::media {
 
@@ -18,6 +18,9 @@ inline constexpr double kPaperVoxelsPerPhotonSphere = 125.0;  // a of eq. (13)
 // Grid dimensions for n = a N / k voxels over the box [lo, hi] (eqs. 12–13), each at least 1.
 glm::ivec3 radiance_grid_dims(const glm::dvec3& lo, const glm::dvec3& hi, std::size_t photons, std::size_t k,
                               double a = kPaperVoxelsPerPhotonSphere);
+
+// The grid geometry for a photon set: its bounding box (slightly padded) and eq. (12–13) dimensions.
+UniformGrid grid_for_photons(const std::vector<Photon>& photons, std::size_t k);
 
 struct RayHistogram {
   std::vector<double> edges;   // t_1 < ... < t_{n+1}: the ray's voxel boundaries

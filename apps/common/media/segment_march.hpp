@@ -8,10 +8,10 @@
 #include <optional>
 
 #include "apps/common/rng.hpp"
-#include "apps/media/estimator.hpp"
-#include "apps/media/medium.hpp"
-#include "apps/media/radiance_grid.hpp"
-#include "apps/media/single_scattering.hpp"
+#include "apps/common/media/estimator.hpp"
+#include "apps/common/media/medium.hpp"
+#include "apps/common/media/radiance_grid.hpp"
+#include "apps/common/media/single_scattering.hpp"
 
 namespace gcsim::media {
 

@@ -9,10 +9,10 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "apps/media/distance_sampling.hpp"
-#include "apps/media/medium.hpp"
-#include "apps/media/phase.hpp"
-#include "apps/media/segment_estimator.hpp"
+#include "apps/common/media/distance_sampling.hpp"
+#include "apps/common/media/medium.hpp"
+#include "apps/common/media/phase.hpp"
+#include "apps/common/media/segment_estimator.hpp"
 
 namespace gcsim::media {
 

@@ -5,7 +5,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "apps/media/phase.hpp"
+#include "apps/common/media/phase.hpp"
 
 namespace gcsim::media {
 

@@ -1,4 +1,4 @@
-#include "apps/media/photon_map.hpp"
+#include "apps/common/media/photon_map.hpp"
 
 #include <algorithm>
 #include <cmath>

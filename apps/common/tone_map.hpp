@@ -6,7 +6,7 @@
 // (y = 1 at x = w, y ≈ x for faint values) compresses the bright object so the fog keeps its detail.
 #include "apps/common/image.hpp"
 
-namespace gcsim::media {
+namespace gcsim::apps {
 
 struct ToneMap {
   double percentile = 0.99;  // of the pixels with luminance > 0
@@ -15,9 +15,9 @@ struct ToneMap {
 
 // The exposure that maps the percentile of the positive pixel values to the white point; 1 for an
 // all-black image.
-double auto_exposure(const apps::Image& image, const ToneMap& t = {});
+double auto_exposure(const Image& image, const ToneMap& t = {});
 
 // A copy with every value scaled by `exposure` and passed through the extended Reinhard curve.
-apps::Image tone_mapped(const apps::Image& image, double exposure, const ToneMap& t = {});
+Image tone_mapped(const Image& image, double exposure, const ToneMap& t = {});
 
-}  // namespace gcsim::media
+}  // namespace gcsim::apps

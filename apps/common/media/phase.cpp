@@ -1,4 +1,4 @@
-#include "apps/media/phase.hpp"
+#include "apps/common/media/phase.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,13 +1,14 @@
-#include "apps/media/tone_map.hpp"
+#include "apps/common/tone_map.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "apps/media/image_error.hpp"
+#include "apps/common/quantile.hpp"
 
-namespace gcsim::media {
+namespace gcsim::apps {
 
-double auto_exposure(const apps::Image& image, const ToneMap& t) {
+double auto_exposure(const Image& image, const ToneMap& t) {
   std::vector<double> lit;
   for (const glm::vec3& c : image.pixels())
     if (c.x > 0.0f && std::isfinite(c.x)) lit.push_back(c.x);
@@ -15,9 +16,9 @@ double auto_exposure(const apps::Image& image, const ToneMap& t) {
   return t.white / quantile(lit, t.percentile);
 }
 
-apps::Image tone_mapped(const apps::Image& image, double exposure, const ToneMap& t) {
+Image tone_mapped(const Image& image, double exposure, const ToneMap& t) {
   const double w2 = t.white * t.white;
-  apps::Image out(image.width(), image.height());
+  Image out(image.width(), image.height());
   for (std::size_t i = 0; i < image.pixels().size(); ++i)
     for (int c = 0; c < 3; ++c) {
       const double x = std::max(0.0, double(image.pixels()[i][c]) * exposure);
@@ -26,4 +27,4 @@ apps::Image tone_mapped(const apps::Image& image, double exposure, const ToneMap
   return out;
 }
 
-}  // namespace gcsim::media
+}  // namespace gcsim::apps

@@ -1,4 +1,4 @@
-#include "apps/media/grid_dda.hpp"
+#include "apps/common/media/grid_dda.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "apps/media/spherical_harmonics.hpp"
+#include "apps/common/media/spherical_harmonics.hpp"
 
 #include <cmath>
 

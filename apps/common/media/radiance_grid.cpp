@@ -1,8 +1,10 @@
-#include "apps/media/radiance_grid.hpp"
+#include "apps/common/media/radiance_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include <glm/common.hpp>
 
 namespace gcsim::media {
 
@@ -16,6 +18,17 @@ glm::ivec3 radiance_grid_dims(const glm::dvec3& lo, const glm::dvec3& hi, std::s
   glm::ivec3 dims;
   for (int i = 0; i < 3; ++i) dims[i] = std::max(1, static_cast<int>(std::lround(w[i] * s)));
   return dims;
+}
+
+UniformGrid grid_for_photons(const std::vector<Photon>& photons, std::size_t k) {
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const Photon& p : photons) {
+    lo = glm::min(lo, glm::dvec3(p.position));
+    hi = glm::max(hi, glm::dvec3(p.position));
+  }
+  const glm::dvec3 pad = 1e-6 * glm::max(hi - lo, glm::dvec3(1.0));
+  lo -= pad, hi += pad;
+  return {lo, hi, radiance_grid_dims(lo, hi, photons.size(), k)};
 }
 
 std::vector<ShCoefficients> build_voxel_range(const UniformGrid& grid, const PhotonMap& map,
