@@ -1,6 +1,6 @@
 #pragma once
 // Stopping a run from outside (SIGINT, SIGTERM): a signal handler may only set a lock-free atomic,
-// so the request is a flag that the simulation loop polls (parix/simulation.cpp). The run then
+// so the request is a flag that the simulation loop polls (parix/sim/simulation.cpp). The run then
 // unwinds every processor, closes its trace and throws Interrupted with what it had reached.
 #include <atomic>
 #include <stdexcept>

@@ -12,7 +12,7 @@
 #include "apps/radiosity/builtin_scenes.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "parix/interruption.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::calibration {
 namespace {

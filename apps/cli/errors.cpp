@@ -14,7 +14,7 @@
 #include "apps/pipeline/resource_check.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/interruption.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::cli {
 

@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "parix/mpi/mpi_processor.hpp"
-#include "parix/simulation.hpp"  // checked_placement
+#include "parix/sim/simulation.hpp"  // checked_placement
 
 namespace gcsim::parix {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // The simulated runtime's state, shared by its units: processes (SimProcess, one per processor and
 // thread, each a fiber), the links between them and the Simulation that owns the kernel, the
-// network and the machine. Internal to parix/: applications use parix/simulated_runtime.hpp.
+// network and the machine. Internal to parix/: applications use parix/sim/simulated_runtime.hpp.
 #include <chrono>
 #include <deque>
 #include <exception>
@@ -17,15 +17,15 @@
 #include "machine/node.hpp"
 #include "machine/ring_buffer.hpp"
 #include "machine/trace.hpp"
-#include "parix/activity.hpp"
-#include "parix/connection_matcher.hpp"
-#include "parix/fiber_processes.hpp"
-#include "parix/in_order_delivery.hpp"
-#include "parix/link_table.hpp"
-#include "parix/payload_pool.hpp"
-#include "parix/request_pool.hpp"
-#include "parix/simulated_runtime.hpp"
-#include "parix/stable_vector.hpp"
+#include "parix/sim/activity.hpp"
+#include "parix/sim/connection_matcher.hpp"
+#include "parix/sim/fiber_processes.hpp"
+#include "parix/sim/in_order_delivery.hpp"
+#include "parix/sim/link_table.hpp"
+#include "parix/sim/payload_pool.hpp"
+#include "parix/sim/request_pool.hpp"
+#include "parix/sim/simulated_runtime.hpp"
+#include "parix/sim/stable_vector.hpp"
 
 namespace gcsim::parix::detail {
 
@@ -319,7 +319,7 @@ class Simulation {
   // more goes back to the pool, which bounds what it keeps.
   static constexpr std::size_t kSlotKeepsBytes = 4096;
   RequestPool requests;      // first member: outlives every request the others hold
-  PayloadPool payloads;      // messages' storage, recycled (parix/payload_pool.hpp)
+  PayloadPool payloads;      // messages' storage, recycled (parix/sim/payload_pool.hpp)
   machine::MachineConfig config;
   // Whether [comm_cpu] charges anything: asked on every send and receive.
   const bool charges_comm_cpu = config.comm_cpu.any();

@@ -6,9 +6,9 @@
 
 #include <fmt/format.h>
 
-#include "parix/deadlock_report.hpp"
+#include "parix/sim/deadlock_report.hpp"
 #include "parix/interruption.hpp"
-#include "parix/simulation.hpp"
+#include "parix/sim/simulation.hpp"
 
 namespace gcsim::parix {
 namespace detail {

@@ -2,7 +2,7 @@
 // the connection service times the set-up, and both ends wake when the link is up.
 #include <fmt/format.h>
 
-#include "parix/simulation.hpp"
+#include "parix/sim/simulation.hpp"
 
 namespace gcsim::parix::detail {
 

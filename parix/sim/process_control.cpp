@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "parix/simulation.hpp"
+#include "parix/sim/simulation.hpp"
 
 namespace gcsim::parix::detail {
 
