@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "parix/mpi/mpi_processor.hpp"
-#include "parix/sim/simulation.hpp"  // checked_placement
+#include "parix/placement.hpp"
 
 namespace gcsim::parix {
 namespace {
@@ -151,7 +151,7 @@ MpiRunResult run_mpi(const SimulationOptions& options, const std::function<void(
   state.rank = mpi_rank();
   state.size = size;
   // Processor i runs on rank placement[i], as it would run on node placement[i] when simulated.
-  state.rank_of = detail::checked_placement(options.placement, size);
+  state.rank_of = checked_placement(options.placement, size);
   std::vector<int> processor_of_rank(static_cast<std::size_t>(size));
   for (int i = 0; i < size; ++i) processor_of_rank[static_cast<std::size_t>(state.rank_of[i])] = i;
   state.processor = processor_of_rank[static_cast<std::size_t>(state.rank)];
