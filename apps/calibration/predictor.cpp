@@ -11,7 +11,7 @@
 #include "apps/programs/broadcast_experiment.hpp"
 #include "apps/radiosity/builtin_scenes.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 #include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::calibration {
@@ -189,7 +189,7 @@ std::vector<Grid> Predictor::predict(const std::vector<MeasuredTable>& tables, c
     if (stopped) return;
     try {
       step();
-    } catch (const parix::Interrupted&) {
+    } catch (const parix::host::Interrupted&) {
       if (!interruption) throw;
       stopped = std::current_exception();
     }

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 #include "parix/sim/deadlock_report.hpp"
 #include "parix/sim/sim_process.hpp"
 
@@ -54,7 +54,7 @@ ProcessLifetime::End ProcessLifetime::run(const std::function<void(Processor&)>&
   for (;;) {
     fibers_.run_ready();  // every woken fiber runs until it blocks or returns
     if (failure_ || live_ == 0) break;
-    if (interruption_requested()) {  // SIGINT/SIGTERM (parix/interruption.hpp): one relaxed load per event
+    if (host::interruption_requested()) {  // SIGINT/SIGTERM (parix/host/interruption.hpp): one relaxed load per event
       end = End::interrupted;
       break;
     }

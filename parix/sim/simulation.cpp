@@ -6,7 +6,7 @@
 #include <chrono>
 #include <string>
 
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::parix {
 namespace detail {
@@ -25,7 +25,7 @@ RunResult Simulation::run(const std::function<void(Processor&)>& program) {
   trace.close();
   if (processes.failure()) std::rethrow_exception(processes.failure());
   if (end == ProcessLifetime::End::deadlock) throw DeadlockError(processes.deadlock_report());
-  if (end == ProcessLifetime::End::interrupted) throw Interrupted(result(wall_start, true));
+  if (end == ProcessLifetime::End::interrupted) throw host::Interrupted(result(wall_start, true));
   return result(wall_start, false);
 }
 
