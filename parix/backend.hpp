@@ -11,7 +11,7 @@
 
 #include "parix/processor.hpp"
 #include "parix/run_result.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::parix {
 

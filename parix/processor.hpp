@@ -28,7 +28,7 @@
 #include <utility>
 
 #include "machine/sim_time.hpp"
-#include "parix/activity.hpp"
+#include "parix/sim/activity.hpp"
 
 namespace gcsim::parix {
 
@@ -77,7 +77,7 @@ namespace detail {
 struct RequestHome;
 }
 
-// Shared state of an asynchronous send or receive, an activity (parix/activity.hpp): running, then
+// Shared state of an asynchronous send or receive, an activity (parix/sim/activity.hpp): running, then
 // done or cancelled. Backends fill it in; its waiter is backend-private (who to wake).
 // Reference-counted by the Requests that hold it (intrusively: no control block, no atomics --
 // a request belongs to one host thread, the simulation's or an MPI processor's).
@@ -137,7 +137,7 @@ class Request {
   // The received bytes (a completed receive); moves them out. Empty for a cancelled receive.
   Bytes take() { return std::move(state_->data); }
   // The same into a caller-owned vector, by swapping storage: into's old contents are dropped and
-  // its storage goes back to the backend for later messages (parix/payload_pool.hpp), so a loop
+  // its storage goes back to the backend for later messages (parix/sim/payload_pool.hpp), so a loop
   // that reuses one Bytes receives without allocating. into is left empty for a cancelled receive.
   void take_into(Bytes& into);
   RequestState* state() const { return state_; }

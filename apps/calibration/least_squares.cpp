@@ -9,7 +9,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multifit_nlinear.h>
 
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::calibration {
 namespace {
@@ -30,7 +30,7 @@ int gsl_residuals(const gsl_vector* x, void* data, gsl_vector* out) {
   if (p->interrupted) return GSL_EDOM;  // GSL may try another point: refuse at once
   try {
     r = (*p->f)(xs);
-  } catch (const parix::Interrupted&) {
+  } catch (const parix::host::Interrupted&) {
     p->interrupted = std::current_exception();  // rethrown once GSL has returned (C frames in between)
     return GSL_EDOM;
   } catch (const std::exception& e) {

@@ -10,8 +10,8 @@
 #include "apps/common/ordered_parallel.hpp"
 #include "apps/programs/broadcast_experiment.hpp"
 #include "apps/radiosity/radiosity.hpp"
-#include "parix/interruption.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/host/interruption.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::calibration {
 namespace {
@@ -188,7 +188,7 @@ std::vector<Grid> Predictor::predict(const std::vector<MeasuredTable>& tables, c
     if (stopped) return;
     try {
       step();
-    } catch (const parix::Interrupted&) {
+    } catch (const parix::host::Interrupted&) {
       if (!interruption) throw;
       stopped = std::current_exception();
     }

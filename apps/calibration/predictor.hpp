@@ -48,7 +48,7 @@ class Predictor {
 
   // Predicts every measured cell of every table on machine c. Runs shared by several tables
   // (4.3, 4.4 and 4.5 use the same runs) are simulated once.
-  // With `interruption` given, a SIGINT/SIGTERM (parix::Interrupted) does not propagate: the grids
+  // With `interruption` given, a SIGINT/SIGTERM (parix::host::Interrupted) does not propagate: the grids
   // hold the cells whose runs finished (kNotMeasured for the rest) and *interruption the exception,
   // for the caller to rethrow once it has written them.
   std::vector<Grid> predict(const std::vector<MeasuredTable>& tables, const machine::MachineConfig& c,

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "apps/radiosity/radiosity.hpp"
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::calibration {
 
@@ -45,7 +45,7 @@ int loops_at(const radiosity::Scene& scene, radiosity::SolverOptions o, double s
   // A matching solves a dozen times on the host before any simulation: SIGINT stops it between loops.
   const radiosity::SolveResult r = radiosity::solve_progressive(
       with_reflectances_scaled(scene, s), o, nullptr,
-      [](const radiosity::StepRecord&, const radiosity::ProgressiveState&) { parix::throw_if_interrupted(); });
+      [](const radiosity::StepRecord&, const radiosity::ProgressiveState&) { parix::host::throw_if_interrupted(); });
   return r.converged ? r.state.steps() : cap + 1;
 }
 

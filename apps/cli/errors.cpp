@@ -11,8 +11,8 @@
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/resource_check.hpp"
 #include "machine/machine_config.hpp"
-#include "parix/interruption.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/host/interruption.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::cli {
 
@@ -35,7 +35,7 @@ int report_failure(std::exception_ptr e) {
     return s.code;
   } catch (const CLI::ParseError& x) {  // a check in a command's callback (CLI::ValidationError)
     return fail(x, kExitUsage);
-  } catch (const parix::Interrupted& x) {
+  } catch (const parix::host::Interrupted& x) {
     // Host-side loops (accuracy tables, renders on the host) have no simulated clock to report.
     print_error(x.partial().makespan > 0 ? fmt::format("interrupted at simulated time {:.6f} s; finished results were written",
                                                        x.partial().simulated_seconds())

@@ -2,13 +2,13 @@
 
 #include <csignal>
 
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::cli {
 
 namespace {
 
-extern "C" void on_interrupt(int) { parix::request_interruption(); }
+extern "C" void on_interrupt(int) { parix::host::request_interruption(); }
 
 }  // namespace
 

@@ -1,5 +1,5 @@
 #pragma once
-// SIGINT and SIGTERM ask the running simulation to stop (parix/interruption.hpp): the command
+// SIGINT and SIGTERM ask the running simulation to stop (parix/host/interruption.hpp): the command
 // then writes what it finished and exits with kExitInterrupted. The handler restores the default
 // action, so a second signal ends the process at once.
 namespace gcsim::cli {

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::media {
 namespace {
@@ -56,7 +56,7 @@ Frame render_frame(const MediaScene& scene, const SceneCaches& caches, const Mar
   f.image = apps::Image(scene.image.width, scene.image.height);
   for (int y = 0; y < scene.image.height; y += stride) {
     // Renders on the host, outside the simulated machine: SIGINT/SIGTERM is polled here, a row apart.
-    parix::throw_if_interrupted();
+    parix::host::throw_if_interrupted();
     for (int x = 0; x < scene.image.width; x += stride)
       f.image.at(x, y) = glm::vec3(static_cast<float>(render_pixel(scene, caches, settings, seed, x, y, f.counters)));
   }

@@ -11,7 +11,7 @@
 #include "apps/common/work_ahead.hpp"
 #include "apps/media/media_render.hpp"
 #include "parix/run_result.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::media {
 

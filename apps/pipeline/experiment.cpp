@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::pipeline {
 
@@ -16,7 +16,7 @@ std::unique_ptr<Outcome> run_experiment(const Experiment& e, const parix::RunOpt
   out->options = options;
   try {
     out->run = parix::run(options, e.program(*out));
-  } catch (const parix::Interrupted&) {
+  } catch (const parix::host::Interrupted&) {
     if (reached) e.report_interrupted(*out, *reached);
     throw;
   }

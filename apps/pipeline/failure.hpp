@@ -17,7 +17,7 @@ enum ExitCode : int {
   kExitResource = 4,      // host or node memory exhausted
   kExitDeadlock = 5,      // every simulated processor blocked with nothing pending
   kExitInterrupted = 130, // SIGINT or SIGTERM: what was finished is written, marked "interrupted"
-  // 70: a simulated processor overflowed its fiber stack (parix/fiber_stack.hpp; raise fiber_stack_kib)
+  // 70: a simulated processor overflowed its fiber stack (parix/sim/fiber_stack.hpp; raise fiber_stack_kib)
 };
 
 // The exit codes as the help footer and README list them.

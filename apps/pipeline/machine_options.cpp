@@ -12,7 +12,7 @@
 #include "machine/trace.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/option_vocabulary.hpp"
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::pipeline {
 
@@ -116,7 +116,7 @@ parix::RunResult run_program(const parix::RunOptions& options, const parix::Prog
   check_machine_outputs(o);
   try {
     return parix::run(options, program);
-  } catch (const parix::Interrupted& x) {
+  } catch (const parix::host::Interrupted& x) {
     report_interrupted_run(x.partial(), o);
     throw;
   }

@@ -45,7 +45,7 @@ void check_machine_outputs(const MachineOptions& o);
 void report_interrupted_run(const parix::RunResult& partial, const MachineOptions& o,
                             const nlohmann::json& reached = nlohmann::json::object());
 // parix::run with o's output paths checked first and an interruption reported as above (then
-// parix::Interrupted is rethrown, for the interrupted exit code).
+// parix::host::Interrupted is rethrown, for the interrupted exit code).
 parix::RunResult run_program(const parix::RunOptions& options, const parix::Program& program, const MachineOptions& o);
 // Writes JSON to a file, failing with a clear message.
 void write_json_file(const std::string& path, const nlohmann::json& j);

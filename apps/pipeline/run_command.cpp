@@ -5,7 +5,7 @@
 
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/machine_options.hpp"
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::pipeline {
 
@@ -28,7 +28,7 @@ void add_run_command(CLI::App& run, const AppSpec& app) {
     nlohmann::json reached = nlohmann::json::object();
     try {
       out = run_experiment(*e, options, &reached);
-    } catch (const parix::Interrupted& x) {
+    } catch (const parix::host::Interrupted& x) {
       report_interrupted_run(x.partial(), *machine, reached);
       throw;
     }

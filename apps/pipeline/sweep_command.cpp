@@ -16,7 +16,7 @@
 #include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/pipeline/progress.hpp"
 #include "apps/pipeline/sweep_table.hpp"
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::pipeline {
 
@@ -128,7 +128,7 @@ void run_sweep(const SweepFlags& f, const Experiment& e, const std::string& app)
           writer(counts[i], *out);
           if (i + 1 < int(counts.size())) progress.update(i + 1, fmt::format("running {} nodes", counts[i + 1]));
         });
-  } catch (const parix::Interrupted& x) {
+  } catch (const parix::host::Interrupted& x) {
     progress.clear();
     report_interrupted_sweep(f, counts, *table, writer, x.partial());
     throw;

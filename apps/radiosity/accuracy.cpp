@@ -5,7 +5,7 @@
 
 #include "apps/radiosity/gauss_seidel.hpp"
 #include "apps/radiosity/hemicube.hpp"
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::radiosity {
 
@@ -27,11 +27,11 @@ double now_seconds() {
 }
 
 void stop_if_interrupted(const OpCounts& ops, const machine::MachineConfig& m) {
-  if (!parix::interruption_requested()) return;
+  if (!parix::host::interruption_requested()) return;
   parix::RunResult reached;
   reached.nodes = 1;
   reached.makespan = simulated_time(ops, m);
-  throw parix::Interrupted(std::move(reached));
+  throw parix::host::Interrupted(std::move(reached));
 }
 
 namespace {

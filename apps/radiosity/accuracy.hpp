@@ -4,8 +4,8 @@
 // the simulated seconds the work would take on one node of the machine (from counted operations)
 // and the host's wall seconds.
 //
-// These loops run outside the simulated machine, so they poll parix::interruption_requested()
-// themselves (between hemicubes and solver steps) and throw parix::Interrupted; each finished row is
+// These loops run outside the simulated machine, so they poll parix::host::interruption_requested()
+// themselves (between hemicubes and solver steps) and throw parix::host::Interrupted; each finished row is
 // handed to `on_row` first, so a command can keep the rows done before an interruption.
 #include <functional>
 #include <vector>
@@ -65,7 +65,7 @@ double simulated_seconds(const OpCounts& ops, const machine::MachineConfig& mach
 // The host's steady clock in seconds, for the tables' wall-time columns.
 double now_seconds();
 
-// Throws parix::Interrupted once SIGINT/SIGTERM asked (parix/interruption.hpp), with the counted
+// Throws parix::host::Interrupted once SIGINT/SIGTERM asked (parix/host/interruption.hpp), with the counted
 // work so far as the simulated time reached: the accuracy loops run outside the simulation, so
 // they poll this after every solver step.
 void stop_if_interrupted(const OpCounts& ops, const machine::MachineConfig& machine);

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::radiosity {
 
@@ -21,7 +21,7 @@ GaussSeidelResult solve_gauss_seidel(const Scene& scene, const HemicubeOptions& 
   std::vector<std::vector<double>> f(np);  // f[q][e] = F(q -> e)
   for (std::size_t q = 0; q < np; ++q) {
     // A plain loop outside the simulated machine: it polls SIGINT/SIGTERM itself (one hemicube apart).
-    parix::throw_if_interrupted();
+    parix::host::throw_if_interrupted();
     f[q] = renderer.form_factor_row(int(q), ops);
   }
   // K[p][q] = rho_p F_qp A_q / A_p (rho applied per channel below).

@@ -23,7 +23,7 @@
 #include "apps/raytrace/counters.hpp"
 #include "apps/raytrace/render_settings.hpp"
 #include "parix/run_result.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::raytrace {
 

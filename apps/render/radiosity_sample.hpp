@@ -8,7 +8,7 @@
 
 #include "apps/common/scene/scene_description.hpp"
 #include "apps/radiosity/radiosity.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::render {
 

@@ -10,7 +10,7 @@
 #include "apps/common/scene/scene_description.hpp"
 #include "apps/render/plan.hpp"
 #include "apps/render/render_setup.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::render {
 

@@ -10,7 +10,7 @@
 #include "apps/radiosity/radiosity.hpp"
 #include "apps/render/render_setup.hpp"
 #include "apps/render/view_pass.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::render {
 

@@ -13,7 +13,7 @@
 #include "machine/interconnect.hpp"
 #include "machine/interconnect_registry.hpp"
 #include "parix/mpi/mpi_processor.hpp"
-#include "parix/simulation.hpp"  // checked_placement
+#include "parix/placement.hpp"
 
 namespace gcsim::parix {
 namespace {
@@ -154,7 +154,7 @@ MpiRunResult run_mpi(const SimulationOptions& options, const std::function<void(
   state.rank = mpi_rank();
   state.size = size;
   // Processor i runs on rank placement[i], as it would run on node placement[i] when simulated.
-  state.rank_of = detail::checked_placement(options.placement, size);
+  state.rank_of = checked_placement(options.placement, size);
   std::vector<int> processor_of_rank(static_cast<std::size_t>(size));
   for (int i = 0; i < size; ++i) processor_of_rank[static_cast<std::size_t>(state.rank_of[i])] = i;
   state.processor = processor_of_rank[static_cast<std::size_t>(state.rank)];

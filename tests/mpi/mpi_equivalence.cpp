@@ -18,7 +18,7 @@
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "parix/collectives.hpp"
 #include "parix/mpi/mpi_runtime.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 using namespace gcsim;
 

@@ -12,7 +12,7 @@
 #include <new>
 
 #include "apps/programs/ring_program.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace {
 std::atomic<std::int64_t> g_allocations{0};

@@ -1,7 +1,7 @@
 // Processor::cancel on the simulated machine (semantics in parix/processor.hpp): small programs on
 // two or three neighbouring nodes of the published GC, with times worked out by hand from its
 // parameters.
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 #include "tests/support/published_machine.hpp"
 
 #include <gtest/gtest.h>

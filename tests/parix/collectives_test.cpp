@@ -4,7 +4,7 @@
 
 #include <numeric>
 
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 #include "tests/support/published_machine.hpp"
 
 namespace gcsim::parix {

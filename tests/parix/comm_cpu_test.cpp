@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "machine/machine_config.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 #include "tests/support/published_machine.hpp"
 
 namespace gcsim::parix {

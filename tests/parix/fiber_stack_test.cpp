@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "parix/fiber_processes.hpp"
-#include "parix/fiber_stack.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/fiber_processes.hpp"
+#include "parix/sim/fiber_stack.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::parix {
 namespace {

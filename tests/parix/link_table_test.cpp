@@ -1,4 +1,4 @@
-#include "parix/link_table.hpp"
+#include "parix/sim/link_table.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "parix/collectives.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 #include "tests/support/published_machine.hpp"
 
 namespace gcsim::parix {

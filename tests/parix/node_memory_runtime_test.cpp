@@ -8,7 +8,7 @@
 #include "apps/pipeline/resource_check.hpp"
 #include "apps/programs/broadcast_experiment.hpp"
 #include "machine/machine_config.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::parix {
 namespace {

@@ -1,7 +1,7 @@
-// The payload pool on its own (parix/payload_pool.hpp): storage given back is reused by a later
+// The payload pool on its own (parix/sim/payload_pool.hpp): storage given back is reused by a later
 // copy that fits, a copy never gets storage that is too small or far too large, and the pool keeps
 // no more than its limit.
-#include "parix/payload_pool.hpp"
+#include "parix/sim/payload_pool.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Receiving into a caller-owned vector (Processor::recv(Link&, Bytes&), Request::take_into) on the
 // simulated machine: the caller gets the message, timings match recv(), and the caller's old storage
 // goes back to the run's payload pool, where the next message of that size finds it.
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // round trip per isend), and never while the program or a message still does: a request the
 // program keeps stays what it was, and a message that waits for its receive holds only a
 // synchronous send's request.
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 #include <gtest/gtest.h>
 

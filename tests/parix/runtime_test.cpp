@@ -1,4 +1,4 @@
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 #include "tests/support/published_machine.hpp"
 
 #include <gtest/gtest.h>

@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "parix/activity.hpp"
-#include "parix/connection_matcher.hpp"
-#include "parix/deadlock_report.hpp"
-#include "parix/in_order_delivery.hpp"
+#include "parix/sim/activity.hpp"
+#include "parix/sim/connection_matcher.hpp"
+#include "parix/sim/deadlock_report.hpp"
+#include "parix/sim/in_order_delivery.hpp"
 #include "parix/processor.hpp"
-#include "parix/request_pool.hpp"
+#include "parix/sim/request_pool.hpp"
 
 namespace gcsim::parix {
 namespace {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "machine/mesh.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 #include "tests/support/published_machine.hpp"
 
 namespace gcsim::parix {

@@ -23,7 +23,7 @@
 #include "apps/render/unified_render.hpp"
 #include "apps/render/view_medium.hpp"
 #include "apps/render/volume_photons.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::render {
 namespace {

@@ -23,7 +23,7 @@
 #include "apps/raytrace/render.hpp"
 #include "apps/render/unified_render.hpp"
 #include "apps/render/view_scene.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 #include "tests/support/published_machine.hpp"
 
 namespace gcsim::render {

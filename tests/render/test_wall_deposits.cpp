@@ -15,7 +15,7 @@
 #include "apps/render/render_setup.hpp"
 #include "apps/render/unified_render.hpp"
 #include "apps/render/wall_deposits.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::render {
 namespace {

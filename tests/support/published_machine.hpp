@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "machine/machine_config.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::test_support {
 

@@ -19,7 +19,7 @@
 
 #include "machine/paje_writer.hpp"
 #include "machine/trace_csv.hpp"
-#include "parix/simulated_runtime.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::trace_test {
 

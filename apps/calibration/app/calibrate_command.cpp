@@ -13,7 +13,7 @@
 #include "apps/pipeline/machine_options.hpp"
 #include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/pipeline/progress.hpp"
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::calibration::app {
 
@@ -81,7 +81,7 @@ void run_calibrate(const CalibrateFlags& f) {
   cal::CalibrationResult r;
   try {
     r = cal::calibrate(file, tables, free, predictor, [&](const cal::CalibrationTrial& t) { progress.trial(t); });
-  } catch (const parix::Interrupted&) {
+  } catch (const parix::host::Interrupted&) {
     progress.line.clear();
     report_interrupted_fit(file, f.fit, f.out, f.json, progress, command);
     throw;

@@ -20,7 +20,7 @@
 #include "apps/pipeline/option_checks.hpp"
 #include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/pipeline/progress.hpp"
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::media::app {
 namespace {
@@ -245,7 +245,7 @@ void run_accuracy(AccuracyFlags f) {
       // interruption (SIGINT/SIGTERM) is noticed, one render apart.
       all.push_back(measure_accuracy(scene, f.o, m, [&](const std::string& what) {
         at = name + ": " + what;
-        parix::throw_if_interrupted();
+        parix::host::throw_if_interrupted();
         progress.update_fraction(double(all.size()) / double(names.size()), at);
       }));
       progress.clear();
@@ -254,7 +254,7 @@ void run_accuracy(AccuracyFlags f) {
         write_images(f.images, all.back(), f.o.budgets.at(std::min(f.o.spread_budget, f.o.budgets.size() - 1)));
       std::fflush(stdout);
     }
-  } catch (const parix::Interrupted&) {
+  } catch (const parix::host::Interrupted&) {
     progress.clear();
     fmt::print("\ninterrupted at {}; {} of {} scenes finished\n", at, all.size(), names.size());
     write_results(f, all, nlohmann::json{{"interrupted", true}, {"interrupted_at", at}});

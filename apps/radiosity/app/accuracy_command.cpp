@@ -17,7 +17,7 @@
 #include "apps/radiosity/builtin_scenes.hpp"
 #include "apps/radiosity/near_field_accuracy.hpp"
 #include "machine/machine_config.hpp"
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::radiosity::app {
 
@@ -196,7 +196,7 @@ void run_accuracy(const AccuracyFlags& f) {
     print_energy_table(scene, so, th, m, rep);
     if (!lv.empty()) print_hierarchical_table(scene, so, f.hierarchical_hemicube, lv, m, rep);
     if (!f.near_field.empty()) print_near_field_table(scene, so, f, ratios, m, rep);
-  } catch (const parix::Interrupted&) {
+  } catch (const parix::host::Interrupted&) {
     report_interrupted(f, rep);
     throw;
   }

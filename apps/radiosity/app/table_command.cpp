@@ -11,7 +11,7 @@
 #include "apps/radiosity/builtin_scenes.hpp"
 #include "apps/radiosity/progressive_solver.hpp"
 #include "apps/radiosity/thesis_tables.hpp"
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::radiosity::app {
 
@@ -47,7 +47,7 @@ std::vector<int> loops_per_energy(const Scene& scene, const TableFlags& f) {
   o.energy = thesis::kEnergyPercent.back() / 100;
   // A host-side solve: it polls SIGINT/SIGTERM itself, a loop apart (exit 130, table 4.1 printed).
   const auto r = solve_progressive(scene, o, nullptr, [](const StepRecord&, const ProgressiveState&) {
-    parix::throw_if_interrupted();
+    parix::host::throw_if_interrupted();
   });
   std::vector<int> loops;
   for (double pct : thesis::kEnergyPercent) {
@@ -69,7 +69,7 @@ void print_table_4_2(const std::vector<Scene>& all_scenes, const TableFlags& f) 
   std::exception_ptr interrupted;
   try {
     for (const Scene& s : all_scenes) loops.push_back(loops_per_energy(s, f));
-  } catch (const parix::Interrupted&) {
+  } catch (const parix::host::Interrupted&) {
     interrupted = std::current_exception();
   }
   const std::vector<Scene> scenes(all_scenes.begin(), all_scenes.begin() + std::ptrdiff_t(loops.size()));

@@ -16,7 +16,7 @@
 #include "apps/raytrace/paper_figures.hpp"
 #include "apps/raytrace/render.hpp"
 #include "machine/machine_config.hpp"
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::raytrace::app {
 
@@ -30,7 +30,7 @@ struct Measured {
 
 Measured measure(const Scene& scene, const Bvh& bvh, Algorithm a, int tile, int size, const machine::MachineConfig& config) {
   // Host-side renders: SIGINT/SIGTERM is polled here, one image apart (the CSV keeps the rows done).
-  parix::throw_if_interrupted();
+  parix::host::throw_if_interrupted();
   RenderSettings rs;
   rs.algorithm = a;
   rs.tile = tile;

@@ -12,7 +12,7 @@
 #include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/render/app/render_commands.hpp"
 #include "apps/render/render_accuracy.hpp"
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 namespace gcsim::render::app {
 
@@ -63,7 +63,7 @@ void run(const AccuracyFlags& f) {
   std::vector<Row> rows;
   for (const ControlSweep& s : sweeps)
     for (double v : s.values) {
-      parix::throw_if_interrupted();
+      parix::host::throw_if_interrupted();
       const RenderRun r = render_with(d, plan, with_control(RenderControls{}, s.control, v), ref.exposure, machine);
       rows.push_back({pass_name(s.pass), s.control, v, relative_rmse(r.image, ref.image), r.simulated_s, r.wall_s});
       print_row(rows.back());

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "parix/stable_vector.hpp"
+#include "parix/sim/stable_vector.hpp"
 
 namespace gcsim::parix {
 

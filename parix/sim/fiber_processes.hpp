@@ -15,7 +15,7 @@
 
 #include <boost/context/fiber.hpp>
 
-#include "parix/fiber_stack.hpp"
+#include "parix/sim/fiber_stack.hpp"
 
 namespace gcsim::parix::detail {
 

@@ -2,7 +2,7 @@
 // the connection service times the set-up, and both ends wake when the link is up.
 #include <fmt/format.h>
 
-#include "parix/simulation.hpp"
+#include "parix/sim/simulation.hpp"
 
 namespace gcsim::parix::detail {
 
@@ -16,13 +16,9 @@ Link SimProcess::connect(int peer, int tag) {
   const machine::SimTime start = sim_.kernel.now();
   std::int64_t mine = -1;
   Activity set_up;  // completed by the set-up event, whichever side schedules it
-  if (auto paired = sim_.connect_matcher.match_or_wait(id_, peer, tag, {this, &mine, &set_up, start})) {
-    const Simulation::PendingConnect other = *paired;
-    const auto [a, b] = sim_.links.open_pair();
-    LinkEnd& ea = sim_.links.at(a);
-    LinkEnd& eb = sim_.links.at(b);
-    ea.owner = id_, ea.peer = peer, ea.peer_at = &eb;
-    eb.owner = peer, eb.peer = id_, eb.peer_at = &ea;
+  if (auto paired = sim_.connect_matching.match_or_wait(id_, peer, tag, {this, &mine, &set_up, start})) {
+    const PendingConnect other = *paired;
+    const auto [a, b] = ConnectionMatching::open_link(sim_.links, id_, peer);
     const machine::SimTime up = sim_.connections.set_up(node_, sim_.node_of[peer], start);
     std::int64_t* theirs = other.result;
     SimProcess* them = other.who;

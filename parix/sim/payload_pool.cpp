@@ -1,4 +1,4 @@
-#include "parix/payload_pool.hpp"
+#include "parix/sim/payload_pool.hpp"
 
 #include <utility>
 

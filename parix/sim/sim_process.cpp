@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "parix/simulation.hpp"
+#include "parix/sim/simulation.hpp"
 
 namespace gcsim::parix::detail {
 
@@ -20,7 +20,7 @@ int SimProcess::count() const { return sim_.config.nodes; }
 SimTime SimProcess::now() const { return sim_.kernel.now(); }
 
 void SimProcess::block(const char* call, int peer) {
-  if (sim_.cancelling) {
+  if (sim_.processes.cancelling()) {
     if (std::uncaught_exceptions() == 0) throw Cancelled{};
     return;  // already unwinding: let the caller give up
   }
@@ -30,13 +30,7 @@ void SimProcess::block(const char* call, int peer) {
   asleep = true;
   fiber.suspend();
   blocked_call = nullptr;
-  if (sim_.cancelling && std::uncaught_exceptions() == 0) throw Cancelled{};
-}
-
-void SimProcess::wake() {
-  if (!asleep) return;
-  asleep = false;
-  fiber.resume();
+  if (sim_.processes.cancelling() && std::uncaught_exceptions() == 0) throw Cancelled{};
 }
 
 bool SimProcess::wait_for_activity(Activity& a, const char* call, int peer) { return wait_in_line(a, call, peer); }
@@ -46,7 +40,7 @@ bool SimProcess::wait_for_activity(Activity& a, const char* call, int peer) { re
     a.waiter = this;
     block(call, peer);
     a.waiter = nullptr;
-    if (sim_.cancelling) {
+    if (sim_.processes.cancelling()) {
       a.cancel();
       return false;
     }
@@ -98,15 +92,7 @@ bool SimProcess::charge_comm_cpu(machine::SimTime fixed, std::int64_t bytes, std
 }
 
 void SimProcess::use_memory(std::int64_t bytes, std::string_view kind) {
-  if (std::string refused = sim_.use_memory(id_, bytes, kind); !refused.empty()) throw OutOfMemoryError(refused);
-}
-
-std::string Simulation::use_memory(int processor, std::int64_t bytes, std::string_view kind) {
-  return use_memory(processor, bytes, nodes[node_of[processor]].memory().kind(kind));
-}
-
-std::string Simulation::use_memory(int processor, std::int64_t bytes, machine::NodeMemory::Kind kind) {
-  return declare_memory(processor, bytes, kind) ? std::string() : refusal(processor, bytes, kind);
+  if (std::string refused = sim_.memory.use(id_, bytes, kind); !refused.empty()) throw OutOfMemoryError(refused);
 }
 
 void SimProcess::close_link(std::int64_t handle) { sim_.links.close(handle); }
@@ -165,107 +151,11 @@ Request SimProcess::abandoned_send() {
   Request req = send_request();
   req.state()->link = link.handle();
   req.state()->peer = e.peer;
-  // The runtime's copy of the message is held by the sender's node until it is delivered, then
-  // by the receiver's until received; declared before the host allocates it.
-  const std::int64_t bytes = static_cast<std::int64_t>(data.size());
-  if (bytes > 0) {
-    if (!sim_.declare_message(id_, bytes, sim_.in_flight_kind)) throw OutOfMemoryError(sim_.refusal(id_, bytes, sim_.in_flight_kind));
-  }
-  // Built in its slot; the arrival callback captures only (simulation, slot), small enough for
-  // the kernel to store inline, which keeps the per-message cost free of extra allocations.
-  Message& m = sim_.take_slot();
-  sim_.payloads.copy_into(m.data, data);
-  m.send = req;
-  m.synchronous = synchronous;
-  m.id = sim_.next_message++;
-  m.link_seq = e.sent++;
-  m.src = id_;
-  m.sent = sim_.kernel.now();
-  m.dst = e.peer_at;
+  sim_.transport.send(e, id_, node_, sim_.node_of[e.peer], data, req, synchronous);
   auto& s = stats_;
   ++s.messages_sent;
-  s.bytes_sent += bytes;
-  sim_.network->transfer(node_, sim_.node_of[e.peer], bytes, [sim = &sim_, &m] { sim->deliver(m); });
+  s.bytes_sent += static_cast<std::int64_t>(data.size());
   return req;
-}
-
-// Inline into accept: costs the 64-node ring 1 instruction a message, saves the 4096-node one 16.
-inline void Simulation::hold(LinkEnd& e, Message&& m) {
-  // Held by the receiver's node until a receive takes it. A node out of memory here fails the
-  // run as soon as this event is over (the kernel's loop stops on a failure).
-  if (!m.data.empty()) {
-    const auto bytes = static_cast<std::int64_t>(m.data.size());
-    if (!declare_message(e.owner, bytes, received_kind) && !failure) [[unlikely]] {
-      failure = std::make_exception_ptr(OutOfMemoryError(refusal(e.owner, bytes, received_kind)));
-    }
-  }
-  HeldMessage& held = e.arrived.append();
-  held.data = std::move(m.data);
-  // An asynchronous send completed on arrival: the queue keeps no hold on it, so its process can
-  // reuse the request (send_request) while the message waits here.
-  if (m.synchronous) held.send = std::move(m.send);
-  held.synchronous = m.synchronous;
-}
-
-inline void Simulation::hand_over(LinkEnd& e, Message&& m) {
-  if (!m.synchronous) complete(m.send);
-  if (e.receives.empty()) return hold(e, std::move(m));
-  PostedReceive& posted = e.receives.front();
-  if (SimProcess* receiver = posted.receiver) {
-    posted.into->swap(m.data);  // the receiver's old storage stays in m's slot (deliver), for its next message
-    if (m.data.capacity() > kSlotKeepsBytes) [[unlikely]] payloads.give(std::move(m.data));
-    e.receives.drop_front();
-    if (m.synchronous) complete(m.send);
-    return receiver->received_into();
-  }
-  Request r = std::move(posted.request);
-  r.state()->data = std::move(m.data);
-  e.receives.drop_front();
-  if (m.synchronous) complete(m.send);
-  complete(r);
-}
-
-// Inline into deliver: an untraced arrival, to a receive waiting for it or to the queue (a large
-// ring's messages mostly arrive first). A withdrawn message or a trace is out of line.
-[[gnu::always_inline]] inline void Simulation::accept(LinkEnd& e, Message&& m) {
-  if (m.send.cancelled() || trace.enabled()) [[unlikely]] return accept_slow(e, std::move(m));
-  hand_over(e, std::move(m));
-}
-
-void Simulation::accept_slow(LinkEnd& e, Message&& m) {
-  // Withdrawn by its sender (SimProcess::cancel) while it travelled: the link drops it, after the
-  // network and the in-order delivery have finished with it.
-  if (m.send.cancelled()) {
-    payloads.give(std::move(m.data));
-    return;
-  }
-  if (trace.enabled()) {
-    trace.record({TraceKind::message, m.src, e.owner, m.sent, kernel.now(), static_cast<std::int64_t>(m.data.size()),
-                  m.id, "message"});
-  }
-  hand_over(e, std::move(m));
-}
-
-void Simulation::deliver(Message& m) {  // m stays put: nothing parks a message during a delivery
-  if (!m.data.empty()) release_in_flight(m);
-  LinkEnd& e = *m.dst;
-  if (e.order.admit(m.link_seq, m)) [[likely]] {
-    accept(e, std::move(m));
-    if (e.order.holds_any()) [[unlikely]] release_held(e);
-  }
-  // Its payload went on (to a receive, the link's queue, the held messages or the pool); the
-  // request it keeps alive must not wait for the slot's reuse.
-  m.send = Request();
-  free_slots.push_back(&m);
-  // The last message to a closed link may free it; e's handle is its peer's peer_end.
-  if (!e.open) [[unlikely]] links.release_if_done(e.peer_at->peer_end);
-}
-
-void Simulation::release_held(LinkEnd& e) {
-  e.order.release_held([this, &e](Message&& next) {
-    accept(e, std::move(next));
-    payloads.give(std::move(next.data));  // not in a slot: what a receiver's vector left goes to the pool
-  });
 }
 
 Request SimProcess::isend(Link& link, std::span<const std::byte> data) { return post_send(link, data, false); }
@@ -297,10 +187,10 @@ Request SimProcess::post_receive(Link& link) {
   if (!e.arrived.empty()) {
     // Taken in its slot, not moved out: the slot keeps an empty payload and a null request.
     HeldMessage& m = e.arrived.front();
-    if (!m.data.empty()) sim_.release_memory(id_, static_cast<std::int64_t>(m.data.size()), sim_.received_kind);
+    if (!m.data.empty()) sim_.memory.release(id_, static_cast<std::int64_t>(m.data.size()), sim_.memory.received_kind());
     s.data = std::move(m.data);
     s.complete();
-    if (m.synchronous) sim_.complete(m.send);
+    if (m.synchronous) m.send.state()->complete();
     m.send = Request();
     e.arrived.drop_front();
   } else {
@@ -368,7 +258,7 @@ void SimProcess::recv(Link& link, Bytes& into) {
   LinkEnd& e = end_of(link, "recv");
   if (!sim_.charges_comm_cpu) [[likely]] {
     // The message is there already (most of a large ring's): no request, no wait, nothing to charge.
-    if (!e.arrived.empty()) return sim_.take_held(e, id_, into);
+    if (!e.arrived.empty()) return sim_.transport.take_held(e, id_, into);
     if (!sim_.trace.enabled()) return receive_into(e, into);
   }
   Request& r = blocking_receive();
@@ -391,7 +281,7 @@ void SimProcess::recv(Link& link, Bytes& into) {
   const machine::SimTime start = sim_.kernel.now();
   do {
     block("recv", peer);
-    if (sim_.cancelling) return;
+    if (sim_.processes.cancelling()) return;
   } while (!received_);
   stats_.comm += sim_.kernel.now() - start;
 }

@@ -1,8 +1,8 @@
-#include "parix/interruption.hpp"
+#include "parix/host/interruption.hpp"
 
 #include <atomic>
 
-namespace gcsim::parix {
+namespace gcsim::parix::host {
 
 void request_interruption() noexcept { detail::interruption_flag.store(true, std::memory_order_relaxed); }
 void clear_interruption() noexcept { detail::interruption_flag.store(false, std::memory_order_relaxed); }
@@ -11,4 +11,4 @@ void throw_if_interrupted() {
   if (interruption_requested()) throw Interrupted(RunResult{});
 }
 
-}  // namespace gcsim::parix
+}  // namespace gcsim::parix::host

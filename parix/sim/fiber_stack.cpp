@@ -1,6 +1,6 @@
-// The fiber stack pool (parix/fiber_stack.hpp): slabs, the map budget and the guard-page fault
+// The fiber stack pool (parix/sim/fiber_stack.hpp): slabs, the map budget and the guard-page fault
 // handler that turns a fault in a guard page into the overflow message.
-#include "parix/fiber_stack.hpp"
+#include "parix/sim/fiber_stack.hpp"
 
 #include <signal.h>
 #include <sys/mman.h>

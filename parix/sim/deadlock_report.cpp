@@ -1,4 +1,4 @@
-#include "parix/deadlock_report.hpp"
+#include "parix/sim/deadlock_report.hpp"
 
 #include <sstream>
 #include <string_view>

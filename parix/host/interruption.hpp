@@ -1,6 +1,7 @@
 #pragma once
-// Stopping a run from outside (SIGINT, SIGTERM): a signal handler may only set a lock-free atomic,
-// so the request is a flag that the simulation loop polls (parix/simulation.cpp). The run then
+// Host-process control, not part of the PARIX API: stopping a run from outside (SIGINT, SIGTERM).
+// A signal handler may only set a lock-free atomic, so the request is a flag that the simulated
+// backend's loop polls (parix/sim/process_lifetime.cpp) and host-side loops check. The run then
 // unwinds every processor, closes its trace and throws Interrupted with what it had reached.
 #include <atomic>
 #include <stdexcept>
@@ -8,14 +9,15 @@
 
 #include "parix/run_result.hpp"
 
-namespace gcsim::parix {
+namespace gcsim::parix::host {
 
-// Async-signal-safe: sets the flag only.
 namespace detail {
 // Inline, so that the simulation's loop reads it without a call once per event.
 inline std::atomic<bool> interruption_flag{false};
 static_assert(std::atomic<bool>::is_always_lock_free, "a signal handler may only touch lock-free atomics");
 }  // namespace detail
+
+// Async-signal-safe: sets the flag only.
 void request_interruption() noexcept;
 inline bool interruption_requested() noexcept { return detail::interruption_flag.load(std::memory_order_relaxed); }
 // For tests and for a process that runs again after reporting an interruption.
@@ -23,11 +25,6 @@ void clear_interruption() noexcept;
 
 // Thrown by a run that stopped because interruption_requested(); `partial` holds the simulated
 // time reached (makespan = the kernel's clock), the events and the per-processor counters so far.
-class Interrupted;
-// For loops that run outside a simulation (accuracy tables, host-side solves): throws Interrupted
-// with nothing simulated reached once an interruption was requested.
-void throw_if_interrupted();
-
 class Interrupted : public std::runtime_error {
  public:
   explicit Interrupted(RunResult partial)
@@ -39,4 +36,8 @@ class Interrupted : public std::runtime_error {
   RunResult partial_;
 };
 
-}  // namespace gcsim::parix
+// For loops that run outside a simulation (accuracy tables, host-side solves): throws Interrupted
+// with nothing simulated reached once an interruption was requested.
+void throw_if_interrupted();
+
+}  // namespace gcsim::parix::host

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "parix/simulation.hpp"
+#include "parix/sim/simulation.hpp"
 
 namespace gcsim::parix::detail {
 
@@ -34,7 +34,7 @@ std::size_t SimProcess::wait_any(std::span<Request* const> rs) {
     for (Request* r : rs) r->state()->waiter = this;
     block("wait_any", rs.size() == 1 ? rs[0]->state()->peer : -1);
     for (Request* r : rs) r->state()->waiter = nullptr;
-    if (sim_.cancelling) return 0;
+    if (sim_.processes.cancelling()) return 0;
   }
   const machine::SimTime end = sim_.kernel.now();
   stats_.comm += end - start;
@@ -63,16 +63,13 @@ bool SimProcess::cancel(Request& r) {
 }
 
 Thread SimProcess::spawn(std::function<void(Processor&)> body) {
-  const int thread = static_cast<int>(std::count_if(sim_.processes.begin(), sim_.processes.end(),
-                                                    [&](const auto& p) { return p->id() == id_; }));
-  sim_.processes.push_back(std::make_unique<SimProcess>(sim_, id_, thread));
-  SimProcess* t = sim_.processes.back().get();
-  sim_.launch(t, std::move(body));
+  SimProcess* t = &sim_.processes.add(std::make_unique<SimProcess>(sim_, id_, sim_.processes.threads_of(id_)));
+  sim_.processes.launch(t, std::move(body));
   return Thread([this, t] {
     while (!t->finished) {
       t->joiner = this;
       block("join", id_);
-      if (sim_.cancelling) return;
+      if (sim_.processes.cancelling()) return;
     }
   });
 }
