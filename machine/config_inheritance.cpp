@@ -5,6 +5,7 @@
 #include <sstream>
 #include <vector>
 
+#include "machine/builtin_machines.hpp"
 #include "machine/machine_config.hpp"
 
 namespace gcsim::machine {
@@ -42,9 +43,9 @@ toml::table parse_text(std::string_view text, const std::string& source) {
 
 int line_of(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
 
-// The identity of a base in the chain, for finding cycles.
+// The identity of a base in the chain, for finding cycles: a built-in file's source name, or the path.
 std::string identity(const std::string& source) {
-  if (source.empty() || source.front() == '<' || source == kBuiltinBase) return std::string(kBuiltinBase);
+  if (source.empty() || source.front() == '<') return source;
   std::error_code ec;
   const auto p = std::filesystem::weakly_canonical(source, ec);
   return ec ? source : p.string();
@@ -52,21 +53,33 @@ std::string identity(const std::string& source) {
 
 toml::table load_chain(std::string_view text, const std::string& source, std::vector<std::string>& chain);
 
+std::string builtin_base_names() {
+  std::string names;
+  for (std::string_view file : builtin_machine_file_names())
+    names += (names.empty() ? "\"" : ", \"") + std::string(kBuiltinPrefix) +
+             std::string(file.substr(0, file.size() - std::string_view(".toml").size())) + "\"";
+  return names;
+}
+
 // Reads the file a `base` key names, relative to the file that names it.
 toml::table load_base(const toml::node& key, const std::string& child, std::vector<std::string>& chain) {
   const auto* name = key.as_string();
   if (!name) {
     throw ConfigError(child, line_of(key),
-                      "'base' must be a string: a machine file (relative to this one) or \"" + std::string(kBuiltinBase) + "\"");
+                      "'base' must be a string: a machine file (relative to this one) or one of " + builtin_base_names());
   }
   std::string source;
   std::string text;
-  if (name->get() == kBuiltinBase) {
-    source = "<built-in configs/gc-powerplus.toml>";
-    text = std::string(default_machine_config_text());
-  } else if (name->get().rfind("builtin:", 0) == 0) {
-    throw ConfigError(child, line_of(key),
-                      "base '" + name->get() + "' is not built in; expected \"" + std::string(kBuiltinBase) + "\" or a file");
+  const bool named_builtin = name->get().rfind(kBuiltinPrefix, 0) == 0;
+  // A built-in file's own bases are built in too: the default resolves without reading files.
+  const std::string builtin_prefix = builtin_source("").substr(0, builtin_source("").size() - 1);
+  if (named_builtin || child.rfind(builtin_prefix, 0) == 0) {
+    const std::string file = named_builtin ? name->get().substr(kBuiltinPrefix.size()) + ".toml" : name->get();
+    text = std::string(builtin_machine_file(file));
+    if (text.empty())
+      throw ConfigError(child, line_of(key),
+                        "base '" + name->get() + "' is not built in; expected a file or one of: " + builtin_base_names());
+    source = builtin_source(file);
   } else {
     const std::filesystem::path here = child.empty() || child.front() == '<' ? "" : std::filesystem::path(child).parent_path();
     const std::filesystem::path file = here / name->get();

@@ -1,6 +1,7 @@
 #pragma once
 // Machine files that inherit: `base = "gc-powerplus.toml"` (relative to the file) or
-// `base = "builtin:gc-powerplus"` (the embedded default). The file's tables are laid over its base's,
+// `base = "builtin:gc-powerplus"` (configs/gc-powerplus.toml as compiled into the binary;
+// builtin_machine_file lists them). The file's tables are laid over its base's,
 // key by key, so a what-if file names only what it changes. Every node keeps the file and line it
 // came from, so errors found after merging still name the file that wrote the bad key.
 #include <string>
@@ -12,8 +13,8 @@ namespace gcsim::machine {
 
 // The key that names a file's base.
 inline constexpr std::string_view kBaseKey = "base";
-// `base = "builtin:gc-powerplus"` names the default compiled into the binary.
-inline constexpr std::string_view kBuiltinBase = "builtin:gc-powerplus";
+// `base = "builtin:NAME"` names configs/NAME.toml as compiled into the binary.
+inline constexpr std::string_view kBuiltinPrefix = "builtin:";
 
 // Parses text (named source) and, recursively, the bases it names; returns the merged tables
 // with the `base` keys removed. Throws ConfigError naming the file and line of a syntax error,

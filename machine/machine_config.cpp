@@ -7,6 +7,7 @@
 
 #include <toml++/toml.h>
 
+#include "machine/builtin_machines.hpp"
 #include "machine/config_inheritance.hpp"
 #include "machine/interconnect_registry.hpp"
 #include "machine/network_registry.hpp"
@@ -287,10 +288,17 @@ MachineConfig load_machine_config(const std::filesystem::path& file) {
   return parse_machine_config(ss.str(), file.string());
 }
 
+std::string builtin_source(std::string_view file_name) { return "<built-in configs/" + std::string(file_name) + ">"; }
+
 MachineConfig default_machine_config() {
-  MachineConfig c = parse_machine_config(default_machine_config_text(), "<built-in configs/gc-powerplus.toml>");
-  return c;
+  return parse_machine_config(builtin_machine_file(kDefaultMachineFile), builtin_source(kDefaultMachineFile));
 }
+
+MachineConfig published_machine_config() {
+  return parse_machine_config(published_machine_config_text(), builtin_source(kPublishedMachineFile));
+}
+
+std::string_view published_machine_config_text() { return builtin_machine_file(kPublishedMachineFile); }
 
 MeshShape gc_mesh_shape(int n) {
   if (n < 1) throw std::invalid_argument("node count must be positive");

@@ -25,7 +25,7 @@ enum class ConnectModel { parallel, serialized, servers, route };
 
 struct MachineConfig {
   std::string name;
-  std::string source;                  // file it came from ("<embedded>" for the built-in default)
+  std::string source;                  // file it came from (builtin_source(NAME) for a built-in one)
   std::vector<std::string> calibrated_on;  // [calibration] fitted: the tables a fit used (gcsim calibrate)
 
   // Topology
@@ -90,9 +90,12 @@ class ConfigError : public std::runtime_error {
 
 MachineConfig load_machine_config(const std::filesystem::path& file);
 MachineConfig parse_machine_config(std::string_view toml_text, const std::string& source_name);
-// The GC-PowerPlus as published (configs/gc-powerplus.toml, compiled into the binary).
+// The built-in default: the GC-PowerPlus as measured, configs/gc-powerplus-calibrated.toml and
+// its bases as compiled into the binary (machine/builtin_machines.hpp); no file is read.
 MachineConfig default_machine_config();
-std::string_view default_machine_config_text();
+// The GC-PowerPlus as published (configs/gc-powerplus.toml, also compiled in) and its file's text.
+MachineConfig published_machine_config();
+std::string_view published_machine_config_text();
 
 // The mesh shape the GC uses for its first n nodes: 2=2x1, 4=2x2, 8=4x2, 16=4x4, 32=8x4, 64=8x8;
 // in general the most nearly square w x h with w >= h.

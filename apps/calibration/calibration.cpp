@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "machine/builtin_machines.hpp"
+
 namespace gcsim::calibration {
 
 std::vector<std::string> split_list(const std::string& s, char sep) {
@@ -135,7 +137,10 @@ namespace {
 
 // `base = ...` of a file written at out_path: the built-in machine, or file's path relative to it.
 std::string base_of(const MachineFile& file, const std::string& out_path) {
-  if (file.source().front() == '<') return "builtin:gc-powerplus";
+  if (file.source().front() == '<') {  // the built-in default: builtin:NAME for configs/NAME.toml
+    const std::string_view name = machine::kDefaultMachineFile;
+    return "builtin:" + std::string(name.substr(0, name.rfind(".toml")));
+  }
   const auto dir = std::filesystem::absolute(out_path).parent_path();
   return std::filesystem::relative(std::filesystem::absolute(file.source()), dir).generic_string();
 }

@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "machine/builtin_machines.hpp"
+
 namespace gcsim::calibration {
 namespace {
 
@@ -27,8 +29,8 @@ std::pair<std::string, std::string> split_key(const std::string& key) {
 
 MachineFile::MachineFile(const std::filesystem::path& file) {
   if (file.empty()) {
-    text_ = std::string(machine::default_machine_config_text());
-    source_ = "<built-in configs/gc-powerplus.toml>";
+    text_ = std::string(machine::builtin_machine_file(machine::kDefaultMachineFile));
+    source_ = machine::builtin_source(machine::kDefaultMachineFile);
     base_ = machine::default_machine_config();
     return;
   }

@@ -41,12 +41,6 @@ int measured_cells(const MeasuredTable& t) {
 
 }  // namespace
 
-CommTimeOf parse_comm_time_of(const std::string& s) {
-  if (s == "root") return CommTimeOf::root;
-  if (s == "mean") return CommTimeOf::mean;
-  throw std::invalid_argument("comm time of '" + s + "': expected root or mean");
-}
-
 void Predictor::run_done() {
   ++predict_done_;
   if (on_run_) on_run_(predict_done_, predict_total_);
@@ -126,13 +120,13 @@ void Predictor::load_scenes(const std::vector<RunKey>& keys) {
     if (!scenes_.count(std::get<0>(k)) && std::ranges::find(missing, std::get<0>(k)) == missing.end())
       missing.push_back(std::get<0>(k));
   std::vector<radiosity::Scene> loaded(missing.size());
-  std::vector<std::optional<LoopMatch>> matched(missing.size());
+  std::vector<std::optional<radiosity::LoopMatch>> matched(missing.size());
   apps::parallel_for(int(missing.size()), settings_.jobs, [&](int i) {
     loaded[i] = radiosity::flatten(radiosity::load_scene_world(missing[i]));
-    const std::optional<int> target = thesis_loops(missing[i], settings_.energy);
+    const std::optional<int> target = radiosity::thesis_loops(missing[i], settings_.energy);
     if (!settings_.match_thesis_loops || !target) return;
-    matched[i] = match_loops(loaded[i], solver_options(), *target);
-    loaded[i] = with_reflectances_scaled(std::move(loaded[i]), matched[i]->scale);
+    matched[i] = radiosity::match_loops(loaded[i], solver_options(), *target);
+    loaded[i] = radiosity::with_reflectances_scaled(std::move(loaded[i]), matched[i]->scale);
   });
   for (std::size_t i = 0; i < missing.size(); ++i) {
     scenes_.emplace(missing[i], std::move(loaded[i]));

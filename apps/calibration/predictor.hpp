@@ -10,33 +10,36 @@
 #include <vector>
 
 #include "apps/calibration/measured_table.hpp"
-#include "apps/calibration/thesis_workload.hpp"
 #include "apps/radiosity/radiosity.hpp"
 #include "machine/machine_config.hpp"
 
 namespace gcsim::calibration {
 
-// Whose communication time a measured table of it (4.5) reports; the thesis does not say. Its
-// program has one distinguished processor, the root (processor 0) that every exchange gathers to
-// and scatters from. `mean`: the mean over the processors, which adds the time the others wait
-// for their turn in a sequential exchange.
-enum class CommTimeOf { root, mean };
-CommTimeOf parse_comm_time_of(const std::string& s);  // throws std::invalid_argument
+// Whose communication time a measured table of it (4.5) reports: radiosity::CommTimeOf.
+using radiosity::CommTimeOf;
+using radiosity::parse_comm_time_of;
 
+// How the radiosity tables' runs are simulated. Defaults: the thesis's program
+// (radiosity::thesis_program(), the preset `gcsim run radiosity --preset thesis` runs).
 struct PredictionSettings {
+  PredictionSettings() : PredictionSettings(radiosity::thesis_program()) {}
+  explicit PredictionSettings(const radiosity::ProgramPreset& p)
+      : hemicube(p.hemicube), shooters(p.shooters), energy(p.energy), cell_assignment(p.cell_assignment),
+        side_faces(p.side_faces), merge(p.merge), ff_exchange(p.ff_exchange),
+        match_thesis_loops(p.workload == radiosity::Workload::thesis_loops), comm_time_of(p.comm_time) {}
   std::string model;     // network model; "": the machine file's
-  int hemicube = 256;    // radiosity runs: hemicube resolution
-  int shooters = 2;      //                 patches shot per loop (the thesis: 2)
-  double energy = 0.999; //                 shot fraction at which a run stops (the thesis: 99.9%)
-  radiosity::CellAssignment cell_assignment = radiosity::CellAssignment::block;  // the thesis's figure 4.1
-  radiosity::SideFaces side_faces = radiosity::SideFaces::full;  // five equal faces: docs/calibration.md
-  radiosity::FormFactorMerge merge = radiosity::FormFactorMerge::fixed_arrays;  // tables 4.5 and 4.8, 4.2 and 4.5
-  radiosity::FormFactorExchange ff_exchange = radiosity::FormFactorExchange::together;  // 4.4.1: two exchanges per loop
+  int hemicube;          // radiosity runs: hemicube resolution
+  int shooters;          //                 patches shot per loop (the thesis: 2)
+  double energy;         //                 shot fraction at which a run stops (the thesis: 99.9%)
+  radiosity::CellAssignment cell_assignment;
+  radiosity::SideFaces side_faces;
+  radiosity::FormFactorMerge merge;
+  radiosity::FormFactorExchange ff_exchange;
   int jobs = 1;          // simulations run side by side on this many host threads
   // Each built-in scene's reflectances scaled so that it takes table 4.2's loops at `energy`
-  // (apps/calibration/thesis_workload.hpp); false: the scenes as built.
-  bool match_thesis_loops = true;
-  CommTimeOf comm_time_of = CommTimeOf::root;
+  // (apps/radiosity/thesis_workload.hpp); false: the scenes as built.
+  bool match_thesis_loops;
+  CommTimeOf comm_time_of;
 };
 
 // Predictions in the layout of a table: kNotMeasured where the table has no figure.
@@ -68,7 +71,7 @@ class Predictor {
   void share_scenes(const Predictor& from);
 
   // The scenes whose workload was matched to table 4.2 so far (lower-case names), and how.
-  const std::map<std::string, LoopMatch>& loop_matches() const { return matches_; }
+  const std::map<std::string, radiosity::LoopMatch>& loop_matches() const { return matches_; }
 
  private:
   struct RadiosityRun {
@@ -91,7 +94,7 @@ class Predictor {
   std::map<std::string, std::map<std::string, std::int64_t, std::less<>>> one_node_ops_;
   // The scenes the runs read (matched to table 4.2 once, on first use), by lower-case name.
   std::map<std::string, radiosity::Scene> scenes_;
-  std::map<std::string, LoopMatch> matches_;
+  std::map<std::string, radiosity::LoopMatch> matches_;
   int runs_ = 0;
   std::function<void(int, int)> on_run_;
   int predict_done_ = 0, predict_total_ = 0;  // the current predict()'s runs, for on_run_

@@ -71,7 +71,8 @@ std::string gcsim_description() {
       "and runs parallel graphics applications on it. Every run reports the simulated machine's time\n"
       "next to the host's wall-clock time.\n\n"
       "Machines are described in topology files (configs/*.toml); without --config the built-in\n"
-      "GC-PowerPlus as published is used. `gcsim COMMAND --help` explains each command.";
+      "GC-PowerPlus as measured is used (configs/gc-powerplus-calibrated.toml, fitted to the thesis's\n"
+      "tables; configs/gc-powerplus.toml is the GC as published). `gcsim COMMAND --help` explains each command.";
 }
 
 void declare_commands(CLI::App* app) {

@@ -78,7 +78,8 @@ CLI::Validator decimal_integer() {
 }
 
 CLI::Option* add_config_option(CLI::App* cmd, std::string& path, std::string_view what) {
-  return cmd->add_option("--config", path, fmt::format("{}; default: the built-in GC-PowerPlus as published", what))
+  return cmd->add_option("--config", path, fmt::format("{}; default: the built-in GC-PowerPlus as measured (configs/gc-powerplus-calibrated.toml; "
+                                                      "configs/gc-powerplus.toml: as published)", what))
       ->check(CLI::ExistingFile);
 }
 

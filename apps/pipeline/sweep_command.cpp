@@ -103,6 +103,7 @@ void run_sweep(const SweepFlags& f, const Experiment& e, const std::string& app)
   const std::vector<int> counts = parse_int_list(f.nodes, "--nodes");
   check_writable(f.csv, "--csv");
   check_writable(f.json, "--json");
+  fmt::print("machine   {}\n", simulation_options(f.machine, counts.front()).config.name);  // which GC, by name
   e.print_sweep_setup();
   const std::unique_ptr<SweepTable> table = e.sweep_table();
   table->print_header();

@@ -6,7 +6,8 @@
 //                        and merge), the progressive solver and what it reports, and the media hook
 //                        (PathTransmittance) a renderer with participating media supplies
 //   the display          element corners and the Gouraud renderer, for the unified renderer's view
-//   the thesis figures   tables 4.1 to 4.8, which calibration fits and predicts
+//   the thesis figures   tables 4.1 to 4.8, which calibration fits and predicts, and the
+//                        thesis's program (program_preset, thesis_workload) it runs
 // tests/structure/app_doors.py fails when a composite includes any other header of this app.
 #include "apps/radiosity/builtin_scenes.hpp"
 #include "apps/radiosity/cell_assignment.hpp"
@@ -16,6 +17,8 @@
 #include "apps/radiosity/gouraud_renderer.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
 #include "apps/radiosity/path_transmittance.hpp"
+#include "apps/radiosity/program_preset.hpp"
 #include "apps/radiosity/progressive_solver.hpp"
 #include "apps/radiosity/scene.hpp"
 #include "apps/radiosity/thesis_tables.hpp"
+#include "apps/radiosity/thesis_workload.hpp"

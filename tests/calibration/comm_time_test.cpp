@@ -36,7 +36,7 @@ TEST(CommTimeOf, IsTheRootsOrTheMeanOfADirectRun) {
   o.merge = s.merge;
   o.ff_exchange = s.ff_exchange;
   o = radiosity::with_shared_projections(o);
-  const radiosity::Scene scene = with_reflectances_scaled(radiosity::flatten(radiosity::load_scene_world("cornell")), root.loop_matches().at("cornell").scale);
+  const radiosity::Scene scene = radiosity::with_reflectances_scaled(radiosity::flatten(radiosity::load_scene_world("cornell")), root.loop_matches().at("cornell").scale);
   parix::SimulationOptions sim;
   sim.config = machine::with_nodes(c, 4);
   const parix::RunResult run =

@@ -109,10 +109,13 @@ TEST(MachineFile, UnknownFreeKeyListsTheValidOnes) {
   EXPECT_NE(e.find("ops.polygon_project"), std::string::npos) << e;
 }
 
+// The built-in default (the calibrated file, whose bases are built in too) and a file on disk.
 TEST(MachineFile, OverridesGoThroughTheParser) {
+  EXPECT_DOUBLE_EQ(MachineFile(GCSIM_SOURCE_DIR "/configs/gc-powerplus.toml").value("network.connect_base_us"), 550);
   const MachineFile f("");
-  EXPECT_DOUBLE_EQ(f.value("network.connect_base_us"), 550);
+  EXPECT_DOUBLE_EQ(f.value("network.connect_base_us"), 485.967);
   const machine::MachineConfig c = f.with({{"network.connect_base_us", 700}, {"ops.polygon_project", 1234}});
+  EXPECT_EQ(c.connect_model, machine::default_machine_config().connect_model);  // inherited through the built-in bases
   EXPECT_EQ(c.connect_base, 700 * machine::kMicrosecond);
   EXPECT_DOUBLE_EQ(c.cycles_per_op.at("polygon_project"), 1234);
   EXPECT_THROW(f.with({{"network.link_bandwidth_mbps", -1}}), machine::ConfigError);  // the parser's range check

@@ -16,6 +16,7 @@ import sys
 import tempfile
 
 HERE = pathlib.Path(__file__).resolve().parent
+REPO = HERE.parent.parent  # runs start here, so that `--config configs/...` names the shipped files
 HOST_FIELDS = {"wall", "trace", "trace_level", "image", "json"}
 
 
@@ -38,7 +39,7 @@ def strip_host(value):
 def record_of(gcsim, args, work):
     trace, out = work / "t.json", work / "r.json"
     cmd = [gcsim, *args, "--json", str(out), "--trace", str(trace), "--trace-level", "messages"]
-    proc = subprocess.run(cmd, capture_output=True, text=True, cwd=work)
+    proc = subprocess.run(cmd, capture_output=True, text=True, cwd=REPO)
     if proc.returncode != 0:
         raise RuntimeError(f"{' '.join(cmd)} exited {proc.returncode}:\n{proc.stderr}")
     rec = strip_host(json.loads(out.read_text()))

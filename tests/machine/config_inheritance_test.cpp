@@ -5,8 +5,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
+#include "machine/builtin_machines.hpp"
 #include "machine/machine_config.hpp"
 #include "tests/support/scratch_path.hpp"
 
@@ -71,11 +73,11 @@ void expect_same_machine(const MachineConfig& a, const MachineConfig& b) {
 }
 
 TEST_F(Inheritance, ChildOverridesOnlyTheKeysItNames) {
-  write("gc.toml", std::string(default_machine_config_text()));
+  write("gc.toml", std::string(published_machine_config_text()));
   const auto child = write("child.toml", "base = \"gc.toml\"\nname = \"slow\"\n[network]\nlink_bandwidth_mbps = 1.0\n"
                                          "[ops]\nflop = 3\n");
   const MachineConfig c = load_machine_config(child);
-  MachineConfig expected = default_machine_config();
+  MachineConfig expected = published_machine_config();
   expected.link_bandwidth = 1e6;
   expected.cycles_per_op["flop"] = 3;
   expect_same_machine(c, expected);
@@ -84,18 +86,48 @@ TEST_F(Inheritance, ChildOverridesOnlyTheKeysItNames) {
   EXPECT_GT(c.cycles_per_op.size(), 10u);  // the [ops] table came from the base
 }
 
-TEST_F(Inheritance, BuiltinBaseIsTheEmbeddedDefault) {
+TEST_F(Inheritance, BuiltinBaseIsTheEmbeddedPublishedFile) {
   const auto child = write("child.toml", "base = \"builtin:gc-powerplus\"\n[topology]\nnodes = 16\nmesh = [4, 4]\n");
   const MachineConfig c = load_machine_config(child);
-  MachineConfig expected = default_machine_config();
+  MachineConfig expected = published_machine_config();
   expected.nodes = 16;
   expected.mesh_width = expected.mesh_height = 4;
   expect_same_machine(c, expected);
-  EXPECT_EQ(c.name, default_machine_config().name);  // not named: inherited
+  EXPECT_EQ(c.name, published_machine_config().name);  // not named: inherited
+}
+
+// The default is the calibrated file and its two bases, compiled in: the same machine as the
+// shipped file, from any working directory, with no file read.
+TEST_F(Inheritance, DefaultMachineIsTheCalibratedFileResolvedFromBuiltInCopies) {
+  const std::string dir = GCSIM_SOURCE_DIR "/configs/";
+  for (std::string_view name : builtin_machine_file_names()) {
+    std::ifstream in(dir + std::string(name));
+    const std::string shipped((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(builtin_machine_file(name), shipped) << name;
+  }
+  const MachineConfig shipped = load_machine_config(dir + "gc-powerplus-calibrated.toml");
+  const fs::path before = fs::current_path();
+  fs::current_path(dir_);  // holds no machine file: a base read from disk would fail
+  const MachineConfig d = default_machine_config();
+  fs::current_path(before);
+  expect_same_machine(d, shipped);
+  EXPECT_EQ(d.name, shipped.name);
+  EXPECT_EQ(d.calibrated_on, shipped.calibrated_on);
+  EXPECT_EQ(d.source, builtin_source("gc-powerplus-calibrated.toml"));
+  EXPECT_NE(d.connect_base, published_machine_config().connect_base);
+}
+
+TEST_F(Inheritance, BuiltinBaseNamesAnyCompiledInFile) {
+  const auto child = write("child.toml", "base = \"builtin:gc-powerplus-calibrated\"\nname = \"mine\"\n");
+  expect_same_machine(load_machine_config(child), default_machine_config());
+  const auto mech = write("mech.toml", "base = \"builtin:gc-powerplus-mechanisms\"\n");
+  EXPECT_EQ(load_machine_config(mech).connect_model, ConnectModel::servers);
+  const std::string e = error_loading(write("c.toml", "base = \"builtin:gc-powerplus-fast\"\n"));
+  EXPECT_NE(e.find("builtin:gc-powerplus-calibrated"), std::string::npos) << e;  // lists what is built in
 }
 
 TEST_F(Inheritance, ChainsOfBasesApplyInOrder) {
-  write("a.toml", std::string(default_machine_config_text()));
+  write("a.toml", std::string(published_machine_config_text()));
   write("b.toml", "base = \"a.toml\"\n[network]\nhop_latency_us = 7\nconnect_base_us = 9\n");
   const auto c = load_machine_config(write("c.toml", "base = \"b.toml\"\n[network]\nconnect_base_us = 11\n"));
   EXPECT_EQ(c.hop_latency, 7 * kMicrosecond);
@@ -104,7 +136,7 @@ TEST_F(Inheritance, ChainsOfBasesApplyInOrder) {
 
 TEST_F(Inheritance, ShippedFilesEqualTheirOldFullCopies) {
   const std::string dir = GCSIM_SOURCE_DIR "/configs/";
-  const MachineConfig gc = default_machine_config();
+  const MachineConfig gc = published_machine_config();
   // The mechanisms file changes only the connection model and the 8-node shape; the calibrated
   // file inherits it and overrides only the five keys gcsim calibrate fitted.
   MachineConfig mechanisms = gc;
@@ -139,7 +171,7 @@ TEST_F(Inheritance, BadKeyInTheChildNamesTheChildAndItsLine) {
 }
 
 TEST_F(Inheritance, BadValueInTheBaseNamesTheBase) {
-  std::string text(default_machine_config_text());
+  std::string text(published_machine_config_text());
   text.replace(text.find("cpus = 2"), 8, "cpus = -2");
   const auto base = write("base.toml", text);
   const std::string e = error_loading(write("child.toml", "base = \"base.toml\"\n"));
@@ -165,7 +197,7 @@ TEST_F(Inheritance, ACycleOfBasesIsAnError) {
 }
 
 TEST_F(Inheritance, ChildMaySwitchTheConnectModelOfItsBase) {
-  std::string text(default_machine_config_text());
+  std::string text(published_machine_config_text());
   text.replace(text.find("connect_model = \"parallel\""), 26, "connect_model = \"servers\"\nconnect_server_block = [2, 2]");
   write("servers.toml", text);
   EXPECT_EQ(load_machine_config(write("s.toml", "base = \"servers.toml\"\n")).connect_model, ConnectModel::servers);
@@ -176,7 +208,7 @@ TEST_F(Inheritance, ChildMaySwitchTheConnectModelOfItsBase) {
 // A child that only resizes its base's connection-server blocks keeps the base's "servers" model
 // (it used to drop it and fail with "'connect_server_block' needs connect_model = \"servers\"").
 TEST_F(Inheritance, ChildMayResizeTheServerBlocksOfItsBase) {
-  std::string text(default_machine_config_text());
+  std::string text(published_machine_config_text());
   text.replace(text.find("connect_model = \"parallel\""), 26, "connect_model = \"servers\"\nconnect_server_block = [4, 4]");
   write("servers.toml", text);
   const auto c = load_machine_config(write("c.toml", "base = \"servers.toml\"\n[network]\nconnect_server_block = [4, 2]\n"));
@@ -193,7 +225,7 @@ TEST_F(Inheritance, ChildMayResizeTheServerBlocksOfItsBase) {
 }
 
 TEST_F(Inheritance, CalibratedFileAsGcsimCalibrateWritesItLoads) {
-  write("gc.toml", std::string(default_machine_config_text()));
+  write("gc.toml", std::string(published_machine_config_text()));
   const auto fitted = write("fitted.toml",
                             "# written by gcsim calibrate\nbase = \"gc.toml\"\nname = \"GC (calibrated on 4.6)\"\n\n"
                             "[calibration]\nfitted = [\"4.6\"]\n\n[network]\nlink_bandwidth_mbps = 1.71    # fitted\n"
@@ -202,7 +234,7 @@ TEST_F(Inheritance, CalibratedFileAsGcsimCalibrateWritesItLoads) {
   EXPECT_EQ(c.calibrated_on, std::vector<std::string>{"4.6"});
   EXPECT_EQ(c.link_bandwidth, 1.71e6);
   EXPECT_EQ(c.connect_base, 540 * kMicrosecond);
-  EXPECT_EQ(c.cycles_per_op, default_machine_config().cycles_per_op);
+  EXPECT_EQ(c.cycles_per_op, published_machine_config().cycles_per_op);
 }
 
 }  // namespace

@@ -11,7 +11,7 @@ constexpr SimTime kBase = 550 * kMicrosecond;
 constexpr SimTime kHop = 240 * kMicrosecond;
 
 MachineConfig gc(ConnectModel model, int block_w = 4, int block_h = 4) {
-  MachineConfig c = with_nodes(default_machine_config(), 64);
+  MachineConfig c = with_nodes(published_machine_config(), 64);
   c.connect_model = model;
   c.connect_block_width = block_w;
   c.connect_block_height = block_h;
@@ -73,7 +73,7 @@ TEST(ConnectionService, OneNodeBlocksLetDisjointPairsProceedTogether) {
 }
 
 TEST(ConnectionService, MachineFileChoosesTheModel) {
-  std::string text(default_machine_config_text());
+  std::string text(published_machine_config_text());
   const auto at = text.find("connect_model = \"parallel\"");
   ASSERT_NE(at, std::string::npos);
   text.replace(at, 26, "connect_model = \"servers\"\nconnect_server_block = [4, 2]");
@@ -96,7 +96,7 @@ namespace {
 // second waits; 8->9 shares nothing with them.
 TEST(ConnectionService, RouteHoldingQueuesSetUpsThatShareALink) {
   const Mesh mesh(8, 8);
-  MachineConfig c = with_nodes(default_machine_config(), 64);
+  MachineConfig c = with_nodes(published_machine_config(), 64);
   c.connect_model = ConnectModel::route;
   ConnectionService s(c, mesh);
   const SimTime two_hops = kBase + 2 * kHop;

@@ -46,8 +46,8 @@ std::string error_of(const std::string& text) {
   return "(no error)";
 }
 
-TEST(MachineConfig, BuiltInDefaultIsThePublishedGC) {
-  const MachineConfig c = default_machine_config();
+TEST(MachineConfig, PublishedGCIsCompiledIn) {
+  const MachineConfig c = published_machine_config();
   EXPECT_EQ(c.nodes, 64);
   EXPECT_EQ(c.mesh_width, 8);
   EXPECT_EQ(c.mesh_height, 8);
@@ -71,7 +71,7 @@ TEST(MachineConfig, ShippedFilesLoad) {
   const MachineConfig huge = load_machine_config(dir + "whatif-65536-nodes.toml");
   EXPECT_EQ(huge.nodes, 65536);
   EXPECT_EQ(huge.mesh_width, 256);
-  EXPECT_EQ(huge.link_bandwidth, default_machine_config().link_bandwidth);  // inherited from the GC
+  EXPECT_EQ(huge.link_bandwidth, published_machine_config().link_bandwidth);  // inherited from the GC
 }
 
 TEST(MachineConfig, FiberStackSizeComesFromTheRuntimeTable) {
@@ -160,18 +160,18 @@ TEST(MachineConfig, GcMeshShapes) {
 }
 
 TEST(MachineConfig, WithNodesRestrictsTheMesh) {
-  const MachineConfig c = with_nodes(default_machine_config(), 32);
+  const MachineConfig c = with_nodes(published_machine_config(), 32);
   EXPECT_EQ(c.nodes, 32);
   EXPECT_EQ(c.mesh_width, 8);
   EXPECT_EQ(c.mesh_height, 4);
-  EXPECT_THROW(with_nodes(default_machine_config(), 65), ConfigError);
-  EXPECT_THROW(with_nodes(default_machine_config(), 0), ConfigError);
-  EXPECT_THROW(with_nodes(default_machine_config(), 13), ConfigError);  // 13x1 does not fit in 8x8
+  EXPECT_THROW(with_nodes(published_machine_config(), 65), ConfigError);
+  EXPECT_THROW(with_nodes(published_machine_config(), 0), ConfigError);
+  EXPECT_THROW(with_nodes(published_machine_config(), 13), ConfigError);  // 13x1 does not fit in 8x8
 }
 
 TEST(MachineConfig, UnknownOperationIsNamed) {
   try {
-    op_time(default_machine_config(), "warp_drive", 1);
+    op_time(published_machine_config(), "warp_drive", 1);
     FAIL();
   } catch (const std::out_of_range& e) {
     EXPECT_NE(std::string(e.what()).find("warp_drive"), std::string::npos);
@@ -185,7 +185,7 @@ namespace gcsim::machine {
 namespace {
 
 TEST(MeshShapes, ChosenShapeReplacesTheDefault) {
-  const MachineConfig gc = default_machine_config();
+  const MachineConfig gc = published_machine_config();
   const MachineConfig row = with_nodes(gc, 8, MeshShape{8, 1});
   EXPECT_EQ(row.mesh_width, 8);
   EXPECT_EQ(row.mesh_height, 1);
@@ -197,12 +197,12 @@ TEST(MeshShapes, ChosenShapeReplacesTheDefault) {
 }
 
 TEST(MeshShapes, MachineFileNamesShapesPerNodeCount) {
-  std::string text(default_machine_config_text());
+  std::string text(published_machine_config_text());
   text.replace(text.find("[node]"), 6, "[topology.shapes]\n8 = [8, 1]\n\n[node]");
   const MachineConfig c = parse_machine_config(text, "rows.toml");
   EXPECT_EQ(with_nodes(c, 8).mesh_height, 1);
   EXPECT_EQ(with_nodes(c, 16).mesh_height, 4);  // no entry: the default shape
-  std::string bad(default_machine_config_text());
+  std::string bad(published_machine_config_text());
   bad.replace(bad.find("[node]"), 6, "[topology.shapes]\n8 = [3, 3]\n\n[node]");
   try {
     parse_machine_config(bad, "bad.toml");

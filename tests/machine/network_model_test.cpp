@@ -12,7 +12,7 @@ namespace gcsim::machine {
 namespace {
 
 struct Fixture {
-  explicit Fixture(const std::string& model) : config(with_nodes(default_machine_config(), 64)), mesh(8, 8) {
+  explicit Fixture(const std::string& model) : config(with_nodes(published_machine_config(), 64)), mesh(8, 8) {
     net = make_network_model(model, {kernel, mesh, config, nullptr});
   }
   MachineConfig config;
@@ -130,7 +130,7 @@ TEST(Network, CountsBytesPerChannel) {
 TEST(Network, UnknownModelListsTheValidOnes) {
   Kernel k;
   Mesh m(2, 1);
-  MachineConfig c = with_nodes(default_machine_config(), 2);
+  MachineConfig c = with_nodes(published_machine_config(), 2);
   try {
     make_network_model("carrier-pigeon", {k, m, c, nullptr});
     FAIL();

@@ -14,7 +14,7 @@ namespace {
 
 struct Net {
   explicit Net(const std::string& model, std::int64_t packet_bytes = 1024)
-      : config(with_nodes(default_machine_config(), 64)), mesh(8, 8) {
+      : config(with_nodes(published_machine_config(), 64)), mesh(8, 8) {
     config.packet_bytes = packet_bytes;
     net = make_network_model(model, {kernel, mesh, config, nullptr});
   }
@@ -129,9 +129,9 @@ TEST(PacketNetwork, BackToBackMessagesFromOneSourceArriveInOrder) {
 }
 
 TEST(PacketNetwork, PacketSizeComesFromTheMachineFile) {
-  const MachineConfig c = parse_machine_config(std::string(default_machine_config_text()) , "x.toml");
+  const MachineConfig c = parse_machine_config(std::string(published_machine_config_text()) , "x.toml");
   EXPECT_EQ(c.packet_bytes, 1024);
-  std::string text(default_machine_config_text());
+  std::string text(published_machine_config_text());
   text.replace(text.find("[network]"), 9, "[network]\npacket_bytes = 0");
   try {
     parse_machine_config(text, "bad.toml");

@@ -91,7 +91,7 @@ TEST(Accuracy, EveryEstimatorSpendsItsBudget) {
   AccuracyOptions o;
   o.width = 32, o.height = 24, o.budgets = {2, 4}, o.reference_factor = 2, o.spread_repeats = 2;
   o.photon_fractions = {};
-  const SceneAccuracy a = measure_accuracy(tiny("small"), o, machine::default_machine_config());
+  const SceneAccuracy a = measure_accuracy(tiny("small"), o, machine::published_machine_config());
   ASSERT_EQ(a.rows.size(), o.budgets.size() * o.estimators.size());
   for (const BudgetRow& r : a.rows) {
     ASSERT_TRUE(r.fits) << estimator_name(r.estimator);

@@ -63,7 +63,7 @@ TEST(BunnyScenes, ImageIsBitIdenticalOnOneAndTwoNodesAndTheMeshIsCharged) {
   free_mesh.config.cycles_per_op["media_triangle_test"] = 0.0;
   const ParallelMediaResult cheap = render_media_parallel(s, settings, 3, free_mesh);
   EXPECT_LT(cheap.run.mean_compute_seconds(), one.run.mean_compute_seconds());
-  const machine::MachineConfig m = machine::default_machine_config();
+  const machine::MachineConfig m = machine::published_machine_config();
   RenderCounters no_mesh = one.counters;
   no_mesh.boundary = {};
   EXPECT_GT(render_seconds(one.counters, s.k_nearest, m), render_seconds(no_mesh, s.k_nearest, m));

@@ -34,7 +34,7 @@ void expect(bool ok, const std::string& what) {
 
 parix::SimulationOptions options(int n, bool reversed) {
   parix::SimulationOptions o;
-  o.config = machine::with_nodes(machine::default_machine_config(), n);
+  o.config = machine::with_nodes(machine::published_machine_config(), n);
   if (reversed)
     for (int i = 0; i < n; ++i) o.placement.push_back(n - 1 - i);  // processor i on rank n-1-i
   return o;

@@ -49,7 +49,7 @@ namespace {
 // Heap allocations of one run of the ring program.
 std::int64_t allocations_of_ring(int nodes, int iterations, std::int64_t bytes, const std::string& model) {
   SimulationOptions o;
-  o.config = machine::with_nodes(machine::default_machine_config(), nodes);
+  o.config = machine::with_nodes(machine::published_machine_config(), nodes);
   o.config.network_model = model;
   const std::int64_t before = g_allocations.load();
   run_simulated(o, [&](Processor& p) { programs::ring_exchange(p, iterations, bytes); });
@@ -87,7 +87,7 @@ INSTANTIATE_TEST_SUITE_P(Networks, RingAllocations, ::testing::Values("analytic"
 std::int64_t allocations_arriving_first(int rounds, std::int64_t bytes, const std::string& model) {
   constexpr int kBurst = 48;
   SimulationOptions o;
-  o.config = machine::with_nodes(machine::default_machine_config(), 2);
+  o.config = machine::with_nodes(machine::published_machine_config(), 2);
   o.config.network_model = model;
   const std::int64_t before = g_allocations.load();
   run_simulated(o, [&](Processor& p) {

@@ -12,7 +12,7 @@ namespace {
 double broadcast_ms(const std::string& config_file, int nodes, std::int64_t bytes, parix::BcastAlgo algo,
                     const std::string& model = "") {
   parix::SimulationOptions o;
-  o.config = config_file.empty() ? machine::default_machine_config() : machine::load_machine_config(config_file);
+  o.config = config_file.empty() ? machine::published_machine_config() : machine::load_machine_config(config_file);
   o.config = machine::with_nodes(o.config, nodes);
   if (!model.empty()) o.config.network_model = model;  // "": the machine file's own
   return machine::to_milliseconds(

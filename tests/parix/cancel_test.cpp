@@ -131,7 +131,7 @@ void hold_nearly_all_memory_after_64_kb_arrive(bool withdraw) {
       return;
     }
     p.compute("cycle", 800'000);  // 10 ms: the 64 KB arrive in 7.6 ms
-    auto held = p.reserve_memory(machine::default_machine_config().memory_bytes - (1 << 15), "scene");
+    auto held = p.reserve_memory(machine::published_machine_config().memory_bytes - (1 << 15), "scene");
   });
 }
 

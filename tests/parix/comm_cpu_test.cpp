@@ -18,7 +18,7 @@ using machine::SimTime;
 
 SimulationOptions with_costs(SimTime send, SimTime recv, SimTime connect, double ns_per_byte, int cpus = 2) {
   SimulationOptions o;
-  o.config = machine::default_machine_config();
+  o.config = machine::published_machine_config();
   o.config.cpus_per_node = cpus;
   o.config.comm_cpu.send = send;
   o.config.comm_cpu.recv = recv;
@@ -100,7 +100,7 @@ TEST(CommCpu, WorkInsideAnExchangeCountsAsCommunication) {
 }
 
 TEST(CommCpu, MachineFileKeysAreReadAndChecked) {
-  const std::string base(machine::default_machine_config_text());
+  const std::string base(machine::published_machine_config_text());
   auto with_table = [&](const std::string& table) {
     std::string text = base;
     const auto at = text.find("[comm_cpu]");

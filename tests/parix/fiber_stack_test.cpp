@@ -105,7 +105,7 @@ TEST(FiberStackPoolDeathTest, OverflowOverACanaryNamesTheSetting) {
 // End to end: a simulated program that needs more stack than the machine file gives it.
 void run_deep_program() {
   SimulationOptions o;
-  o.config = machine::default_machine_config();
+  o.config = machine::published_machine_config();
   o.config.fiber_stack_bytes = 16 << 10;
   o.config = machine::with_nodes(o.config, 4);
   run_simulated(o, [](Processor& p) {
@@ -122,7 +122,7 @@ TEST(FiberStackPoolDeathTest, ASimulatedProgramThatOverflowsGetsTheMessage) {
 // The same program with room enough runs.
 TEST(FiberStackPool, TheSameProgramRunsWithALargerStack) {
   SimulationOptions o;
-  o.config = machine::default_machine_config();
+  o.config = machine::published_machine_config();
   o.config.fiber_stack_bytes = 256 << 10;
   o.config = machine::with_nodes(o.config, 4);
   const RunResult r = run_simulated(o, [](Processor& p) {

@@ -17,7 +17,7 @@ constexpr std::int64_t kMB = std::int64_t(1) << 20;
 
 SimulationOptions limited_nodes(int n, machine::MemoryLimit limit = machine::MemoryLimit::enforce) {
   SimulationOptions o;
-  o.config = machine::default_machine_config();  // 32 MB a node
+  o.config = machine::published_machine_config();  // 32 MB a node
   o.config = machine::with_nodes(o.config, n);
   o.memory_limit = limit;
   return o;

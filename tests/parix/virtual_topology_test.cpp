@@ -83,7 +83,7 @@ TEST(Placement, TimesFollowThePlacedNodesDistance) {
   for (int i = 0; i < 64; ++i) far[i] = i;
   std::swap(far[1], far[63]);  // processor 1 on node 63: 14 hops from node 0 instead of 1
   const PingTimes near = ping({}), apart = ping(far);
-  const auto c = machine::default_machine_config();
+  const auto c = machine::published_machine_config();
   EXPECT_EQ(apart.connect - near.connect, 13 * c.connect_per_hop);
   EXPECT_EQ(apart.message - near.message, 13 * c.hop_latency);
 }

@@ -63,7 +63,7 @@ TEST(AppRegistry, ExamplesAreListedWithTheirDescriptionsInOneColumn) {
 
 TEST(Backend, SimulatedRunsTheProgramOnEveryNode) {
   parix::RunOptions o;
-  o.simulation.config = machine::with_nodes(machine::default_machine_config(), 4);
+  o.simulation.config = machine::with_nodes(machine::published_machine_config(), 4);
   int ran = 0;
   const parix::RunResult r = parix::run(o, [&](parix::Processor& p) {
     ++ran;
@@ -78,7 +78,7 @@ TEST(Backend, SimulatedRunsTheProgramOnEveryNode) {
 TEST(Backend, UnknownBackendIsRefusedNamingTheKnownOnes) {
   parix::RunOptions o;
   o.backend = "carrier-pigeon";
-  o.simulation.config = machine::default_machine_config();
+  o.simulation.config = machine::published_machine_config();
   try {
     parix::run(o, [](parix::Processor&) {});
     FAIL();

@@ -41,7 +41,7 @@ testing::SimulatedRun run_with(const Scene& scene, FormFactorMerge merge, parix:
 TEST(FormFactorMerge, WholeHemicubeAddsExactlyItsTimeAsCommunicationAndChangesNoRadiosity) {
   const Scene scene = testing::lit_room();
   const int cells = 48, elements = int(scene.elements.size());
-  const machine::MachineConfig machine = machine::default_machine_config();
+  const machine::MachineConfig machine = machine::published_machine_config();
   for (parix::BcastAlgo bcast : {parix::BcastAlgo::sequential, parix::BcastAlgo::tree}) {
     const int nodes = 4;
     const testing::SimulatedRun own = run_with(scene, FormFactorMerge::own_cells, bcast, nodes);

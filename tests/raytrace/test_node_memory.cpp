@@ -21,7 +21,7 @@ TEST(ParallelNodeMemory, APictureTooBigForOneNodeFitsOnEight) {
   RenderSettings rs;
   rs.width = rs.height = 128;
   const ParallelRenderJob job(s, bvh, rs, Distribution::static_blocks);
-  machine::MachineConfig small = machine::default_machine_config();
+  machine::MachineConfig small = machine::published_machine_config();
   small.memory_bytes = job.scene_bytes() + job.image_bytes() + job.tile_bytes() + job.image_bytes() * 3 / 4;
   auto on = [&](int nodes) {
     parix::SimulationOptions o;

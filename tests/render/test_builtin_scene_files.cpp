@@ -78,7 +78,7 @@ TEST(BuiltinSceneFiles, CornellFileGivesTheBuiltInRadiositiesExactly) {
   options.solver.hemicube.resolution = 32;
   options.solver.energy = 0.9;
   parix::SimulationOptions sim;
-  sim.config = machine::with_nodes(machine::default_machine_config(), 2);
+  sim.config = machine::with_nodes(machine::published_machine_config(), 2);
   ParallelOutcome a, b;
   const auto run_a = parix::run_simulated(sim, [&](parix::Processor& p) { radiosity_program(p, from_file, options, &a); });
   const auto run_b = parix::run_simulated(sim, [&](parix::Processor& p) { radiosity_program(p, built_in, options, &b); });

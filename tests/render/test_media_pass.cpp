@@ -71,7 +71,7 @@ Rendered render(const scene::SceneDescription& d, int nodes, bool force_media = 
   view.shadows = plan.pass(PassId::shadows).on;
   Rendered r{{}, std::make_unique<UnifiedRender>(nodes)};
   parix::SimulationOptions sim;
-  sim.config = machine::with_nodes(machine::default_machine_config(), nodes);
+  sim.config = machine::with_nodes(machine::published_machine_config(), nodes);
   const parix::RunResult run = parix::run_simulated(sim, [&](parix::Processor& p) {
     unified_render_program(p, setup.split.surfaces, setup.mesh_or_null(), radiosity::with_shared_projections(o), view,
                            setup.media.get(), *r.out);
@@ -274,7 +274,7 @@ TEST(MediaPass, AgreesWithTheMediaApplicationOnItsSmallScene) {
   const auto pass = make_view_pass(setup.split.surfaces, nullptr, nullptr, view, 2, setup.media.get(),
                                    {photons.outside, photons.inside});
   parix::SimulationOptions sim;
-  sim.config = machine::with_nodes(machine::default_machine_config(), 2);
+  sim.config = machine::with_nodes(machine::published_machine_config(), 2);
   parix::run_simulated(sim, [&](parix::Processor& p) { pass->job->program(p, pass->result); });
   pass->job->finish(pass->result);
   const apps::Image& unified = pass->result.image;

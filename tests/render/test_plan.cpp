@@ -160,7 +160,7 @@ TEST(PlanRules, PointLightsWithOccludersNeedShadowRays) {
 
 TEST(PlanCost, WorkSplitsOverNodesAndPassesThatAreOffCostNothing) {
   const Plan p = plan_of_file("cornell-mirror-glass.toml");
-  const machine::MachineConfig m = machine::default_machine_config();
+  const machine::MachineConfig m = machine::published_machine_config();
   for (PassId id : {PassId::view, PassId::specular}) {
     const PassCost one = estimate_pass(p.pass(id), p.facts, m, 1), four = estimate_pass(p.pass(id), p.facts, m, 4);
     EXPECT_GT(one.seconds_per_node, 0.0);
@@ -178,7 +178,7 @@ TEST(PlanCost, WorkSplitsOverNodesAndPassesThatAreOffCostNothing) {
 // Every pass that is on in a built-in scene file has a cost on the published machine: no [ops] name the
 // estimate asks for may be missing (the media estimate once asked for an operation that was renamed).
 TEST(PlanCost, EveryBuiltinSceneFileIsCostedOnThePublishedMachine) {
-  const machine::MachineConfig m = machine::default_machine_config();
+  const machine::MachineConfig m = machine::published_machine_config();
   for (const char* file : {"direct-light.toml", "cornell.toml", "cornell-mirror-glass.toml", "cornell-fog.toml",
                            "media-small.toml", "media-exp1.toml", "example.toml"}) {
     const Plan p = plan_of_file(file);
@@ -193,7 +193,7 @@ TEST(PlanCost, EveryBuiltinSceneFileIsCostedOnThePublishedMachine) {
 
 TEST(PlanCost, AMachineWithoutTheOperationIsRefusedByName) {
   const Plan p = plan_of_file("cornell.toml");
-  machine::MachineConfig m = machine::default_machine_config();
+  machine::MachineConfig m = machine::published_machine_config();
   m.cycles_per_op.erase("hemicube_pixel");
   try {
     estimate_pass(p.pass(PassId::radiosity), p.facts, m, 1);

@@ -47,7 +47,7 @@ TEST(RenderAccuracy, MoreEnergyShotIsCloserAndCostsMore) {
   d.image.width = d.image.height = 48;
   const Plan plan = make_plan(d);
   parix::SimulationOptions machine;
-  machine.config = machine::with_nodes(machine::default_machine_config(), 2);
+  machine.config = machine::with_nodes(machine::published_machine_config(), 2);
   const RenderControls reference{32, 0.99, 5};
   const RenderRun ref = render_with(d, plan, reference, 0, machine);
   EXPECT_EQ(relative_rmse(render_with(d, plan, reference, ref.exposure, machine).image, ref.image), 0.0);
@@ -106,7 +106,7 @@ TEST(ErrorBudget, CornellStaysWithinItsBudget) {
   d.image.width = d.image.height = 48;
   const Plan plan = make_plan(d);
   parix::SimulationOptions machine;
-  machine.config = machine::with_nodes(machine::default_machine_config(), 2);
+  machine.config = machine::with_nodes(machine::published_machine_config(), 2);
   const RenderRun full = render_with(d, plan, {32, 0.999, 5}, 0, machine);
   for (double budget : {0.01, 0.03, 0.1}) {
     RenderControls c = controls_for_budget(d, plan, budget).controls;

@@ -39,7 +39,7 @@ std::unique_ptr<UnifiedRender> render(const scene::SceneDescription& d, int node
   o.host_threads = host_threads;
   auto out = std::make_unique<UnifiedRender>(nodes);
   parix::SimulationOptions sim;
-  sim.config = machine::with_nodes(machine::default_machine_config(), nodes);
+  sim.config = machine::with_nodes(machine::published_machine_config(), nodes);
   parix::run_simulated(sim, [&](parix::Processor& p) {
     unified_render_program(p, setup.split.surfaces, setup.mesh_or_null(), radiosity::with_shared_projections(o),
                            ViewSettings{}, setup.media.get(), *out);

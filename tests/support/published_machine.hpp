@@ -12,7 +12,7 @@ namespace gcsim::test_support {
 
 inline parix::SimulationOptions published_machine(int nodes) {
   parix::SimulationOptions o;
-  o.config = machine::with_nodes(machine::default_machine_config(), nodes);
+  o.config = machine::with_nodes(machine::published_machine_config(), nodes);
   return o;
 }
 

@@ -87,7 +87,7 @@ TEST_F(SmallRunTrace, ChromeJsonFollowsPerfettosRules) { expect_perfetto_rules(j
 TEST(TraceExport, BusyRunsFollowPerfettosRules) {
   const fs::path d = fresh_dir("busy");
   parix::SimulationOptions o;
-  o.config = machine::default_machine_config();
+  o.config = machine::published_machine_config();
   o.config = machine::with_nodes(o.config, 16);
   o.config.network_model = "flow";
   o.trace.path = (d / "t.json").string();

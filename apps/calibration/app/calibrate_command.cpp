@@ -142,7 +142,10 @@ void add_calibrate_command(pipeline::CommandGroups& g) {
       "      --free network.connect_base_us,network.connect_per_hop_us,network.link_bandwidth_mbps,"
       "ops.hemicube_pixel,ops.form_factor_merge \\\n"
       "      --config gc-powerplus-mechanisms.toml --out gc-powerplus-calibrated.toml");
-  cmd->callback([f] { run_calibrate(*f); });
+  cmd->callback([f] {
+    apply_preset(f->predict);
+    run_calibrate(*f);
+  });
 }
 
 

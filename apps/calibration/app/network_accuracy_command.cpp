@@ -130,7 +130,10 @@ void add_network_accuracy_command(pipeline::CommandGroups& g) {
   pipeline::add_json_option(cmd, f->json, "the comparison");
   cmd->add_option("--csv", f->csv, "Write model,table,median,max,within_15,cells,wall_s as CSV (gcsim plot draws error against time)");
   add_predict_options(cmd, f->predict);
-  cmd->callback([f] { run_network_accuracy(*f); });
+  cmd->callback([f] {
+    apply_preset(f->predict);
+    run_network_accuracy(*f);
+  });
 }
 
 }  // namespace gcsim::calibration::app

@@ -7,7 +7,14 @@
 namespace gcsim::calibration::app {
 
 void add_predict_options(CLI::App* cmd, PredictFlags& f) {
+  f.command = cmd;
   pipeline::add_model_option(cmd, f.model, "Network model for every run");
+  cmd->add_option("--preset", f.preset,
+                  "Radiosity tables: the program the runs simulate, as `gcsim run radiosity --preset` runs it: thesis "
+                  "(the thesis's program, every default below) or gcsim (gcsim's own: cells cyclic, half side faces, "
+                  "own-cells merge, per-shooter exchanges, scenes as built); options given override it")
+      ->check(CLI::IsMember(radiosity::program_preset_names()))
+      ->capture_default_str();
   cmd->add_option("--hemicube", f.hemicube, "Radiosity tables: hemicube resolution of the runs")
       ->check(CLI::Range(8, 4096))
       ->capture_default_str();
@@ -58,9 +65,16 @@ void add_predict_options(CLI::App* cmd, PredictFlags& f) {
       ->capture_default_str();
 }
 
+void apply_preset(PredictFlags& f) {
+  const CLI::App* cmd = f.command;
+  radiosity::apply_program_preset(radiosity::program_preset(f.preset), f,
+                                  [cmd](const char* option) { return cmd && cmd->count(option) > 0; });
+}
+
 std::string non_default_flags(const PredictFlags& f) {
-  const PredictFlags d;
+  const PredictFlags d(radiosity::program_preset(f.preset));
   std::string out;
+  if (f.preset != PredictFlags().preset) out += " --preset " + f.preset;
   if (f.model != d.model) out += " --model " + f.model;
   if (f.hemicube != d.hemicube) out += fmt::format(" --hemicube {}", f.hemicube);
   if (f.energy != d.energy) out += fmt::format(" --energy {}", f.energy);

@@ -103,7 +103,10 @@ void add_validate_command(pipeline::CommandGroups& g) {
   pipeline::add_json_option(cmd, f->json, "every cell and the summaries");
   cmd->add_option("--csv", f->csv, "Write every cell as CSV (gcsim plot --calibration draws it)");
   add_predict_options(cmd, f->predict);
-  cmd->callback([f] { run_validate(*f); });
+  cmd->callback([f] {
+    apply_preset(f->predict);
+    run_validate(*f);
+  });
 }
 
 }  // namespace gcsim::calibration::app

@@ -41,7 +41,11 @@ pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) 
     add_run_outputs(cmd, f->outputs);
     f->outputs.progress = true;
   }
-  return [f] { return std::make_unique<RadiosityExperiment>(f->solve, f->outputs); };
+  // Called after parsing, when cmd knows which options were given.
+  return [f, &cmd] {
+    apply_preset(cmd, f->solve);
+    return std::make_unique<RadiosityExperiment>(f->solve, f->outputs);
+  };
 }
 
 pipeline::AppSpec radiosity_app() {
@@ -74,6 +78,7 @@ pipeline::AppSpec radiosity_app() {
       "\nExamples:\n"
       "  gcsim sweep radiosity --scene cornell\n"
       "  gcsim sweep radiosity --scene cornell --bcast tree --csv tree.csv\n"
+      "  gcsim sweep radiosity --scene cornell --preset thesis   (the thesis's program: tables 4.3-4.5)\n"
       "  gcsim sweep radiosity --scene room --aggregate --nodes 1,8,64 --jobs 2";
   s.default_nodes = 1;
   s.options = declare_options;

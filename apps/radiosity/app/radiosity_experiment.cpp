@@ -24,6 +24,18 @@ const std::string& checked_scene_name(const std::string& name) {
   return name;
 }
 
+// The preset (and the options that override it) and, when matched, the workload.
+void print_program_lines(const SolveFlags& f, const std::optional<LoopMatch>& m, double energy) {
+  std::string given;
+  for (const std::string& o : f.preset_overridden) given += (given.empty() ? "; given: " : ", ") + o;
+  fmt::print("program   --preset {}: {}{}\n", f.preset, program_preset(f.preset).summary, given);
+  if (m)
+    fmt::print("workload  every reflectance x{:.4f}: {} loops to {:g} % (table 4.2: {}; as built: {})\n", m->scale, m->loops,
+               100 * energy, m->thesis_loops, m->loops_as_built);
+  else if (f.workload == to_string(Workload::thesis_loops))
+    fmt::print("workload  the scene as built (table 4.2 gives no loops for '{}' at {:g} %)\n", f.scene, 100 * energy);
+}
+
 }  // namespace
 
 RadiosityExperiment::RadiosityExperiment(const SolveFlags& solve, const RunOutputs& outputs)
@@ -37,6 +49,30 @@ RadiosityExperiment::RadiosityExperiment(const SolveFlags& solve, const RunOutpu
     if (outputs_.image.empty()) throw std::invalid_argument("--snapshots needs --image (the snapshots are named after it)");
     options_.snapshot_loops = pipeline::parse_int_list(outputs_.snapshots, "--snapshots");
   }
+  workload_ = parse_workload(solve_.workload);
+  comm_time_ = parse_comm_time_of(solve_.comm_time);
+  match_workload();
+}
+
+// A built-in scene whose loops table 4.2 gives at this energy is matched to them, as `gcsim
+// validate` matches it (same solver options, so the same factor); any other scene runs as built.
+void RadiosityExperiment::match_workload() {
+  if (workload_ != Workload::thesis_loops) return;
+  const std::optional<int> target = thesis_loops(solve_.scene, options_.solver.energy);
+  if (!target) return;
+  pipeline::ProgressLine progress("workload", 0);
+  progress.update(0, fmt::format("matching {} to table 4.2's {} loops", scene_.name, *target));
+  match_ = match_loops(scene_, options_.solver, *target);
+  scene_ = with_reflectances_scaled(std::move(scene_), match_->scale);
+}
+
+nlohmann::json RadiosityExperiment::program_json() const {
+  nlohmann::json j = {{"preset", solve_.preset}, {"preset_overridden", solve_.preset_overridden},
+                      {"workload", to_string(workload_)}, {"comm_time_of", to_string(comm_time_)}};
+  if (match_)
+    j["workload_match"] = {{"reflectance_scale", match_->scale}, {"loops", match_->loops},
+                           {"thesis_loops", match_->thesis_loops}, {"loops_as_built", match_->loops_as_built}};
+  return j;
 }
 
 void RadiosityExperiment::check_outputs() const {
@@ -111,6 +147,7 @@ void RadiosityExperiment::print_setup(int nodes) const {
   const HemicubeOptions& hc = o.solver.hemicube;
   fmt::print("near      a patch wider than {} x its distance to the nearest receiver shoots from up to {} x {} points\n",
              hc.near_field_ratio, hc.max_shooter_samples, hc.max_shooter_samples);
+  print_program_lines(solve_, match_, options_.solver.energy);
 }
 
 namespace {
@@ -154,6 +191,12 @@ void RadiosityExperiment::report(const pipeline::Outcome& out, nlohmann::json& e
   const ParallelOutcome& r = pipeline::outcome_as<RadiosityOutcome>(out).result;
   print_convergence(r);
   extra["radiosity"] = run_json(scene_, options_, solve_.bcast, r);
+  extra["radiosity"].update(program_json());
+  if (comm_time_ == CommTimeOf::root) {
+    const double root = comm_seconds(out.run, comm_time_);
+    fmt::print("comm      {:.6f} s on the root, processor 0 (--comm-time root: table 4.5's reading)\n", root);
+    extra["radiosity"]["root_comm_s"] = root;
+  }
   if (outputs_.gauss_seidel)
     extra["radiosity"]["gauss_seidel_max_difference"] = compare_with_gauss_seidel(scene_, options_.solver.hemicube, r);
   print_loops_table(r, scene_.name, options_.solver.shooters);
@@ -177,10 +220,11 @@ void RadiosityExperiment::print_sweep_setup() const {
   fmt::print("{}: {} / bcast {}{}{} / hemicube {} / K {} / energy {}\n", scene_.name, to_string(o.algorithm), solve_.bcast,
              o.aggregate ? " aggregated" : "", o.keep_links ? " links kept" : "", o.solver.hemicube.resolution,
              o.solver.shooters, o.solver.energy);
+  print_program_lines(solve_, match_, o.solver.energy);
 }
 
 std::unique_ptr<pipeline::SweepTable> RadiosityExperiment::sweep_table() const {
-  return thesis_sweep_table(scene_, options_);
+  return thesis_sweep_table(scene_, options_, comm_time_, program_json());
 }
 
 }  // namespace gcsim::radiosity::app

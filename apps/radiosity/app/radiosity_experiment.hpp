@@ -9,7 +9,9 @@
 #include "apps/pipeline/progress.hpp"
 #include "apps/radiosity/app/solve_options.hpp"
 #include "apps/radiosity/parallel_radiosity.hpp"
+#include "apps/radiosity/program_preset.hpp"
 #include "apps/radiosity/scene.hpp"
+#include "apps/radiosity/thesis_workload.hpp"
 
 namespace gcsim::radiosity::app {
 
@@ -51,11 +53,17 @@ class RadiosityExperiment : public pipeline::Experiment {
   const Scene& scene() const { return scene_; }
 
  private:
+  void match_workload();
+  nlohmann::json program_json() const;
+
   SolveFlags solve_;
   RunOutputs outputs_;
   Scene scene_;
   ParallelOptions options_;
   std::optional<Camera> camera_;
+  Workload workload_ = Workload::as_built;
+  CommTimeOf comm_time_ = CommTimeOf::mean;
+  std::optional<LoopMatch> match_;  // the scene as matched to table 4.2 (--workload thesis-loops)
 };
 
 // Reports of one run (run_report.cpp).
@@ -66,7 +74,11 @@ double compare_with_gauss_seidel(const Scene& scene, const HemicubeOptions& hemi
 // Writes the final image and the snapshots; camera: the one asked for, or the scene's.
 void write_images(const Scene& scene, const ParallelOutcome& r, const RunOutputs& o, const Camera& camera);
 
-// The sweep's table with the thesis's tables 4.3/4.5/4.8 beside it (sweep_table.cpp).
-std::unique_ptr<pipeline::SweepTable> thesis_sweep_table(const Scene& scene, const ParallelOptions& o);
+// The sweep's table with the thesis's tables 4.3/4.5/4.8 beside it (sweep_table.cpp); its
+// communication column is the processors' mean or the root's (comm_time); each JSON row carries program.
+std::unique_ptr<pipeline::SweepTable> thesis_sweep_table(const Scene& scene, const ParallelOptions& o, CommTimeOf comm_time,
+                                                         nlohmann::json program);
+// A run's communication seconds as comm_time reads them.
+double comm_seconds(const parix::RunResult& run, CommTimeOf comm_time);
 
 }  // namespace gcsim::radiosity::app

@@ -7,6 +7,7 @@
 
 #include "apps/pipeline/list_parsing.hpp"
 #include "apps/radiosity/hemicube.hpp"
+#include "apps/radiosity/program_preset.hpp"
 
 namespace gcsim::radiosity::app {
 
@@ -27,6 +28,29 @@ CLI::Validator shot_fraction() {
         return x >= 0 && x < 1 ? "" : "must be in [0, 1): reflected light keeps some energy unshot forever";
       },
       "in [0, 1)");
+}
+
+// Which program runs: a preset, and the two settings of it that are not the solver's.
+void add_program_options(CLI::App* cmd, SolveFlags& f) {
+  cmd->add_option("--preset", f.preset,
+                  "The program: gcsim (gcsim's own: cells dealt cyclically, half side faces, each part merged over "
+                  "its own cells, each shooter exchanged alone, the scenes as built) or thesis (the thesis's program, "
+                  "the one the default machine was fitted with and `gcsim validate` runs: --cell-assignment block "
+                  "--side-faces full --ff-merge fixed-arrays --ff-exchange together --workload thesis-loops "
+                  "--comm-time root, K = 2, hemicube 256, 99.9 %; docs/calibration.md). Options given override it")
+      ->check(CLI::IsMember(program_preset_names()))
+      ->capture_default_str();
+  cmd->add_option("--workload", f.workload,
+                  "as-built (the scene as built) or thesis-loops (a built-in scene's reflectances times the one "
+                  "factor that makes it take table 4.2's loops at --energy, found by bisection on the host, about a "
+                  "minute: CORNELL as built takes 254 loops to 99.9 %, the thesis's 302; apps/radiosity/thesis_workload.hpp)")
+      ->check(CLI::IsMember({"as-built", "thesis-loops"}))
+      ->capture_default_str();
+  cmd->add_option("--comm-time", f.comm_time,
+                  "Whose communication time the radiosity report and the sweep put next to table 4.5: mean (over "
+                  "the processors) or root (processor 0, which every exchange gathers to and scatters from)")
+      ->check(CLI::IsMember({"mean", "root"}))
+      ->capture_default_str();
 }
 
 // What is solved: the scene, the hemicube, the shooters and when to stop.
@@ -135,9 +159,14 @@ void add_shooting_options(CLI::App* cmd, SolveFlags& f) {
 }  // namespace
 
 void add_solve_options(CLI::App* cmd, SolveFlags& f) {
+  add_program_options(cmd, f);
   add_problem_options(cmd, f);
   add_parallel_options(cmd, f);
   add_shooting_options(cmd, f);
+}
+
+void apply_preset(const CLI::App& cmd, SolveFlags& f) {
+  f.preset_overridden = apply_program_preset(program_preset(f.preset), f, [&cmd](const char* option) { return cmd.count(option) > 0; });
 }
 
 ParallelOptions parallel_options(const SolveFlags& f) {

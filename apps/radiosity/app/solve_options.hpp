@@ -1,6 +1,7 @@
 #pragma once
 // The radiosity solver's command-line options (shared by run and sweep) and what they become.
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -9,7 +10,13 @@
 
 namespace gcsim::radiosity::app {
 
+// The settings a preset covers (program_preset.hpp) start as gcsim's own program's; apply_preset
+// lays the chosen preset under the options given.
 struct SolveFlags {
+  std::string preset = "gcsim";
+  std::string workload = "as-built";  // Workload
+  std::string comm_time = "mean";     // CommTimeOf: whose communication time the reports put next to table 4.5
+  std::vector<std::string> preset_overridden;  // the preset's options given explicitly (apply_preset)
   std::string scene = "cornell";
   int hemicube = 256;
   int shooters = 2;
@@ -33,6 +40,9 @@ struct SolveFlags {
 };
 
 void add_solve_options(CLI::App* cmd, SolveFlags& f);
+// After parsing: the preset's settings for every option cmd was not given; those given go to
+// f.preset_overridden.
+void apply_preset(const CLI::App& cmd, SolveFlags& f);
 // Checks the hemicube / partition combination (throws with the reason) and converts.
 ParallelOptions parallel_options(const SolveFlags& f);
 // "ex,ey,ez,tx,ty,tz[,fov]"

@@ -17,7 +17,9 @@ std::string cell(double v, const char* spec) { return v < 0 ? std::string("-") :
 
 class ThesisSweepTable : public pipeline::SweepTable {
  public:
-  ThesisSweepTable(const Scene& scene, bool tree) : scene_name_(scene.name), tree_(tree), fig_(thesis::figures_for(scene.name)) {}
+  ThesisSweepTable(const Scene& scene, bool tree, CommTimeOf comm_time, nlohmann::json program)
+      : scene_name_(scene.name), tree_(tree), comm_time_(comm_time), program_(std::move(program)),
+        fig_(thesis::figures_for(scene.name)) {}
 
   void print_header() override {
     fmt::print("{:>5} {:>10} {:>8} {:>10} {:>9} {:>6} | {:>9} {:>8} {:>9}\n", "nodes", "sim_s", "speedup", "comm_s", "wall_s",
@@ -31,6 +33,8 @@ class ThesisSweepTable : public pipeline::SweepTable {
   nlohmann::json json_row(const pipeline::SweepRow& row) const override {
     nlohmann::json j = row.outcome.run.to_json();
     j["radiosity"] = {{"scene", scene_name_}, {"loops", result(row).steps.size()}, {"nodes", row.nodes}};
+    j["radiosity"].update(program_);
+    if (comm_time_ == CommTimeOf::root) j["radiosity"]["root_comm_s"] = comm_seconds(row.outcome.run, comm_time_);
     return j;
   }
   void print_footer() override;
@@ -56,6 +60,8 @@ class ThesisSweepTable : public pipeline::SweepTable {
 
   std::string scene_name_;
   bool tree_;
+  CommTimeOf comm_time_;
+  nlohmann::json program_;
   const thesis::SceneFigures* fig_;
   std::vector<Rgb> reference_;  // the first row's radiosities: every node count must give them
   int best_nodes_ = 0;
@@ -70,7 +76,7 @@ void ThesisSweepTable::print_row(const pipeline::SweepRow& row) {
   else if (reference_ != r.element_radiosity) fmt::print("warning: radiosities on {} nodes differ from the first run\n", row.nodes);
   const Thesis th = thesis_at(row.nodes);
   fmt::print("{:>5} {:>10.2f} {:>8.2f} {:>10.2f} {:>9.2f} {:>6} | {:>9} {:>8} {:>9}\n", row.nodes, t, row.speedup,
-             row.outcome.run.mean_comm_seconds(), row.outcome.run.wall_seconds, r.steps.size(), cell(th.seconds, "{:.0f}"),
+             comm_seconds(row.outcome.run, comm_time_), row.outcome.run.wall_seconds, r.steps.size(), cell(th.seconds, "{:.0f}"),
              cell(th.speedup, "{:.2f}"), cell(th.comm, "{:.0f}"));
 }
 
@@ -78,7 +84,7 @@ std::string ThesisSweepTable::csv_row(const pipeline::SweepRow& row) const {
   const Thesis th = thesis_at(row.nodes);
   const parix::RunResult& run = row.outcome.run;
   return fmt::format("{},{:.6f},{:.6f},{:.6f},{:.6f},{},{},{},{}", row.nodes, run.simulated_seconds(), row.speedup,
-                     run.mean_comm_seconds(), run.wall_seconds, result(row).steps.size(),
+                     comm_seconds(run, comm_time_), run.wall_seconds, result(row).steps.size(),
                      th.seconds < 0 ? "" : fmt::format("{}", th.seconds), th.speedup < 0 ? "" : fmt::format("{:.4f}", th.speedup),
                      th.comm < 0 ? "" : fmt::format("{}", th.comm));
 }
@@ -94,12 +100,19 @@ void ThesisSweepTable::print_footer() {
     fmt::print("fastest on {} nodes{}\n", best_nodes_, theirs);
   }
   if (fig_) fmt::print("thesis_x: speedup over 1 node from the thesis's table {}; thesis_c: table 4.5\n", tree_ ? "4.8" : "4.3");
+  fmt::print("comm_s: {}\n", comm_time_ == CommTimeOf::root ? "the root's (processor 0; --comm-time root)"
+                                                             : "the mean over the processors (--comm-time mean)");
 }
 
 }  // namespace
 
-std::unique_ptr<pipeline::SweepTable> thesis_sweep_table(const Scene& scene, const ParallelOptions& o) {
-  return std::make_unique<ThesisSweepTable>(scene, o.bcast == parix::BcastAlgo::tree);
+double comm_seconds(const parix::RunResult& run, CommTimeOf comm_time) {
+  return comm_time == CommTimeOf::root ? machine::to_seconds(run.processors.at(0).comm) : run.mean_comm_seconds();
+}
+
+std::unique_ptr<pipeline::SweepTable> thesis_sweep_table(const Scene& scene, const ParallelOptions& o, CommTimeOf comm_time,
+                                                         nlohmann::json program) {
+  return std::make_unique<ThesisSweepTable>(scene, o.bcast == parix::BcastAlgo::tree, comm_time, std::move(program));
 }
 
 }  // namespace gcsim::radiosity::app

@@ -1,25 +1,25 @@
-#include "apps/calibration/thesis_workload.hpp"
+#include "apps/radiosity/thesis_workload.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 
-#include "apps/radiosity/radiosity.hpp"
+#include "apps/radiosity/thesis_tables.hpp"
 #include "parix/host/interruption.hpp"
 
-namespace gcsim::calibration {
+namespace gcsim::radiosity {
 
 std::optional<int> thesis_loops(const std::string& scene, double energy) {
-  const radiosity::thesis::SceneFigures* f = radiosity::thesis::figures_for(scene);
+  const thesis::SceneFigures* f = thesis::figures_for(scene);
   if (!f) return std::nullopt;
-  for (std::size_t i = 0; i < radiosity::thesis::kEnergyPercent.size(); ++i)
-    if (std::abs(radiosity::thesis::kEnergyPercent[i] - 100 * energy) < 1e-9 && f->loops_for_energy[i] > 0)
+  for (std::size_t i = 0; i < thesis::kEnergyPercent.size(); ++i)
+    if (std::abs(thesis::kEnergyPercent[i] - 100 * energy) < 1e-9 && f->loops_for_energy[i] > 0)
       return f->loops_for_energy[i];
   return std::nullopt;
 }
 
-radiosity::Scene with_reflectances_scaled(radiosity::Scene scene, double s) {
+Scene with_reflectances_scaled(Scene scene, double s) {
   for (auto& surface : scene.surfaces) {
     surface.reflectance *= s;
     for (int c = 0; c < 3; ++c)
@@ -29,7 +29,7 @@ radiosity::Scene with_reflectances_scaled(radiosity::Scene scene, double s) {
   return scene;
 }
 
-double largest_reflectance_scale(const radiosity::Scene& scene) {
+double largest_reflectance_scale(const Scene& scene) {
   double most = 0;
   for (const auto& surface : scene.surfaces)
     most = std::max({most, surface.reflectance.r, surface.reflectance.g, surface.reflectance.b});
@@ -40,18 +40,18 @@ namespace {
 
 // Loops of the scaled scene to the options' energy; more than `cap` loops reads as cap + 1, so
 // that a bisection step stops as soon as it knows the answer is "more".
-int loops_at(const radiosity::Scene& scene, radiosity::SolverOptions o, double s, int cap) {
+int loops_at(const Scene& scene, SolverOptions o, double s, int cap) {
   o.max_steps = cap;
   // A matching solves a dozen times on the host before any simulation: SIGINT stops it between loops.
-  const radiosity::SolveResult r = radiosity::solve_progressive(
+  const SolveResult r = solve_progressive(
       with_reflectances_scaled(scene, s), o, nullptr,
-      [](const radiosity::StepRecord&, const radiosity::ProgressiveState&) { parix::host::throw_if_interrupted(); });
+      [](const StepRecord&, const ProgressiveState&) { parix::host::throw_if_interrupted(); });
   return r.converged ? r.state.steps() : cap + 1;
 }
 
 }  // namespace
 
-LoopMatch match_loops(const radiosity::Scene& scene, const radiosity::SolverOptions& options, int target) {
+LoopMatch match_loops(const Scene& scene, const SolverOptions& options, int target) {
   constexpr int kUncapped = 1 << 24;
   LoopMatch m;
   m.thesis_loops = target;
@@ -86,4 +86,4 @@ LoopMatch match_loops(const radiosity::Scene& scene, const radiosity::SolverOpti
   return m;
 }
 
-}  // namespace gcsim::calibration
+}  // namespace gcsim::radiosity

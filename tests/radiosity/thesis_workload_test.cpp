@@ -1,21 +1,20 @@
 // Matching a scene to table 4.2: the one reflectance factor whose sequential solve takes the
 // thesis's loop count, found by bisection, and what it leaves alone.
-#include "apps/calibration/thesis_workload.hpp"
+#include "apps/radiosity/thesis_workload.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 
-#include "apps/calibration/calibration.hpp"
 #include "apps/radiosity/builtin_scenes.hpp"
 
-namespace gcsim::calibration {
+namespace gcsim::radiosity {
 namespace {
 
-radiosity::Scene cornell() { return radiosity::flatten(radiosity::load_scene_world("cornell")); }
+Scene cornell() { return flatten(load_scene_world("cornell")); }
 
-radiosity::SolverOptions small_solve() {
-  radiosity::SolverOptions o;
+SolverOptions small_solve() {
+  SolverOptions o;
   o.hemicube.resolution = 32;
   o.energy = 0.9;
   return o;
@@ -32,7 +31,7 @@ TEST(ThesisLoops, AreTable42sFiguresWhereItReportsThem) {
 }
 
 TEST(ScaledReflectances, ScaleEveryReflectanceAndNothingElse) {
-  const radiosity::Scene a = cornell(), b = with_reflectances_scaled(a, 1.1);
+  const Scene a = cornell(), b = with_reflectances_scaled(a, 1.1);
   ASSERT_EQ(a.surfaces.size(), b.surfaces.size());
   for (std::size_t i = 0; i < a.surfaces.size(); ++i) {
     EXPECT_EQ(b.surfaces[i].reflectance, a.surfaces[i].reflectance * 1.1) << i;
@@ -48,15 +47,15 @@ TEST(ScaledReflectances, ScaleEveryReflectanceAndNothingElse) {
 // reaches to the target; brighter walls take more loops, so CORNELL (53 loops to 90 % at
 // hemicube 256 as built, 71 in the thesis) is brightened and a lower target dims it.
 TEST(MatchLoops, FindsTheFactorWhoseSolveTakesTheThesisLoops) {
-  const radiosity::Scene scene = cornell();
-  const radiosity::SolverOptions o = small_solve();
+  const Scene scene = cornell();
+  const SolverOptions o = small_solve();
   const LoopMatch m = match_loops(scene, o, 71);
   EXPECT_EQ(m.thesis_loops, 71);
-  EXPECT_EQ(m.loops_as_built, radiosity::solve_progressive(scene, o).state.steps());
+  EXPECT_EQ(m.loops_as_built, solve_progressive(scene, o).state.steps());
   EXPECT_LT(m.loops_as_built, 71);
   EXPECT_GT(m.scale, 1.0);
   EXPECT_LE(std::abs(m.loops - 71), 1);
-  EXPECT_EQ(radiosity::solve_progressive(with_reflectances_scaled(scene, m.scale), o).state.steps(), m.loops);
+  EXPECT_EQ(solve_progressive(with_reflectances_scaled(scene, m.scale), o).state.steps(), m.loops);
   const LoopMatch again = match_loops(scene, o, 71);
   EXPECT_EQ(again.scale, m.scale);  // deterministic, bit for bit
 
@@ -66,32 +65,11 @@ TEST(MatchLoops, FindsTheFactorWhoseSolveTakesTheThesisLoops) {
 }
 
 TEST(MatchLoops, AnUnreachableTargetGivesTheNearerEnd) {
-  const radiosity::Scene scene = cornell();
+  const Scene scene = cornell();
   const LoopMatch m = match_loops(scene, small_solve(), 100000);
   EXPECT_EQ(m.scale, largest_reflectance_scale(scene));
   EXPECT_LT(m.loops, 100000);
 }
 
-// The predictor runs the matched scenes and says so; as built, it matches nothing.
-TEST(MatchLoops, ThePredictorRunsTheMatchedScene) {
-  PredictionSettings s;
-  s.hemicube = 32;
-  s.energy = 0.9;
-  const MeasuredTable t = table_from_spec("4.3@1+CORNELL");
-  const machine::MachineConfig c = MachineFile("").config();
-  const auto r = std::size_t(t.row_of(1)), k = std::size_t(t.column_of("CORNELL"));
-  Predictor matched(s);
-  const double t_matched = matched.predict({t}, c)[0][r][k];
-  ASSERT_EQ(matched.loop_matches().size(), 1u);
-  const LoopMatch m = matched.loop_matches().at("cornell");
-  s.match_thesis_loops = false;
-  Predictor as_built(s);
-  const double t_built = as_built.predict({t}, c)[0][r][k];
-  EXPECT_TRUE(as_built.loop_matches().empty());
-  // One node charges the same work per loop, to within what brighter walls change in the
-  // element updates: the times are in the ratio of the loops.
-  EXPECT_NEAR(t_matched / t_built, double(m.loops) / m.loops_as_built, 0.03);
-}
-
 }  // namespace
-}  // namespace gcsim::calibration
+}  // namespace gcsim::radiosity

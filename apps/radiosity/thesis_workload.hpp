@@ -12,7 +12,7 @@
 
 #include "apps/radiosity/radiosity.hpp"
 
-namespace gcsim::calibration {
+namespace gcsim::radiosity {
 
 struct LoopMatch {
   double scale = 1.0;     // every reflectance of the scene times this
@@ -26,14 +26,14 @@ struct LoopMatch {
 std::optional<int> thesis_loops(const std::string& scene, double energy);
 
 // The scene with every surface's reflectance multiplied by s (each channel below 1 required).
-radiosity::Scene with_reflectances_scaled(radiosity::Scene scene, double s);
+Scene with_reflectances_scaled(Scene scene, double s);
 
 // The largest factor every reflectance of the scene can take and stay below 1.
-double largest_reflectance_scale(const radiosity::Scene& scene);
+double largest_reflectance_scale(const Scene& scene);
 
 // The factor whose sequential solve (options: the runs' hemicube, shooters and energy) takes the
 // loop count closest to `target`, by bisection between 0.5 and largest_reflectance_scale (the loop
 // count grows with the reflectances). Deterministic: the same scene and options give the same s.
-LoopMatch match_loops(const radiosity::Scene& scene, const radiosity::SolverOptions& options, int target);
+LoopMatch match_loops(const Scene& scene, const SolverOptions& options, int target);
 
-}  // namespace gcsim::calibration
+}  // namespace gcsim::radiosity
