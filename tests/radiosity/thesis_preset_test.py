@@ -30,7 +30,7 @@ def main():
         print(proc.stdout)
         if proc.returncode != 0:
             sys.exit(f"{' '.join(cmd)} exited {proc.returncode}:\n{proc.stderr}")
-        rows = list(csv.DictReader(out_csv.open()))
+        rows = list(csv.DictReader(line for line in out_csv.open() if not line.startswith("#")))
         doc = json.loads(out_json.read_text())
     failures = []
     if "calibrated" not in proc.stdout.split("\n", 1)[0]:
