@@ -38,16 +38,8 @@ const SceneFormatRegistrar kTestFormat({"catalogue test format", {".CatTest"}, [
 
 class SceneCatalogue : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = test_support::scratch_path("gcsim-scene-catalogue-" +
-                                      std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir_ / name) << text;
-    return (dir_ / name).string();
+    return scratch_.write(name, text);
   }
   // The message of the error load_scene throws for name_or_path (of type E), "" if none.
   template <class E>
@@ -59,7 +51,8 @@ class SceneCatalogue : public ::testing::Test {
     }
     return "";
   }
-  fs::path dir_;
+  test_support::ScratchDir scratch_{"gcsim-scene-catalogue-"};
+  const fs::path& dir_ = scratch_.path();
 };
 
 TEST_F(SceneCatalogue, FindsABuiltInSceneByNameInAnyCase) {

@@ -17,14 +17,7 @@ namespace fs = std::filesystem;
 // A scratch folder per test, for referenced files.
 class SceneFileTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = test_support::scratch_path("gcsim-scene-file-" +
-                                      std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  void write(const std::string& name, const std::string& text) const { std::ofstream(dir_ / name) << text; }
+  void write(const std::string& name, const std::string& text) const { scratch_.write(name, text); }
   SceneDescription parse(const std::string& text) const { return parse_scene_file(text, "t.toml", dir_); }
   // The text must fail at `line` with a message holding `expected`.
   void expect_error(const std::string& text, int line, const std::string& expected) const {
@@ -37,7 +30,8 @@ class SceneFileTest : public ::testing::Test {
       EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
     }
   }
-  fs::path dir_;
+  test_support::ScratchDir scratch_{"gcsim-scene-file-"};
+  const fs::path& dir_ = scratch_.path();
 };
 
 const char* kMaterials = R"(

@@ -20,16 +20,8 @@ namespace fs = std::filesystem;
 // A fresh directory per test, for files that name each other.
 class Inheritance : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = test_support::scratch_path("gcsim_inherit_" +
-                                      std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string write(const std::string& name, const std::string& text) {
-    std::ofstream(dir_ / name) << text;
-    return (dir_ / name).string();
+    return scratch_.write(name, text);
   }
   std::string error_loading(const std::string& file) {
     try {
@@ -39,7 +31,8 @@ class Inheritance : public ::testing::Test {
     }
     return "(no error)";
   }
-  fs::path dir_;
+  test_support::ScratchDir scratch_{"gcsim_inherit_"};
+  const fs::path& dir_ = scratch_.path();
 };
 
 // Every field a file can set, so "same values" means the same machine.
