@@ -160,6 +160,26 @@ TEST(BvhRobustness, AllTrianglesCoincident) {
   EXPECT_GT(expect_hits_equal_brute_force(s, bvh), 100);
 }
 
+// A tetrahedron whose one face is repeated: clustering tied every merge and chained the copies
+// into a tree half as deep as their count (226 for 450), and the subtree walks that recurse on
+// a 64 KiB fiber stack overflowed it. The depth is bounded by log2 of the count plus a constant.
+TEST(BvhRobustness, RepeatedFaceGivesAShallowTree) {
+  for (int copies : {450, 2000, 5000}) {
+    Scene s;
+    s.name = "tetrahedron";
+    const int m = s.add_material({});
+    const glm::vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0}, d{0, 0, 1};
+    s.add_triangle({a, b, d}, m);
+    s.add_triangle({a, c, d}, m);
+    s.add_triangle({b, c, d}, m);
+    for (int i = 0; i < copies; ++i) s.add_triangle({a, b, c}, m);
+    const Bvh bvh = build_bvh_by_clustering(s);
+    expect_valid_tree(s, bvh);
+    EXPECT_LE(bvh.depth(), 64 + 2) << copies;  // at most 64 clustered + log2(n / 2048) median levels
+    EXPECT_GT(expect_hits_equal_brute_force(s, bvh, 200), 50) << copies;
+  }
+}
+
 TEST(BvhRobustness, AllTrianglesInOnePlane) {
   Scene s = soup(300, 1.0f);
   for (auto& t : s.triangles) t.p0.z = t.p1.z = t.p2.z = 0.5f;

@@ -10,6 +10,11 @@ namespace gcsim::geometry {
 namespace {
 
 constexpr std::size_t kClusterGroupSize = 2048;
+// Clustering ties on coincident primitives (one face repeated) and then chains them into a tree
+// as deep as the group is large; the subtree walks recurse on fiber stacks. A group clustered
+// deeper than this is split at medians instead (depth log2 of the group), so every tree is at
+// most this plus log2(n / kClusterGroupSize) deep. The built-in scenes' groups stay below it.
+constexpr int kMaxClusterDepth = 64;
 
 // 2 (xy + yz + zx) of the box's extent, in double. Float extents of finite boxes are at most
 // 2 * FLT_MAX (finite in double), their products at most ~1e77 and at least ~1e-90: neither
@@ -94,8 +99,32 @@ struct Builder {
     if (end - begin <= kClusterGroupSize) {
       std::vector<NodeRef> refs;
       for (std::size_t i = begin; i < end; ++i) refs.push_back(primitive_ref(prims[i]));
-      return cluster(std::move(refs));
+      const std::size_t first_node = nodes.size();
+      const NodeRef clustered = cluster(std::move(refs));
+      if (depth_of_new_nodes(first_node) <= kMaxClusterDepth) return clustered;
+      nodes.resize(first_node);
+      return split_at_medians(prims, begin, end, centroid, 1);
     }
+    return split_at_medians(prims, begin, end, centroid, kClusterGroupSize);
+  }
+
+  // Depth of the subtree the nodes from `first` on form; children precede their parents.
+  int depth_of_new_nodes(std::size_t first) const {
+    std::vector<int> depth(nodes.size() - first, 1);
+    int deepest = 0;
+    for (std::size_t i = first; i < nodes.size(); ++i) {
+      for (NodeRef c : nodes[i].child)
+        if (!is_primitive(c)) depth[i - first] = std::max(depth[i - first], depth[c - first] + 1);
+      deepest = std::max(deepest, depth[i - first]);
+    }
+    return deepest;
+  }
+
+  // Median split on the centroids' widest axis (ties by index, so coincident primitives halve
+  // too); groups of at most `leaf_group` are clustered, or become a primitive when it is 1.
+  NodeRef split_at_medians(std::vector<int>& prims, std::size_t begin, std::size_t end,
+                           const std::vector<glm::vec3>& centroid, std::size_t leaf_group) {
+    if (leaf_group == 1 && end - begin == 1) return primitive_ref(prims[begin]);
     Bounds3 cb;
     for (std::size_t i = begin; i < end; ++i) cb.extend(centroid[prims[i]]);
     const glm::vec3 e = cb.extent();
@@ -104,8 +133,11 @@ struct Builder {
     std::nth_element(prims.begin() + begin, prims.begin() + mid, prims.begin() + end, [&](int a, int b) {
       return centroid[a][axis] < centroid[b][axis] || (centroid[a][axis] == centroid[b][axis] && a < b);
     });
-    const NodeRef l = build(prims, begin, mid, centroid);
-    const NodeRef r = build(prims, mid, end, centroid);
+    const auto half = [&](std::size_t b, std::size_t e) {
+      return leaf_group == 1 ? split_at_medians(prims, b, e, centroid, 1) : build(prims, b, e, centroid);
+    };
+    const NodeRef l = half(begin, mid);
+    const NodeRef r = half(mid, end);
     return make_node(l, r);
   }
 };
