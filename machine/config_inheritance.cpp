@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "machine/builtin_machines.hpp"
+#include "machine/input_file.hpp"
 #include "machine/machine_config.hpp"
+#include "machine/toml_limits.hpp"
 
 namespace gcsim::machine {
 namespace {
@@ -34,6 +36,7 @@ void drop_replaced_alternatives(toml::table& base, const toml::table& overlay) {
 }
 
 toml::table parse_text(std::string_view text, const std::string& source) {
+  if (auto too_much = check_toml_limits(text)) throw ConfigError(source, too_much->line, too_much->message);
   try {
     return toml::parse(text, source);
   } catch (const toml::parse_error& e) {
@@ -83,12 +86,10 @@ toml::table load_base(const toml::node& key, const std::string& child, std::vect
   } else {
     const std::filesystem::path here = child.empty() || child.front() == '<' ? "" : std::filesystem::path(child).parent_path();
     const std::filesystem::path file = here / name->get();
-    std::ifstream in(file);
-    if (!in) throw ConfigError(child, line_of(key), "base '" + name->get() + "': cannot open " + file.string() + " (does it exist?)");
-    std::stringstream ss;
-    ss << in.rdbuf();
+    InputFile in = read_input_file(file, kMaxTomlFileBytes);
+    if (!in.ok()) throw ConfigError(child, line_of(key), "base '" + name->get() + "': " + file.string() + " " + in.error);
     source = file.string();
-    text = ss.str();
+    text = std::move(in.text);
   }
   for (const auto& seen : chain) {
     if (seen == identity(source)) {

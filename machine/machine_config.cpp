@@ -9,6 +9,7 @@
 
 #include "machine/builtin_machines.hpp"
 #include "machine/config_inheritance.hpp"
+#include "machine/input_file.hpp"
 #include "machine/interconnect_registry.hpp"
 #include "machine/network_registry.hpp"
 
@@ -281,11 +282,9 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
 }
 
 MachineConfig load_machine_config(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw ConfigError(file.string(), 0, "cannot open machine file (does it exist?)");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_machine_config(ss.str(), file.string());
+  InputFile in = read_input_file(file, kMaxTomlFileBytes);
+  if (!in.ok()) throw ConfigError(file.string(), 0, "cannot read the machine file: it " + in.error);
+  return parse_machine_config(in.text, file.string());
 }
 
 std::string builtin_source(std::string_view file_name) { return "<built-in configs/" + std::string(file_name) + ">"; }

@@ -2,13 +2,14 @@
 
 #include <charconv>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string_view>
 #include <unordered_map>
 
 #include <fmt/format.h>
 
+#include "machine/input_file.hpp"
 #include "machine/interconnect_registry.hpp"
 
 namespace gcsim::machine {
@@ -18,8 +19,8 @@ namespace {
 constexpr std::string_view kColumns = "kind,proc,peer,start_ps,end_ps,bytes,id,label,thread";
 constexpr std::string_view kColumnsWithoutThread = "kind,proc,peer,start_ps,end_ps,bytes,id,label";  // older traces
 
-std::runtime_error bad_line(const std::string& path, std::size_t line_number, std::string_view why) {
-  return std::runtime_error(fmt::format("{}:{}: {}", path, line_number, why));
+InputFileError bad_line(const std::string& path, std::size_t line_number, std::string_view why) {
+  return InputFileError(fmt::format("{}:{}: {}", path, line_number, why));
 }
 
 bool parse_kind(std::string_view s, TraceKind& k) {
@@ -51,8 +52,9 @@ std::string trace_sibling_path(const std::string& path, std::string_view extensi
 }
 
 TraceCsv read_trace_csv(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(fmt::format("cannot read trace CSV '{}'", path));
+  InputFile file = read_input_file(path, kMaxDataFileBytes);
+  if (!file.ok()) throw InputFileError(fmt::format("cannot read trace CSV '{}': it {}", path, file.error));
+  std::istringstream in(std::move(file.text));
   TraceCsv t;
   std::string line;
   if (!std::getline(in, line)) throw bad_line(path, 1, "empty file; expected a gcsim trace CSV");

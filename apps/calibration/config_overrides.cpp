@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "machine/builtin_machines.hpp"
+#include "machine/input_file.hpp"
 
 namespace gcsim::calibration {
 namespace {
@@ -34,13 +35,11 @@ MachineFile::MachineFile(const std::filesystem::path& file) {
     base_ = machine::default_machine_config();
     return;
   }
-  std::ifstream in(file);
-  if (!in) throw machine::ConfigError(file.string(), 0, "cannot open machine file (does it exist?)");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  text_ = ss.str();
+  base_ = machine::load_machine_config(file);  // first: it refuses what is not a regular file or too deep
+  machine::InputFile in = machine::read_input_file(file, machine::kMaxTomlFileBytes);
+  if (!in.ok()) throw machine::ConfigError(file.string(), 0, "cannot read the machine file: it " + in.error);
+  text_ = std::move(in.text);
   source_ = file.string();
-  base_ = machine::load_machine_config(file);
 }
 
 std::vector<std::string> MachineFile::free_keys() const {

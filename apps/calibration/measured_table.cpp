@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "apps/programs/broadcast_experiment.hpp"
+#include "machine/input_file.hpp"
 #include "apps/radiosity/radiosity.hpp"
 
 namespace gcsim::calibration {
@@ -116,8 +117,9 @@ double parse_cell(const std::string& cell, const std::filesystem::path& f, int l
 
 MeasuredTable load_measured_csv(const std::filesystem::path& file, std::string_view like) {
   const MeasuredTable layout = thesis_table(like);
-  std::ifstream in(file);
-  if (!in) throw std::invalid_argument(fmt::format("{}: cannot open the table (does it exist?)", file.string()));
+  machine::InputFile read = machine::read_input_file(file, machine::kMaxDataFileBytes);
+  if (!read.ok()) throw std::invalid_argument(fmt::format("{}: cannot read the table: it {}", file.string(), read.error));
+  std::istringstream in(std::move(read.text));
   MeasuredTable t{layout.id, layout.title, layout.unit, {}, {}, {}, file.string()};
   std::vector<int> column_index;  // CSV column -> layout column
   std::string line;

@@ -10,6 +10,7 @@
 #include "apps/pipeline/command_groups.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/resource_check.hpp"
+#include "machine/input_file.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/host/interruption.hpp"
 #include "parix/sim/simulated_runtime.hpp"
@@ -51,6 +52,8 @@ int report_failure(std::exception_ptr e) {
     print_error("out of host memory");
     return kExitResource;
   } catch (const FileError& x) {
+    return fail(x, kExitFile);
+  } catch (const machine::InputFileError& x) {  // a trace's CSV, a run JSON
     return fail(x, kExitFile);
   } catch (const machine::ConfigError& x) {
     return fail(x, kExitFile);

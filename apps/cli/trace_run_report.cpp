@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/cli/trace_plot_runner.hpp"
+#include "machine/input_file.hpp"
 
 namespace gcsim::cli {
 
@@ -46,16 +47,16 @@ std::string show(const json& v) {
 }
 
 json read_run_json(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read run JSON '" + path + "' (expected the file written by --json)");
+  const machine::InputFile in = machine::read_input_file(path, machine::kMaxDataFileBytes);
+  if (!in.ok()) throw machine::InputFileError("cannot read run JSON '" + path + "': it " + in.error);
   json j;
   try {
-    j = json::parse(in);
-  } catch (const json::parse_error& e) {
-    throw std::runtime_error(fmt::format("{}: not JSON ({}); expected the file written by --json", path, e.what()));
+    j = json::parse(in.text);
+  } catch (const json::exception& e) {  // parse errors and out-of-range numbers such as 1e309
+    throw machine::InputFileError(fmt::format("{}: not JSON ({}); expected the file written by --json", path, e.what()));
   }
   if (!j.is_object() || !j.contains("simulated") || !j["simulated"].is_object() || !j.contains("wall")) {
-    throw std::runtime_error(path + ": not a gcsim run JSON (expected the keys \"simulated\" and \"wall\" that --json writes)");
+    throw machine::InputFileError(path + ": not a gcsim run JSON (expected the keys \"simulated\" and \"wall\" that --json writes)");
   }
   return j;
 }

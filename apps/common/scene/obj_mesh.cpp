@@ -9,6 +9,8 @@
 
 #include <tiny_obj_loader.h>
 
+#include "machine/input_file.hpp"
+
 namespace gcsim::scene {
 
 ObjError::ObjError(const std::string& f, int l, const std::string& message) : SceneError(f, l, message) {}
@@ -134,8 +136,9 @@ TriangleMesh parse_obj_mesh(std::istream& in, const std::string& source) {
 }
 
 TriangleMesh load_obj_mesh(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw ObjError(file.string(), 0, "cannot open the file");
+  machine::InputFile read = machine::read_input_file(file, machine::kMaxMeshFileBytes);
+  if (!read.ok()) throw ObjError(file.string(), 0, "cannot read the OBJ file: it " + read.error);
+  std::istringstream in(std::move(read.text));
   return parse_obj_mesh(in, file.string());
 }
 

@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "apps/common/scene/scene_file_reader.hpp"
+#include "machine/input_file.hpp"
+#include "machine/toml_limits.hpp"
 
 namespace gcsim::scene {
 
@@ -159,6 +161,7 @@ SceneDescription read_scene(const Reader& r, const toml::table& root, const std:
 
 SceneDescription parse_scene_file(std::string_view text, const std::string& file_name,
                                   const std::filesystem::path& base_dir) {
+  if (auto too_much = machine::check_toml_limits(text)) throw SceneFileError(file_name, too_much->line, too_much->message);
   toml::table root;
   try {
     root = toml::parse(text, file_name);
@@ -170,14 +173,9 @@ SceneDescription parse_scene_file(std::string_view text, const std::string& file
 }
 
 SceneDescription load_scene_file(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw SceneFileError(path.string(), 0, "scene file is missing or not a regular file");
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in) throw SceneFileError(path.string(), 0, "cannot read the scene file");
-  return parse_scene_file(text.str(), path.string(), path.parent_path());
+  const machine::InputFile in = machine::read_input_file(path, machine::kMaxTomlFileBytes);
+  if (!in.ok()) throw SceneFileError(path.string(), 0, "cannot read the scene file: it " + in.error);
+  return parse_scene_file(in.text, path.string(), path.parent_path());
 }
 
 }  // namespace gcsim::scene

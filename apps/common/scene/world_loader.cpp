@@ -11,6 +11,8 @@
 
 #include <fmt/format.h>
 
+#include "machine/input_file.hpp"
+
 namespace gcsim::scene {
 
 using namespace gcsim::geometry;  // the double-precision polygons the area checks use
@@ -275,11 +277,9 @@ World parse_world(std::string_view text, const std::string& file, const std::fil
     auto it = loaded.find(name.text);
     if (it == loaded.end()) {
       std::filesystem::path p = base_dir / name.text;
-      std::ifstream in(p, std::ios::binary);
-      if (!in) c.fail_at(name.line, fmt::format("cannot open entity file '{}'", p.string()));
-      std::stringstream ss;
-      ss << in.rdbuf();
-      w.entities.push_back(parse_entity(ss.str(), p.string()));
+      const machine::InputFile in = machine::read_input_file(p, machine::kMaxMeshFileBytes);
+      if (!in.ok()) c.fail_at(name.line, fmt::format("cannot read entity file '{}': it {}", p.string(), in.error));
+      w.entities.push_back(parse_entity(in.text, p.string()));
       it = loaded.emplace(name.text, int(w.entities.size()) - 1).first;
     }
     inst.entity = it->second;
@@ -291,11 +291,9 @@ World parse_world(std::string_view text, const std::string& file, const std::fil
 }
 
 World load_world(const std::filesystem::path& world_file) {
-  std::ifstream in(world_file, std::ios::binary);
-  if (!in) throw ParseError(world_file.string(), 0, "cannot open world file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_world(ss.str(), world_file.string(), world_file.parent_path());
+  const machine::InputFile in = machine::read_input_file(world_file, machine::kMaxMeshFileBytes);
+  if (!in.ok()) throw ParseError(world_file.string(), 0, "cannot read world file: it " + in.error);
+  return parse_world(in.text, world_file.string(), world_file.parent_path());
 }
 
 namespace {
