@@ -22,14 +22,14 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from gcsim_plots.errors import PlotError  # noqa: E402
+from gcsim_plots.errors import PlotError, UsageError  # noqa: E402
 
 PLOTS = ("gantt", "mesh_heatmap", "message_matrix", "utilization")
 
 
 class Parser(argparse.ArgumentParser):
     def error(self, message):
-        raise PlotError(message)
+        raise UsageError(message)
 
 
 def parse_args(argv):
@@ -47,9 +47,9 @@ def parse_args(argv):
     args = p.parse_args(argv)
     inputs = [x for x in (args.trace, args.sweep, args.calibration, args.accuracy) if x]
     if len(inputs) > 1:
-        raise PlotError("give one input: a TRACE, --sweep CSV, --calibration CSV or --accuracy CSV")
+        raise UsageError("give one input: a TRACE, --sweep CSV, --calibration CSV or --accuracy CSV")
     if not inputs:
-        raise PlotError("no input: give a TRACE (FILE.json or FILE.csv written by --trace), --sweep CSV, "
+        raise UsageError("no input: give a TRACE (FILE.json or FILE.csv written by --trace), --sweep CSV, "
                         "--calibration CSV or --accuracy CSV")
     return args
 
@@ -92,7 +92,7 @@ def plot_trace(args, plt):
     wanted = PLOTS if not args.only else [p.strip() for p in args.only.split(",")]
     for name in wanted:
         if name not in PLOTS:
-            raise PlotError(f"--only {args.only!r}: unknown plot {name!r} (expected some of {', '.join(PLOTS)})")
+            raise UsageError(f"--only {args.only!r}: unknown plot {name!r} (expected some of {', '.join(PLOTS)})")
     make_out_dir(args.out)
     draw = {"gantt": plot_gantt, "mesh_heatmap": plot_mesh_heatmap, "message_matrix": plot_message_matrix,
             "utilization": plot_utilization}
@@ -158,18 +158,21 @@ def main(argv):
         else:
             plot_trace(args, plt)
         return 0
-    except PlotError as e:
+    except UsageError as e:
         print(f"gcsim plot: error: {e}", file=sys.stderr)
         return 2
+    except PlotError as e:  # an input file that cannot be read or is malformed, an output that cannot be written
+        print(f"gcsim plot: error: {e}", file=sys.stderr)
+        return 3
     except MemoryError:
         print("gcsim plot: error: out of memory reading the trace; plot a window (--from-ms/--to-ms) of a smaller "
               "trace, or rerun with --trace-level messages", file=sys.stderr)
-        return 2
+        return 4
     except Exception as e:  # a bug: one line for the user, the traceback on request
         if os.environ.get("GCSIM_PLOT_DEBUG"):
             raise
         print(f"gcsim plot: internal error: {type(e).__name__}: {e} (GCSIM_PLOT_DEBUG=1 shows where)", file=sys.stderr)
-        return 3
+        return 1
 
 
 if __name__ == "__main__":

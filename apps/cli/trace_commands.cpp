@@ -1,5 +1,6 @@
 // The trace family: gcsim plot (PNGs of a trace or a sweep), gcsim report (an HTML page of a run)
 // and gcsim paje (the Paje export of a trace CSV, e.g. of an interrupted run).
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,6 +10,8 @@
 #include "apps/cli/commands.hpp"
 #include "apps/cli/trace_plot_runner.hpp"
 #include "apps/cli/trace_run_report.hpp"
+#include "apps/pipeline/failure.hpp"
+#include "machine/input_file.hpp"
 #include "machine/paje_writer.hpp"
 #include "machine/trace_csv.hpp"
 
@@ -28,6 +31,35 @@ struct PlotOptions {
   std::string title;
   std::string only;
 };
+
+// The CSV a trace argument names, as traces/gcsim_plots/trace_data.py finds it.
+std::string trace_csv_of(const std::string& trace) {
+  const std::string ext = std::filesystem::path(trace).extension().string();
+  if (ext == ".csv") return trace;
+  if (ext == ".json" || ext == ".paje") return machine::trace_sibling_path(trace, ".csv");
+  return std::filesystem::exists(trace) ? trace : trace + ".csv";
+}
+
+// Inputs that exist but are not regular files (a directory, /dev/zero, a FIFO) are refused here:
+// the script would block or read without end. Missing files are the script's to report.
+void check_plot_inputs(const PlotOptions& o) {
+  const std::pair<const char*, std::string> inputs[] = {
+      {"trace", o.trace.empty() ? "" : trace_csv_of(o.trace)}, {"--sweep", o.sweep},
+      {"--calibration", o.calibration}, {"--accuracy", o.accuracy}};
+  for (const auto& [option, path] : inputs) {
+    if (path.empty() || !std::filesystem::exists(path)) continue;
+    if (auto why = machine::why_not_regular_file(path))
+      throw pipeline::FileError(fmt::format("{} {}: {}", option, path, *why));
+  }
+}
+
+// The script's statuses: 2 usage, 3 an input or output file, 4 memory; anything else is a failure (1).
+int plot_status(int script_status) {
+  return script_status == pipeline::kExitUsage || script_status == pipeline::kExitFile ||
+                 script_status == pipeline::kExitResource
+             ? script_status
+             : pipeline::kExitRunFailed;
+}
 
 void add_plot_command(CLI::App* app) {
   auto o = std::make_shared<PlotOptions>();
@@ -54,6 +86,7 @@ void add_plot_command(CLI::App* app) {
       "  gcsim plot --sweep sweep.csv --out plots/\n"
       "  gcsim validate --config configs/gc-powerplus-calibrated.toml --csv v.csv && gcsim plot --calibration v.csv");
   cmd->callback([o] {
+    check_plot_inputs(*o);
     std::vector<std::string> args;
     if (!o->trace.empty()) args.push_back(o->trace);
     args.insert(args.end(), {"--out", o->out});
@@ -66,7 +99,7 @@ void add_plot_command(CLI::App* app) {
     if (!o->title.empty()) args.insert(args.end(), {"--title", o->title});
     if (!o->only.empty()) args.insert(args.end(), {"--only", o->only});
     const int status = run_plot_script(args);
-    if (status != 0) throw ExitStatus{status};
+    if (status != 0) throw ExitStatus{plot_status(status)};
   });
 }
 

@@ -1,5 +1,48 @@
-"""The one exception the plotting code raises for bad input; plot_trace.py prints it without a traceback."""
+"""The exceptions the plotting code raises for bad input; plot_trace.py prints them without a traceback.
+
+PlotError: an input file cannot be read or is malformed (gcsim's exit status 3). UsageError: an
+option is wrong (status 2). `reads_file` makes a reader's unexpected exceptions on malformed data
+(a bad encoding, a short row, a huge field or number) a PlotError naming the file."""
+import csv
+import functools
 
 
 class PlotError(Exception):
-    """Bad input: the message names the file and says what was expected."""
+    """Bad input file: the message names the file (and the line where known) and says what was expected."""
+
+
+class UsageError(PlotError):
+    """A bad option value or combination: the message names the option."""
+
+
+# What malformed data makes Python's csv, float() and numpy raise; a bug raises something else.
+MALFORMED = (UnicodeError, ValueError, IndexError, KeyError, TypeError, OverflowError, ArithmeticError, csv.Error)
+
+
+def reads_file(what):
+    """Decorates a reader whose first argument is the path: malformed data becomes one PlotError
+    '{path}: not a valid {what} (...)' instead of a traceback."""
+    def decorate(reader):
+        @functools.wraps(reader)
+        def wrapped(path, *args, **kwargs):
+            try:
+                return reader(path, *args, **kwargs)
+            except PlotError:
+                raise
+            except MALFORMED as e:
+                detail = str(e).splitlines()[0][:120] if str(e) else type(e).__name__
+                raise PlotError(f"{path}: not a valid {what} ({detail})") from None
+        return wrapped
+    return decorate
+
+
+def checked_csv_rows(path, lines):
+    """csv.reader over `lines` that names the line of a csv error (e.g. a field over the limit)."""
+    reader = csv.reader(lines)
+    rows = []
+    try:
+        for row in reader:
+            rows.append(row)
+    except csv.Error as e:
+        raise PlotError(f"{path}:{reader.line_num}: not a CSV line ({e})") from None
+    return rows

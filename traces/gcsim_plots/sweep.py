@@ -10,7 +10,7 @@ import re
 
 import numpy as np
 
-from .errors import PlotError
+from .errors import PlotError, checked_csv_rows, reads_file
 from .style import DPI
 from .thesis_tables import thesis_curve
 
@@ -41,15 +41,19 @@ def number(text):
     text = (text or "").strip()
     if text in ("", "-", "nan", "NaN", "NA"):
         return math.nan
-    return float(text)
+    value = float(text)
+    if not math.isfinite(value) or abs(value) > 1e100:  # a plot axis cannot hold it
+        raise ValueError(f"{text!r} is not a finite number of plausible size")
+    return value
 
 
+@reads_file("sweep CSV")
 def read_sweep(path):
     if not os.path.exists(path):
         raise PlotError(f"{path}: no such file (expected a sweep CSV from gcsim sweep radiosity|raytrace)")
     try:
         with open(path, newline="", encoding="utf-8", errors="replace") as f:
-            rows = list(csv.reader(line for line in f if line.strip() and not line.startswith("#")))
+            rows = checked_csv_rows(path, (line for line in f if line.strip() and not line.startswith("#")))
     except OSError as e:
         raise PlotError(f"{path}: cannot read: {e.strerror}")
     if not rows:

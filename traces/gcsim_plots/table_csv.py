@@ -2,10 +2,12 @@
 rows as dicts, with the expected columns checked and bad cells reported as PlotError."""
 
 import csv
+import math
 
-from gcsim_plots.errors import PlotError
+from gcsim_plots.errors import PlotError, reads_file
 
 
+@reads_file("table CSV")
 def read_rows(path, columns):
     try:
         with open(path, newline="") as f:
@@ -24,6 +26,9 @@ def read_rows(path, columns):
 
 def number(row, key, path, line):
     try:
-        return float(row[key])
-    except (TypeError, ValueError):
-        raise PlotError(f"{path}:{line}: column {key!r} is {row[key]!r}, not a number")
+        value = float(row[key])
+    except (TypeError, ValueError, KeyError):
+        raise PlotError(f"{path}:{line}: column {key!r} is {str(row.get(key))[:40]!r}, not a number") from None
+    if not math.isfinite(value) or abs(value) > 1e100:
+        raise PlotError(f"{path}:{line}: column {key!r} is {row[key][:40]!r}, not a finite number of plausible size")
+    return value

@@ -8,7 +8,7 @@ import warnings
 
 import numpy as np
 
-from .errors import PlotError
+from .errors import PlotError, UsageError, reads_file
 from .style import time_unit
 
 KINDS = ("compute", "send", "recv", "wait", "connect", "link", "message")
@@ -88,6 +88,7 @@ def machine_of(csv):
     return ""
 
 
+@reads_file("gcsim trace CSV")
 def load_trace(path):
     csv = csv_path_for(path)
     if not os.path.exists(csv):
@@ -109,6 +110,10 @@ def load_trace(path):
     if second not in (COLUMNS, COLUMNS_WITHOUT_THREAD):
         raise PlotError(f"{csv}: expected the column line '{COLUMNS}', found {second[:60]!r}")
     level, processors, width, height = m.group(1), int(m.group(2)), int(m.group(3)), int(m.group(4))
+    # The bounds gcsim's own trace reader (machine/trace_csv.cpp) holds a header to.
+    if not 1 <= processors <= 1 << 20 or not 1 <= width * height <= 1 << 24 or width < 1 or height < 1:
+        raise PlotError(f"{csv}:1: {processors} processors on a {width}x{height} mesh; expected 1..{1 << 20} "
+                        f"processors on at most {1 << 24} nodes")
     wiring = INTERCONNECT.search(first)
     interconnect = wiring.group(1) if wiring else "mesh"
     if not rest.strip():
@@ -131,10 +136,22 @@ def load_trace(path):
         row = int(np.flatnonzero(kind < 0)[0])
         raise PlotError(f"{csv}:{row + 3}: unknown record kind (expected one of {', '.join(KINDS)})")
     numbers = table[:, 1:]
+    check_records(csv, numbers, processors)
     thread = table[:, 7].astype(np.int32) if table.shape[1] > 7 else np.zeros(len(table), dtype=np.int32)
     return Trace(csv, level, processors, width, height, kind, numbers[:, 0].astype(np.int32),
                  numbers[:, 1].astype(np.int32), numbers[:, 2].astype(np.float64), numbers[:, 3].astype(np.float64),
                  numbers[:, 4], numbers[:, 5], thread, interconnect)
+
+
+def check_records(csv, numbers, processors):
+    """Processors and peers inside the machine, intervals that do not end before they start."""
+    proc, peer, start, end = numbers[:, 0], numbers[:, 1], numbers[:, 2], numbers[:, 3]
+    bad = (proc < 0) | (proc >= processors) | (peer < -1) | (peer >= processors) | (start < 0) | (end < start)
+    if bad.any():
+        row = int(np.flatnonzero(bad)[0])
+        raise PlotError(f"{csv}:{row + 3}: record outside the trace (proc {proc[row]}, peer {peer[row]}, "
+                        f"{start[row]}..{end[row]} ps; expected processors 0-{processors - 1}, peer -1 or a "
+                        "processor, and end_ps >= start_ps >= 0)")
 
 
 def parse_procs(spec, processors, where):
@@ -146,12 +163,12 @@ def parse_procs(spec, processors, where):
         part = part.strip()
         m = re.fullmatch(r"(\d+)(?:-(\d+))?", part)
         if not m:
-            raise PlotError(f"--procs {spec!r}: expected processor numbers and ranges such as 0-7,12 "
+            raise UsageError(f"--procs {spec!r}: expected processor numbers and ranges such as 0-7,12 "
                             f"(the trace {where} has processors 0-{processors - 1})")
         lo = int(m.group(1))
         hi = int(m.group(2)) if m.group(2) else lo
         if lo > hi or hi >= processors:
-            raise PlotError(f"--procs {spec!r}: {part} is outside 0-{processors - 1}, "
+            raise UsageError(f"--procs {spec!r}: {part} is outside 0-{processors - 1}, "
                             f"the processors of the trace {where}")
         chosen.extend(range(lo, hi + 1))
     return np.unique(np.array(chosen, dtype=np.int64))
@@ -167,10 +184,10 @@ class Window:
         if self.t1 <= self.t0:
             if from_ms is None and to_ms is None:
                 raise PlotError(f"{trace.path}: every record has zero length; nothing to plot")
-            raise PlotError(f"--from-ms {self.t0:g} --to-ms {self.t1:g}: the window is empty "
+            raise UsageError(f"--from-ms {self.t0:g} --to-ms {self.t1:g}: the window is empty "
                             f"(the trace {trace.path} spans {span0:g} to {span1:g} ms)")
         if self.t0 >= span1 or self.t1 <= span0:
-            raise PlotError(f"--from-ms {self.t0:g} --to-ms {self.t1:g}: no records in that window "
+            raise UsageError(f"--from-ms {self.t0:g} --to-ms {self.t1:g}: no records in that window "
                             f"(the trace {trace.path} spans {span0:g} to {span1:g} ms)")
         self.procs = parse_procs(procs_spec, trace.processors, trace.path)
         self.subset = procs_spec is not None and procs_spec != ""
