@@ -13,6 +13,7 @@
 #include "apps/cli/interrupt_signals.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/option_checks.hpp"
+#include "apps/pipeline/shared_files.hpp"
 #include "apps/pipeline/app_registry.hpp"
 #include "apps/pipeline/version.hpp"
 
@@ -93,6 +94,7 @@ void declare_commands(CLI::App* app) {
   add_help_command(app);
   summarize_descriptions(app);
   pipeline::reject_non_finite_numbers(app);
+  pipeline::refuse_shared_files(app);
   // Verbs that no application or command family filled in are hidden rather than offered empty.
   for (CLI::App* verb : {g.run, g.sweep, g.table, g.accuracy, g.bench, g.scene}) {
     if (verb->get_subcommands({}).empty()) app->remove_subcommand(verb);
