@@ -3,8 +3,11 @@
 #include <cmath>
 #include <fstream>
 #include <set>
+#include <tuple>
+#include <utility>
 #include <sstream>
 
+#include <fmt/format.h>
 #include <toml++/toml.h>
 
 #include "machine/builtin_machines.hpp"
@@ -96,6 +99,18 @@ class Reader {
     return static_cast<int>(i->get());
   }
 
+  // [width, height]: two integers in [1, 2^24], checked as 64-bit before narrowing (4294967298
+  // would wrap to 2). `message` says what was expected.
+  std::pair<int, int> positive_pair(const toml::node* n, const std::string& message) const {
+    constexpr std::int64_t kMax = std::int64_t(1) << 24;
+    const toml::array* a = n ? n->as_array() : nullptr;
+    if (!a || a->size() != 2 || !a->get(0)->is_integer() || !a->get(1)->is_integer()) fail(n, message);
+    const std::int64_t w = a->get(0)->as_integer()->get(), h = a->get(1)->as_integer()->get();
+    if (w < 1 || h < 1 || w > kMax || h > kMax)
+      fail(n, message + fmt::format(" (found [{}, {}]; each at most {})", w, h, kMax));
+    return {int(w), int(h)};
+  }
+
   std::string string(const toml::table& t, std::string_view key, const std::string& where,
                      std::optional<std::string> fallback = std::nullopt) const {
     const toml::node* n = t.get(key);
@@ -143,11 +158,10 @@ void read_shapes(const Reader& r, const toml::table& topo, MachineConfig& c) {
       if (used != k.str().size()) n = 0;
     } catch (const std::exception&) {
     }
-    const toml::array* a = v.as_array();
-    if (n < 1 || !a || a->size() != 2 || !a->get(0)->is_integer() || !a->get(1)->is_integer()) {
-      r.fail(&v, "[topology.shapes] entries are N = [width, height], e.g. 8 = [8, 1]");
-    }
-    const MeshShape s{static_cast<int>(a->get(0)->as_integer()->get()), static_cast<int>(a->get(1)->as_integer()->get())};
+    const std::string expected = "[topology.shapes] entries are N = [width, height], e.g. 8 = [8, 1]";
+    if (n < 1) r.fail(&v, expected);
+    const auto [width, height] = r.positive_pair(&v, expected);
+    const MeshShape s{width, height};
     if (s.width < 1 || s.height < 1 || std::int64_t(s.width) * s.height != n || s.width > c.mesh_width ||
         s.height > c.mesh_height) {
       r.fail(&v, "[topology.shapes] " + std::to_string(n) + " = [" + std::to_string(s.width) + ", " +
@@ -175,14 +189,11 @@ void read_connect_model(const Reader& r, const toml::table& net, MachineConfig& 
   else if (model != "parallel")
     r.fail(net.get("connect_model"), "'connect_model' in [network] is '" + model + "'; expected \"parallel\", \"serialized\", \"servers\" or \"route\"");
   if (const toml::node* n = net.get("connect_server_block")) {
-    const toml::array* a = n->as_array();
-    if (!a || a->size() != 2 || !a->get(0)->is_integer() || !a->get(1)->is_integer() ||
-        a->get(0)->as_integer()->get() < 1 || a->get(1)->as_integer()->get() < 1) {
-      r.fail(n, "'connect_server_block' in [network] must be [width, height], two positive integers");
-    }
+    const auto [width, height] =
+        r.positive_pair(n, "'connect_server_block' in [network] must be [width, height], two positive integers");
     if (c.connect_model != ConnectModel::servers) r.fail(n, "'connect_server_block' needs connect_model = \"servers\"");
-    c.connect_block_width = static_cast<int>(a->get(0)->as_integer()->get());
-    c.connect_block_height = static_cast<int>(a->get(1)->as_integer()->get());
+    c.connect_block_width = width;
+    c.connect_block_height = height;
   }
 }
 
@@ -219,12 +230,8 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
   }
   const toml::node* mesh = topo.get("mesh");
   if (!mesh) r.fail(&topo, "missing key 'mesh' in [topology] (expected mesh = [width, height])");
-  const toml::array* m = mesh->as_array();
-  if (!m || m->size() != 2 || !m->get(0)->is_integer() || !m->get(1)->is_integer()) {
-    r.fail(mesh, "'mesh' in [topology] must be [width, height], two positive integers");
-  }
-  c.mesh_width = static_cast<int>(m->get(0)->as_integer()->get());
-  c.mesh_height = static_cast<int>(m->get(1)->as_integer()->get());
+  std::tie(c.mesh_width, c.mesh_height) =
+      r.positive_pair(mesh, "'mesh' in [topology] must be [width, height], two positive integers");
   if (c.mesh_width < 1 || c.mesh_height < 1) r.fail(mesh, "'mesh' in [topology] must be [width, height], two positive integers");
   if (std::int64_t(c.mesh_width) * c.mesh_height != c.nodes) {
     r.fail(mesh, "mesh " + std::to_string(c.mesh_width) + "x" + std::to_string(c.mesh_height) + " has " +

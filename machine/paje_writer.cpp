@@ -10,6 +10,7 @@
 
 #include "machine/interconnect.hpp"
 #include "machine/interconnect_registry.hpp"
+#include "machine/output_file.hpp"
 
 namespace gcsim::machine {
 
@@ -95,9 +96,7 @@ bool is_state(TraceKind k) { return k != TraceKind::link && k != TraceKind::mess
 
 class PajeFile {
  public:
-  explicit PajeFile(const std::string& path) : f_(std::fopen(path.c_str(), "wb"), &std::fclose) {
-    if (!f_) throw std::runtime_error("cannot write Paje trace '" + path + "'");
-  }
+  explicit PajeFile(const std::string& path) { f_.open(path, "Paje trace"); }
   template <class... Args>
   void line(fmt::format_string<Args...> format, Args&&... args) {
     fmt::format_to(std::back_inserter(buffer_), format, std::forward<Args>(args)...);
@@ -106,12 +105,16 @@ class PajeFile {
   }
   void raw(const char* text) { buffer_ += text; }
   void flush() {
-    std::fwrite(buffer_.data(), 1, buffer_.size(), f_.get());
+    f_.write(buffer_);
     buffer_.clear();
+  }
+  void close() {
+    flush();
+    f_.close();  // throws OutputFileError for a write that failed
   }
 
  private:
-  std::unique_ptr<std::FILE, decltype(&std::fclose)> f_;
+  CheckedFile f_;
   std::string buffer_;
 };
 
@@ -229,7 +232,7 @@ void write_paje(const TraceCsv& trace, const std::string& path) {
   create_containers(out, trace, *net, containers);
   for (const TimedEvent& e : timed_events(trace, *net, containers)) write_event(out, e, trace.records[e.record]);
   close_containers(out, trace, *net, containers);
-  out.flush();
+  out.close();
 }
 
 }  // namespace gcsim::machine

@@ -69,10 +69,8 @@ TraceWriter::TraceWriter(const TraceOptions& options, int processors, const Inte
   if (csv_path_ == json_path_ || paje_path_ == json_path_) {
     throw std::runtime_error("trace file '" + json_path_ + "': name the Chrome JSON (FILE.json); FILE.csv and FILE.paje go beside it");
   }
-  json_ = std::fopen(json_path_.c_str(), "wb");
-  if (!json_) throw std::runtime_error("cannot write trace file '" + json_path_ + "': " + std::strerror(errno));
-  csv_ = std::fopen(csv_path_.c_str(), "wb");
-  if (!csv_) throw std::runtime_error("cannot write trace file '" + csv_path_ + "': " + std::strerror(errno));
+  json_.open(json_path_, "trace file");
+  csv_.open(csv_path_, "trace file");
   // Array form of the Chrome trace-event format: the closing bracket is optional, so the file
   // is readable at every record boundary. pid 0 holds one track (tid) per processor.
   json_buffer_ += "[\n";
@@ -181,26 +179,24 @@ void TraceWriter::name_thread_track(int proc, int thread) {
 }
 
 void TraceWriter::flush_buffers() {
-  if (json_) {
-    std::fwrite(json_buffer_.data(), 1, json_buffer_.size(), json_);
-    std::fflush(json_);
-  }
-  if (csv_) {
-    std::fwrite(csv_buffer_.data(), 1, csv_buffer_.size(), csv_);
-    std::fflush(csv_);
-  }
+  json_.write(json_buffer_);
+  csv_.write(csv_buffer_);
   json_buffer_.clear();
   csv_buffer_.clear();
 }
 
 void TraceWriter::close() {
-  if (!json_) return;
+  if (!json_.is_open()) return;
   json_buffer_ += "\n]\n";
   flush_buffers();
-  std::fclose(json_);
-  std::fclose(csv_);
-  json_ = nullptr;
-  csv_ = nullptr;
+  const bool csv_complete = !csv_.failed();
+  try {
+    json_.close();
+  } catch (...) {
+    if (csv_complete) csv_.close();  // the CSV is kept, whole, when only the JSON failed
+    throw;
+  }
+  csv_.close();
   // Paje needs time order, which only the whole trace has: it is made from the finished CSV.
   write_paje(read_trace_csv(csv_path_), paje_path_);
 }

@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "machine/interconnect.hpp"
+#include "machine/output_file.hpp"
 #include "machine/sim_time.hpp"
 
 namespace gcsim::machine {
@@ -56,7 +57,7 @@ class TraceWriter {
   TraceWriter& operator=(const TraceWriter&) = delete;
 
   // Whether records are kept: a trace file is open and the level is above summary.
-  bool enabled() const { return json_ != nullptr && level_ != TraceLevel::summary; }
+  bool enabled() const { return json_.is_open() && level_ != TraceLevel::summary; }
   TraceLevel level() const { return level_; }
   void record(const TraceRecord& r);
   void close();  // writes the closing bracket, then the Paje file
@@ -65,8 +66,7 @@ class TraceWriter {
   void flush_buffers();
   TraceLevel level_;
   std::string json_path_, csv_path_, paje_path_;
-  std::FILE* json_ = nullptr;
-  std::FILE* csv_ = nullptr;
+  CheckedFile json_, csv_;  // a failed write is reported by close()
   void name_thread_track(int proc, int thread);
   int thread_track(int proc, int thread) const;  // Chrome tid
   static std::int64_t sort_index(int proc, int thread) { return std::int64_t(proc) * 65536 + thread; }

@@ -11,6 +11,7 @@
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/resource_check.hpp"
 #include "machine/input_file.hpp"
+#include "machine/output_file.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/host/interruption.hpp"
 #include "parix/sim/simulated_runtime.hpp"
@@ -52,6 +53,8 @@ int report_failure(std::exception_ptr e) {
     print_error("out of host memory");
     return kExitResource;
   } catch (const FileError& x) {
+    return fail(x, kExitFile);
+  } catch (const machine::OutputFileError& x) {  // a write or close failed (a full disk, /dev/full)
     return fail(x, kExitFile);
   } catch (const machine::InputFileError& x) {  // a trace's CSV, a run JSON
     return fail(x, kExitFile);

@@ -12,6 +12,7 @@
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/option_checks.hpp"
 #include "apps/pipeline/option_vocabulary.hpp"
+#include "apps/pipeline/resource_check.hpp"
 #include "apps/programs/ring_program.hpp"
 #include "parix/backend.hpp"
 #include "machine/interconnect.hpp"
@@ -181,6 +182,13 @@ void add_bench_ring(CommandGroups& g) {
     const parix::RunOptions so = run_options(o->machine, kWholeMachine);
     const int iterations = o->iterations;
     const std::int64_t bytes = o->size;
+    // Each node holds the message it sends, the one it receives and the runtime's copy in flight.
+    const parix::SimulationOptions& sim = so.simulation;
+    pipeline::check_node_memory({{"ring message", bytes}, {"received message", bytes}, {"message in flight", bytes}}, 0,
+                                sim.config.memory_bytes, sim.memory_limit);
+    pipeline::check_host_memory(pipeline::saturating_product(3 * std::int64_t(sim.config.nodes), bytes),
+                                fmt::format("a ring of {} per message on {} nodes", machine::format_bytes(bytes),
+                                            sim.config.nodes));
     parix::RunResult r = pipeline::run_program(so, [&](parix::Processor& p) { ring_exchange(p, iterations, bytes); }, o->machine);
     const double messages = static_cast<double>(r.total_messages());
     fmt::print("ring of {} processors, {} iterations of {} bytes: {} messages\n", r.nodes, iterations, bytes, r.total_messages());

@@ -11,6 +11,7 @@
 
 #include "apps/cli/trace_plot_runner.hpp"
 #include "machine/input_file.hpp"
+#include "machine/output_file.hpp"
 
 namespace gcsim::cli {
 
@@ -284,11 +285,11 @@ std::string trace_section(const std::string& trace, const ReportOptions& o) {
 std::string write_run_report(const ReportOptions& o) {
   const json j = read_run_json(o.run_json);
   if (!o.trace.empty() && !fs::exists(o.trace) && !fs::exists(fs::path(o.trace).replace_extension(".csv"))) {
-    throw std::runtime_error("--trace " + o.trace + ": no such file (expected FILE.json written by --trace, with FILE.csv beside it)");
+    throw machine::InputFileError("--trace " + o.trace + ": no such file (expected FILE.json written by --trace, with FILE.csv beside it)");
   }
   std::error_code ec;
   fs::create_directories(o.out_dir, ec);
-  if (ec) throw std::runtime_error("--out " + o.out_dir + ": cannot create the directory: " + ec.message());
+  if (ec) throw machine::OutputFileError("--out " + o.out_dir + ": cannot create the directory: " + ec.message());
 
   const std::string trace = trace_of(j, o);
   const std::string traced = trace_section(trace, o);  // draws the plots, whose shares lead the page
@@ -313,9 +314,7 @@ std::string write_run_report(const ReportOptions& o) {
        "Simulated times are the modelled machine's; wall times are the host's.</small></p>\n</body></html>\n";
 
   const std::string index = (fs::path(o.out_dir) / "index.html").string();
-  std::ofstream out(index);
-  if (!out) throw std::runtime_error("cannot write " + index);
-  out << h.str();
+  machine::write_text_file(index, h.str(), "report page");
   return index;
 }
 

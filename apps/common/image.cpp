@@ -1,12 +1,15 @@
 #include "apps/common/image.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
 
 #include <png.h>
+
+#include "machine/output_file.hpp"
 
 namespace gcsim::apps {
 namespace {
@@ -26,8 +29,9 @@ void write_png(const std::filesystem::path& file, const Image& image, float expo
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png_create_info_struct(png);
   if (!png || !info || setjmp(png_jmpbuf(png))) {
+    const int err = errno;  // libpng stops here on a short write (a full disk) too
     png_destroy_write_struct(&png, &info);
-    throw std::runtime_error("libpng failed writing '" + file.string() + "'");
+    throw machine::write_error("image", file.string(), err);
   }
   png_init_io(png, fp.get());
   png_set_IHDR(png, info, image.width(), image.height(), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
@@ -46,6 +50,11 @@ void write_png(const std::filesystem::path& file, const Image& image, float expo
   }
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
+  errno = 0;
+  const bool written = std::fflush(fp.get()) == 0 && !std::ferror(fp.get());
+  const int err = errno;
+  const bool closed = std::fclose(fp.release()) == 0;
+  if (!written || !closed) throw machine::write_error("image", file.string(), err ? err : errno);
 }
 
 }  // namespace gcsim::apps

@@ -1,5 +1,6 @@
 #include "apps/pipeline/failure.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -21,8 +22,30 @@ std::string exit_code_table() {
          "  130  interrupted (SIGINT or SIGTERM): finished results written, marked \"interrupted\"";
 }
 
+namespace {
+
+// Messages echo what they were given (an argument, a file's field); a word of a megabyte would
+// be echoed whole. Words longer than kLongWord keep their first kKeptChars, then say how long.
+std::string shorten_long_words(std::string_view message) {
+  constexpr std::size_t kLongWord = 120, kKeptChars = 80;
+  std::string out;
+  std::size_t i = 0;
+  while (i < message.size()) {
+    const std::size_t end = std::min(message.find_first_of(" \n\t", i), message.size());
+    if (end - i > kLongWord)
+      out += fmt::format("{}... ({} characters)", message.substr(i, kKeptChars), end - i);
+    else
+      out += message.substr(i, end - i);
+    if (end < message.size()) out += message[end];
+    i = end + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
 void print_error(std::string_view message) {
-  std::string line = fmt::format("gcsim: error: {}", message);
+  std::string line = fmt::format("gcsim: error: {}", shorten_long_words(message));
   if (line.empty() || line.back() != '\n') line += '\n';
   std::fputs(line.c_str(), stderr);
   std::fflush(stderr);

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "machine/machine_config.hpp"
+#include "machine/output_file.hpp"
 #include "machine/network_model.hpp"
 #include "machine/node_memory.hpp"
 #include "machine/trace.hpp"
@@ -68,6 +69,15 @@ parix::SimulationOptions simulation_options(const MachineOptions& o, int default
   const int n = o.nodes > 0 ? o.nodes : std::min(default_nodes, s.config.nodes);
   std::optional<machine::MeshShape> shape;
   if (!o.shape.empty()) shape = machine::parse_mesh_shape(o.shape);
+  // A --shape that cannot hold the nodes is the command line's mistake, not the machine file's.
+  if (shape && std::int64_t(shape->width) * shape->height != n)
+    throw std::invalid_argument(fmt::format("--shape {}: {}x{} = {} nodes, but the run has {} (--nodes); expected width * "
+                                            "height == nodes",
+                                            o.shape, shape->width, shape->height,
+                                            std::int64_t(shape->width) * shape->height, n));
+  if (shape && (shape->width > s.config.mesh_width || shape->height > s.config.mesh_height))
+    throw std::invalid_argument(fmt::format("--shape {}: does not fit in machine '{}', a {}x{} mesh", o.shape,
+                                            s.config.name, s.config.mesh_width, s.config.mesh_height));
   s.config = machine::with_nodes(s.config, n, shape);
   if (!o.model.empty()) s.config.network_model = o.model;
   s.memory_limit = machine::parse_memory_limit(o.memory_limit);
@@ -123,9 +133,7 @@ parix::RunResult run_program(const parix::RunOptions& options, const parix::Prog
 }
 
 void write_json_file(const std::string& path, const nlohmann::json& j) {
-  std::ofstream out(path);
-  if (!out) throw FileError("cannot write JSON file '" + path + "'");
-  out << j.dump(2) << "\n";
+  machine::write_text_file(path, j.dump(2) + "\n", "JSON file");
 }
 
 void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohmann::json& extra) {

@@ -26,6 +26,22 @@ bool non_finite_number(const std::string& s) {
   return !std::isfinite(x) || (errno == ERANGE && std::abs(x) > 1);
 }
 
+// CLI11 reads integers with strtoll's base 0: "010" is 8 and "0x10" 16. gcsim's numbers are
+// decimal: on a numeric option, leading zeros are dropped ("010" is 10, as --nodes reads it) and
+// an 0x, 0b or 0o prefix is refused.
+std::string check_decimal(std::string& value) {
+  std::size_t i = value.find_first_not_of(" \t");
+  if (i == std::string::npos) return "";
+  if (value[i] == '+' || value[i] == '-') ++i;
+  if (i + 1 >= value.size() || value[i] != '0') return "";
+  const char next = char(std::tolower(static_cast<unsigned char>(value[i + 1])));
+  if (next == 'x' || next == 'b' || next == 'o')
+    return "'" + value + "': numbers are decimal (no 0x, 0b or 0o prefix)";
+  const bool digits = std::all_of(value.begin() + long(i), value.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+  if (digits) value.erase(i, std::min(value.find_first_not_of('0', i), value.size() - 1) - i);
+  return "";
+}
+
 std::string check_finite(std::string& value) {
   std::size_t start = 0;
   for (;;) {  // each item of a comma-separated list
@@ -37,11 +53,27 @@ std::string check_finite(std::string& value) {
   }
 }
 
+// CLI11 assigns an empty value to a number as 0 (or as "not given" to a std::optional), which
+// some options read as "the default": an explicit empty number is refused instead.
+std::string check_not_empty(std::string& value) {
+  return value.find_first_not_of(" \t") == std::string::npos ? "an empty value is not a number" : "";
+}
+
+bool takes_numbers(const CLI::Option& o) {
+  const std::string type = o.get_type_name();
+  return type.rfind("INT", 0) == 0 || type.rfind("UINT", 0) == 0 || type.rfind("FLOAT", 0) == 0 ||
+         type.rfind("NUMBER", 0) == 0 || type.rfind("SIZE", 0) == 0;
+}
+
 }  // namespace
 
 void reject_non_finite_numbers(CLI::App* app) {
-  for (CLI::Option* o : app->get_options())
+  for (CLI::Option* o : app->get_options()) {
     if (o->get_type_size() != 0) o->check(CLI::Validator(check_finite, "", "FINITE"));  // not on flags
+    if (o->get_type_size() == 0 || !takes_numbers(*o)) continue;
+    o->transform(CLI::Validator(check_not_empty, "", "NONEMPTY"));  // first: before any range check
+    o->transform(CLI::Validator(check_decimal, "", "DECIMAL"));  // a transform: it rewrites "010" as "10"
+  }
   for (CLI::App* sub : app->get_subcommands({})) reject_non_finite_numbers(sub);
 }
 

@@ -12,6 +12,7 @@
 #include "apps/common/ordered_parallel.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/list_parsing.hpp"
+#include "machine/output_file.hpp"
 #include "apps/pipeline/machine_options.hpp"
 #include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/pipeline/progress.hpp"
@@ -141,6 +142,7 @@ void run_sweep(const SweepFlags& f, const Experiment& e, const std::string& app)
     write_json_file(f.json, table->json_document(std::move(writer.rows)));
     if (table->announce_files()) fmt::print("json {}\n", f.json);
   }
+  machine::close_checked(csv, f.csv, "CSV file");  // after the JSON, which a full CSV disk must not cost
   if (!writer.missed.empty()) {
     std::string why;
     for (const std::string& m : writer.missed) why += "\n  " + m;

@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "machine/output_file.hpp"
+
 namespace gcsim::radiosity {
 
 namespace {
@@ -56,8 +58,7 @@ void write_radiosities(const std::string& path, const Scene& scene, const std::v
     write_radiosities_json(out, scene, b);
   else
     write_radiosities_csv(out, scene, b);
-  out.flush();
-  if (!out) throw std::runtime_error(fmt::format("cannot write the radiosities to '{}'", path));
+  machine::close_checked(out, path, "radiosities file");
 }
 
 }  // namespace gcsim::radiosity

@@ -1,6 +1,10 @@
 // Registers the participating-media renderer (Tokuyoshi and Maruyama) with the gcsim pipeline:
 // `gcsim run media` and `gcsim sweep media`.
+#include <algorithm>
+#include <climits>
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +17,7 @@
 #include "apps/common/tone_map.hpp"
 #include "apps/pipeline/app_registry.hpp"
 #include "apps/pipeline/option_checks.hpp"
+#include "apps/pipeline/resource_check.hpp"
 
 namespace gcsim::media::app {
 namespace {
@@ -25,9 +30,10 @@ struct MediaFlags {
   double alpha = MarchSettings{}.defensive_alpha;
   double max_voxel_optical_depth = MarchSettings{}.max_voxel_optical_depth;
   std::string rounding = "at-least-one";
-  long photons = 0;  // 0: the scene's
-  int k = 0;         // 0: the scene's
-  int width = 0, height = 0;
+  // Not given: the scene's. A given value is used as given or refused, never read as "default".
+  std::optional<long> photons;
+  std::optional<int> k;
+  std::optional<int> width, height;
   unsigned long long seed = 1;
   std::string image;
   double exposure = 0.0;  // 0: auto (tone_map.hpp)
@@ -44,10 +50,10 @@ class MediaExperiment final : public pipeline::Experiment {
   explicit MediaExperiment(const MediaFlags& f)
       : flags_(f), scene_(scene_by_name(f.scene)), settings_{*parse_estimator(f.estimator), f.b, f.b_histogram, f.alpha, f.rounding == "at-least-one",
                                                                    f.max_voxel_optical_depth} {
-    if (f.photons > 0) scene_.photons_emitted = static_cast<std::size_t>(f.photons);
-    if (f.k > 0) scene_.k_nearest = static_cast<std::size_t>(f.k);
-    if (f.width > 0) scene_.image.width = f.width;
-    if (f.height > 0) scene_.image.height = f.height;
+    if (f.photons) scene_.photons_emitted = static_cast<std::size_t>(*f.photons);
+    if (f.k) scene_.k_nearest = static_cast<std::size_t>(*f.k);
+    if (f.width) scene_.image.width = *f.width;
+    if (f.height) scene_.image.height = *f.height;
     scene_.seed = f.seed;
   }
 
@@ -66,6 +72,23 @@ class MediaExperiment final : public pipeline::Experiment {
   void after_run(pipeline::Outcome& out) const override {
     auto& o = pipeline::outcome_as<MediaOutcome>(out);
     for (const RenderCounters& c : o.per_node) o.result.counters.add(c);
+  }
+  // Every node holds the all-gathered photon maps; node 0 the image; a segment draws b samples per
+  // unit of S. Checked before anything is allocated (resource_check.hpp).
+  std::vector<pipeline::MemoryNeed> node_memory(int, int* processor) const override {
+    *processor = 0;
+    const std::int64_t pixels = pipeline::saturating_product(scene_.image.width, scene_.image.height);
+    const double samples = std::max(flags_.b, flags_.b_histogram) * double(sizeof(double));
+    return {{"photon maps", pipeline::saturating_product(std::int64_t(scene_.photons_emitted), sizeof(Photon))},
+            {"image", pipeline::saturating_product(pixels, sizeof(glm::vec3))},
+            {"march samples of a segment with S = 1 (--b)", samples >= 9e18 ? INT64_MAX : std::int64_t(samples)}};
+  }
+  std::int64_t host_memory(int nodes) const override {
+    std::int64_t bytes = 0;
+    int processor = 0;
+    for (const pipeline::MemoryNeed& n : node_memory(nodes, &processor))
+      bytes = n.bytes > INT64_MAX - bytes ? INT64_MAX : bytes + n.bytes;
+    return pipeline::saturating_product(bytes, std::max(1, nodes));
   }
   void print_setup(int nodes) const override { fmt::print("media     {}, {} nodes\n", setup_line(), nodes); }
   void report(const pipeline::Outcome& out, nlohmann::json& extra) const override;
@@ -130,8 +153,11 @@ pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) 
   cmd.add_option("--estimator", f->estimator, "uniform, transmittance, radiance, equiangular, mis or grid")
       ->check(CLI::IsMember({"uniform", "transmittance", "radiance", "equiangular", "mis", "grid"}))
       ->capture_default_str();
-  cmd.add_option("--b", f->b, "samples per unit of the segment integral S (M = b S, eq. 21)")->capture_default_str();
-  cmd.add_option("--b-histogram", f->b_histogram, "radiance estimator: M = b_h S_h (eq. 22) when > 0");
+  cmd.add_option("--b", f->b, "samples per unit of the segment integral S (M = b S, eq. 21)")
+      ->check(pipeline::positive_number())
+      ->capture_default_str();
+  cmd.add_option("--b-histogram", f->b_histogram, "radiance estimator: M = b_h S_h (eq. 22) when > 0")
+      ->check(CLI::NonNegativeNumber);
   cmd.add_option("--alpha", f->alpha, "transmittance share of the defensive radiance density (0: the paper's pure density, biased where h <= 0)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
@@ -144,10 +170,10 @@ pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) 
                  "M < 1: one sample (at-least-one, notes A12) or one with probability M and weight 1/M (stochastic)")
       ->check(CLI::IsMember({"at-least-one", "stochastic"}))
       ->capture_default_str();
-  cmd.add_option("--photons", f->photons, "photons emitted (default: the scene's)");
-  cmd.add_option("--k", f->k, "nearest photons per estimate (default: the scene's)");
-  cmd.add_option("--width", f->width, "image width (default: the scene's)");
-  cmd.add_option("--height", f->height, "image height (default: the scene's)");
+  cmd.add_option("--photons", f->photons, "photons emitted (default: the scene's)")->check(CLI::PositiveNumber);
+  cmd.add_option("--k", f->k, "nearest photons per estimate (default: the scene's)")->check(CLI::PositiveNumber);
+  cmd.add_option("--width", f->width, "image width (default: the scene's)")->check(CLI::Range(1, 16384));
+  cmd.add_option("--height", f->height, "image height (default: the scene's)")->check(CLI::Range(1, 16384));
   cmd.add_option("--seed", f->seed, "random seed of photons and pixels")->capture_default_str();
   if (verb == pipeline::Verb::run) {
     cmd.add_option("--image", f->image, "Write the image as PNG");

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "apps/common/image.hpp"
+#include "machine/output_file.hpp"
 #include "apps/radiosity/app/radiosity_experiment.hpp"
 #include "apps/radiosity/gauss_seidel.hpp"
 #include "apps/radiosity/gouraud_renderer.hpp"
@@ -43,6 +44,7 @@ void write_steps_csv(const std::string& path, const ParallelOutcome& r) {
     for (std::size_t k = 0; k < s.shooters.size(); ++k) out << (k ? " " : "") << s.shooters[k];
     out << '\n';
   }
+  machine::close_checked(out, path, "CSV file");
 }
 
 double compare_with_gauss_seidel(const Scene& scene, const HemicubeOptions& hemicube, const ParallelOutcome& r) {

@@ -11,6 +11,7 @@
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/option_checks.hpp"
 #include "apps/pipeline/option_vocabulary.hpp"
+#include "apps/pipeline/resource_check.hpp"
 #include "apps/raytrace/raytrace.hpp"
 #include "apps/render/app/render_commands.hpp"
 #include "apps/render/plan_report.hpp"
@@ -116,12 +117,19 @@ void add_plan_command(pipeline::CommandGroups& g) {
       ->check(CLI::Range(0, 1000));
   cmd->add_option("--photons", f->photons, "photons the render will emit (gcsim render --photons)")
       ->capture_default_str()
-      ->check(pipeline::positive_number());
+      ->check(pipeline::positive_number())
+      ->check(CLI::Range(1.0, 2147483647.0));  // the cost model counts them in an int
   cmd->callback([f] {
     pipeline::check_writable(f->machine.json, "--json");  // before the samples' runs
     const scene::SceneDescription d = scene::load_scene(f->scene);
-    const machine::MachineConfig machine = pipeline::simulation_options(f->machine, 1).config;
+    const parix::SimulationOptions simulation = pipeline::simulation_options(f->machine, 1);
+    const machine::MachineConfig& machine = simulation.config;
     const int nodes = f->machine.nodes > 0 ? f->machine.nodes : 1;
+    // The samples render the scene's image on node 0: an [image] too large fails here, at once.
+    const std::int64_t image_bytes =
+        pipeline::saturating_product(pipeline::saturating_product(d.image.width, d.image.height), sizeof(glm::vec3));
+    pipeline::check_node_memory({{"image", image_bytes}}, 0, machine.memory_bytes, simulation.memory_limit);
+    pipeline::check_host_memory(image_bytes, fmt::format("the {}x{} image of {}", d.image.width, d.image.height, f->scene));
     const Plan plan = make_plan(d);
     CostModel model;
     model.photons = int(f->photons);
