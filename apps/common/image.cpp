@@ -26,7 +26,10 @@ std::uint8_t to_srgb8(float linear) {
 void write_png(const std::filesystem::path& file, const Image& image, float exposure) {
   std::unique_ptr<FILE, int (*)(FILE*)> fp(std::fopen(file.c_str(), "wb"), &std::fclose);
   if (!fp) throw std::runtime_error("cannot write image '" + file.string() + "'");
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  // libpng's own handlers print "libpng error: ..." first; gcsim's one message comes from here.
+  png_structp png = png_create_write_struct(
+      PNG_LIBPNG_VER_STRING, nullptr, [](png_structp p, png_const_charp) { png_longjmp(p, 1); },
+      [](png_structp, png_const_charp) {});
   png_infop info = png_create_info_struct(png);
   if (!png || !info || setjmp(png_jmpbuf(png))) {
     const int err = errno;  // libpng stops here on a short write (a full disk) too
