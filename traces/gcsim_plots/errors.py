@@ -5,10 +5,20 @@ option is wrong (status 2). `reads_file` makes a reader's unexpected exceptions 
 (a bad encoding, a short row, a huge field or number) a PlotError naming the file."""
 import csv
 import functools
+import re
+
+
+def shorten_long_words(text, longest=120, kept=80):
+    """Messages echo what they read; a field of megabytes would be echoed whole. Words longer than
+    `longest` keep their first `kept` characters and say how long they were (as gcsim's errors do)."""
+    return re.sub(r"\S{%d,}" % (longest + 1), lambda m: f"{m.group(0)[:kept]}... ({len(m.group(0))} characters)", text)
 
 
 class PlotError(Exception):
     """Bad input file: the message names the file (and the line where known) and says what was expected."""
+
+    def __init__(self, message):
+        super().__init__(shorten_long_words(str(message)))
 
 
 class UsageError(PlotError):
