@@ -39,6 +39,9 @@ def make_inputs(work, source):
         fog = f.read()
     write(os.path.join(work, "huge-image.toml"),
           fog.replace("width = 256", "width = 16384").replace("height = 256", "height = 16384"))
+    placement = "< 1.0 1.0 1.0 >\n< 0.0 0.0 0.0 >\n< 0.0 0.0 0.0 >\nEND_FILE\n"
+    write(os.path.join(work, "zero.wld"), "WORLD zero\n/dev/zero\n" + placement)
+    write(os.path.join(work, "fifo.wld"), "WORLD fifo\nfifo.obj\n" + placement)
     write(os.path.join(work, "overflow.json"), '{"simulated": {"s": 1e309}, "wall": 1}')
 
 
@@ -55,6 +58,8 @@ CASES = [
     (["bcast", "--nodes", "2", "--size", "1KB", "--config", "base_zero.toml"], FILE, "device"),
     (["run", "raytrace", "--scene", "fifo.obj", "--nodes", "1", "--size", "8"], FILE, "FIFO"),
     (["run", "raytrace", "--scene", "random.obj", "--nodes", "1", "--size", "8"], FILE, "device"),
+    (["run", "radiosity", "--scene", "zero.wld", "--nodes", "1"], FILE, "zero.wld:2"),
+    (["run", "radiosity", "--scene", "fifo.wld", "--nodes", "1"], FILE, "FIFO"),
     (["plot", "--sweep", "/dev/zero", "--out", "plots"], FILE, "device"),
     (["plot", "--sweep", "fifo.obj", "--out", "plots"], FILE, "FIFO"),
     (["report", "/dev/urandom", "--out", "report"], FILE, "device"),
