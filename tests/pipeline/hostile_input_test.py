@@ -8,6 +8,7 @@ an output and an input) naming one file must be refused before any work, the inp
 """
 import hashlib
 import os
+import shutil
 import subprocess
 import sys
 
@@ -35,6 +36,10 @@ def make_inputs(work, source):
         os.symlink("/dev/urandom", os.path.join(work, "random.obj"))
     faces = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 4\nf 1 3 4\nf 2 3 4\n" + "f 1 2 3\n" * 500
     write(os.path.join(work, "tetrahedron.obj"), faces)
+    # The example scene with its tetrahedron replaced by the repeated-face one, for gcsim render.
+    scene_dir = os.path.join(work, "repeated")
+    shutil.copytree(os.path.join(source, "scenes"), scene_dir, dirs_exist_ok=True)
+    write(os.path.join(scene_dir, "meshes", "tetrahedron.obj"), faces)
     with open(os.path.join(source, "scenes", "cornell-fog.toml")) as f:
         fog = f.read()
     write(os.path.join(work, "huge-image.toml"),
@@ -51,6 +56,7 @@ CASES = [
     (["bcast", "--nodes", "2", "--size", "1KB", "--config", "deep.toml"], FILE, "deep.toml:1"),
     (["plan", "deep.toml", "--sample-loops", "0"], FILE, "more than 64 parts"),
     (["run", "raytrace", "--scene", "tetrahedron.obj", "--nodes", "1", "--size", "8"], OK, None),
+    (["render", "repeated/example.toml", "--nodes", "2"], OK, None),
     # Hangs and unbounded reads: devices, FIFOs and directories are named as what they are.
     (["bcast", "--nodes", "2", "--size", "1KB", "--config", "/dev/zero"], FILE, "device"),
     (["bcast", "--nodes", "2", "--size", "1KB", "--config", "fifo.obj"], FILE, "FIFO"),
