@@ -5,6 +5,7 @@ option is wrong (status 2). `reads_file` makes a reader's unexpected exceptions 
 (a bad encoding, a short row, a huge field or number) a PlotError naming the file."""
 import csv
 import functools
+import os
 import re
 
 
@@ -35,6 +36,8 @@ def reads_file(what):
     def decorate(reader):
         @functools.wraps(reader)
         def wrapped(path, *args, **kwargs):
+            if os.path.exists(path) and not os.path.isfile(path):  # a FIFO would block, a device never end
+                raise PlotError(f"{path}: is not a regular file (a directory, a device or a FIFO)")
             try:
                 return reader(path, *args, **kwargs)
             except PlotError:

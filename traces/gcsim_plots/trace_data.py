@@ -73,6 +73,8 @@ def machine_of(csv):
     """The machine and network model, from the Chrome JSON beside the CSV: its metadata event
     process_labels (Perfetto shows it on the processors' track group). "" when absent."""
     path = os.path.splitext(csv)[0] + ".json"
+    if not os.path.isfile(path):  # a FIFO or device beside the CSV would block or never end
+        return ""
     try:
         with open(path, "r", encoding="utf-8", errors="replace") as f:
             head = [f.readline() for _ in range(6)]  # it follows the two process events
