@@ -54,7 +54,10 @@ json read_run_json(const std::string& path) {
   try {
     j = json::parse(in.text);
   } catch (const json::exception& e) {  // parse errors and out-of-range numbers such as 1e309
-    throw machine::InputFileError(fmt::format("{}: not JSON ({}); expected the file written by --json", path, e.what()));
+    const std::string why = e.what();     // "[json.exception.parse_error.101] parse error at line 1, ..."
+    const std::size_t tag_end = why.find("] ");
+    throw machine::InputFileError(fmt::format("{}: not JSON ({}); expected the file written by --json", path,
+                                              tag_end == std::string::npos ? why : why.substr(tag_end + 2)));
   }
   if (!j.is_object() || !j.contains("simulated") || !j["simulated"].is_object() || !j.contains("wall")) {
     throw machine::InputFileError(path + ": not a gcsim run JSON (expected the keys \"simulated\" and \"wall\" that --json writes)");
