@@ -290,7 +290,7 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
 
 MachineConfig load_machine_config(const std::filesystem::path& file) {
   InputFile in = read_input_file(file, kMaxTomlFileBytes);
-  if (!in.ok()) throw ConfigError(file.string(), 0, "cannot read the machine file: it " + in.error);
+  if (!in.ok()) throw ConfigError(file.string(), 0, "cannot open the machine file: it " + in.error);
   return parse_machine_config(in.text, file.string());
 }
 

@@ -37,7 +37,7 @@ MachineFile::MachineFile(const std::filesystem::path& file) {
   }
   base_ = machine::load_machine_config(file);  // first: it refuses what is not a regular file or too deep
   machine::InputFile in = machine::read_input_file(file, machine::kMaxTomlFileBytes);
-  if (!in.ok()) throw machine::ConfigError(file.string(), 0, "cannot read the machine file: it " + in.error);
+  if (!in.ok()) throw machine::ConfigError(file.string(), 0, "cannot open the machine file: it " + in.error);
   text_ = std::move(in.text);
   source_ = file.string();
 }

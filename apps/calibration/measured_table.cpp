@@ -118,7 +118,7 @@ double parse_cell(const std::string& cell, const std::filesystem::path& f, int l
 MeasuredTable load_measured_csv(const std::filesystem::path& file, std::string_view like) {
   const MeasuredTable layout = thesis_table(like);
   machine::InputFile read = machine::read_input_file(file, machine::kMaxDataFileBytes);
-  if (!read.ok()) throw std::invalid_argument(fmt::format("{}: cannot read the table: it {}", file.string(), read.error));
+  if (!read.ok()) throw std::invalid_argument(fmt::format("{}: cannot open the table: it {}", file.string(), read.error));
   std::istringstream in(std::move(read.text));
   MeasuredTable t{layout.id, layout.title, layout.unit, {}, {}, {}, file.string()};
   std::vector<int> column_index;  // CSV column -> layout column

@@ -140,7 +140,7 @@ TEST_F(SceneCatalogue, EveryLoadersErrorIsASceneErrorWithFileAndLine) {
       {write("bad.toml", "name = \"x\"\nbogus = 1\n"), 2, "bogus"},
       {write("bad.obj", "v 0 0 0\nv 1 0 zero\n"), 2, "expected a finite number"},
       {write("bad.wld", "WORLD w\nsquare.ent\n< 1 1 >\n"), 3, "expected"},
-      {(dir_ / "missing.toml").string(), 0, "missing"},
+      {(dir_ / "missing.toml").string(), 0, "does not exist"},
   };
   for (const Case& c : cases) {
     try {

@@ -226,7 +226,7 @@ TEST_F(SceneFileTest, MissingSceneFile) {
     load_scene_file(dir_ / "nope.toml");
     ADD_FAILURE();
   } catch (const SceneFileError& e) {
-    EXPECT_NE(std::string(e.what()).find("nope.toml: scene file is missing"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("nope.toml: cannot read the scene file: it does not exist"), std::string::npos) << e.what();
   }
 }
 

@@ -138,7 +138,7 @@ TEST(WorldParser, WorldErrorsNameTheFile) {
     return std::string("no error");
   };
   EXPECT_EQ(err("WORLD w\nmissing.ent\n< 1 1 1 >\n< 0 0 0 >\n< 0 0 0 >\nEND_FILE\n"),
-            "bad.wld:2: cannot open entity file 'fixtures/missing.ent'");
+            "bad.wld:2: cannot open entity file 'fixtures/missing.ent': it does not exist");
   EXPECT_EQ(err("WORLD w\nsquare.ent\n< 1 1 1 >\n< 0 0 >\n< 0 0 0 >\nEND_FILE\n"),
             "bad.wld:4: expected number 3 of rotation vector, found '>'");
   EXPECT_EQ(err("WORLD w\nsquare.ent\n< 1 1 1 >\n< 0 0 0 >\n< 0 0 0 >\n"),

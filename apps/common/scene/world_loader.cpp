@@ -278,7 +278,7 @@ World parse_world(std::string_view text, const std::string& file, const std::fil
     if (it == loaded.end()) {
       std::filesystem::path p = base_dir / name.text;
       const machine::InputFile in = machine::read_input_file(p, machine::kMaxMeshFileBytes);
-      if (!in.ok()) c.fail_at(name.line, fmt::format("cannot read entity file '{}': it {}", p.string(), in.error));
+      if (!in.ok()) c.fail_at(name.line, fmt::format("cannot open entity file '{}': it {}", p.string(), in.error));
       w.entities.push_back(parse_entity(in.text, p.string()));
       it = loaded.emplace(name.text, int(w.entities.size()) - 1).first;
     }
