@@ -13,6 +13,7 @@
 #include "apps/cli/interrupt_signals.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/option_checks.hpp"
+#include "apps/pipeline/run_provenance.hpp"
 #include "apps/pipeline/app_registry.hpp"
 #include "apps/pipeline/version.hpp"
 
@@ -114,6 +115,7 @@ int run_gcsim(int argc, char** argv) {
   CLI::App app{gcsim_description(), "gcsim"};
   declare_commands(&app);
   install_interrupt_handlers();
+  pipeline::remember_command_line(argc, argv);  // for every run JSON's provenance block
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

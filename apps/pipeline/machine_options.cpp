@@ -94,7 +94,8 @@ void check_machine_outputs(const MachineOptions& o) {
   check_writable(o.trace, "--trace");  // its .csv and .paje go beside it, in the same directory
 }
 
-void report_interrupted_run(const parix::RunResult& partial, const MachineOptions& o, const nlohmann::json& reached) {
+void report_interrupted_run(const parix::RunResult& partial, const MachineOptions& o, const nlohmann::json& reached,
+                            const RunInputs& inputs) {
   fmt::print("interrupted at simulated time {:.6f} s ({} events, wall {:.3f} s)\n", partial.simulated_seconds(),
              partial.events, partial.wall_seconds);
   for (const auto& [key, value] : reached.items()) fmt::print("reached   {} {}\n", key, value.dump());
@@ -108,6 +109,7 @@ void report_interrupted_run(const parix::RunResult& partial, const MachineOption
     j["trace"] = o.trace;
     j["trace_level"] = o.trace_level;
   }
+  j["provenance"] = run_provenance(o, partial.config_name, inputs);
   write_json_file(o.json, j);
   fmt::print("json      {}\n", o.json);
 }
@@ -128,7 +130,7 @@ void write_json_file(const std::string& path, const nlohmann::json& j) {
   out << j.dump(2) << "\n";
 }
 
-void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohmann::json& extra) {
+void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohmann::json& extra, const RunInputs& inputs) {
   fmt::print("machine   {} ({} nodes, {} network)\n", r.config_name, r.nodes, r.model);
   // A real run (the MPI backend) measured its times on the host: say so instead of "simulated".
   const bool real = r.clock == parix::Clock::wall;
@@ -150,6 +152,7 @@ void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohma
       j["trace_level"] = o.trace_level;
     }
     j.update(extra);
+    j["provenance"] = run_provenance(o, r.config_name, inputs);
     write_json_file(o.json, j);
     fmt::print("json      {}\n", o.json);
   }

@@ -75,6 +75,14 @@ nlohmann::json RadiosityExperiment::program_json() const {
   return j;
 }
 
+pipeline::RunInputs RadiosityExperiment::run_inputs() const {
+  pipeline::RunInputs in{.scene = solve_.scene};
+  for (const std::string* f : {&outputs_.image, &outputs_.steps_csv, &outputs_.radiosities})
+    if (!f->empty()) in.outputs.push_back(*f);
+  for (const int loop : options_.snapshot_loops) in.outputs.push_back(snapshot_path(outputs_.image, loop));
+  return in;
+}
+
 void RadiosityExperiment::check_outputs() const {
   pipeline::check_writable(outputs_.image, "--image");  // the snapshots go beside it
   pipeline::check_writable(outputs_.steps_csv, "--steps-csv");

@@ -45,6 +45,7 @@ class RadiosityExperiment : public pipeline::Experiment {
   std::int64_t host_memory(int nodes) const override;
   void report(const pipeline::Outcome& out, nlohmann::json& extra) const override;
   void check_outputs() const override;
+  pipeline::RunInputs run_inputs() const override;
   // The energy threshold not reached (convergence.hpp says why).
   std::optional<std::string> goal_missed(const pipeline::Outcome& out) const override;
   void print_sweep_setup() const override;
@@ -73,6 +74,8 @@ void write_steps_csv(const std::string& path, const ParallelOutcome& r);
 double compare_with_gauss_seidel(const Scene& scene, const HemicubeOptions& hemicube, const ParallelOutcome& r);
 // Writes the final image and the snapshots; camera: the one asked for, or the scene's.
 void write_images(const Scene& scene, const ParallelOutcome& r, const RunOutputs& o, const Camera& camera);
+// The snapshot after `loop` of --image IMAGE: IMAGE_loopN.png beside it.
+std::string snapshot_path(const std::string& image, int loop);
 
 // The sweep's table with the thesis's tables 4.3/4.5/4.8 beside it (sweep_table.cpp); its
 // communication column is the processors' mean or the root's (comm_time); each JSON row carries program.

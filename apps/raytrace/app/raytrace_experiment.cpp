@@ -75,6 +75,12 @@ void RaytraceExperiment::print_setup(int nodes) const {
 
 void RaytraceExperiment::check_outputs() const { pipeline::check_writable(flags_.image, "--image"); }
 
+pipeline::RunInputs RaytraceExperiment::run_inputs() const {
+  pipeline::RunInputs in{.scene = flags_.render.scene};
+  if (!flags_.image.empty()) in.outputs.push_back(flags_.image);
+  return in;
+}
+
 void RaytraceExperiment::report(const pipeline::Outcome& out, nlohmann::json& extra) const {
   const ParallelRender& r = pipeline::outcome_as<RaytraceOutcome>(out).render;
   print_counters(r.counters);

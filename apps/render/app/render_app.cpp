@@ -48,7 +48,7 @@ class RenderExperiment : public pipeline::Experiment {
   RenderExperiment(const std::string& scene_file, ImageOutput image, const std::vector<std::string>& forced,
                    double error_budget, std::size_t photons, std::uint64_t seed, bool progress)
       : description_(scene::load_scene(scene_file)), plan_(make_plan(description_)), image_(std::move(image)),
-        progress_(progress) {
+        progress_(progress), scene_file_(scene_file) {
     for (const std::string& name : forced) force(name);
     if (error_budget > 0) budget_ = {error_budget, controls_for_budget(description_, plan_, error_budget)};
     view_.secondary = runs(PassId::specular);
@@ -101,6 +101,11 @@ class RenderExperiment : public pipeline::Experiment {
     const auto& o = pipeline::outcome_as<RenderOutcome>(out);
     reached["radiosity_loops"] = o.loops_done;
     reached["radiosity_shot_fraction"] = o.shot_fraction;
+  }
+  pipeline::RunInputs run_inputs() const override {
+    pipeline::RunInputs in{.scene = scene_file_, .seeds = {{"seed", seed_}}};
+    if (!image_.path.empty()) in.outputs.push_back(image_.path);
+    return in;
   }
   void print_setup(int nodes) const override {
     fmt::print("scene     {}: {} patches, {} elements\n", plan_.scene_name, plan_.facts.patches, plan_.facts.elements);
@@ -216,6 +221,7 @@ class RenderExperiment : public pipeline::Experiment {
   radiosity::ParallelOptions options_;
   ImageOutput image_;
   bool progress_;  // gcsim run: a line per loop on a terminal
+  std::string scene_file_;  // as given: a file's path or a built-in scene's name
   std::vector<PassId> forced_;  // --force-pass: off in the plan, run anyway
   ViewSettings view_;
   struct Budget {
