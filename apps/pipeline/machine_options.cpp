@@ -12,6 +12,7 @@
 #include "machine/trace.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/option_vocabulary.hpp"
+#include "apps/pipeline/time_split.hpp"
 #include "parix/host/interruption.hpp"
 
 namespace gcsim::pipeline {
@@ -134,8 +135,7 @@ void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohma
   fmt::print("machine   {} ({} nodes, {} network)\n", r.config_name, r.nodes, r.model);
   // A real run (the MPI backend) measured its times on the host: say so instead of "simulated".
   const bool real = r.clock == parix::Clock::wall;
-  fmt::print("{} {:12.6f} s   (compute {:.6f} s, communication {:.6f} s mean per processor)\n", real ? "measured " : "simulated",
-             r.simulated_seconds(), r.mean_compute_seconds(), r.mean_comm_seconds());
+  fmt::print("{} {:12.6f} s   ({})\n", real ? "measured " : "simulated", r.simulated_seconds(), time_split(r));
   fmt::print("wall      {:12.6f} s   ({} events, {} messages{})\n", r.wall_seconds, r.events, r.total_messages(),
              o.host_threads > 1 ? fmt::format(", {} host threads", o.host_threads) : "");
   if (!r.memory_warning.empty()) {
