@@ -71,7 +71,8 @@ class MediaExperiment final : public pipeline::Experiment {
   void report(const pipeline::Outcome& out, nlohmann::json& extra) const override;
   void print_sweep_setup() const override { fmt::print("media     {}\n", setup_line()); }
   pipeline::RunInputs run_inputs() const override {
-    pipeline::RunInputs in{.scene = flags_.scene, .seeds = {{"seed", flags_.seed}}};
+    pipeline::RunInputs in;
+    in.scene = flags_.scene, in.seeds = {{"seed", flags_.seed}};
     if (!flags_.image.empty()) in.outputs.push_back(flags_.image);
     return in;
   }
