@@ -24,14 +24,14 @@ namespace {
 
 struct SweepFlags {
   MachineOptions machine;  // --backend, --config and --model
-  std::string nodes = "1,2,4,8,16,32,64";
+  std::vector<std::string> nodes{"1", "2", "4", "8", "16", "32", "64"};
   std::string csv, json;
   int jobs = int(std::max(1u, std::thread::hardware_concurrency()));
 };
 
 void add_sweep_options(CLI::App* cmd, SweepFlags& f) {
   add_machine_choice_options(cmd, f.machine);
-  cmd->add_option("--nodes,--node-counts", f.nodes, "Comma-separated node counts")->capture_default_str();
+  add_list_option(cmd, "--nodes,--node-counts", f.nodes, "Comma-separated node counts")->capture_default_str();
   cmd->add_option("--csv", f.csv, "Write the table as CSV");
   add_json_option(cmd, f.json, "every run's summary");
   cmd->add_option("--jobs", f.jobs,

@@ -4,6 +4,7 @@
 // the result.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "apps/pipeline/experiment.hpp"
 #include "apps/pipeline/progress.hpp"
@@ -17,7 +18,8 @@ namespace gcsim::radiosity::app {
 
 // Options only `run radiosity` has: outputs and checks of the one run.
 struct RunOutputs {
-  std::string image, camera, steps_csv, snapshots, radiosities;
+  std::string image, camera, steps_csv, radiosities;
+  std::vector<std::string> snapshots;  // --snapshots: the loops, as CLI11 split them
   int width = 0, height = 0;
   double exposure = 0;
   bool gauss_seidel = false;
@@ -83,5 +85,7 @@ std::unique_ptr<pipeline::SweepTable> thesis_sweep_table(const Scene& scene, con
                                                          nlohmann::json program);
 // A run's communication seconds as comm_time reads them.
 double comm_seconds(const parix::RunResult& run, CommTimeOf comm_time);
+// Of that, the part before the peer sent (parix::ProcessorStats::waiting), for the same processors.
+double waiting_seconds(const parix::RunResult& run, CommTimeOf comm_time);
 
 }  // namespace gcsim::radiosity::app
