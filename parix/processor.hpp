@@ -87,6 +87,7 @@ struct RequestState : detail::Activity {
   std::int64_t link = -1;      // link handle
   int peer = -1;
   bool cpu_charged = false;    // backend-private: the receive's CPU cost was paid
+  std::int64_t sent_at = 0;    // backend-private: when the received message's sender sent it (simulated ps)
   detail::PayloadPool* payloads = nullptr;  // backend-private: where take_into recycles storage
   // Backend-private: takes the state back when its last Request lets go (a pool); null: delete.
   detail::RequestHome* home = nullptr;

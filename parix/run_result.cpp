@@ -18,6 +18,13 @@ double RunResult::mean_comm_seconds() const {
   return s / static_cast<double>(processors.size());
 }
 
+double RunResult::mean_waiting_seconds() const {
+  if (processors.empty()) return 0;
+  double s = 0;
+  for (const auto& p : processors) s += machine::to_seconds(p.waiting);
+  return s / static_cast<double>(processors.size());
+}
+
 double RunResult::max_comm_seconds() const {
   double m = 0;
   for (const auto& p : processors) m = std::max(m, machine::to_seconds(p.comm));
@@ -44,6 +51,8 @@ nlohmann::json RunResult::to_json() const {
                     {"compute_s", mean_compute_seconds()},
                     {"comm_s", mean_comm_seconds()},
                     {"comm_max_s", max_comm_seconds()},
+                    {"waiting_s", mean_waiting_seconds()},
+                    {"communicating_s", mean_communicating_seconds()},
                     {"total_ps", makespan}};
   j["wall"] = {{"total_s", wall_seconds}};
   j["events"] = events;
@@ -60,6 +69,7 @@ nlohmann::json RunResult::to_json() const {
                      {"compute_s", machine::to_seconds(p.compute)},
                      {"comm_s", machine::to_seconds(p.comm)},
                      {"connect_s", machine::to_seconds(p.connect)},
+                     {"waiting_s", machine::to_seconds(p.waiting)},
                      {"messages_sent", p.messages_sent},
                      {"bytes_sent", p.bytes_sent},
                      {"connections", p.connections}});

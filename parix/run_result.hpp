@@ -15,6 +15,7 @@ struct ProcessorStats {
   machine::SimTime finish = 0;    // when the processor's program returned
   machine::SimTime compute = 0;   // time its CPU work took
   machine::SimTime comm = 0;      // time blocked in connect/send/recv/wait
+  machine::SimTime waiting = 0;   // of which before the peer acted (docs/run-records.md, "waiting")
   machine::SimTime connect = 0;   // of which opening connections
   std::int64_t messages_sent = 0;
   std::int64_t bytes_sent = 0;
@@ -46,6 +47,9 @@ struct RunResult {
   double simulated_seconds() const { return machine::to_seconds(makespan); }
   double mean_compute_seconds() const;
   double mean_comm_seconds() const;
+  double mean_waiting_seconds() const;
+  // Blocked while bytes moved or a link was set up: comm less waiting (mean per processor).
+  double mean_communicating_seconds() const { return mean_comm_seconds() - mean_waiting_seconds(); }
   double max_comm_seconds() const;
   std::int64_t total_messages() const;
   std::map<std::string, std::int64_t, std::less<>> total_ops() const;

@@ -75,9 +75,10 @@ nlohmann::json to_json(const std::vector<CellComparison>& cells, const std::vect
   return j;
 }
 
-void write_csv(const std::string& path, const std::vector<CellComparison>& cells) {
+void write_csv(const std::string& path, const std::vector<CellComparison>& cells, const std::string& comment) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write CSV file '" + path + "'");
+  out << comment << '\n';
   out << "table,nodes,case,measured,predicted,error,fitted\n";
   for (const auto& c : cells)
     out << fmt::format("{},{},{},{:.9g},{:.9g},{:.6f},{}\n", c.table, c.nodes, c.column, c.measured, c.predicted, c.error(),

@@ -39,6 +39,7 @@ void print_cells(const std::vector<CellComparison>& cells, const std::vector<Mea
 void print_summaries(const std::vector<TableSummary>& s);
 nlohmann::json to_json(const std::vector<CellComparison>& cells, const std::vector<TableSummary>& s);
 // table,nodes,column,measured,predicted,error,fitted: what `gcsim plot --calibration` reads.
-void write_csv(const std::string& path, const std::vector<CellComparison>& cells);
+// comment: the first row (pipeline::csv_comment), naming the machine for the plot's subtitle.
+void write_csv(const std::string& path, const std::vector<CellComparison>& cells, const std::string& comment);
 
 }  // namespace gcsim::calibration

@@ -14,6 +14,7 @@
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/option_checks.hpp"
 #include "apps/pipeline/shared_files.hpp"
+#include "apps/pipeline/run_provenance.hpp"
 #include "apps/pipeline/app_registry.hpp"
 #include "apps/pipeline/version.hpp"
 
@@ -116,6 +117,7 @@ int run_gcsim(int argc, char** argv) {
   CLI::App app{gcsim_description(), "gcsim"};
   declare_commands(&app);
   install_interrupt_handlers();
+  pipeline::remember_command_line(argc, argv);  // for every run JSON's provenance block
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

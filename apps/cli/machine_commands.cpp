@@ -62,14 +62,20 @@ void add_topo(CommandGroups& g) {
 
     fmt::print("{} of {} processors on {} ({}x{} physical {})\n\n", o->topology, o->nodes, c.name, c.mesh_width,
                c.mesh_height, net->name());
-    fmt::print("  parameter                 exact    thesis formula\n");
+    fmt::print("  parameter                 exact    thesis formula   what it counts\n");
     const struct {
       const char* name;
       double exact, thesis;
-    } rows[] = {{"D  max distance (hops)", exact.D, thesis.D},   {"d  mean distance", exact.d, thesis.d},
-                {"R  max relay load", exact.R, thesis.R},        {"r  mean relay load", exact.r, thesis.r},
-                {"k  mean links/processor", exact.k, thesis.k}, {"B  broadcast distance", exact.B, thesis.B}};
-    for (const auto& r : rows) fmt::print("  {:<24} {:>8.2f}  {:>12}\n", r.name, r.exact, formula(r.thesis));
+      const char* what;
+    } rows[] = {
+        {"D  max distance (hops)", exact.D, thesis.D, "hops between the farthest pair"},
+        {"d  mean distance", exact.d, thesis.d, "hops, mean over ordered pairs"},
+        {"R  max relay load", exact.R, thesis.R, "shortest paths between two other processors through the busiest one"},
+        {"r  mean relay load", exact.r, thesis.r, "the same, mean over processors (a pair with k shortest paths adds 1/k each)"},
+        {"k  mean links/processor", exact.k, thesis.k, "links per processor, mean"},
+        {"B  broadcast distance", exact.B, thesis.B, "steps from the best-placed manager to every processor"}};
+    for (const auto& r : rows)
+      fmt::print("  {:<24} {:>8.2f}  {:>12}     {}\n", r.name, r.exact, formula(r.thesis), r.what);
     fmt::print("\n  mapping onto the physical {}: dilation {} (mean {:.2f} hops per virtual link), congestion {}\n",
                net->name(), map.dilation, map.mean_dilation, map.congestion);
     if (!o->json.empty()) {

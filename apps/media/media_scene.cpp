@@ -18,7 +18,7 @@ MediaScene small_scene() {
   s.object = std::make_shared<SphereBoundary>(glm::dvec3(0.0, -0.2, 0.3), 0.8);
   s.light = {{-0.9, 0.8, -0.5}, 1.0};  // out of the frame, lighting the side the camera sees
   s.camera = {{0, 0.1, -1.4}, {0, -0.1, 0.3}, {0, 1, 0}, 70.0};
-  s.image = {64, 48};
+  s.image = {192, 144};  // big enough to look at; a couple of seconds of host time on 16 nodes
   return s;
 }
 

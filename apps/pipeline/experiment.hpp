@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/pipeline/resource_check.hpp"
+#include "apps/pipeline/run_provenance.hpp"
 #include "apps/pipeline/sweep_table.hpp"
 #include "parix/backend.hpp"
 
@@ -50,6 +51,8 @@ class Experiment {
   virtual void report(const Outcome& out, nlohmann::json& extra) const {}
   // Checks, before any run, that the files the report will write can be written (throws FileError).
   virtual void check_outputs() const {}
+  // The scene, seeds and files (images, CSVs) of a run, for its JSON's provenance block.
+  virtual RunInputs run_inputs() const { return {}; }
   // Why a finished run did not do what was asked (e.g. a threshold not reached), or nothing: the
   // command then exits with kExitRunFailed after writing every output.
   virtual std::optional<std::string> goal_missed(const Outcome& out) const { return std::nullopt; }

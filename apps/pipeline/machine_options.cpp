@@ -13,6 +13,7 @@
 #include "machine/trace.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/option_vocabulary.hpp"
+#include "apps/pipeline/time_split.hpp"
 #include "parix/host/interruption.hpp"
 
 namespace gcsim::pipeline {
@@ -104,7 +105,8 @@ void check_machine_outputs(const MachineOptions& o) {
   check_writable(o.trace, "--trace");  // its .csv and .paje go beside it, in the same directory
 }
 
-void report_interrupted_run(const parix::RunResult& partial, const MachineOptions& o, const nlohmann::json& reached) {
+void report_interrupted_run(const parix::RunResult& partial, const MachineOptions& o, const nlohmann::json& reached,
+                            const RunInputs& inputs) {
   fmt::print("interrupted at simulated time {:.6f} s ({} events, wall {:.3f} s)\n", partial.simulated_seconds(),
              partial.events, partial.wall_seconds);
   for (const auto& [key, value] : reached.items()) fmt::print("reached   {} {}\n", key, value.dump());
@@ -118,6 +120,7 @@ void report_interrupted_run(const parix::RunResult& partial, const MachineOption
     j["trace"] = o.trace;
     j["trace_level"] = o.trace_level;
   }
+  j["provenance"] = run_provenance(o, partial.config_name, inputs);
   write_json_file(o.json, j);
   fmt::print("json      {}\n", o.json);
 }
@@ -136,12 +139,11 @@ void write_json_file(const std::string& path, const nlohmann::json& j) {
   machine::write_text_file(path, j.dump(2) + "\n", "JSON file");
 }
 
-void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohmann::json& extra) {
+void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohmann::json& extra, const RunInputs& inputs) {
   fmt::print("machine   {} ({} nodes, {} network)\n", r.config_name, r.nodes, r.model);
   // A real run (the MPI backend) measured its times on the host: say so instead of "simulated".
   const bool real = r.clock == parix::Clock::wall;
-  fmt::print("{} {:12.6f} s   (compute {:.6f} s, communication {:.6f} s mean per processor)\n", real ? "measured " : "simulated",
-             r.simulated_seconds(), r.mean_compute_seconds(), r.mean_comm_seconds());
+  fmt::print("{} {:12.6f} s   ({})\n", real ? "measured " : "simulated", r.simulated_seconds(), time_split(r));
   fmt::print("wall      {:12.6f} s   ({} events, {} messages{})\n", r.wall_seconds, r.events, r.total_messages(),
              o.host_threads > 1 ? fmt::format(", {} host threads", o.host_threads) : "");
   if (!r.memory_warning.empty()) {
@@ -158,6 +160,7 @@ void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohma
       j["trace_level"] = o.trace_level;
     }
     j.update(extra);
+    j["provenance"] = run_provenance(o, r.config_name, inputs);
     write_json_file(o.json, j);
     fmt::print("json      {}\n", o.json);
   }

@@ -8,6 +8,7 @@
 
 #include "parix/backend.hpp"
 #include "parix/run_result.hpp"
+#include "apps/pipeline/run_provenance.hpp"
 
 namespace gcsim::pipeline {
 
@@ -34,8 +35,10 @@ void add_machine_choice_options(CLI::App* cmd, MachineOptions& o);
 parix::SimulationOptions simulation_options(const MachineOptions& o, int default_nodes);
 // The backend and simulation options of one run on o.nodes (or default_nodes) nodes.
 parix::RunOptions run_options(const MachineOptions& o, int default_nodes);
-// Prints "simulated X s   wall Y s ..." and, with --json, writes result.to_json() merged with extra.
-void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohmann::json& extra = {});
+// Prints "simulated X s   wall Y s ..." and, with --json, writes result.to_json() merged with extra
+// and the run's provenance (run_provenance.hpp; inputs: what the application read and wrote).
+void report_run(const parix::RunResult& r, const MachineOptions& o, const nlohmann::json& extra = {},
+                const RunInputs& inputs = {});
 // Checks that --json and --trace can be written, before the run (throws FileError).
 void check_machine_outputs(const MachineOptions& o);
 // An interrupted run: the simulated time reached on stdout, and --json with "interrupted": true,
@@ -43,7 +46,7 @@ void check_machine_outputs(const MachineOptions& o);
 // `reached`: what the program had finished (Experiment::report_interrupted), printed and put in
 // --json as "reached".
 void report_interrupted_run(const parix::RunResult& partial, const MachineOptions& o,
-                            const nlohmann::json& reached = nlohmann::json::object());
+                            const nlohmann::json& reached = nlohmann::json::object(), const RunInputs& inputs = {});
 // parix::run with o's output paths checked first and an interruption reported as above (then
 // parix::host::Interrupted is rethrown, for the interrupted exit code).
 parix::RunResult run_program(const parix::RunOptions& options, const parix::Program& program, const MachineOptions& o);

@@ -29,14 +29,14 @@ void add_run_command(CLI::App& run, const AppSpec& app) {
     try {
       out = run_experiment(*e, options, &reached);
     } catch (const parix::host::Interrupted& x) {
-      report_interrupted_run(x.partial(), *machine, reached);
+      report_interrupted_run(x.partial(), *machine, reached, e->run_inputs());
       throw;
     }
     nlohmann::json extra;
     e->report(*out, extra);
     const std::optional<std::string> missed = e->goal_missed(*out);
     if (missed) extra["goal_missed"] = *missed;
-    report_run(out->run, *machine, extra);
+    report_run(out->run, *machine, extra, e->run_inputs());
     if (missed) throw RunFailure(*missed);
   });
 }

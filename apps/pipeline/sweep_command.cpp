@@ -25,14 +25,14 @@ namespace {
 
 struct SweepFlags {
   MachineOptions machine;  // --backend, --config and --model
-  std::string nodes = "1,2,4,8,16,32,64";
+  std::vector<std::string> nodes{"1", "2", "4", "8", "16", "32", "64"};
   std::string csv, json;
   int jobs = int(std::max(1u, std::thread::hardware_concurrency()));
 };
 
 void add_sweep_options(CLI::App* cmd, SweepFlags& f) {
   add_machine_choice_options(cmd, f.machine);
-  cmd->add_option("--nodes,--node-counts", f.nodes, "Comma-separated node counts")->capture_default_str();
+  add_list_option(cmd, "--nodes,--node-counts", f.nodes, "Comma-separated node counts")->capture_default_str();
   cmd->add_option("--csv", f.csv, "Write the table as CSV");
   add_json_option(cmd, f.json, "every run's summary");
   cmd->add_option("--jobs", f.jobs,
@@ -72,18 +72,26 @@ struct RowWriter {
   }
 };
 
+// The document --json writes, with the sweep's provenance (run_provenance.hpp) beside the rows.
+nlohmann::json sweep_document(const SweepFlags& f, const Experiment& e, const std::string& machine, nlohmann::json doc) {
+  if (!doc.is_object()) doc = nlohmann::json{{"rows", std::move(doc)}};
+  std::vector<std::string> outputs{f.json};
+  if (!f.csv.empty()) outputs.push_back(f.csv);
+  doc["provenance"] = run_provenance(f.machine.config, machine, e.run_inputs(), outputs);
+  return doc;
+}
+
 // A sweep stopped by SIGINT/SIGTERM: the CSV already holds the finished rows; --json gets them
 // with where the sweep stopped.
-void report_interrupted_sweep(const SweepFlags& f, const std::vector<int>& counts, const SweepTable& table,
-                              RowWriter& writer, const parix::RunResult& partial) {
+void report_interrupted_sweep(const SweepFlags& f, const Experiment& e, const std::vector<int>& counts,
+                              const SweepTable& table, RowWriter& writer, const parix::RunResult& partial) {
   const std::size_t done = writer.finished.size();
   const int at = done < counts.size() ? counts[done] : 0;
   fmt::print("interrupted during the {}-node point at simulated time {:.6f} s; {} of {} points finished\n", at,
              partial.simulated_seconds(), done, counts.size());
   if (!f.csv.empty()) fmt::print("csv  {} (the finished rows)\n", f.csv);
   if (f.json.empty()) return;
-  nlohmann::json doc = table.json_document(std::move(writer.rows));
-  if (!doc.is_object()) doc = nlohmann::json{{"rows", std::move(doc)}};
+  nlohmann::json doc = sweep_document(f, e, partial.config_name, table.json_document(std::move(writer.rows)));
   doc["interrupted"] = true;
   doc["finished_nodes"] = writer.finished;
   doc["interrupted_nodes"] = at;
@@ -104,7 +112,8 @@ void run_sweep(const SweepFlags& f, const Experiment& e, const std::string& app)
   const std::vector<int> counts = parse_int_list(f.nodes, "--nodes");
   check_writable(f.csv, "--csv");
   check_writable(f.json, "--json");
-  fmt::print("machine   {}\n", simulation_options(f.machine, counts.front()).config.name);  // which GC, by name
+  const std::string machine = simulation_options(f.machine, counts.front()).config.name;
+  fmt::print("machine   {}\n", machine);  // which GC, by name
   e.print_sweep_setup();
   const std::unique_ptr<SweepTable> table = e.sweep_table();
   table->print_header();
@@ -132,14 +141,14 @@ void run_sweep(const SweepFlags& f, const Experiment& e, const std::string& app)
         });
   } catch (const parix::host::Interrupted& x) {
     progress.clear();
-    report_interrupted_sweep(f, counts, *table, writer, x.partial());
+    report_interrupted_sweep(f, e, counts, *table, writer, x.partial());
     throw;
   }
   progress.clear();
   table->print_footer();
   if (!f.csv.empty() && table->announce_files()) fmt::print("csv  {}\n", f.csv);
   if (!f.json.empty()) {
-    write_json_file(f.json, table->json_document(std::move(writer.rows)));
+    write_json_file(f.json, sweep_document(f, e, machine, table->json_document(std::move(writer.rows))));
     if (table->announce_files()) fmt::print("json {}\n", f.json);
   }
   machine::close_checked(csv, f.csv, "CSV file");  // after the JSON, which a full CSV disk must not cost

@@ -22,6 +22,7 @@ void unified_render_program(parix::Processor& p, const scene::SceneDescription& 
                             const MediaSetup* media, UnifiedRender& out) {
   GatheredPhotons photons;
   if (media) {
+    if (p.id() == 0 && out.on_photons_start) out.on_photons_start();
     photons = photon_pass(p, *media);
     out.photon_flights += photons.flights, out.photon_surface_events += photons.surface_events;
     out.media_absorbed += photons.media_absorbed;

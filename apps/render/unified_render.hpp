@@ -32,6 +32,8 @@ struct UnifiedRender {
   std::uint64_t wall_deposits = 0, wall_missed = 0;
   // Host-side progress of the view pass (tiles rendered, of all): nothing of it is simulated.
   std::function<void(int done, int total)> on_view_tile;
+  // Host-side: node 0 starts tracing its photons (the media pass reports nothing else while it runs).
+  std::function<void()> on_photons_start;
 
   explicit UnifiedRender(int nodes)
       : radiosity_end_s(std::size_t(nodes), 0.0), media_end_s(std::size_t(nodes), 0.0), view_start_s(std::size_t(nodes), 0.0) {}

@@ -33,6 +33,7 @@ Link SimProcess::connect(int peer, int tag) {
     if (!wait_for_activity(set_up, "connect", peer)) return {};
     mine = a;
     sim_.stats[peer].connections += 1;
+    sim_.stats[peer].waiting += start - their_start;  // the partner waited for this end to ask
     stats_.connections += 1;
     if (sim_.trace.enabled()) {
       sim_.trace.record({TraceKind::connect, peer, id_, their_start, up, 0, -1, "connect", them->thread()});

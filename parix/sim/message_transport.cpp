@@ -37,10 +37,11 @@ inline void MessageTransport::hand_over(LinkEnd& e, Message&& m) {
     if (m.data.capacity() > kSlotKeepsBytes) [[unlikely]] parts_.payloads.give(std::move(m.data));
     e.receives.drop_front();
     if (m.synchronous) m.send.state()->complete();
-    return receiver->received_into();
+    return receiver->received_into(m.sent);
   }
   Request r = std::move(posted.request);
   r.state()->data = std::move(m.data);
+  r.state()->sent_at = m.sent;
   e.receives.drop_front();
   if (m.synchronous) m.send.state()->complete();
   r.state()->complete();

@@ -238,6 +238,7 @@ void SimProcess::wait_for_running(RequestState& r, const char* call, TraceKind k
   const machine::SimTime end = sim_.kernel.now();
   stats_.comm += end - start;
   if (r.cancelled()) return;  // withdrawn (before the wait, or by another thread meanwhile)
+  if (r.is_receive) stats_.waiting += waited_for_sender(r.sent_at, start, end);
   if (sim_.trace.enabled() && end > start) [[unlikely]] trace_wait(r, call, kind, start);
   charge_receive_cpu(r);
 }
@@ -284,6 +285,7 @@ void SimProcess::recv(Link& link, Bytes& into) {
     if (sim_.processes.cancelling()) return;
   } while (!received_);
   stats_.comm += sim_.kernel.now() - start;
+  stats_.waiting += waited_for_sender(received_sent_, start, sim_.kernel.now());
 }
 
 void SimProcess::charge_receive_cpu(RequestState& r) {

@@ -2,6 +2,7 @@
 // A process of the simulated runtime: one processor's main thread or a thread it spawned, running
 // in its own fiber. It implements the PARIX calls (sim_process.cpp; connect in link_setup.cpp;
 // wait_any, cancel and spawn in process_control.cpp) over the Simulation's parts.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -17,6 +18,12 @@
 #include "parix/sim/link_end.hpp"
 
 namespace gcsim::parix::detail {
+
+// Of a receive or wait blocked from start to end, the part before the sender of the message that
+// ended it had sent it: "waiting" (docs/run-records.md); the rest is communicating.
+inline machine::SimTime waited_for_sender(machine::SimTime sent, machine::SimTime start, machine::SimTime end) {
+  return std::clamp(sent, start, end) - start;
+}
 
 using machine::TraceKind;
 
@@ -52,8 +59,9 @@ class SimProcess final : public Processor, public Waiter {
     fiber.resume();
   }
   // MessageTransport::hand_over put the message of receive_into in its vector.
-  void received_into() {
+  void received_into(machine::SimTime sent) {
     received_ = true;
+    received_sent_ = sent;
     wake();
   }
   // Blocks while a is running (until it is done or cancelled); false when the run was abandoned
@@ -121,6 +129,7 @@ class SimProcess final : public Processor, public Waiter {
   Request blocking_receive_;  // empty until the first blocking receive; see blocking_receive()
   Request send_request_;      // empty until the first send; see send_request()
   bool received_ = false;     // receive_into's message has arrived
+  machine::SimTime received_sent_ = 0;  // and when its sender sent it
 };
 
 }  // namespace gcsim::parix::detail

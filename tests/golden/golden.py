@@ -17,7 +17,7 @@ import tempfile
 
 HERE = pathlib.Path(__file__).resolve().parent
 REPO = HERE.parent.parent  # runs start here, so that `--config configs/...` names the shipped files
-HOST_FIELDS = {"wall", "trace", "trace_level", "image", "json"}
+HOST_FIELDS = {"wall", "trace", "trace_level", "image", "json", "provenance"}  # provenance: argv, paths, hashes
 
 
 def runs():

@@ -113,8 +113,8 @@ def accuracy_media(gcsim, work):
     doc = load_json(out)
     if [s["scene"] for s in doc["scenes"]] != ["small"] or doc["interrupted_at"].startswith("small"):
         fail(f"scenes {[s['scene'] for s in doc['scenes']]}, interrupted at {doc['interrupted_at']!r}")
-    with open(table, newline="") as f:
-        rows = list(csv.DictReader(f))
+    with open(table, newline="") as f:  # the first row, '# gcsim accuracy media; machine ...', is a comment
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
     if not rows or any(r["scene"] != "small" for r in rows) or len(rows) != sum(r["fits"] for r in doc["scenes"][0]["rows"]):
         fail(f"CSV rows {[(r['scene'], r['estimator'], r['budget']) for r in rows]}")
     print(f"accuracy media: scene small kept ({len(rows)} rows), stopped at {doc['interrupted_at']}")

@@ -7,7 +7,7 @@ from gcsim_plots.errors import PlotError
 from gcsim_plots.media_accuracy import is_media_accuracy, plot_media_accuracy
 from gcsim_plots.render_accuracy import is_render_accuracy, plot_render_accuracy
 from gcsim_plots.style import DPI
-from gcsim_plots.table_csv import number, read_rows
+from gcsim_plots.table_csv import csv_machine_line, number, read_rows
 
 CALIBRATION_COLUMNS = ("table", "nodes", "case", "measured", "predicted", "error", "fitted")
 ACCURACY_COLUMNS = ("model", "table", "median_error", "max_error", "within_15", "cells", "wall_s")
@@ -48,7 +48,8 @@ def plot_calibration(plt, path, out, title):
         ax.set_ylabel("predicted (simulated)")
         ax.set_title(f"table {table}: {within}/{len(cells)} within 15 %")
         ax.legend(loc="upper left", fontsize=8)
-    fig.suptitle(title or f"{os.path.basename(path)}: measured against predicted")
+    heading = title or f"{os.path.basename(path)}: measured against predicted"
+    fig.suptitle(f"{heading}\n{csv_machine_line(path, fig.get_figwidth())}", fontsize=10)
     fig.tight_layout()
     fig.savefig(out, dpi=DPI)
     plt.close(fig)
@@ -75,7 +76,8 @@ def plot_accuracy(plt, path, out, title):
             ax.annotate(model, (x, y), textcoords="offset points", xytext=(4, 4), fontsize=8)
     ax.set_xlabel("host wall time to predict the tables (s)")
     ax.set_ylabel("median |error| against the thesis (%)")
-    ax.set_title(title or "What each network model's fidelity buys and costs")
+    heading = title or "What each network model's fidelity buys and costs"
+    ax.set_title(f"{heading}\n{csv_machine_line(path, fig.get_figwidth())}", fontsize=9)
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
     fig.tight_layout()

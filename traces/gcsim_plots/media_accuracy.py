@@ -3,7 +3,7 @@
 from matplotlib.ticker import FormatStrFormatter, NullFormatter
 
 from gcsim_plots.style import DPI
-from gcsim_plots.table_csv import number, read_rows
+from gcsim_plots.table_csv import csv_machine_line, first_data_line, number, read_rows
 
 LINESTYLES = ("-", "--", "-.", ":", (0, (5, 1, 1, 1)))
 
@@ -11,8 +11,7 @@ MEDIA_ACCURACY_COLUMNS = ("scene", "estimator", "budget", "sim_s", "wall_s", "rm
 
 
 def is_media_accuracy(path):
-    with open(path, newline="") as f:
-        header = f.readline().strip().split(",")
+    header = first_data_line(path).strip().split(",")
     return "estimator" in header and "rmse" in header
 
 
@@ -43,7 +42,8 @@ def plot_media_accuracy(plt, path, out, title):
         ax.set_title(scene)
         ax.grid(alpha=0.3, which="both")
         ax.legend(fontsize=7)
-    fig.suptitle(title or "Media: error against time per distance estimator")
+    heading = title or "Media: error against time per distance estimator"
+    fig.suptitle(f"{heading}\n{csv_machine_line(path, fig.get_figwidth())}", fontsize=9)
     fig.tight_layout()
     fig.savefig(out, dpi=DPI)
     plt.close(fig)

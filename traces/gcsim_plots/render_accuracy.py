@@ -2,14 +2,13 @@
 varied control, and the Pareto front of all renders (no other render is both faster and closer)."""
 
 from gcsim_plots.style import DPI
-from gcsim_plots.table_csv import number, read_rows
+from gcsim_plots.table_csv import csv_machine_line, first_data_line, number, read_rows
 
 RENDER_ACCURACY_COLUMNS = ("pass", "control", "value", "relative_rmse", "simulated_s", "wall_s")
 
 
 def is_render_accuracy(path):
-    with open(path, newline="") as f:
-        header = f.readline().strip().split(",")
+    header = first_data_line(path).strip().split(",")
     return "control" in header and "relative_rmse" in header
 
 
@@ -44,7 +43,7 @@ def plot_render_accuracy(plt, path, out, title):
     ax.plot([x for x, _, _ in front], [y for _, y, _ in front], color="black", linestyle=":", label="Pareto front")
     ax.set_xlabel("simulated seconds of the render")
     ax.set_ylabel("relative RMSE against the reference (%)")
-    ax.set_title(title or "What accuracy costs across a render")
+    ax.set_title(f"{title or 'What accuracy costs across a render'}\n{csv_machine_line(path, fig.get_figwidth())}", fontsize=9)
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
     fig.tight_layout()

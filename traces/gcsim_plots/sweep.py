@@ -23,6 +23,8 @@ SYNONYMS = {
     "speedup": ("speedup", "speed_up", "simulated_speedup"),
     "comm_s": ("comm_s", "communication_s", "comm", "comm_time_s", "communication", "simulated_comm_s",
                "communication_time_s", "comm_s_mean", "mean_comm_s"),
+    # Of comm_s, the time blocked before the peer sent or asked (docs/run-records.md); gcsim sweep writes it.
+    "waiting_s": ("waiting_s", "waiting_s_mean", "waiting", "wait_s"),
     "wall_s": ("wall_s", "wall", "wall_time_s", "wall_seconds", "wall_total_s", "host_s"),
     "thesis_s": ("thesis_s", "thesis_time_s", "paper_s", "thesis", "measured_s"),
     "thesis_speedup": ("thesis_speedup", "paper_speedup", "measured_speedup"),

@@ -86,7 +86,12 @@ def draw_sweep(plt, path, title=None):
             speedup = sim[0] / sim  # relative to the smallest node count of the series
         ax_speedup.plot(nodes, speedup, "o-", color=color, label=label)
         speedups.extend(speedup.tolist())
-        ax_comm.plot(nodes, 100.0 * comm / sim, "o-", color=color, label=label)
+        waiting = present(data, "waiting_s", idx)
+        if waiting is None:  # a CSV without the split: all the time blocked in calls
+            ax_comm.plot(nodes, 100.0 * comm / sim, "o-", color=color, label=f"{label}: blocked in calls")
+        else:
+            ax_comm.plot(nodes, 100.0 * (comm - waiting) / sim, "o-", color=color, label=f"communicating{suffix}")
+            ax_comm.plot(nodes, 100.0 * waiting / sim, "v:", color=color, alpha=0.8, label=f"waiting for a peer{suffix}")
         thesis = thesis_overlay(data, scene, broadcast, idx, suffix)
         if not thesis:
             continue
@@ -99,7 +104,7 @@ def draw_sweep(plt, path, title=None):
             ax_speedup.plot(tn, t_speedup, **style)
             speedups.extend(t_speedup.tolist())
         if t_comm is not None:
-            ax_comm.plot(tn, 100.0 * t_comm / t_time, **style)
+            ax_comm.plot(tn, 100.0 * t_comm / t_time, **{**style, "label": f"{label_t}: in communication calls"})
 
     all_nodes = sorted(all_nodes)
     ideal = ideal_speedup(data, all_nodes)
@@ -130,10 +135,15 @@ def frame_axes(data, all_nodes, ax_time, ax_speedup, ax_comm):
     ax_time.set_title("simulated time against node count")
     ax_speedup.set_ylabel("speedup (log 2)")
     ax_speedup.set_title("speedup, log-log: ideal is the straight line")
-    ax_comm.set_ylabel("time blocked in communication calls (%)")
     ax_comm.set_ylim(0, 105)
-    ax_comm.set_title("comm_s / simulated_s: includes waiting for a peer\n(gcsim plot TRACE splits it: "
-                      "utilization.png)", fontsize=9)
+    if "waiting_s" in data and not np.isnan(data["waiting_s"]).all():
+        ax_comm.set_ylabel("share of the simulated time (%, mean per node)")
+        ax_comm.set_title("communicating (bytes moving, links set up) and waiting\nfor a peer to send or ask "
+                          "(docs/run-records.md)", fontsize=9)
+    else:
+        ax_comm.set_ylabel("time blocked in communication calls (%)")
+        ax_comm.set_title("comm_s / simulated_s: includes waiting for a peer (this CSV has no\nwaiting_s column; "
+                          "gcsim plot TRACE splits it: utilization.png)", fontsize=9)
 
 
 def plot_sweep(plt, path, out_path, title=None):

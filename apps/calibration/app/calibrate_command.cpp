@@ -98,7 +98,7 @@ void run_calibrate(const CalibrateFlags& f) {
   std::ofstream(f.out) << cal::fitted_file_text(file, f.out, f.fit, r, command,
                                                  workload_lines(predictor, f.predict.energy, "#   "));
   fmt::print("wrote {}\n", f.out);
-  if (!f.csv.empty()) cal::write_csv(f.csv, r.cells);
+  if (!f.csv.empty()) cal::write_csv(f.csv, r.cells, cells_comment("calibrate", file.config(), r.cells, f.predict.model));
   if (!f.json.empty()) {
     nlohmann::json j = cal::to_json(r.cells, cal::summarize(r.cells));
     for (const auto& p : r.parameters) j["parameters"].push_back({{"key", p.key}, {"value", p.value}, {"sigma", p.sigma}, {"initial", p.initial}});

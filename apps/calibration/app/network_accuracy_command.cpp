@@ -1,6 +1,7 @@
 // gcsim accuracy network: what each network model's fidelity buys and costs. The thesis's tables are
 // predicted under every model, each row giving the error against the measured figures next to the
 // host time the model took.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -10,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "apps/pipeline/csv_comment.hpp"
 #include "apps/calibration/app/commands.hpp"
 #include "apps/calibration/app/prediction_flags.hpp"
 #include "apps/pipeline/failure.hpp"
@@ -97,6 +99,9 @@ void run_network_accuracy(const NetworkAccuracyFlags& f) {
   if (!f.csv.empty()) {
     csv.open(f.csv);
     if (!csv) throw std::runtime_error("cannot write CSV file '" + f.csv + "'");
+    std::string models = f.models;  // one series per model: the comment names them all
+    std::replace(models.begin(), models.end(), ',', ' ');
+    csv << pipeline::csv_comment("accuracy network", file.config().name, "each table's", models) << '\n';
     csv << "model,table,median_error,max_error,within_15,cells,wall_s\n";
   }
   // The scenes are matched to table 4.2 once, before any model's clock starts: the host time a

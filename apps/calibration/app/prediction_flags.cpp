@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "apps/pipeline/csv_comment.hpp"
 #include "apps/pipeline/option_vocabulary.hpp"
 
 namespace gcsim::calibration::app {
@@ -108,6 +109,17 @@ std::string workload_lines(const cal::Predictor& p, double energy, const std::st
     out += fmt::format("{}{}: every reflectance x{:.4f}, {} loops to {:g} % (table 4.2: {}; as built: {})\n", prefix, scene,
                        m.scale, m.loops, 100 * energy, m.thesis_loops, m.loops_as_built);
   return out;
+}
+
+std::string cells_comment(const std::string& command, const machine::MachineConfig& c,
+                          const std::vector<cal::CellComparison>& cells, const std::string& model) {
+  int lo = 0, hi = 0;
+  for (const cal::CellComparison& cell : cells) {
+    lo = lo == 0 ? cell.nodes : std::min(lo, cell.nodes);
+    hi = std::max(hi, cell.nodes);
+  }
+  const std::string nodes = lo == hi ? std::to_string(lo) : fmt::format("{}-{}", lo, hi);
+  return pipeline::csv_comment(command, c.name, nodes, model.empty() ? c.network_model : model);
 }
 
 }  // namespace gcsim::calibration::app

@@ -3,6 +3,7 @@
 // table's experiment is simulated (network model, hemicube, energy, the radiosity mechanisms the
 // thesis's figures imply) and on how many host threads.
 #include <algorithm>
+#include <vector>
 #include <string>
 #include <thread>
 
@@ -47,6 +48,11 @@ void apply_preset(PredictFlags& f);
 std::string non_default_flags(const PredictFlags& f);
 
 cal::PredictionSettings settings(const PredictFlags& f);
+
+// The CSV's first row for the plot's subtitle: the command, the machine, the node counts of the
+// cells (e.g. "1-64") and the network model (model: --model, "" for the machine file's).
+std::string cells_comment(const std::string& command, const machine::MachineConfig& c,
+                          const std::vector<cal::CellComparison>& cells, const std::string& model);
 
 // One line per scene matched to table 4.2 (--workload thesis-loops), each prefixed.
 std::string workload_lines(const cal::Predictor& p, double energy, const std::string& prefix);

@@ -76,7 +76,7 @@ void run_validate(const ValidateFlags& f) {
   const auto summaries = cal::summarize(cells);
   cal::print_summaries(summaries);
   if (interruption) fmt::print("\ninterrupted: {} cells predicted before it\n", cells.size());
-  if (!f.csv.empty()) cal::write_csv(f.csv, cells);
+  if (!f.csv.empty()) cal::write_csv(f.csv, cells, cells_comment("validate", file.config(), cells, f.predict.model));
   if (!f.json.empty()) {
     nlohmann::json j = cal::to_json(cells, summaries);
     for (const auto& [scene, m] : predictor.loop_matches())

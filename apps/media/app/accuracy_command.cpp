@@ -1,6 +1,6 @@
 // gcsim accuracy media: RMSE of each estimator at equal simulated-time budgets against a high-sample
 // reference on the same photon map, the noise spread, the grid's share, the photon count's effect,
-// and the targets as measured (accuracy.hpp).
+// and each goal, stated as what it asks, as measured (accuracy.hpp).
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +14,7 @@
 #include "apps/media/image_error.hpp"
 #include "apps/common/tone_map.hpp"
 #include "apps/media/app/commands.hpp"
+#include "apps/pipeline/csv_comment.hpp"
 #include "apps/pipeline/list_parsing.hpp"
 #include "apps/pipeline/machine_options.hpp"
 #include "apps/pipeline/failure.hpp"
@@ -25,20 +26,16 @@
 namespace gcsim::media::app {
 namespace {
 
-std::vector<std::string> split_names(const std::string& list) {
-  std::vector<std::string> out;
-  std::size_t at = 0;
-  while (at <= list.size()) {
-    const std::size_t comma = std::min(list.find(',', at), list.size());
-    if (comma > at) out.push_back(list.substr(at, comma - at));
-    at = comma + 1;
-  }
-  return out;
+// The names of a list option, as CLI11 split them at ',', without empty ones.
+std::vector<std::string> split_names(std::vector<std::string> names) {
+  std::erase(names, std::string());
+  return names;
 }
 
 struct AccuracyFlags {
-  std::string scenes = "exp1,exp2,fog", estimators = "uniform,transmittance,radiance,equiangular,mis";
-  std::string budgets = "1,2,4,8", photon_fractions = "0.25,0.5,1";
+  std::vector<std::string> scenes{"exp1", "exp2", "fog"};
+  std::vector<std::string> estimators{"uniform", "transmittance", "radiance", "equiangular", "mis"};
+  std::vector<std::string> budgets{"1", "2", "4", "8"}, photon_fractions{"0.25", "0.5", "1"};
   AccuracyOptions o;
   bool quick = false;
   std::string config, csv, json, images;
@@ -132,6 +129,10 @@ void print_scene(const SceneAccuracy& a, const AccuracyOptions& o) {
     fmt::print("{:>10} {:>10} {:>10.4g} {:>9.2f}% {:>8.2f}\n", r.emitted, r.stored, r.rmse, 100 * r.mean_bias, r.wall_seconds);
 }
 
+std::string machine_name(const std::string& config) {
+  return (config.empty() ? machine::default_machine_config() : machine::load_machine_config(config)).name;
+}
+
 // RMSE(a)/RMSE(b) per budget, both fitting.
 std::vector<double> ratios(const SceneAccuracy& s, Estimator a, Estimator b, const std::vector<double>& budgets) {
   std::vector<double> out;
@@ -142,24 +143,30 @@ std::vector<double> ratios(const SceneAccuracy& s, Estimator a, Estimator b, con
   return out;
 }
 
-void print_target(const std::string& what, const std::vector<double>& values, double limit) {
+// goal: what a ratio at most `limit` means, e.g. "radiance sampling's error at most 0.6 x transmittance's".
+void print_target(const std::string& what, const std::vector<double>& values, double limit, const std::string& goal) {
   if (values.empty()) return;
   const auto met = std::count_if(values.begin(), values.end(), [limit](double v) { return v <= limit; });
   std::string list;
   for (double v : values) list += fmt::format("{}{:.2f}", list.empty() ? "" : " ", v);
-  fmt::print("  {:<58} {} (target <= {}): met at {} of {} budgets\n", what, list, limit, met, values.size());
+  fmt::print("  {:<58} {} (goal <= {}: {}): met at {} of {} budgets\n", what, list, limit, goal, met, values.size());
 }
 
 void print_targets(const std::vector<SceneAccuracy>& all, const AccuracyOptions& o) {
-  fmt::print("\n== accuracy targets, as measured\n");
+  fmt::print("\n== goals, as measured (ratios of RMSE at equal simulated time, one per budget)\n");
   for (const SceneAccuracy& s : all) {
-    // Experiment 2 and its variants (exp2-bunny) have the 0.8 target; the fog 1.1; the rest 0.6.
-    const double limit = s.scene.rfind("exp2", 0) == 0 ? 0.8 : s.scene == "fog" ? 1.1 : 0.6;
+    // Experiment 2 and its variants (exp2-bunny) ask 0.8; the fog, where transmittance sampling is
+    // near ideal already, only that radiance sampling not lose more than 10 %; the rest 0.6.
+    const bool fog = s.scene == "fog";
+    const double limit = s.scene.rfind("exp2", 0) == 0 ? 0.8 : fog ? 1.1 : 0.6;
     print_target(s.scene + ": RMSE(radiance) / RMSE(transmittance)", ratios(s, Estimator::radiance, Estimator::transmittance, o.budgets),
-                 limit);
-    if (s.scene != "fog")
+                 limit,
+                 fog ? "radiance sampling at most 10 % worse than transmittance sampling in uniform fog"
+                     : fmt::format("radiance sampling cuts transmittance sampling's error by {:.0f} % or more", 100 * (1 - limit)));
+    if (!fog)
       print_target(s.scene + ": RMSE(transmittance) / RMSE(uniform)",
-                   ratios(s, Estimator::transmittance, Estimator::uniform, o.budgets), 1.0);
+                   ratios(s, Estimator::transmittance, Estimator::uniform, o.budgets), 1.0,
+                   "transmittance sampling no worse than uniform marching");
     double spread_t = 0, spread_r = 0;
     for (const auto& [e, v] : s.noise_spread) {
       if (e == Estimator::transmittance) spread_t = v;
@@ -170,18 +177,23 @@ void print_targets(const std::vector<SceneAccuracy>& all, const AccuracyOptions&
     const bool paper_scene = s.scene.rfind("exp", 0) == 0;
     if (spread_t > 0 && spread_r > 0)
       fmt::print("  {:<58} {:.3f} {}\n", s.scene + ": noise spread transmittance / radiance", spread_t / spread_r,
-                 !paper_scene ? "(no target here)" : spread_t / spread_r >= 1.5 ? "(target >= 1.5): met" : "(target >= 1.5): not met");
+                 !paper_scene              ? "(no goal here: transmittance sampling is near ideal in this scene)"
+                 : spread_t / spread_r >= 1.5 ? "(goal >= 1.5: radiance sampling's noise 1.5 x evener over the image): met"
+                                              : "(goal >= 1.5: radiance sampling's noise 1.5 x evener over the image): not met");
     const double smallest = *std::min_element(o.budgets.begin(), o.budgets.end());
     const double share = s.grid_build_seconds / (smallest * s.unit_seconds);
     const double share_paper = share * s.width * s.height / (640.0 * 480.0);
-    fmt::print("  {:<58} {:.1f} % here, {:.2f} % at 640x480 (the <= 5 % target is on a whole run: gcsim run media)\n",
+    fmt::print("  {:<58} {:.1f} % here, {:.2f} % at 640x480 (the goal, at most 5 %, the paper's 7 s of grid against "
+               "minutes of rendering, is on a whole run: gcsim run media)\n",
                s.scene + ": grid build / render at the smallest budget", 100 * share, 100 * share_paper);
   }
 }
 
-void write_csv(const std::string& path, const std::vector<SceneAccuracy>& all) {
+void write_csv(const std::string& path, const std::vector<SceneAccuracy>& all, const std::string& machine) {
   std::ofstream f(path);
   if (!f) throw std::runtime_error("cannot write CSV file '" + path + "'");
+  // Every render runs on one CPU of the machine, timed by its counted operations: no network.
+  f << pipeline::csv_comment("accuracy media", machine, "1 (one CPU)", "none (counted operations)") << '\n';
   f << "scene,estimator,budget,b,sim_s,wall_s,samples,rmse,rel_rmse\n";
   for (const SceneAccuracy& s : all)
     for (const BudgetRow& r : s.rows)
@@ -208,7 +220,7 @@ nlohmann::json to_json(const SceneAccuracy& s) {
 
 // --csv and --json with the finished scenes; `extra` adds keys to the JSON (an interruption's).
 void write_results(const AccuracyFlags& f, const std::vector<SceneAccuracy>& all, nlohmann::json j) {
-  if (!f.csv.empty()) write_csv(f.csv, all), fmt::print("csv       {}\n", f.csv);
+  if (!f.csv.empty()) write_csv(f.csv, all, machine_name(f.config)), fmt::print("csv       {}\n", f.csv);
   if (!f.json.empty()) {
     j["scenes"] = nlohmann::json::array();
     for (const SceneAccuracy& s : all) j["scenes"].push_back(to_json(s));
@@ -219,14 +231,16 @@ void write_results(const AccuracyFlags& f, const std::vector<SceneAccuracy>& all
 void run_accuracy(AccuracyFlags f) {
   if (f.quick) {
     f.o.width = 64, f.o.height = 48, f.o.photons = f.o.photons > 0 ? f.o.photons : 20000;
-    f.budgets = "2,8", f.photon_fractions = "0.5,1", f.o.reference_factor = 8, f.o.spread_repeats = 8;
+    f.budgets = {"2", "8"}, f.photon_fractions = {"0.5", "1"}, f.o.reference_factor = 8, f.o.spread_repeats = 8;
     f.o.spread_budget = 0;
   }
   pipeline::check_writable(f.csv, "--csv");  // before the renders
   pipeline::check_writable(f.json, "--json");
   const machine::MachineConfig m = f.config.empty() ? machine::default_machine_config() : machine::load_machine_config(f.config);
   f.o.budgets = pipeline::parse_double_list(f.budgets, "--budgets");
-  f.o.photon_fractions = f.photon_fractions.empty() ? std::vector<double>{} : pipeline::parse_double_list(f.photon_fractions, "--photon-fractions");
+  f.o.photon_fractions = pipeline::list_is_empty(f.photon_fractions)
+                             ? std::vector<double>{}
+                             : pipeline::parse_double_list(f.photon_fractions, "--photon-fractions");
   f.o.estimators.clear();
   for (const auto& name : split_names(f.estimators)) {
     const auto e = parse_estimator(name);
@@ -274,10 +288,10 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
       "of simulated time (one CPU of the machine, from counted operations: deterministic), RMSE against a\n"
       "high-sample reference (radiance sampling, two seeds) on the same photon map (so only the estimators differ), the noise spread\n"
       "over the image, the SH grid's share of the render time, the photon count's effect at fixed samples,\n"
-      "and the accuracy targets as measured. Wall times are the host's.");
-  cmd->add_option("--scenes", f->scenes, "Scenes (exp1, exp2, fog, small, exp1-literal, exp1-bunny, exp2-bunny)")->capture_default_str();
-  cmd->add_option("--estimators", f->estimators, "Estimators to compare")->capture_default_str();
-  cmd->add_option("--budgets", f->budgets, "Budgets in units (the transmittance estimator's time at M = unit-b S)")
+      "and each goal (e.g. radiance sampling's error at most 0.6 x transmittance's) as measured. Wall times are the host's.");
+  pipeline::add_list_option(cmd, "--scenes", f->scenes, "Scenes (exp1, exp2, fog, small, exp1-literal, exp1-bunny, exp2-bunny)")->capture_default_str();
+  pipeline::add_list_option(cmd, "--estimators", f->estimators, "Estimators to compare")->capture_default_str();
+  pipeline::add_list_option(cmd, "--budgets", f->budgets, "Budgets in units (the transmittance estimator's time at M = unit-b S)")
       ->capture_default_str();
   cmd->add_option("--unit-b", f->o.unit_b, "b of the budget unit")->check(pipeline::positive_number())->capture_default_str();
   cmd->add_option("--width", f->o.width, "Image width")->check(CLI::Range(4, 4096))->capture_default_str();
@@ -298,7 +312,7 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
   cmd->add_option("--repeats", f->o.spread_repeats, "Renders per estimator for the noise spread")
       ->check(CLI::Range(2, 1000))
       ->capture_default_str();
-  cmd->add_option("--photon-fractions", f->photon_fractions, "Photon study: fractions of the scene's photons (empty: skip)")
+  pipeline::add_list_option(cmd, "--photon-fractions", f->photon_fractions, "Photon study: fractions of the scene's photons (empty: skip)")
       ->capture_default_str();
   cmd->add_option("--seed", f->o.seed, "Random seed")->capture_default_str();
   cmd->add_flag("--quick", f->quick, "CI-sized: 64x48, 20000 photons, budgets 2,8, reference x8, 8 repeats");

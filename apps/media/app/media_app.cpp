@@ -93,6 +93,12 @@ class MediaExperiment final : public pipeline::Experiment {
   void print_setup(int nodes) const override { fmt::print("media     {}, {} nodes\n", setup_line(), nodes); }
   void report(const pipeline::Outcome& out, nlohmann::json& extra) const override;
   void print_sweep_setup() const override { fmt::print("media     {}\n", setup_line()); }
+  pipeline::RunInputs run_inputs() const override {
+    pipeline::RunInputs in;
+    in.scene = flags_.scene, in.seeds = {{"seed", flags_.seed}};
+    if (!flags_.image.empty()) in.outputs.push_back(flags_.image);
+    return in;
+  }
 
  private:
   std::string setup_line() const {

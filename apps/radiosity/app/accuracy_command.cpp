@@ -24,14 +24,14 @@ namespace gcsim::radiosity::app {
 namespace {
 
 struct AccuracyFlags {
-  std::string resolutions = "16,32,64,128,256,512";
-  std::string thresholds = "0.9,0.95,0.99,0.995,0.999,0.9999";
-  std::string levels = "1,2,3,4";
+  std::vector<std::string> resolutions{"16", "32", "64", "128", "256", "512"};
+  std::vector<std::string> thresholds{"0.9", "0.95", "0.99", "0.995", "0.999", "0.9999"};
+  std::vector<std::string> levels{"1", "2", "3", "4"};
   int hierarchical_hemicube = 256;
   std::string scene = "cornell", config;
   int hemicube = 64;
   int shooters = 2;
-  std::string near_field = "1,0.5,0.25";
+  std::vector<std::string> near_field{"1", "0.5", "0.25"};
   int near_field_hemicube = 256;
   int near_field_samples = 8;
   std::string json;
@@ -132,7 +132,7 @@ void report_interrupted(const AccuracyFlags& f, AccuracyReport& rep) {
 
 // Table 4's ratios, checked before any table runs.
 std::vector<double> near_field_ratios(const AccuracyFlags& f) {
-  if (f.near_field.empty()) return {};
+  if (pipeline::list_is_empty(f.near_field)) return {};
   const std::vector<double> ratios = pipeline::parse_double_list(f.near_field, "--near-field");
   for (double r : ratios)
     if (!(r > 0)) throw std::invalid_argument(fmt::format("--near-field: ratio {} must be positive", r));
@@ -180,7 +180,7 @@ void run_accuracy(const AccuracyFlags& f) {
   for (std::size_t i = 0; i < th.size(); ++i)
     if (th[i] <= 0 || th[i] >= 1 || (i > 0 && th[i] <= th[i - 1]))
       throw std::invalid_argument("--thresholds: expected ascending fractions in (0, 1)");
-  const std::vector<int> lv = f.levels.empty() ? std::vector<int>{} : pipeline::parse_int_list(f.levels, "--levels");
+  const std::vector<int> lv = pipeline::list_is_empty(f.levels) ? std::vector<int>{} : pipeline::parse_int_list(f.levels, "--levels");
   check_levels(lv, f.hierarchical_hemicube);
   if (!f.json.empty()) pipeline::check_writable(f.json, "--json");
   const int table3_rows = lv.empty() ? 0 : int(lv.size()) + 1;
@@ -225,16 +225,16 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
       "   --near-field-ratio and --near-field-samples). Per ratio: the error on two facing unit squares\n"
       "   and on every element of a closed furnace box (closed forms), and the scene's time on one node.\n"
       "Times are simulated seconds on one node of the machine (counted operations) and host wall seconds.");
-  cmd->add_option("--resolutions", f->resolutions, "Hemicube resolutions for table 1")->capture_default_str();
-  cmd->add_option("--thresholds", f->thresholds, "Energy thresholds for table 2, ascending")->capture_default_str();
+  pipeline::add_list_option(cmd, "--resolutions", f->resolutions, "Hemicube resolutions for table 1")->capture_default_str();
+  pipeline::add_list_option(cmd, "--thresholds", f->thresholds, "Energy thresholds for table 2, ascending")->capture_default_str();
   cmd->add_option("--scene", f->scene, "Scene for tables 2 and 3")->capture_default_str();
-  cmd->add_option("--levels", f->levels, "Hierarchical levels for table 3 (empty: skip the table)")->capture_default_str();
+  pipeline::add_list_option(cmd, "--levels", f->levels, "Hierarchical levels for table 3 (empty: skip the table)")->capture_default_str();
   cmd->add_option("--hierarchical-hemicube", f->hierarchical_hemicube, "Hemicube resolution for table 3")
       ->check(CLI::Range(8, 4096))
       ->capture_default_str();
   cmd->add_option("--hemicube", f->hemicube, "Hemicube resolution for table 2")->check(CLI::Range(8, 4096))->capture_default_str();
   cmd->add_option("--shooters", f->shooters, "Shooters per loop for table 2")->check(CLI::Range(1, 1 << 20))->capture_default_str();
-  cmd->add_option("--near-field", f->near_field,
+  pipeline::add_list_option(cmd, "--near-field", f->near_field,
                   "Near-field ratios for table 4 (run's --near-field-ratio; empty: skip the table)")
       ->capture_default_str();
   cmd->add_option("--near-field-samples", f->near_field_samples, "Cap on the parts per side in table 4")

@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "apps/pipeline/app_registry.hpp"
+#include "apps/pipeline/list_parsing.hpp"
 #include "apps/pipeline/option_checks.hpp"
 #include "apps/radiosity/app/commands.hpp"
 #include "apps/radiosity/app/radiosity_experiment.hpp"
@@ -22,7 +23,7 @@ void add_run_outputs(CLI::App& cmd, RunOutputs& f) {
   cmd.add_option("--steps-csv", f.steps_csv, "Write the shot fraction after every loop as CSV (table 4.2 analog)");
   cmd.add_option("--radiosities", f.radiosities,
                  "Write every element's radiosity (id, patch, surface, area, r, g, b): FILE.json as JSON, else CSV");
-  cmd.add_option("--snapshots", f.snapshots,
+  pipeline::add_list_option(&cmd, "--snapshots", f.snapshots,
                  "With --image: also write the image after these loops (e.g. 1,10,50), as IMAGE_loopN.png: "
                  "the progression of figures 4.10-4.12");
   cmd.add_flag("--gauss-seidel", f.gauss_seidel,

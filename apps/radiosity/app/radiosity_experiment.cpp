@@ -45,7 +45,7 @@ RadiosityExperiment::RadiosityExperiment(const SolveFlags& solve, const RunOutpu
       options_(parallel_options(solve)) {
   // Checked before the run, so that a typo does not cost a whole simulation.
   if (!outputs_.camera.empty()) camera_ = parse_camera(outputs_.camera);
-  if (!outputs_.snapshots.empty()) {
+  if (!pipeline::list_is_empty(outputs_.snapshots)) {
     if (outputs_.image.empty()) throw std::invalid_argument("--snapshots needs --image (the snapshots are named after it)");
     options_.snapshot_loops = pipeline::parse_int_list(outputs_.snapshots, "--snapshots");
   }
@@ -73,6 +73,15 @@ nlohmann::json RadiosityExperiment::program_json() const {
     j["workload_match"] = {{"reflectance_scale", match_->scale}, {"loops", match_->loops},
                            {"thesis_loops", match_->thesis_loops}, {"loops_as_built", match_->loops_as_built}};
   return j;
+}
+
+pipeline::RunInputs RadiosityExperiment::run_inputs() const {
+  pipeline::RunInputs in;
+  in.scene = solve_.scene;
+  for (const std::string* f : {&outputs_.image, &outputs_.steps_csv, &outputs_.radiosities})
+    if (!f->empty()) in.outputs.push_back(*f);
+  for (const int loop : options_.snapshot_loops) in.outputs.push_back(snapshot_path(outputs_.image, loop));
+  return in;
 }
 
 void RadiosityExperiment::check_outputs() const {

@@ -4,6 +4,7 @@
 // the result.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "apps/pipeline/experiment.hpp"
 #include "apps/pipeline/progress.hpp"
@@ -17,7 +18,8 @@ namespace gcsim::radiosity::app {
 
 // Options only `run radiosity` has: outputs and checks of the one run.
 struct RunOutputs {
-  std::string image, camera, steps_csv, snapshots, radiosities;
+  std::string image, camera, steps_csv, radiosities;
+  std::vector<std::string> snapshots;  // --snapshots: the loops, as CLI11 split them
   int width = 0, height = 0;
   double exposure = 0;
   bool gauss_seidel = false;
@@ -45,6 +47,7 @@ class RadiosityExperiment : public pipeline::Experiment {
   std::int64_t host_memory(int nodes) const override;
   void report(const pipeline::Outcome& out, nlohmann::json& extra) const override;
   void check_outputs() const override;
+  pipeline::RunInputs run_inputs() const override;
   // The energy threshold not reached (convergence.hpp says why).
   std::optional<std::string> goal_missed(const pipeline::Outcome& out) const override;
   void print_sweep_setup() const override;
@@ -73,6 +76,8 @@ void write_steps_csv(const std::string& path, const ParallelOutcome& r);
 double compare_with_gauss_seidel(const Scene& scene, const HemicubeOptions& hemicube, const ParallelOutcome& r);
 // Writes the final image and the snapshots; camera: the one asked for, or the scene's.
 void write_images(const Scene& scene, const ParallelOutcome& r, const RunOutputs& o, const Camera& camera);
+// The snapshot after `loop` of --image IMAGE: IMAGE_loopN.png beside it.
+std::string snapshot_path(const std::string& image, int loop);
 
 // The sweep's table with the thesis's tables 4.3/4.5/4.8 beside it (sweep_table.cpp); its
 // communication column is the processors' mean or the root's (comm_time); each JSON row carries program.
@@ -80,5 +85,7 @@ std::unique_ptr<pipeline::SweepTable> thesis_sweep_table(const Scene& scene, con
                                                          nlohmann::json program);
 // A run's communication seconds as comm_time reads them.
 double comm_seconds(const parix::RunResult& run, CommTimeOf comm_time);
+// Of that, the part before the peer sent (parix::ProcessorStats::waiting), for the same processors.
+double waiting_seconds(const parix::RunResult& run, CommTimeOf comm_time);
 
 }  // namespace gcsim::radiosity::app

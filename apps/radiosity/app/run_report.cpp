@@ -81,13 +81,16 @@ void write_images(const Scene& scene, const ParallelOutcome& r, const RunOutputs
   if (r.snapshots.empty()) return;
   // Same exposure as the final image, so that the images show light arriving.
   if (ro.exposure <= 0) ro.exposure = auto_exposure(scene, r.element_radiosity, camera, ro);
-  const std::filesystem::path base(o.image);
   for (const auto& [loop, b] : r.snapshots) {
-    const std::filesystem::path p =
-        base.parent_path() / fmt::format("{}_loop{}{}", base.stem().string(), loop, base.extension().string());
+    const std::string p = snapshot_path(o.image, loop);
     apps::write_png(p, render_gouraud(scene, b, camera, ro));
-    fmt::print("snapshot  {} (after loop {})\n", p.string(), loop);
+    fmt::print("snapshot  {} (after loop {})\n", p, loop);
   }
+}
+
+std::string snapshot_path(const std::string& image, int loop) {
+  const std::filesystem::path base(image);
+  return (base.parent_path() / fmt::format("{}_loop{}{}", base.stem().string(), loop, base.extension().string())).string();
 }
 
 }  // namespace gcsim::radiosity::app

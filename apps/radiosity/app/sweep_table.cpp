@@ -22,11 +22,13 @@ class ThesisSweepTable : public pipeline::SweepTable {
         fig_(thesis::figures_for(scene.name)) {}
 
   void print_header() override {
-    fmt::print("{:>5} {:>10} {:>8} {:>10} {:>9} {:>6} | {:>9} {:>8} {:>9}\n", "nodes", "sim_s", "speedup", "comm_s", "wall_s",
-               "loops", "thesis_s", "thesis_x", "thesis_c");
+    fmt::print("{:>5} {:>10} {:>8} {:>10} {:>9} {:>9} {:>6} | {:>9} {:>8} {:>9}\n", "nodes", "sim_s", "speedup", "comm_s",
+               "waiting_s", "wall_s", "loops", "thesis_s", "thesis_x", "thesis_c");
   }
+  // comm_s: all the time blocked in calls, as the thesis timed it; waiting_s: the part of it before
+  // the peer sent (docs/run-records.md); communicating_s the rest.
   std::string csv_header() const override {
-    return "nodes,simulated_s,speedup,comm_s,wall_s,loops,thesis_s,thesis_speedup,thesis_comm_s";
+    return "nodes,simulated_s,speedup,comm_s,wall_s,loops,thesis_s,thesis_speedup,thesis_comm_s,communicating_s,waiting_s";
   }
   void print_row(const pipeline::SweepRow& row) override;
   std::string csv_row(const pipeline::SweepRow& row) const override;
@@ -75,18 +77,20 @@ void ThesisSweepTable::print_row(const pipeline::SweepRow& row) {
   if (reference_.empty()) reference_ = r.element_radiosity;
   else if (reference_ != r.element_radiosity) fmt::print("warning: radiosities on {} nodes differ from the first run\n", row.nodes);
   const Thesis th = thesis_at(row.nodes);
-  fmt::print("{:>5} {:>10.2f} {:>8.2f} {:>10.2f} {:>9.2f} {:>6} | {:>9} {:>8} {:>9}\n", row.nodes, t, row.speedup,
-             comm_seconds(row.outcome.run, comm_time_), row.outcome.run.wall_seconds, r.steps.size(), cell(th.seconds, "{:.0f}"),
+  fmt::print("{:>5} {:>10.2f} {:>8.2f} {:>10.2f} {:>9.2f} {:>9.2f} {:>6} | {:>9} {:>8} {:>9}\n", row.nodes, t, row.speedup,
+             comm_seconds(row.outcome.run, comm_time_), waiting_seconds(row.outcome.run, comm_time_), row.outcome.run.wall_seconds,
+             r.steps.size(), cell(th.seconds, "{:.0f}"),
              cell(th.speedup, "{:.2f}"), cell(th.comm, "{:.0f}"));
 }
 
 std::string ThesisSweepTable::csv_row(const pipeline::SweepRow& row) const {
   const Thesis th = thesis_at(row.nodes);
   const parix::RunResult& run = row.outcome.run;
-  return fmt::format("{},{:.6f},{:.6f},{:.6f},{:.6f},{},{},{},{}", row.nodes, run.simulated_seconds(), row.speedup,
-                     comm_seconds(run, comm_time_), run.wall_seconds, result(row).steps.size(),
+  const double comm = comm_seconds(run, comm_time_), waiting = waiting_seconds(run, comm_time_);
+  return fmt::format("{},{:.6f},{:.6f},{:.6f},{:.6f},{},{},{},{},{:.6f},{:.6f}", row.nodes, run.simulated_seconds(), row.speedup,
+                     comm, run.wall_seconds, result(row).steps.size(),
                      th.seconds < 0 ? "" : fmt::format("{}", th.seconds), th.speedup < 0 ? "" : fmt::format("{:.4f}", th.speedup),
-                     th.comm < 0 ? "" : fmt::format("{}", th.comm));
+                     th.comm < 0 ? "" : fmt::format("{}", th.comm), comm - waiting, waiting);
 }
 
 void ThesisSweepTable::print_footer() {
@@ -100,14 +104,20 @@ void ThesisSweepTable::print_footer() {
     fmt::print("fastest on {} nodes{}\n", best_nodes_, theirs);
   }
   if (fig_) fmt::print("thesis_x: speedup over 1 node from the thesis's table {}; thesis_c: table 4.5\n", tree_ ? "4.8" : "4.3");
-  fmt::print("comm_s: {}\n", comm_time_ == CommTimeOf::root ? "the root's (processor 0; --comm-time root)"
-                                                             : "the mean over the processors (--comm-time mean)");
+  fmt::print("comm_s: {}: time blocked in communication calls, as the thesis timed it; waiting_s: the part of it\n"
+             "before the peer sent (docs/run-records.md)\n",
+             comm_time_ == CommTimeOf::root ? "the root's (processor 0; --comm-time root)"
+                                            : "the mean over the processors (--comm-time mean)");
 }
 
 }  // namespace
 
 double comm_seconds(const parix::RunResult& run, CommTimeOf comm_time) {
   return comm_time == CommTimeOf::root ? machine::to_seconds(run.processors.at(0).comm) : run.mean_comm_seconds();
+}
+
+double waiting_seconds(const parix::RunResult& run, CommTimeOf comm_time) {
+  return comm_time == CommTimeOf::root ? machine::to_seconds(run.processors.at(0).waiting) : run.mean_waiting_seconds();
 }
 
 std::unique_ptr<pipeline::SweepTable> thesis_sweep_table(const Scene& scene, const ParallelOptions& o, CommTimeOf comm_time,

@@ -75,6 +75,13 @@ void RaytraceExperiment::print_setup(int nodes) const {
 
 void RaytraceExperiment::check_outputs() const { pipeline::check_writable(flags_.image, "--image"); }
 
+pipeline::RunInputs RaytraceExperiment::run_inputs() const {
+  pipeline::RunInputs in;
+  in.scene = flags_.render.scene;
+  if (!flags_.image.empty()) in.outputs.push_back(flags_.image);
+  return in;
+}
+
 void RaytraceExperiment::report(const pipeline::Outcome& out, nlohmann::json& extra) const {
   const ParallelRender& r = pipeline::outcome_as<RaytraceOutcome>(out).render;
   print_counters(r.counters);
@@ -109,19 +116,28 @@ class EfficiencyTable : public pipeline::SweepTable {
   explicit EfficiencyTable(std::string scene) : scene_(std::move(scene)) {}
   pipeline::SpeedupBase speedup_base() const override { return pipeline::SpeedupBase::first_point_scaled; }
   void print_header() override {
-    fmt::print("{:>6} {:>12} {:>8} {:>8} {:>12} {:>12} {:>9}\n", "nodes", "simulated s", "speedup", "effic.", "comm s/node",
-               "compute s/nd", "wall s");
+    fmt::print("{:>6} {:>12} {:>8} {:>8} {:>12} {:>14} {:>12} {:>9}\n", "nodes", "simulated s", "speedup", "effic.",
+               "busy s/node", "communic. s/nd", "waiting s/nd", "wall s");
   }
-  std::string csv_header() const override { return "nodes,simulated_s,speedup,efficiency,comm_s_mean,compute_s_mean,wall_s"; }
+  // comm_s_mean: all the time blocked in calls, communicating_s_mean + waiting_s_mean (docs/run-records.md).
+  std::string csv_header() const override {
+    return "nodes,simulated_s,speedup,efficiency,comm_s_mean,communicating_s_mean,waiting_s_mean,compute_s_mean,wall_s";
+  }
   void print_row(const pipeline::SweepRow& r) override {
     const parix::RunResult& run = r.outcome.run;
-    fmt::print("{:>6} {:>12.4f} {:>8.2f} {:>7.0f}% {:>12.4f} {:>12.4f} {:>9.2f}\n", r.nodes, run.simulated_seconds(), r.speedup,
-               100.0 * r.speedup / r.nodes, run.mean_comm_seconds(), run.mean_compute_seconds(), run.wall_seconds);
+    fmt::print("{:>6} {:>12.4f} {:>8.2f} {:>7.0f}% {:>12.4f} {:>14.4f} {:>12.4f} {:>9.2f}\n", r.nodes, run.simulated_seconds(),
+               r.speedup, 100.0 * r.speedup / r.nodes, run.mean_compute_seconds(), run.mean_communicating_seconds(),
+               run.mean_waiting_seconds(), run.wall_seconds);
   }
   std::string csv_row(const pipeline::SweepRow& r) const override {
     const parix::RunResult& run = r.outcome.run;
-    return fmt::format("{},{:.6f},{:.4f},{:.4f},{:.6f},{:.6f},{:.4f}", r.nodes, run.simulated_seconds(), r.speedup,
-                       r.speedup / r.nodes, run.mean_comm_seconds(), run.mean_compute_seconds(), run.wall_seconds);
+    return fmt::format("{},{:.6f},{:.4f},{:.4f},{:.6f},{:.6f},{:.6f},{:.6f},{:.4f}", r.nodes, run.simulated_seconds(), r.speedup,
+                       r.speedup / r.nodes, run.mean_comm_seconds(), run.mean_communicating_seconds(),
+                       run.mean_waiting_seconds(), run.mean_compute_seconds(), run.wall_seconds);
+  }
+  void print_footer() override {
+    fmt::print("busy: computing; communicating: moving bytes or setting up links; waiting: blocked before the peer sent "
+               "or asked (docs/run-records.md)\n");
   }
   nlohmann::json json_document(nlohmann::json rows) const override { return {{"sweep", rows}, {"scene", scene_}}; }
   bool announce_files() const override { return false; }

@@ -35,6 +35,7 @@ class RaytraceExperiment : public pipeline::Experiment {
   void print_setup(int nodes) const override;
   void report(const pipeline::Outcome& out, nlohmann::json& extra) const override;
   void check_outputs() const override;
+  pipeline::RunInputs run_inputs() const override;
   void print_sweep_setup() const override;
   std::unique_ptr<pipeline::SweepTable> sweep_table() const override;
 

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "apps/common/scene/scene_catalogue.hpp"
+#include "apps/pipeline/csv_comment.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/machine_options.hpp"
 #include "apps/pipeline/option_vocabulary.hpp"
@@ -34,9 +35,10 @@ void print_row(const Row& r) {
              r.wall_s);
 }
 
-void write_csv(const std::string& path, const std::vector<Row>& rows) {
+void write_csv(const std::string& path, const std::vector<Row>& rows, const machine::MachineConfig& m) {
   std::ofstream out(path);
   if (!out) throw pipeline::FileError(fmt::format("cannot write '{}'", path));
+  out << pipeline::csv_comment("accuracy render", m.name, std::to_string(m.nodes), m.network_model) << '\n';
   out << "pass,control,value,relative_rmse,simulated_s,wall_s\n";
   for (const Row& r : rows)
     out << fmt::format("{},{},{},{},{},{}\n", r.pass, r.control, r.value, r.error, r.simulated_s, r.wall_s);
@@ -73,7 +75,7 @@ void run(const AccuracyFlags& f) {
              "(media: distance samples per free path); photons and march samples also vary the noise.\n",
              kDefaultPhotons);
   if (!f.csv.empty()) {
-    write_csv(f.csv, rows);
+    write_csv(f.csv, rows, machine.config);
     fmt::print("csv       {} (gcsim plot --accuracy {} draws error against simulated time)\n", f.csv, f.csv);
   }
 }
