@@ -13,6 +13,7 @@
 #include "apps/pipeline/command_groups.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/machine_options.hpp"
+#include "parix/sim/fiber_stack.hpp"
 
 namespace gcsim::mpi_layer::app {
 namespace {
@@ -38,6 +39,7 @@ parix::Program rank_program(const MpirunOptions& o, const ProgramCopies& copies,
       ~Leave() {
         capture.attribute(id);
         install_registry(nullptr);
+        parix::describe_running_stack(nullptr, nullptr);
       }
     } leave{rank, capture, id};
     statuses[static_cast<std::size_t>(id)] = copies.main_of(id)(static_cast<int>(args.size()), argv.data());

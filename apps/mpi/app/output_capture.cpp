@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "parix/sim/fiber_stack.hpp"
+
 namespace gcsim::mpi_layer::app {
 namespace {
 
@@ -31,6 +33,7 @@ OutputCapture::OutputCapture(int ranks, bool tag_output)
       throw std::runtime_error("gcsim mpirun: cannot capture the ranks' output (memfd_create/dup2 failed)");
     }
   }
+  parix::report_stack_overflows_to(err_.saved);  // the run ends at once: the real stderr
 }
 
 OutputCapture::~OutputCapture() { finish(); }
@@ -77,6 +80,7 @@ void OutputCapture::finish() {
   std::fflush(stdout);
   std::fflush(stderr);
   finished_ = true;
+  parix::report_stack_overflows_to(2);
   for (Stream* s : {&out_, &err_}) {
     ::dup2(s->saved, s->fd);
     ::close(s->saved);

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "apps/mpi/type_transfer.hpp"
+#include "parix/sim/fiber_stack.hpp"
 
 namespace gcsim::mpi_layer {
 namespace {
@@ -28,7 +29,7 @@ parix::Mailbox& mailbox_or_fail(parix::Processor& p) {
 }  // namespace
 
 Rank::Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs)
-    : processor_(processor), mailbox_(mailbox_or_fail(processor)), costs_(costs) {
+    : processor_(processor), mailbox_(mailbox_or_fail(processor)), name_("rank " + std::to_string(processor.id())), costs_(costs) {
   registry_.world_rank = processor.id();
   std::vector<int> world(static_cast<std::size_t>(processor.count()));
   for (std::size_t i = 0; i < world.size(); ++i) world[i] = static_cast<int>(i);
@@ -45,6 +46,7 @@ Rank& Rank::current() {
 void Rank::install() {
   running = this;
   install_registry(&registry_);
+  parix::describe_running_stack(name_.c_str(), "raise it with gcsim mpirun --stack-size (default 8M)");
 }
 
 Communicator& Rank::comm(MPI_Comm handle) {

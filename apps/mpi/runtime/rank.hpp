@@ -128,6 +128,7 @@ class Rank {
 
   parix::Processor& processor_;
   parix::Mailbox& mailbox_;
+  std::string name_;  // "rank 3", for a stack overflow's message
   machine::MachineConfig::Mpi costs_;
   Registry registry_;
   std::map<MPI_Comm, Communicator> comms_;
