@@ -25,6 +25,7 @@ fs::path scratch_folder() {
 
 ProgramCopies::ProgramCopies(const std::string& program, int copies) {
   std::error_code ec;
+  if (fs::is_directory(program, ec)) throw pipeline::FileError(program + ": is a folder, not a program");
   if (!fs::is_regular_file(program, ec)) throw pipeline::FileError(program + ": no such program file");
   const fs::path folder = scratch_folder();
   struct Remove {
@@ -34,6 +35,16 @@ ProgramCopies::ProgramCopies(const std::string& program, int copies) {
       fs::remove_all(p, ignored);
     }
   } remove{folder};
+  try {
+    load(program, folder, copies);
+  } catch (...) {
+    unload();  // the copies loaded so far
+    throw;
+  }
+}
+
+void ProgramCopies::load(const std::string& program, const std::filesystem::path& folder, int copies) {
+  std::error_code ec;
   for (int rank = 0; rank < copies; ++rank) {
     const fs::path copy = folder / ("rank-" + std::to_string(rank) + ".so");
     if (!fs::copy_file(program, copy, ec)) throw pipeline::FileError(program + ": cannot copy it to " + copy.string() + ": " + ec.message());
@@ -51,8 +62,12 @@ ProgramCopies::ProgramCopies(const std::string& program, int copies) {
   }
 }
 
-ProgramCopies::~ProgramCopies() {
+ProgramCopies::~ProgramCopies() { unload(); }
+
+void ProgramCopies::unload() noexcept {
   for (auto it = handles_.rbegin(); it != handles_.rend(); ++it) ::dlclose(*it);
+  handles_.clear();
+  mains_.clear();
 }
 
 }  // namespace gcsim::mpi_layer::app

@@ -4,6 +4,7 @@
 // that file per rank (each under its own name, so the dynamic loader maps each separately with
 // its own data and bss), resolving its MPI_* calls against the gcsim executable, which exports
 // them. The copies are unlinked once loaded and unloaded when this object goes.
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,8 @@ class ProgramCopies {
   ProgramMain main_of(int rank) const { return mains_[static_cast<std::size_t>(rank)]; }
 
  private:
+  void load(const std::string& program, const std::filesystem::path& folder, int copies);
+  void unload() noexcept;
   std::vector<void*> handles_;
   std::vector<ProgramMain> mains_;
 };
