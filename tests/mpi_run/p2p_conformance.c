@@ -1,7 +1,8 @@
 /* Point-to-point as MPI 3.1 chapter 3 states it, checked by the program itself on any number of
  * ranks: self messages, MPI_PROC_NULL, zero counts, MPI_TAG_UB, truncation, wildcards with arrival
  * out of rank order, non-overtaking, tag selection among posted receives, probes and counts, and
- * MPI_Issend completing only once matched. Prints one line per rank; exits 1 if a check failed.
+ * MPI_Issend completing only once matched, and communicators' own contexts (dup, split, compare,
+ * free). Prints one line per rank; exits 1 if a check failed.
  * The same source runs under Open MPI (tests/mpi_run/CMakeLists.txt). */
 #include <mpi.h>
 #include <stdio.h>
@@ -45,16 +46,19 @@ static void zero_counts_and_tag_ub(void) {
   CHECK(count == 0 && st.MPI_SOURCE == left && st.MPI_TAG == *tag_ub);
 }
 
+/* A message longer than the receive is MPI_ERR_TRUNCATE, short (eager) or long (rendezvous). */
 static void truncation(void) {
-  int out[10] = {0}, in[5] = {0};
-  MPI_Request r;
-  MPI_Status st;
-  MPI_Isend(out, 10, MPI_INT, rank, 9, MPI_COMM_WORLD, &r);
-  const int code = MPI_Recv(in, 5, MPI_INT, rank, 9, MPI_COMM_WORLD, &st);
-  int cls = -1;
-  MPI_Error_class(code, &cls);
-  CHECK(cls == MPI_ERR_TRUNCATE);
-  MPI_Wait(&r, MPI_STATUS_IGNORE);
+  static int out[20000], in[10000];
+  for (int n = 10; n <= 20000; n *= 2000) {
+    MPI_Request r;
+    MPI_Status st;
+    MPI_Isend(out, n, MPI_INT, rank, 9, MPI_COMM_WORLD, &r);
+    const int code = MPI_Recv(in, n / 2, MPI_INT, rank, 9, MPI_COMM_WORLD, &st);
+    int cls = -1;
+    MPI_Error_class(code, &cls);
+    CHECK(cls == MPI_ERR_TRUNCATE);
+    MPI_Wait(&r, MPI_STATUS_IGNORE);
+  }
 }
 
 /* Every other rank sends two messages to rank 0, tags 1 then 2, the larger ones from the lower
@@ -125,6 +129,32 @@ static void synchronous_send(void) {
   }
 }
 
+/* Messages never cross communicators: a wildcard receive on MPI_COMM_WORLD does not take what was
+ * sent on its duplicate; split and compare as the standard defines them. */
+static void communicators(void) {
+  MPI_Comm dup, half;
+  int on_dup = 1, on_world = 2, got = 0, result = -1, half_size = 0;
+  MPI_Comm_dup(MPI_COMM_WORLD, &dup);
+  MPI_Comm_compare(MPI_COMM_WORLD, dup, &result);
+  CHECK(result == MPI_CONGRUENT);
+  MPI_Request r[2];
+  MPI_Isend(&on_dup, 1, MPI_INT, rank, 0, dup, &r[0]);
+  MPI_Isend(&on_world, 1, MPI_INT, rank, 0, MPI_COMM_WORLD, &r[1]);
+  MPI_Recv(&got, 1, MPI_INT, MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  CHECK(got == 2);
+  MPI_Recv(&got, 1, MPI_INT, MPI_ANY_SOURCE, MPI_ANY_TAG, dup, MPI_STATUS_IGNORE);
+  CHECK(got == 1);
+  MPI_Waitall(2, r, MPI_STATUSES_IGNORE);
+  MPI_Comm_split(MPI_COMM_WORLD, rank % 2, rank, &half);
+  MPI_Comm_size(half, &half_size);
+  CHECK(half_size == (size + 1 - rank % 2) / 2);
+  MPI_Comm_compare(MPI_COMM_WORLD, half, &result);
+  CHECK(result == (size == 1 ? MPI_CONGRUENT : MPI_UNEQUAL));
+  MPI_Comm_free(&half);
+  MPI_Comm_free(&dup);
+  CHECK(dup == MPI_COMM_NULL);
+}
+
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -136,6 +166,7 @@ int main(int argc, char** argv) {
   wildcards_and_order();
   tag_selection_and_probe();
   synchronous_send();
+  communicators();
   MPI_Barrier(MPI_COMM_WORLD);
   printf("rank %d: %d checks, %d failed\n", rank, checks, failures);
   MPI_Finalize();
