@@ -1,6 +1,8 @@
 # What `cmake --install build/release --prefix P` puts under P, so that a program outside this
 # tree builds against gcsim:
-#   bin/gcsim                              the command
+#   bin/gcsim                              the command (with `gcsim mpirun`)
+#   bin/gcsim-mpicc, bin/gcsim-mpicxx      compile MPI programs for it (apps/mpi/README.md)
+#   include/gcsim/mpi/                     gcsim's mpi.h, mpi_functions.h, gcsim/mpi_ext.h
 #   include/gcsim/{machine,parix,apps}/    the public headers, by the paths the sources use
 #   lib/libgcsim_*.a                       the libraries a program links
 #   lib/cmake/gcsim/                       find_package(gcsim CONFIG): gcsim::parix, gcsim::pipeline,
@@ -42,7 +44,8 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/gcsimConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/gcsimConfig.cmake INSTALL_DESTINATION ${GCSIM_CMAKE_DIR})
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/gcsimConfigVersion.cmake COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/gcsimConfig.cmake ${PROJECT_BINARY_DIR}/gcsimConfigVersion.cmake
-              ${PROJECT_SOURCE_DIR}/cmake/GcsimProgram.cmake ${PROJECT_SOURCE_DIR}/apps/cli/main.cpp
+              ${PROJECT_SOURCE_DIR}/cmake/GcsimProgram.cmake ${PROJECT_SOURCE_DIR}/cmake/GcsimMpiProgram.cmake
+              ${PROJECT_SOURCE_DIR}/apps/cli/main.cpp
         DESTINATION ${GCSIM_CMAKE_DIR})
 
 file(RELATIVE_PATH GCSIM_PC_TO_PREFIX /p/${CMAKE_INSTALL_LIBDIR}/pkgconfig /p)  # "../..": relocatable

@@ -210,12 +210,22 @@ void read_comm_cpu(const Reader& r, const toml::table& root, MachineConfig& c) {
   c.comm_cpu.seconds_per_byte = r.number(t, "copy_ns_per_byte", "[comm_cpu]", 0.0, 1e9, 0.0) * 1e-9;
 }
 
+// [mpi], each key optional: call_overhead_us (5), ns_per_byte (0), reduce_ns_per_byte (5), eager_limit_bytes (16384).
+void read_mpi(const Reader& r, const toml::table& root, MachineConfig& c) {
+  const toml::table& t = r.table(root, "mpi", false);
+  r.only_keys(t, "[mpi]", {"call_overhead_us", "ns_per_byte", "reduce_ns_per_byte", "eager_limit_bytes"});
+  c.mpi.call_overhead = from_seconds(r.number(t, "call_overhead_us", "[mpi]", 0.0, kMaxMicroseconds, 5.0) * 1e-6);
+  c.mpi.seconds_per_byte = r.number(t, "ns_per_byte", "[mpi]", 0.0, 1e9, 0.0) * 1e-9;
+  c.mpi.reduce_seconds_per_byte = r.number(t, "reduce_ns_per_byte", "[mpi]", 0.0, 1e9, 5.0) * 1e-9;
+  c.mpi.eager_limit_bytes = static_cast<std::int64_t>(r.number(t, "eager_limit_bytes", "[mpi]", 0.0, 1e15, 16384.0));
+}
+
 }  // namespace
 
 MachineConfig parse_machine_config(std::string_view text, const std::string& source) {
   const toml::table root = parse_with_bases(text, source);
   Reader r(root, source);
-  r.only_keys(root, "the file", {"name", "topology", "node", "network", "comm_cpu", "ops", "calibration", "runtime"});
+  r.only_keys(root, "the file", {"name", "topology", "node", "network", "comm_cpu", "ops", "calibration", "runtime", "mpi"});
 
   MachineConfig c;
   c.source = source;
@@ -275,6 +285,7 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
   c.packet_bytes = static_cast<std::int64_t>(r.number(net, "packet_bytes", "[network]", 1, 1 << 30, 1024.0));
 
   read_comm_cpu(r, root, c);
+  read_mpi(r, root, c);
   read_calibration(r, root, c);
 
   const toml::table& runtime = r.table(root, "runtime", false);

@@ -70,6 +70,17 @@ struct MachineConfig {
     bool any() const { return send > 0 || recv > 0 || connect > 0 || seconds_per_byte > 0; }
   } comm_cpu;
 
+  // MPI programs run by `gcsim mpirun` ([mpi]): LogGP's o (CPU time per send or receive call) and
+  // G (per byte), the CPU time per byte of a reduction's operands, and the size up to which a
+  // standard send is eager (above it the sender waits for the matching receive). Not measured on
+  // the GC (the thesis ran no MPI): documented assumptions, apps/mpi/README.md.
+  struct Mpi {
+    SimTime call_overhead = 0;
+    double seconds_per_byte = 0;
+    double reduce_seconds_per_byte = 0;
+    std::int64_t eager_limit_bytes = 16384;
+  } mpi;
+
   // Runtime (the host, not the simulated machine): bytes of stack per simulated process's fiber.
   std::int64_t fiber_stack_bytes = 64 << 10;
 

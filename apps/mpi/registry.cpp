@@ -41,6 +41,8 @@ Registry& current_registry() {
   return installed ? *installed : own;
 }
 
+void install_registry(Registry* r) { installed = r; }
+
 RegistryScope::RegistryScope(Registry& r) : previous_(installed) { installed = &r; }
 RegistryScope::~RegistryScope() { installed = previous_; }
 

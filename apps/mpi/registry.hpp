@@ -42,6 +42,9 @@ struct Registry {
 };
 
 Registry& current_registry();
+// The runtime switches ranks on one host thread (fibers): it installs the running rank's registry
+// each time that rank's fiber resumes (null: this thread's own again).
+void install_registry(Registry* r);
 
 class RegistryScope {
  public:

@@ -56,13 +56,21 @@ std::array<GuardedSlab, kMaxGuardedSlabs> g_guarded;
 std::mutex g_guarded_mutex;
 struct sigaction g_previous_segv;
 
+// Who runs on this thread's current fiber and how to give it more stack (describe_running_stack).
+thread_local const char* g_running_who = nullptr;
+thread_local const char* g_running_remedy = nullptr;
+std::atomic<int> g_report_fd{STDERR_FILENO};
+
 void write_overflow_message(std::size_t stack_bytes) {
-  char text[256];
-  const int n = std::snprintf(text, sizeof text,
-                              "gcsim: a simulated processor overflowed its fiber stack of %zu KiB; "
-                              "raise fiber_stack_kib in the [runtime] table of the machine file\n",
-                              stack_bytes / 1024);
-  if (n > 0) [[maybe_unused]] auto w = ::write(STDERR_FILENO, text, static_cast<std::size_t>(n));
+  char text[512];
+  const int n = g_running_who
+                    ? std::snprintf(text, sizeof text, "gcsim: %s overflowed its stack of %zu KiB; %s\n", g_running_who,
+                                    stack_bytes / 1024, g_running_remedy ? g_running_remedy : "give it a larger stack")
+                    : std::snprintf(text, sizeof text,
+                                    "gcsim: a simulated processor overflowed its fiber stack of %zu KiB; "
+                                    "raise fiber_stack_kib in the [runtime] table of the machine file\n",
+                                    stack_bytes / 1024);
+  if (n > 0) [[maybe_unused]] auto w = ::write(g_report_fd.load(), text, static_cast<std::size_t>(n));
 }
 
 void on_segv(int sig, siginfo_t* info, void* context) {
@@ -133,6 +141,13 @@ void unregister_guarded(char* base) {
 void StackCanary::paint() {
   for (std::uint64_t& w : words_) w = kPattern;
 }
+
+void describe_running_stack(const char* who, const char* remedy) {
+  g_running_who = who;
+  g_running_remedy = remedy;
+}
+
+void report_stack_overflows_to(int fd) { g_report_fd.store(fd); }
 
 void report_stack_overflow(std::size_t stack_bytes) {
   write_overflow_message(stack_bytes);

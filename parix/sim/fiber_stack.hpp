@@ -45,6 +45,14 @@ class StackCanary {
   std::uint64_t words_[kWords];
 };
 
+// Names, in the overflow message, what runs on this thread's fiber from now on ("rank 3") and how
+// to give it more stack; both must outlive the run (null: the default message, naming
+// [runtime] fiber_stack_kib). A layer that runs programs on fibers sets it as each one resumes.
+void describe_running_stack(const char* who, const char* remedy);
+// Where the overflow message goes (default: standard error); for a caller that has redirected
+// descriptor 2 meanwhile.
+void report_stack_overflows_to(int fd);
+
 // Ends the process with the overflow message (the stack can no longer be trusted: no unwinding).
 [[noreturn]] void report_stack_overflow(std::size_t stack_bytes);
 

@@ -11,6 +11,7 @@
 
 #include "machine/sim_time.hpp"
 #include "machine/trace.hpp"
+#include "parix/mailbox.hpp"
 #include "parix/processor.hpp"
 #include "parix/run_result.hpp"
 #include "parix/sim/activity.hpp"
@@ -29,7 +30,7 @@ using machine::TraceKind;
 
 class Simulation;
 
-class SimProcess final : public Processor, public Waiter {
+class SimProcess final : public Processor, public Mailbox, public Waiter {
  public:
   SimProcess(Simulation& sim, int id, int thread);
   ~SimProcess() override { drop_persistent_links(); }
@@ -50,6 +51,11 @@ class SimProcess final : public Processor, public Waiter {
   std::size_t wait_any(std::span<Request* const> rs) override;
   bool cancel(Request& r) override;
   Thread spawn(std::function<void(Processor&)> body) override;
+  // Addressed messages (parix/mailbox.hpp), in mailbox_calls.cpp.
+  Request post(int dest, const Envelope& envelope, std::span<const std::byte> data) override;
+  void collect(std::vector<Letter>& into) override;
+  void await(std::span<const Request> requests, const char* call, int peer) override;
+  void occupy(SimTime duration, std::string_view label, bool as_comm) override;
 
   // Suspends this fiber until wake(); `call` and `peer` describe the wait for deadlock reports.
   void block(const char* call, int peer);

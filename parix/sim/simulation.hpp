@@ -23,6 +23,7 @@
 #include "parix/sim/memory_ledger.hpp"
 #include "parix/sim/message_transport.hpp"
 #include "parix/sim/payload_pool.hpp"
+#include "parix/sim/post_office.hpp"
 #include "parix/sim/process_lifetime.hpp"
 #include "parix/sim/request_pool.hpp"
 #include "parix/sim/sim_process.hpp"
@@ -48,7 +49,8 @@ class Simulation {
         node_of(checked_placement(o.placement, config.nodes)),
         memory(nodes, node_of),
         processes(kernel, stats, static_cast<std::size_t>(config.fiber_stack_bytes)),
-        transport({kernel, *network, trace, memory, payloads, links, processes}) {}
+        transport({kernel, *network, trace, memory, payloads, links, processes}),
+        post_office({kernel, *network, connections, stats, node_of}) {}
 
   RunResult run(const std::function<void(Processor&)>& program);
   // The run's figures; an interrupted run's makespan is the kernel's clock when it stopped.
@@ -72,6 +74,7 @@ class Simulation {
   ProcessLifetime processes;
   MessageTransport transport;
   ConnectionMatching connect_matching;
+  PostOffice post_office;  // addressed messages (parix/mailbox.hpp)
 
  private:
   static std::deque<machine::Node> make_nodes(machine::Kernel& kernel, const machine::MachineConfig& config,

@@ -24,6 +24,20 @@ if(cache)
   message(FATAL_ERROR "the example's build names gcsim's source tree: ${cache}")
 endif()
 
+# MPI programs: an ordinary one compiled with the installed gcsim-mpicc, and examples/mpi built by
+# CMake with gcsim_add_mpi_program, both run by the installed gcsim mpirun.
+step(${prefix}/bin/gcsim-mpicc -O2 -o ${WORK}/ring_mpi ${SOURCE_DIR}/examples/mpi/ring.c)
+step(${prefix}/bin/gcsim mpirun -np 16 ${WORK}/ring_mpi)
+if(NOT step_output MATCHES "rank 15 of 16: ring sum 120 [(]expected 120[)]" OR NOT step_output MATCHES "simulated +[0-9.]+ s")
+  message(FATAL_ERROR "the installed gcsim mpirun printed:\n${step_output}")
+endif()
+step(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/mpi -B ${WORK}/mpi -G ${GENERATOR} -DCMAKE_PREFIX_PATH=${prefix})
+step(${CMAKE_COMMAND} --build ${WORK}/mpi)
+step(${prefix}/bin/gcsim mpirun -np 4 ${WORK}/mpi/pi 100000)
+if(NOT step_output MATCHES "pi 3[.]14159265")
+  message(FATAL_ERROR "examples/mpi's pi under the installed gcsim mpirun printed:\n${step_output}")
+endif()
+
 # Without CMake: the PARIX API from a main() of one's own, flags from pkg-config.
 find_program(PKG_CONFIG pkg-config)
 if(PKG_CONFIG)

@@ -7,6 +7,8 @@
 #error "include <mpi.h>, not <mpi_functions.h>"
 #endif
 
+#include "mpi_names.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif

@@ -1,0 +1,28 @@
+#pragma once
+// gcsim mpirun's command line, read by hand: Open MPI's spelling `-np N` is not an option name
+// CLI11 accepts, and everything after the program belongs to the program.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "apps/pipeline/machine_options.hpp"
+
+namespace gcsim::mpi_layer::app {
+
+struct MpirunOptions {
+  int np = 0;
+  pipeline::MachineOptions machine;  // --config, --model, --shape, --json, --trace
+  bool tag_output = false;
+  std::int64_t stack_bytes = std::int64_t{8} << 20;  // per rank, reserved and committed as used
+  std::string compute = "annotated";                 // none | annotated
+  std::string program;
+  std::vector<std::string> args;
+  bool help = false;
+};
+
+// Throws CLI::ValidationError (exit 2) naming the option and what was expected.
+MpirunOptions parse_mpirun_options(const std::vector<std::string>& words);
+std::string mpirun_summary();
+std::string mpirun_usage();
+
+}  // namespace gcsim::mpi_layer::app

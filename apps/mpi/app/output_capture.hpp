@@ -1,0 +1,39 @@
+#pragma once
+// The ranks' stdout and stderr, kept apart. All ranks share one host process and so one stdout;
+// while they run, file descriptors 1 and 2 go to memory files, and whatever appeared there since
+// the last look belongs to the rank that ran meanwhile (ranks switch only inside MPI calls, which
+// look first). When the run ends, each rank's output is printed in rank order, stdout to stdout and
+// stderr to stderr, each line prefixed "[1,RANK]<stdout>:" with --tag-output, as Open MPI does.
+#include <string>
+#include <vector>
+
+namespace gcsim::mpi_layer::app {
+
+class OutputCapture {
+ public:
+  OutputCapture(int ranks, bool tag_output);
+  ~OutputCapture();  // restores the descriptors and prints what is left
+  OutputCapture(const OutputCapture&) = delete;
+  OutputCapture& operator=(const OutputCapture&) = delete;
+
+  // What appeared since the last call is rank's.
+  void attribute(int rank);
+  // Restores stdout and stderr and prints every rank's output; later calls do nothing.
+  void finish();
+
+ private:
+  struct Stream {
+    int fd;          // 1 or 2
+    int saved = -1;  // the real descriptor
+    int memory = -1;
+    long long read = 0;  // bytes of the memory file attributed so far
+  };
+  void drain(Stream& s, std::vector<std::string>& into, int rank);
+  void print(const Stream& s, const std::vector<std::string>& texts, const char* name) const;
+  Stream out_{1}, err_{2};
+  std::vector<std::string> outs_, errs_;
+  bool tag_;
+  bool finished_ = false;
+};
+
+}  // namespace gcsim::mpi_layer::app

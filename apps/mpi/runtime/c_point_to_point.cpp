@@ -1,0 +1,173 @@
+// The C entry points that start and finish point-to-point messages (MPI 3.1 chapter 3).
+#include <string>
+
+#include "apps/mpi/c_call.hpp"
+#include "apps/mpi/runtime/rank.hpp"
+#include "apps/mpi/type_transfer.hpp"
+
+using namespace gcsim::mpi_layer;
+namespace parix = gcsim::parix;
+
+namespace {
+
+std::string describe(const char* call, const char* peer_name, int peer, int tag, MPI_Comm comm) {
+  std::string peer_text = peer == MPI_ANY_SOURCE ? "MPI_ANY_SOURCE" : std::to_string(peer);
+  std::string tag_text = tag == MPI_ANY_TAG ? "MPI_ANY_TAG" : std::to_string(tag);
+  return std::string(call) + "(" + peer_name + "=" + peer_text + ", tag=" + tag_text + ", comm=" + Rank::comm_name(comm) + ")";
+}
+
+void check_peer(const Communicator& c, int peer, bool any_allowed) {
+  if (peer == MPI_PROC_NULL || (any_allowed && peer == MPI_ANY_SOURCE)) return;
+  if (peer < 0 || peer >= c.size()) fail(MPI_ERR_RANK, "rank outside the communicator");
+}
+
+void check_tag(int tag, bool any_allowed) {
+  if (any_allowed && tag == MPI_ANY_TAG) return;
+  if (tag < 0) fail(MPI_ERR_TAG, "negative tag");
+}
+
+// MPI_PROC_NULL: complete at once, source MPI_PROC_NULL, tag MPI_ANY_TAG, no bytes.
+MPI_Request done_request(Rank& rank, const char* call) { return rank.start_null(call); }
+
+MPI_Request start_send(Rank& rank, const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm,
+                       SendMode mode, const char* call) {
+  const Communicator& c = rank.comm(comm);
+  check_count_arg(count);
+  check_peer(c, dest, false);
+  check_tag(tag, false);
+  const Datatype& type = datatype_arg(rank.registry(), datatype, true);
+  if (dest == MPI_PROC_NULL) return done_request(rank, call);
+  parix::Bytes payload(static_cast<std::size_t>(pack_size(count, type)));
+  MPI_Count position = 0;
+  pack(buf, count, type, payload, position);
+  if (mode == SendMode::buffered && static_cast<MPI_Count>(payload.size()) > rank.attached_size) {
+    fail(MPI_ERR_BUFFER, "MPI_Bsend: the attached buffer is too small for the message");
+  }
+  return rank.start_send(c, c.context, dest, tag, std::move(payload), mode, describe(call, "dest", dest, tag, comm));
+}
+
+MPI_Request start_recv(Rank& rank, void* buf, int count, MPI_Datatype datatype, int source, int tag, MPI_Comm comm,
+                       const char* call) {
+  const Communicator& c = rank.comm(comm);
+  check_count_arg(count);
+  check_peer(c, source, true);
+  check_tag(tag, true);
+  const Datatype& type = datatype_arg(rank.registry(), datatype, true);
+  if (source == MPI_PROC_NULL) return done_request(rank, call);
+  return rank.start_recv(c, c.context, source, tag, buf, count, type, describe(call, "source", source, tag, comm));
+}
+
+int wait_for(Rank& rank, MPI_Request& h, MPI_Status* status) {
+  const std::string call = rank.operation(h).call;
+  rank.wait_until([&] { return rank.test(h); }, call);
+  return rank.finish(h, status);
+}
+
+int blocking_send(const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm, SendMode mode,
+                  const char* call) {
+  int error = MPI_SUCCESS;
+  const int code = runtime_call([&](Rank& rank) {
+    MPI_Request h = start_send(rank, buf, count, datatype, dest, tag, comm, mode, call);
+    error = wait_for(rank, h, MPI_STATUS_IGNORE);
+  });
+  return code != MPI_SUCCESS ? code : error;
+}
+
+int nonblocking_send(const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm, SendMode mode,
+                     const char* call, MPI_Request* request) {
+  return runtime_call([&](Rank& rank) {
+    out_arg(request) = start_send(rank, buf, count, datatype, dest, tag, comm, mode, call);
+  });
+}
+
+}  // namespace
+
+extern "C" {
+
+int MPI_Send(const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm) {
+  return blocking_send(buf, count, datatype, dest, tag, comm, SendMode::standard, "MPI_Send");
+}
+int MPI_Ssend(const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm) {
+  return blocking_send(buf, count, datatype, dest, tag, comm, SendMode::synchronous, "MPI_Ssend");
+}
+int MPI_Rsend(const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm) {
+  return blocking_send(buf, count, datatype, dest, tag, comm, SendMode::ready, "MPI_Rsend");
+}
+int MPI_Bsend(const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm) {
+  return blocking_send(buf, count, datatype, dest, tag, comm, SendMode::buffered, "MPI_Bsend");
+}
+int MPI_Isend(const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm, MPI_Request* request) {
+  return nonblocking_send(buf, count, datatype, dest, tag, comm, SendMode::standard, "MPI_Isend", request);
+}
+int MPI_Issend(const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm, MPI_Request* request) {
+  return nonblocking_send(buf, count, datatype, dest, tag, comm, SendMode::synchronous, "MPI_Issend", request);
+}
+int MPI_Ibsend(const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm, MPI_Request* request) {
+  return nonblocking_send(buf, count, datatype, dest, tag, comm, SendMode::buffered, "MPI_Ibsend", request);
+}
+int MPI_Irsend(const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm, MPI_Request* request) {
+  return nonblocking_send(buf, count, datatype, dest, tag, comm, SendMode::ready, "MPI_Irsend", request);
+}
+
+int MPI_Recv(void* buf, int count, MPI_Datatype datatype, int source, int tag, MPI_Comm comm, MPI_Status* status) {
+  int error = MPI_SUCCESS;
+  const int code = runtime_call([&](Rank& rank) {
+    MPI_Request h = start_recv(rank, buf, count, datatype, source, tag, comm, "MPI_Recv");
+    error = wait_for(rank, h, status);
+  });
+  return code != MPI_SUCCESS ? code : error;
+}
+
+int MPI_Irecv(void* buf, int count, MPI_Datatype datatype, int source, int tag, MPI_Comm comm, MPI_Request* request) {
+  return runtime_call([&](Rank& rank) { out_arg(request) = start_recv(rank, buf, count, datatype, source, tag, comm, "MPI_Irecv"); });
+}
+
+int MPI_Sendrecv(const void* sendbuf, int sendcount, MPI_Datatype sendtype, int dest, int sendtag, void* recvbuf,
+                 int recvcount, MPI_Datatype recvtype, int source, int recvtag, MPI_Comm comm, MPI_Status* status) {
+  int error = MPI_SUCCESS;
+  const int code = runtime_call([&](Rank& rank) {
+    MPI_Request r = start_recv(rank, recvbuf, recvcount, recvtype, source, recvtag, comm, "MPI_Sendrecv");
+    MPI_Request s = start_send(rank, sendbuf, sendcount, sendtype, dest, sendtag, comm, SendMode::standard, "MPI_Sendrecv");
+    const std::string call = rank.operation(r).call + " and " + rank.operation(s).call;
+    rank.wait_until([&] { return rank.test(s) && rank.test(r); }, call);
+    rank.finish(s, MPI_STATUS_IGNORE);
+    error = rank.finish(r, status);
+  });
+  return code != MPI_SUCCESS ? code : error;
+}
+
+int MPI_Sendrecv_replace(void* buf, int count, MPI_Datatype datatype, int dest, int sendtag, int source, int recvtag,
+                         MPI_Comm comm, MPI_Status* status) {
+  int error = MPI_SUCCESS;
+  const int code = runtime_call([&](Rank& rank) {
+    // The send packs buf before the receive may write it.
+    MPI_Request s = start_send(rank, buf, count, datatype, dest, sendtag, comm, SendMode::standard, "MPI_Sendrecv_replace");
+    MPI_Request r = start_recv(rank, buf, count, datatype, source, recvtag, comm, "MPI_Sendrecv_replace");
+    const std::string call = rank.operation(r).call + " and " + rank.operation(s).call;
+    rank.wait_until([&] { return rank.test(s) && rank.test(r); }, call);
+    rank.finish(s, MPI_STATUS_IGNORE);
+    error = rank.finish(r, status);
+  });
+  return code != MPI_SUCCESS ? code : error;
+}
+
+int MPI_Buffer_attach(void* buffer, int size) {
+  return runtime_call([&](Rank& rank) {
+    if (size < 0) fail(MPI_ERR_ARG, "negative buffer size");
+    if (rank.attached_buffer) fail(MPI_ERR_BUFFER, "a buffer is attached already");
+    rank.attached_buffer = buffer;
+    rank.attached_size = size;
+  });
+}
+
+int MPI_Buffer_detach(void* buffer_addr, int* size) {
+  return runtime_call([&](Rank& rank) {
+    if (!buffer_addr) fail(MPI_ERR_ARG, "null buffer address");
+    *static_cast<void**>(buffer_addr) = rank.attached_buffer;
+    out_arg(size) = rank.attached_size;
+    rank.attached_buffer = nullptr;
+    rank.attached_size = 0;
+  });
+}
+
+}  // extern "C"

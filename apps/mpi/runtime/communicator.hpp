@@ -1,0 +1,42 @@
+#pragma once
+// A communicator of the runtime: its members (world ranks in communicator-rank order), this rank's
+// place among them, and its context. Every rank of a communicator derives the same context for a
+// child (dup, split, create) without talking: a hash of the parent's and the child's number, so
+// contexts never need agreeing on. Point-to-point uses the even context, collectives the odd one
+// next to it, so no user receive, wildcards included, ever matches a collective's message.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace gcsim::mpi_layer {
+
+struct Communicator {
+  std::shared_ptr<const std::vector<int>> members;  // world ranks; shared with requests
+  int rank = 0;                                      // this rank in the communicator
+  std::int64_t context = 0;                          // even: point-to-point; context + 1: collectives
+  std::int64_t children = 0;                         // contexts derived from this one so far
+  // Kept for MPI_Comm_get_errhandler; errors are returned whichever it is (apps/mpi/README.md).
+  int errhandler = 2;  // MPI_ERRORS_RETURN
+
+  int size() const { return static_cast<int>(members->size()); }
+  int world_rank_of(int rank_in_comm) const { return (*members)[static_cast<std::size_t>(rank_in_comm)]; }
+  // The communicator rank of a world rank; -1 if it is not a member.
+  int rank_of_world(int world) const {
+    for (std::size_t i = 0; i < members->size(); ++i) {
+      if ((*members)[i] == world) return static_cast<int>(i);
+    }
+    return -1;
+  }
+  std::int64_t collective_context() const { return context + 1; }
+  // The context of the next child: the same on every member, as each derives children in the
+  // same collective order.
+  std::int64_t next_child_context() {
+    std::uint64_t z = static_cast<std::uint64_t>(context) * 0x9e3779b97f4a7c15ull + static_cast<std::uint64_t>(++children);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    z ^= z >> 31;
+    return static_cast<std::int64_t>((z >> 2) << 1) + 16;  // even, clear of the predefined ones
+  }
+};
+
+}  // namespace gcsim::mpi_layer

@@ -1,0 +1,260 @@
+// The rank's engine: communicators, requests, the eager and rendezvous protocols and matching.
+#include "apps/mpi/runtime/rank.hpp"
+
+#include <algorithm>
+
+#include "apps/mpi/type_transfer.hpp"
+#include "parix/sim/fiber_stack.hpp"
+
+namespace gcsim::mpi_layer {
+namespace {
+
+thread_local Rank* running = nullptr;
+
+enum Kind : std::int64_t { kEager = 1, kRequestToSend = 2, kClearToSend = 3, kData = 4 };
+
+// words: [0] kind | size << 8, [1] context, [2] tag or the receiver's operation, [3] the sender's.
+parix::Envelope envelope(Kind kind, std::int64_t size, std::int64_t context, std::int64_t third, std::int64_t fourth) {
+  parix::Envelope e;
+  e.words = {kind | (size << 8), context, third, fourth};
+  return e;
+}
+
+parix::Mailbox& mailbox_or_fail(parix::Processor& p) {
+  parix::Mailbox* box = parix::mailbox_of(p);
+  if (!box) fail(MPI_ERR_OTHER, "this backend has no addressed messages: MPI programs run on the simulated backend");
+  return *box;
+}
+
+}  // namespace
+
+Rank::Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs)
+    : processor_(processor), mailbox_(mailbox_or_fail(processor)), name_("rank " + std::to_string(processor.id())), costs_(costs) {
+  registry_.world_rank = processor.id();
+  std::vector<int> world(static_cast<std::size_t>(processor.count()));
+  for (std::size_t i = 0; i < world.size(); ++i) world[i] = static_cast<int>(i);
+  comms_[MPI_COMM_WORLD] = Communicator{std::make_shared<const std::vector<int>>(world), processor.id(), 2, 0};
+  comms_[MPI_COMM_SELF] =
+      Communicator{std::make_shared<const std::vector<int>>(std::vector<int>{processor.id()}), 0, 4, 0};
+}
+
+Rank& Rank::current() {
+  if (!running) fail(MPI_ERR_OTHER, "no MPI rank runs here: start the program with gcsim mpirun");
+  return *running;
+}
+
+void Rank::install() {
+  running = this;
+  install_registry(&registry_);
+  parix::describe_running_stack(name_.c_str(), "raise it with gcsim mpirun --stack-size (default 8M)");
+}
+
+Communicator& Rank::comm(MPI_Comm handle) {
+  const auto it = comms_.find(handle);
+  if (it == comms_.end()) fail(MPI_ERR_COMM, "invalid communicator");
+  return it->second;
+}
+
+MPI_Comm Rank::add_comm(Communicator c) {
+  const MPI_Comm h = next_comm_++;
+  comms_.emplace(h, std::move(c));
+  return h;
+}
+
+void Rank::free_comm(MPI_Comm handle) {
+  if (handle == MPI_COMM_WORLD || handle == MPI_COMM_SELF) fail(MPI_ERR_COMM, "cannot free a predefined communicator");
+  if (comms_.erase(handle) == 0) fail(MPI_ERR_COMM, "invalid communicator");
+}
+
+std::string Rank::comm_name(MPI_Comm handle) {
+  if (handle == MPI_COMM_WORLD) return "MPI_COMM_WORLD";
+  if (handle == MPI_COMM_SELF) return "MPI_COMM_SELF";
+  return "comm " + std::to_string(handle);
+}
+
+MPI_Request Rank::add_operation(Operation op) {
+  const MPI_Request h = next_request_++;
+  operations_.emplace(h, std::move(op));
+  return h;
+}
+
+MPI_Request Rank::start_null(std::string call) {
+  Operation op;
+  op.call = std::move(call);
+  op.done = true;
+  op.charged = true;
+  op.status.MPI_SOURCE = MPI_PROC_NULL;
+  op.status.MPI_TAG = MPI_ANY_TAG;
+  return add_operation(std::move(op));
+}
+
+Operation& Rank::operation(MPI_Request handle) {
+  const auto it = operations_.find(handle);
+  if (it == operations_.end()) fail(MPI_ERR_REQUEST, "invalid request");
+  return it->second;
+}
+
+void Rank::charge(std::int64_t bytes) {
+  const machine::SimTime d = costs_.call_overhead + machine::from_seconds(costs_.seconds_per_byte * static_cast<double>(bytes));
+  if (d <= 0) return;
+  if (before_switch) before_switch();
+  mailbox_.occupy(d, "mpi_overhead", true);
+  install();
+}
+
+void Rank::charge_reduction(std::size_t bytes) {
+  const machine::SimTime d = machine::from_seconds(costs_.reduce_seconds_per_byte * static_cast<double>(bytes));
+  if (d <= 0) return;
+  if (before_switch) before_switch();
+  mailbox_.occupy(d, "mpi_reduction", true);
+  install();
+}
+
+void Rank::compute(double seconds) {
+  if (seconds < 0) fail(MPI_ERR_ARG, "negative compute time");
+  if (!counts_compute) return;
+  if (before_switch) before_switch();
+  mailbox_.occupy(machine::from_seconds(seconds), "gcsim_mpi_compute", false);
+  install();
+}
+
+MPI_Request Rank::start_send(const Communicator& c, std::int64_t context, int dest, int tag, parix::Bytes payload,
+                             SendMode mode, std::string call) {
+  Operation op;
+  op.is_send = true;
+  op.call = std::move(call);
+  op.context = context;
+  op.tag = tag;
+  op.peer_world = c.world_rank_of(dest);
+  const auto size = static_cast<std::int64_t>(payload.size());
+  charge(size);
+  const bool rendezvous = mode == SendMode::synchronous || (mode == SendMode::standard && size > costs_.eager_limit_bytes);
+  if (!rendezvous) {
+    mailbox_.post(op.peer_world, envelope(kEager, size, context, tag, 0), payload);
+    op.done = true;
+    return add_operation(std::move(op));
+  }
+  op.payload = std::move(payload);
+  const MPI_Request h = next_request_;  // the handle add_operation gives it
+  mailbox_.post(op.peer_world, envelope(kRequestToSend, size, context, tag, h), {});
+  return add_operation(std::move(op));
+}
+
+MPI_Request Rank::start_recv(const Communicator& c, std::int64_t context, int source, int tag, void* buffer,
+                             MPI_Count count, const Datatype& type, std::string call) {
+  Operation op;
+  op.call = std::move(call);
+  op.members = c.members;
+  op.context = context;
+  op.tag = tag;
+  op.peer_world = source == MPI_ANY_SOURCE ? -1 : c.world_rank_of(source);
+  op.buffer = buffer;
+  op.count = count;
+  op.type = type;
+  const MPI_Request h = add_operation(std::move(op));
+  posted_.push_back(h);
+  progress();  // an arrived message matches at once
+  return h;
+}
+
+MPI_Request Rank::start_raw_recv(const Communicator& c, std::int64_t context, int source, int tag, std::span<std::byte> into) {
+  Operation op;
+  op.call = "a collective's receive from rank " + std::to_string(source);
+  op.members = c.members;
+  op.context = context;
+  op.tag = tag;
+  op.peer_world = c.world_rank_of(source);
+  op.raw = into;
+  op.is_raw = true;
+  const MPI_Request h = add_operation(std::move(op));
+  posted_.push_back(h);
+  progress();
+  return h;
+}
+
+bool Rank::matches(const Operation& r, const Arrived& m) {
+  return r.context == m.context && (r.peer_world < 0 || r.peer_world == m.source) && (r.tag == MPI_ANY_TAG || r.tag == m.tag);
+}
+
+void Rank::progress() {
+  // Unexpected messages first match receives posted since they arrived.
+  for (auto it = unexpected_.begin(); it != unexpected_.end();) {
+    const auto r = std::find_if(posted_.begin(), posted_.end(), [&](MPI_Request h) { return matches(operations_.at(h), *it); });
+    if (r == posted_.end()) {
+      ++it;
+      continue;
+    }
+    const MPI_Request h = *r;
+    posted_.erase(r);
+    Arrived m = std::move(*it);
+    it = unexpected_.erase(it);
+    match(operations_.at(h), h, std::move(m));
+  }
+  letters_.clear();
+  mailbox_.collect(letters_);
+  for (parix::Letter& l : letters_) on_letter(l);
+  for (auto& [h, op] : operations_) {
+    if (op.is_send && !op.done && op.wire.valid() && op.wire.test()) op.done = true;
+  }
+}
+
+void Rank::on_letter(parix::Letter& l) {
+  const auto& w = l.envelope.words;
+  const std::int64_t kind = w[0] & 0xff;
+  const std::int64_t size = w[0] >> 8;
+  if (kind == kEager || kind == kRequestToSend) {
+    on_message({l.source, w[1], static_cast<int>(w[2]), kind == kRequestToSend, size, w[3], std::move(l.data)});
+  } else if (kind == kClearToSend) {
+    Operation& s = operations_.at(w[3]);
+    s.wire = mailbox_.post(s.peer_world, envelope(kData, 0, s.context, w[2], w[3]), s.payload);
+    s.payload = {};
+  } else if (kind == kData) {
+    Operation& r = operations_.at(w[2]);
+    deliver(r, l.data);
+  }
+}
+
+void Rank::on_message(Arrived&& m) {
+  const auto r = std::find_if(posted_.begin(), posted_.end(), [&](MPI_Request h) { return matches(operations_.at(h), m); });
+  if (r == posted_.end()) {
+    unexpected_.push_back(std::move(m));
+    return;
+  }
+  const MPI_Request h = *r;
+  posted_.erase(r);
+  match(operations_.at(h), h, std::move(m));
+}
+
+void Rank::match(Operation& r, MPI_Request handle, Arrived&& m) {
+  r.status.MPI_TAG = m.tag;
+  r.status.MPI_SOURCE = static_cast<int>(std::find(r.members->begin(), r.members->end(), m.source) - r.members->begin());
+  r.status.gcsim_bytes = m.size;
+  if (!m.rendezvous) {
+    deliver(r, m.data);
+    return;
+  }
+  mailbox_.post(m.source, envelope(kClearToSend, 0, m.context, handle, m.sender_op), {});
+}
+
+void Rank::deliver(Operation& r, std::span<const std::byte> data) {
+  r.done = true;
+  r.status.MPI_ERROR = MPI_SUCCESS;
+  if (r.is_raw) {
+    if (data.size() != r.raw.size()) fail(MPI_ERR_INTERN, "a collective received a message of another size");
+    std::copy(data.begin(), data.end(), r.raw.begin());
+    return;
+  }
+  const MPI_Count capacity = pack_size(r.count, *r.type);
+  MPI_Count position = 0;
+  if (static_cast<MPI_Count>(data.size()) > capacity) {
+    r.status.MPI_ERROR = MPI_ERR_TRUNCATE;
+    r.status.gcsim_bytes = capacity;
+    unpack(data.first(static_cast<std::size_t>(capacity)), position, r.buffer, r.count, *r.type);
+    return;
+  }
+  const MPI_Count whole = count_of(static_cast<MPI_Count>(data.size()), *r.type);
+  const MPI_Count elements = whole == MPI_UNDEFINED ? 0 : whole;
+  unpack(data, position, r.buffer, elements, *r.type);
+}
+
+}  // namespace gcsim::mpi_layer

@@ -1,0 +1,155 @@
+#pragma once
+// One MPI rank of `gcsim mpirun`: its communicators, its requests and the matching of messages to
+// receives, over the runtime's addressed messages (parix/mailbox.hpp). Protocol:
+//  - eager: one letter with the data (standard sends up to [mpi] eager_limit_bytes, Bsend, Rsend);
+//    the send is complete once handed over;
+//  - rendezvous: a request-to-send letter (size, no data); the receiver answers clear-to-send when
+//    a receive matches it; then the data letter, whose delivery completes the send (standard
+//    sends above the limit, and every Ssend: complete only once matched).
+// Receives match in posting order, arrivals in arrival order (which keeps each sender's order), by
+// (source, tag, context) with MPI_ANY_SOURCE/MPI_ANY_TAG. A rank progresses only inside its own
+// MPI calls, as an MPI library without a progress thread does. CPU overheads ([mpi] o and G) are
+// charged per send call and per completed receive.
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "apps/mpi/datatype.hpp"
+#include "apps/mpi/error.hpp"
+#include "apps/mpi/registry.hpp"
+#include "apps/mpi/runtime/communicator.hpp"
+#include "machine/machine_config.hpp"
+#include "parix/mailbox.hpp"
+#include "parix/processor.hpp"
+
+namespace gcsim::mpi_layer {
+
+// MPI_Abort: unwinds the rank's program; `gcsim mpirun` exits with the code.
+struct AbortRequested {
+  int rank;
+  int code;
+};
+
+enum class SendMode { standard, synchronous, buffered, ready };
+
+struct Operation {  // behind one MPI_Request
+  bool is_send = false;
+  bool done = false;
+  bool charged = false;  // a receive's CPU overhead was paid
+  MPI_Status status{};
+  std::string call;      // for deadlock reports: "MPI_Irecv(source=1, tag=0, comm=MPI_COMM_WORLD)"
+  std::shared_ptr<const std::vector<int>> members;  // of its communicator: status source ranks
+  std::int64_t context = 0;
+  int tag = 0;
+  int peer_world = -1;  // destination, or source (-1: MPI_ANY_SOURCE)
+  // send
+  parix::Bytes payload;   // rendezvous: kept until clear-to-send
+  parix::Request wire;    // rendezvous: the data letter, delivered = complete
+  // receive: into (buffer, count, type), or raw into exactly `raw` bytes (collectives)
+  void* buffer = nullptr;
+  MPI_Count count = 0;
+  std::optional<Datatype> type;
+  std::span<std::byte> raw;
+  bool is_raw = false;
+};
+
+class Rank {
+ public:
+  Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs);
+
+  // The rank whose fiber runs now; MPI_ERR_OTHER outside `gcsim mpirun`.
+  static Rank& current();
+  // Makes this the current rank (and its registry the C calls' one); done as its fiber resumes.
+  void install();
+  // Called before the rank blocks or yields (the output capture attributes what it printed).
+  std::function<void()> before_switch;
+
+  int world_rank() const { return processor_.id(); }
+  int world_size() const { return processor_.count(); }
+  double now_seconds() const { return processor_.now_seconds(); }
+  Registry& registry() { return registry_; }
+  bool counts_compute = true;  // gcsim_mpi_compute charges time (--compute annotated), or not (none)
+  bool initialized = false;
+  bool finalized = false;
+
+  Communicator& comm(MPI_Comm handle);  // MPI_ERR_COMM if it names none
+  MPI_Comm add_comm(Communicator c);
+  void free_comm(MPI_Comm handle);
+  static std::string comm_name(MPI_Comm handle);
+
+  // Point-to-point on comm's context (or its collective one). Return the request handle.
+  MPI_Request start_send(const Communicator& c, std::int64_t context, int dest, int tag, parix::Bytes payload,
+                         SendMode mode, std::string call);
+  MPI_Request start_recv(const Communicator& c, std::int64_t context, int source, int tag, void* buffer, MPI_Count count,
+                         const Datatype& type, std::string call);
+  MPI_Request start_raw_recv(const Communicator& c, std::int64_t context, int source, int tag, std::span<std::byte> into);
+  // A request complete at once, as a communication with MPI_PROC_NULL is.
+  MPI_Request start_null(std::string call);
+  Operation& operation(MPI_Request handle);  // MPI_ERR_REQUEST if it names none
+  // Finishes handle (done): its status, its error; the handle is freed.
+  int finish(MPI_Request& handle, MPI_Status* status);
+  // Blocks until done(); describes the wait as call.
+  void wait_until(const std::function<bool()>& done, const std::string& call);
+  // Takes what arrived and answers it; completes rendezvous sends whose data was delivered.
+  void progress();
+  bool test(MPI_Request handle);  // progress, then whether it is done (and its receive charged)
+  // The first unexpected message matching (source, tag, context): status filled, nothing taken.
+  bool probe(const Communicator& c, int source, int tag, MPI_Status* status);
+
+  void charge(std::int64_t bytes);  // o + G * bytes, as communication
+  void charge_reduction(std::size_t bytes);
+  void compute(double seconds);
+  void finalize_checks();
+
+  void* attached_buffer = nullptr;
+  int attached_size = 0;
+
+ private:
+  struct Arrived {  // an eager message or a request-to-send, not matched yet
+    int source = -1;
+    std::int64_t context = 0;
+    int tag = 0;
+    bool rendezvous = false;
+    std::int64_t size = 0;
+    std::int64_t sender_op = 0;
+    parix::Bytes data;
+  };
+  void on_letter(parix::Letter& l);
+  void on_message(Arrived&& m);
+  void match(Operation& r, MPI_Request handle, Arrived&& m);
+  void deliver(Operation& r, std::span<const std::byte> data);
+  static bool matches(const Operation& r, const Arrived& m);
+  MPI_Request add_operation(Operation op);
+
+  parix::Processor& processor_;
+  parix::Mailbox& mailbox_;
+  std::string name_;  // "rank 3", for a stack overflow's message
+  machine::MachineConfig::Mpi costs_;
+  Registry registry_;
+  std::map<MPI_Comm, Communicator> comms_;
+  MPI_Comm next_comm_ = first_user_handle;
+  std::map<MPI_Request, Operation> operations_;
+  MPI_Request next_request_ = 1;
+  std::vector<MPI_Request> posted_;  // receives waiting for a message, in posting order
+  std::vector<Arrived> unexpected_;  // messages waiting for a receive, in arrival order
+  std::vector<parix::Letter> letters_;
+};
+
+// A C entry point that may block: what the core throws (Error) is returned; anything else (the
+// runtime unwinding an abandoned run, MPI_Abort) goes on up through the program.
+template <class F>
+int runtime_call(F&& body) {
+  try {
+    body(Rank::current());
+    return MPI_SUCCESS;
+  } catch (const Error& e) {
+    return e.code();
+  }
+}
+
+}  // namespace gcsim::mpi_layer

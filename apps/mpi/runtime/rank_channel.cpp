@@ -1,0 +1,30 @@
+#include "apps/mpi/runtime/rank_channel.hpp"
+
+namespace gcsim::mpi_layer {
+
+RankChannel::RankChannel(Rank& rank, MPI_Comm comm, std::string call)
+    : rank_(rank), comm_(rank.comm(comm)), call_(std::move(call)) {}
+
+CollectiveChannel::Handle RankChannel::start_send(int peer, int tag, std::span<const std::byte> data) {
+  return rank_.start_send(comm_, comm_.collective_context(), peer, tag, parix::Bytes(data.begin(), data.end()),
+                          SendMode::buffered, call_);
+}
+
+CollectiveChannel::Handle RankChannel::start_recv(int peer, int tag, std::span<std::byte> into) {
+  return rank_.start_raw_recv(comm_, comm_.collective_context(), peer, tag, into);
+}
+
+void RankChannel::wait_all(std::span<const Handle> handles) {
+  rank_.wait_until([&] {
+    for (Handle h : handles) {
+      if (!rank_.test(h)) return false;
+    }
+    return true;
+  }, call_);
+  for (Handle h : handles) {
+    MPI_Request r = h;
+    rank_.finish(r, nullptr);
+  }
+}
+
+}  // namespace gcsim::mpi_layer

@@ -1,0 +1,76 @@
+// The rank's waiting: until requests complete, probes, and the checks at MPI_Finalize.
+#include <cstdio>
+
+#include "apps/mpi/runtime/rank.hpp"
+
+namespace gcsim::mpi_layer {
+
+bool Rank::test(MPI_Request handle) {
+  progress();
+  Operation& op = operation(handle);
+  if (!op.done) return false;
+  if (!op.is_send && !op.charged) {
+    op.charged = true;
+    charge(op.status.gcsim_bytes);
+  }
+  return true;
+}
+
+int Rank::finish(MPI_Request& handle, MPI_Status* status) {
+  const auto it = operations_.find(handle);
+  if (it == operations_.end()) fail(MPI_ERR_REQUEST, "invalid request");
+  const int error = it->second.status.MPI_ERROR;
+  if (status) *status = it->second.status;
+  operations_.erase(it);
+  handle = MPI_REQUEST_NULL;
+  return error;
+}
+
+void Rank::wait_until(const std::function<bool()>& done, const std::string& call) {
+  std::vector<parix::Request> wires;
+  for (;;) {
+    progress();
+    if (done()) return;
+    wires.clear();
+    for (auto& [h, op] : operations_) {
+      if (op.is_send && !op.done && op.wire.valid()) wires.push_back(op.wire);
+    }
+    if (before_switch) before_switch();
+    mailbox_.await(wires, call.c_str(), -1);
+    install();
+  }
+}
+
+bool Rank::probe(const Communicator& c, int source, int tag, MPI_Status* status) {
+  progress();
+  Operation probe;
+  probe.context = c.context;
+  probe.tag = tag;
+  probe.peer_world = source == MPI_ANY_SOURCE ? -1 : c.world_rank_of(source);
+  for (const Arrived& m : unexpected_) {
+    if (!matches(probe, m)) continue;
+    if (status) {
+      status->MPI_SOURCE = c.rank_of_world(m.source);
+      status->MPI_TAG = m.tag;
+      status->MPI_ERROR = MPI_SUCCESS;
+      status->gcsim_bytes = m.size;
+      status->gcsim_cancelled = 0;
+    }
+    return true;
+  }
+  return false;
+}
+
+void Rank::finalize_checks() {
+  progress();
+  for (const auto& [h, op] : operations_) {
+    if (!op.done) std::fprintf(stderr, "gcsim: warning: rank %d: MPI_Finalize with a request never completed: %s\n", world_rank(), op.call.c_str());
+  }
+  for (const Arrived& m : unexpected_) {
+    if (m.context % 2 != 0) continue;  // a collective's, never the program's
+    std::fprintf(stderr, "gcsim: warning: rank %d: MPI_Finalize with a message never received: from rank %d, tag %d, %lld bytes\n",
+                 world_rank(), m.source, m.tag, static_cast<long long>(m.size));
+  }
+}
+
+}  // namespace gcsim::mpi_layer

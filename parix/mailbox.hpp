@@ -1,0 +1,52 @@
+#pragma once
+// Addressed messages, the runtime extension an MPI layer needs: a processor sends a letter to any
+// processor by its id, with no connect() by either end, and each processor takes what arrived from
+// its mailbox. Semantics (simulated backend):
+//  - post() returns at once; its request completes when the letter is in the receiver's mailbox.
+//  - Letters from one sender to one receiver arrive in sending order (the network may let a short
+//    one overtake a long one; the mailbox holds it back, as a link does).
+//  - The first letter between a pair of processors, in either direction, waits for the connection
+//    set-up of the machine file's connection model, as connect() pays it; later letters do not.
+//  - The envelope is the layer's own (kind, communicator context, tag, ...): the runtime carries it
+//    and never reads it, so matching by source, tag and context is the layer's.
+//  - await() blocks until a letter arrives that collect() has not taken, or one of the given
+//    requests is over; its `call` text names the wait in a deadlock report.
+// A backend whose processors are not Mailboxes (the real-MPI backend) has no addressed messages:
+// mailbox_of() is then null and the layer says so.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "parix/processor.hpp"
+
+namespace gcsim::parix {
+
+struct Envelope {
+  std::array<std::int64_t, 4> words{};
+};
+
+struct Letter {
+  int source = -1;  // the sending processor
+  Envelope envelope;
+  Bytes data;
+};
+
+class Mailbox {
+ public:
+  virtual Request post(int dest, const Envelope& envelope, std::span<const std::byte> data) = 0;
+  // Appends every letter that arrived since the last call to into, in arrival order.
+  virtual void collect(std::vector<Letter>& into) = 0;
+  // call must stay valid while blocked; peer: the processor waited for, -1 if none in particular.
+  virtual void await(std::span<const Request> requests, const char* call, int peer) = 0;
+  // Holds one of the node's CPUs for `duration`, counted as communication (as_comm) or compute.
+  virtual void occupy(SimTime duration, std::string_view label, bool as_comm) = 0;
+
+ protected:
+  ~Mailbox() = default;
+};
+
+inline Mailbox* mailbox_of(Processor& p) { return dynamic_cast<Mailbox*>(&p); }
+
+}  // namespace gcsim::parix

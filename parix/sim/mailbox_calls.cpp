@@ -1,0 +1,47 @@
+// A simulated processor's addressed messages (parix/mailbox.hpp) over the Simulation's post office.
+#include <fmt/format.h>
+
+#include "parix/sim/simulation.hpp"
+
+namespace gcsim::parix::detail {
+
+Request SimProcess::post(int dest, const Envelope& envelope, std::span<const std::byte> data) {
+  if (dest < 0 || dest >= count()) {
+    throw ParixError(fmt::format("processor {}: post to processor {}, which does not exist (0..{})", id_, dest, count() - 1));
+  }
+  return sim_.post_office.post(id_, dest, envelope, data);
+}
+
+void SimProcess::collect(std::vector<Letter>& into) { sim_.post_office.collect(id_, into); }
+
+void SimProcess::await(std::span<const Request> requests, const char* call, int peer) {
+  auto over = [&] {
+    if (sim_.post_office.has_mail(id_)) return true;
+    for (const Request& r : requests) {
+      if (!r.valid() || !r.state()->running()) return true;
+    }
+    return false;
+  };
+  if (over()) return;
+  const machine::SimTime start = sim_.kernel.now();
+  for (const Request& r : requests) r.state()->waiter = this;
+  sim_.post_office.set_waiter(id_, this);
+  struct Unregister {  // also when block() throws to unwind an abandoned run
+    SimProcess* self;
+    std::span<const Request> rs;
+    ~Unregister() {
+      self->sim_.post_office.set_waiter(self->id_, nullptr);
+      for (const Request& r : rs) r.state()->waiter = nullptr;
+    }
+  } unregister{this, requests};
+  while (!over()) block(call, peer);
+  stats_.comm += sim_.kernel.now() - start;
+}
+
+void SimProcess::occupy(SimTime duration, std::string_view label, bool as_comm) {
+  if (duration <= 0) return;
+  if (!occupy_cpu(duration, label)) throw Cancelled{};
+  (as_comm ? stats_.comm : stats_.compute) += duration;
+}
+
+}  // namespace gcsim::parix::detail

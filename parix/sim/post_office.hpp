@@ -1,0 +1,64 @@
+#pragma once
+// The simulated runtime's addressed messages (parix/mailbox.hpp): every processor's mailbox, the
+// letters in the network, per ordered pair the sending order, and per unordered pair when its
+// connection is up. A letter leaves when the pair's connection is up (the first letter of a pair
+// asks the connection service, as connect() does), crosses the network model like any message,
+// and is put in the receiver's mailbox in its pair's sending order; the receiver's await wakes.
+#include <cstdint>
+#include <map>
+#include <span>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "machine/connection_service.hpp"
+#include "machine/kernel.hpp"
+#include "machine/network_model.hpp"
+#include "parix/mailbox.hpp"
+#include "parix/run_result.hpp"
+#include "parix/sim/activity.hpp"
+#include "parix/sim/in_order_delivery.hpp"
+
+namespace gcsim::parix::detail {
+
+class PostOffice {
+ public:
+  struct Parts {  // all outlive the post office
+    machine::Kernel& kernel;
+    machine::NetworkModel& network;
+    machine::ConnectionService& connections;
+    std::vector<ProcessorStats>& stats;
+    const std::vector<int>& node_of;
+  };
+  explicit PostOffice(const Parts& parts);
+
+  Request post(int source, int dest, const Envelope& envelope, std::span<const std::byte> data);
+  void collect(int processor, std::vector<Letter>& into);
+  bool has_mail(int processor) const { return !boxes_[static_cast<std::size_t>(processor)].empty(); }
+  // Who to wake when a letter arrives for processor (null: nobody waits).
+  void set_waiter(int processor, Waiter* w) { waiters_[static_cast<std::size_t>(processor)] = w; }
+
+ private:
+  struct InTransit {
+    Letter letter;
+    Request sent;
+  };
+  struct Ordered {  // one sender to one receiver
+    std::int64_t sent = 0;
+    InOrderDelivery<InTransit> delivery;
+  };
+  machine::SimTime connection_up(int a, int b);
+  void leave(std::int64_t id, int from_node, int to_node, std::int64_t bytes);
+  void arrive(std::int64_t id, std::int64_t seq);
+  void deliver(InTransit&& t);
+
+  Parts parts_;
+  std::vector<std::vector<Letter>> boxes_;
+  std::vector<Waiter*> waiters_;
+  std::map<std::pair<int, int>, machine::SimTime> up_;  // unordered pair (low, high) -> link up
+  std::map<std::pair<int, int>, Ordered> ordered_;
+  std::unordered_map<std::int64_t, std::pair<std::int64_t, InTransit>> in_flight_;  // id -> (seq, letter)
+  std::int64_t next_id_ = 0;
+};
+
+}  // namespace gcsim::parix::detail
