@@ -40,7 +40,9 @@ class InMemoryChannel final : public CollectiveChannel {
                                " bytes from rank " + std::to_string(r.peer) + " under tag " + std::to_string(r.tag) +
                                ", the message has " + std::to_string(m.data.size()));
       if (!m.data.empty()) std::memcpy(r.into.data(), m.data.data(), m.data.size());
-      clock_ = std::max(clock_, m.step);
+      received_ = std::max(m.step, received_ + 1);  // one receive per step: it may have waited
+      clock_ = std::max(clock_, received_);
+      network_.note_arrival(received_);
     }
   }
   void charge_reduction(std::size_t bytes) override {
@@ -58,7 +60,8 @@ class InMemoryChannel final : public CollectiveChannel {
   }
   InMemoryNetwork& network_;
   int rank_;
-  int clock_ = 0;
+  int clock_ = 0;     // the step of this rank's latest send or receive
+  int received_ = 0;  // the step of its latest receive
   std::vector<std::optional<Receive>> pending_;
   std::map<Handle, bool> spent_;
 };
@@ -67,9 +70,13 @@ void InMemoryNetwork::post(const Key& key, Message message) {
   const std::lock_guard lock(mutex_);
   ++stats_.messages;
   stats_.bytes += message.data.size();
-  stats_.rounds = std::max(stats_.rounds, message.step);
   queues_[key].push_back(std::move(message));
   changed_.notify_all();
+}
+
+void InMemoryNetwork::note_arrival(int step) {
+  const std::lock_guard lock(mutex_);
+  stats_.rounds = std::max(stats_.rounds, step);
 }
 
 bool InMemoryNetwork::deadlocked() const {

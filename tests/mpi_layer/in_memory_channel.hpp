@@ -4,12 +4,12 @@
 // a receive waits for its queue. If every running rank waits on an empty queue the run is
 // deadlocked: every waiting rank throws instead of hanging.
 //
-// It also measures the schedule. Messages and bytes are counted; rounds are the length of the
-// longest chain of dependent messages under the one-port send model: a rank's sends are numbered
-// one after the other (a rank sends one message per step), a send's step is one past the latest
-// of this rank's previous send and every message it has received, and the run's rounds are the
-// highest step. Receives are free (a rank may take several in one step). Both figures depend only
-// on each rank's program order, so they are exact and deterministic whatever the threads do.
+// It also measures the schedule. Messages and bytes are counted; rounds are communication steps
+// under the full-duplex one-port model (each rank sends at most one message and receives at most
+// one per step): a send takes the step after this rank's latest send or receive; a receive
+// completes at the later of its message's step and the step after this rank's previous receive;
+// the run's rounds are the latest step a receive completed at. Both depend only on each rank's
+// program order, so they are exact and deterministic whatever the threads do.
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
@@ -49,6 +49,7 @@ class InMemoryNetwork {
   void post(const Key& key, Message message);
   Message take(const Key& key);  // blocks; throws on deadlock
   void finished();
+  void note_arrival(int step);
   bool deadlocked() const;  // under mutex_
 
   int ranks_;
