@@ -57,6 +57,40 @@ TEST(MpiCollectiveResults, ScatterGivesEachRankItsBlockOfTheRoots) {
         }
 }
 
+// MPI_IN_PLACE at the root, as the header says: gather's send is the root's own block of result,
+// scatter's result the root's own block of send.
+TEST(MpiCollectiveResults, GatherAndScatterInPlaceAtTheRoot) {
+  for (Algorithm a : every_algorithm(Collective::Gather))
+    for (int n : rank_counts)
+      for (int root = 0; root < n; ++root) {
+        std::vector<Bytes> blocks;
+        for (int r = 0; r < n; ++r) blocks.push_back(pattern(r, 6));
+        const auto gathered = outputs_of(n, [&](const CollectiveCall& call, int r) {
+          if (r != root) {
+            gather(call, blocks[static_cast<std::size_t>(r)], {}, root, a);
+            return Bytes{};
+          }
+          Bytes result(6 * static_cast<std::size_t>(n));
+          std::copy(blocks[static_cast<std::size_t>(r)].begin(), blocks[static_cast<std::size_t>(r)].end(),
+                    result.begin() + 6 * r);
+          gather(call, std::span(result).subspan(6 * static_cast<std::size_t>(r), 6), result, root, a);
+          return result;
+        });
+        EXPECT_EQ(gathered[static_cast<std::size_t>(root)], concat(blocks)) << "root " << root << " " << describe(a, n, 6);
+        const auto scattered = outputs_of(n, [&](const CollectiveCall& call, int r) {
+          Bytes whole = r == root ? concat(blocks) : Bytes{}, mine(6);
+          if (r == root) scatter(call, whole, std::span(whole).subspan(6 * static_cast<std::size_t>(r), 6), root, a);
+          else scatter(call, {}, mine, root, a);
+          return r == root ? whole : mine;
+        });
+        EXPECT_EQ(scattered[static_cast<std::size_t>(root)], concat(blocks));
+        for (int r = 0; r < n; ++r) {
+          if (r == root) continue;
+          EXPECT_EQ(scattered[static_cast<std::size_t>(r)], blocks[static_cast<std::size_t>(r)]);
+        }
+      }
+}
+
 // Counts r % 3 * 5 bytes (zero for every third rank), placed back to front with gaps.
 struct VLayout {
   std::vector<std::size_t> counts, displacements;
