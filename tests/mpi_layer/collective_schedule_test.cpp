@@ -15,11 +15,17 @@ int ceil_log2(int n) { return n <= 1 ? 0 : std::bit_width(static_cast<unsigned>(
 int floor_pow2(int n) { return static_cast<int>(std::bit_floor(static_cast<unsigned>(n))); }
 std::size_t sz(int v) { return static_cast<std::size_t>(v); }
 
+// The schedule with buffered sends; with synchronous ones (rendezvous) it must run too, without
+// deadlock, to the same figures.
 template <class Body>
 ScheduleStats stats_of(int n, Body body) {
-  ScheduleStats s;
-  outputs_of(n, [&](const CollectiveCall& call, int r) { body(call, r); return Bytes{}; }, &s);
-  return s;
+  ScheduleStats buffered, synchronous;
+  outputs_of(n, [&](const CollectiveCall& call, int r) { body(call, r); return Bytes{}; }, &buffered,
+             SendMode::Buffered);
+  outputs_of(n, [&](const CollectiveCall& call, int r) { body(call, r); return Bytes{}; }, &synchronous,
+             SendMode::Synchronous);
+  EXPECT_EQ(buffered, synchronous) << n << " ranks: the schedule changed with synchronous sends";
+  return buffered;
 }
 
 const OpCase& sum_int() {

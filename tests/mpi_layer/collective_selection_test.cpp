@@ -127,6 +127,22 @@ TEST(MpiCollectiveTags, BackToBackCollectivesOnOneCommunicatorStayApart) {
   }
 }
 
+// With synchronous sends, two ranks that each send before receiving deadlock; started together
+// (as steps::exchange does) they do not, and buffered sends never do.
+TEST(MpiCollectiveChannelDouble, SynchronousSendsCatchAScheduleThatReliesOnBuffering) {
+  const auto send_then_receive = [](CollectiveChannel& c) {
+    Bytes out(4), in(4);
+    c.wait_all(std::array{c.start_send(1 - c.rank(), 3, out)});
+    c.wait_all(std::array{c.start_recv(1 - c.rank(), 3, in)});
+  };
+  EXPECT_NO_THROW(InMemoryNetwork(2, SendMode::Buffered).run(send_then_receive));
+  EXPECT_THROW(InMemoryNetwork(2, SendMode::Synchronous).run(send_then_receive), std::runtime_error);
+  EXPECT_NO_THROW(InMemoryNetwork(2, SendMode::Synchronous).run([](CollectiveChannel& c) {
+    Bytes out(4), in(4);
+    c.wait_all(std::array{c.start_send(1 - c.rank(), 3, out), c.start_recv(1 - c.rank(), 3, in)});
+  }));
+}
+
 // The double itself: a wrong size and a receive nobody sends are errors, not silent or hanging.
 TEST(MpiCollectiveChannelDouble, AWrongSizeThrowsAndADeadlockIsReported) {
   InMemoryNetwork network(2);
