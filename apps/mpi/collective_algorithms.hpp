@@ -61,7 +61,8 @@ void reduce(const CollectiveCall& call, std::span<const std::byte> send, std::sp
 void allreduce(const CollectiveCall& call, std::span<const std::byte> send, std::span<std::byte> result,
                std::size_t count, const Reduction& reduction, Algorithm algorithm = Algorithm::Auto);
 // send: the rank's ranks * count_per_rank elements, in rank order of their destination; result:
-// its count_per_rank elements. Pairwise needs a commutative op (else reduce_then_scatter).
+// its count_per_rank elements. Pairwise and recursive halving need a commutative op (else
+// reduce_then_scatter runs).
 void reduce_scatter_block(const CollectiveCall& call, std::span<const std::byte> send, std::span<std::byte> result,
                           std::size_t count_per_rank, const Reduction& reduction,
                           Algorithm algorithm = Algorithm::Auto);

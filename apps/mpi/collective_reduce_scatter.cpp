@@ -1,5 +1,9 @@
 // Reduce-scatter. Pairwise (commutative ops): in round i this rank sends rank + i its block of the
 // vector and folds rank - i's block for it into its own, n(n-1) messages in n-1 rounds.
+// Recursive halving (commutative ops, MPICH's for short vectors): ranks fold to a power of two p
+// as allreduce's recursive doubling does, then in log2 p rounds each hands the partner at
+// distance p/2, p/4, ... the half of its remaining blocks that the partner keeps, and the odd
+// ranks of the fold finally pass their even neighbours' blocks back.
 // Reduce-then-scatter (any op, in rank order): a binomial reduce of the whole vector to rank 0,
 // then a linear scatterv of its blocks.
 #include <numeric>
@@ -35,6 +39,62 @@ void pairwise(const CollectiveCall& call, std::span<const std::byte> send, std::
   }
 }
 
+// After the fold, new rank i stands for ranks 2i and 2i+1 (i < rem) or i + rem, and their blocks.
+struct FoldedBlocks {
+  int pof2, rem, new_rank;  // new_rank -1: handed its vector on
+  std::vector<std::size_t> offsets;  // elements: new rank i's blocks are [offsets[i], offsets[i+1])
+  int real_rank(int peer) const { return peer < rem ? peer * 2 + 1 : peer + rem; }
+};
+
+FoldedBlocks fold_blocks(int n, int r, const Blocks& blocks) {
+  const int pof2 = steps::largest_power_of_two_at_most(n), rem = n - pof2;
+  FoldedBlocks f{pof2, rem, r < 2 * rem ? (r % 2 == 0 ? -1 : r / 2) : r - rem, {}};
+  for (int i = 0; i < pof2; ++i) f.offsets.push_back(blocks.offsets[static_cast<std::size_t>(i < rem ? 2 * i : i + rem)]);
+  f.offsets.push_back(blocks.offsets.back());
+  return f;
+}
+
+void recursive_halving(const CollectiveCall& call, std::span<const std::byte> send, std::span<std::byte> result,
+                       const Blocks& blocks, const Reduction& reduction) {
+  using Phase = CollectivePhase;
+  const int n = call.channel.size(), r = call.channel.rank();
+  const std::size_t es = reduction.element_size, total = blocks.offsets.back();
+  const FoldedBlocks f = fold_blocks(n, r, blocks);
+  steps::Bytes acc(send.begin(), send.end()), theirs(acc.size());
+  const auto range = [&](steps::Bytes& v, int first, int last) {
+    const std::size_t a = f.offsets[static_cast<std::size_t>(first)], b = f.offsets[static_cast<std::size_t>(last)];
+    return std::span(v).subspan(a * es, (b - a) * es);
+  };
+  if (f.new_rank == -1) steps::send(call, Phase::ReduceScatterFold, r + 1, acc);
+  if (r < 2 * f.rem && r % 2 == 1) {
+    steps::recv(call, Phase::ReduceScatterFold, r - 1, theirs);
+    steps::combine(call, reduction, theirs.data(), acc.data(), total);
+  }
+  if (f.new_rank >= 0) {
+    int first = 0, last = f.pof2;
+    for (int mask = f.pof2 / 2; mask > 0; mask /= 2) {
+      const int peer = f.new_rank ^ mask, middle = first + mask;
+      const bool keep_low = f.new_rank < peer;
+      const int keep_first = keep_low ? first : middle, keep_last = keep_low ? middle : last;
+      steps::exchange(call, Phase::ReduceScatterHalving, f.real_rank(peer),
+                      keep_low ? range(acc, middle, last) : range(acc, first, middle), f.real_rank(peer),
+                      range(theirs, keep_first, keep_last));
+      steps::combine(call, reduction, range(theirs, keep_first, keep_last).data(),
+                     range(acc, keep_first, keep_last).data(), f.offsets[static_cast<std::size_t>(keep_last)] -
+                                                                    f.offsets[static_cast<std::size_t>(keep_first)]);
+      first = keep_first;
+      last = keep_last;
+    }
+  }
+  const auto own = [&](int rank) {
+    return std::span(acc).subspan(blocks.offsets[static_cast<std::size_t>(rank)] * es,
+                                  blocks.counts[static_cast<std::size_t>(rank)] * es);
+  };
+  if (f.new_rank == -1) steps::recv(call, Phase::ReduceScatterUnfold, r + 1, result);
+  else steps::copy(own(r), result);
+  if (r < 2 * f.rem && r % 2 == 1) steps::send(call, Phase::ReduceScatterUnfold, r - 1, own(r - 1));
+}
+
 void reduce_then_scatter(const CollectiveCall& call, std::span<const std::byte> send, std::span<std::byte> result,
                          const Blocks& blocks, const Reduction& reduction) {
   const std::size_t es = reduction.element_size, total = blocks.offsets.back();
@@ -60,6 +120,7 @@ void reduce_scatter(const CollectiveCall& call, std::span<const std::byte> send,
   Algorithm chosen = resolve_algorithm(Collective::ReduceScatter, algorithm, shape);
   if (!reduction.commutative) chosen = Algorithm::ReduceThenScatter;
   if (chosen == Algorithm::Pairwise) return pairwise(call, send, result, blocks, reduction);
+  if (chosen == Algorithm::RecursiveHalving) return recursive_halving(call, send, result, blocks, reduction);
   reduce_then_scatter(call, send, result, blocks, reduction);
 }
 

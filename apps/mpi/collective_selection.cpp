@@ -15,9 +15,9 @@ constexpr std::array<std::string_view, collective_count> collective_names = {
     "scatter",   "scatterv",   "allgather", "allgatherv",    "alltoall",       "alltoallv",
     "reduce_scatter", "reduce_scatter_block", "scan", "exscan"};
 
-constexpr std::array<std::string_view, 11> algorithm_names = {
+constexpr std::array<std::string_view, 12> algorithm_names = {
     "auto",   "dissemination", "binomial", "scatter_allgather", "recursive_doubling", "ring",
-    "rabenseifner", "linear", "bruck", "pairwise", "reduce_then_scatter"};
+    "rabenseifner", "linear", "bruck", "pairwise", "reduce_then_scatter", "recursive_halving"};
 
 constexpr A barrier_algorithms[] = {A::Dissemination};
 constexpr A bcast_algorithms[] = {A::Binomial, A::ScatterAllgather};
@@ -28,7 +28,7 @@ constexpr A linear_only[] = {A::Linear};
 constexpr A allgather_algorithms[] = {A::Ring, A::RecursiveDoubling, A::Bruck};
 constexpr A alltoall_algorithms[] = {A::Pairwise, A::Bruck, A::Linear};
 constexpr A alltoallv_algorithms[] = {A::Pairwise, A::Linear};
-constexpr A reduce_scatter_algorithms[] = {A::Pairwise, A::ReduceThenScatter};
+constexpr A reduce_scatter_algorithms[] = {A::RecursiveHalving, A::Pairwise, A::ReduceThenScatter};
 constexpr A scan_algorithms[] = {A::RecursiveDoubling, A::Linear};
 
 bool is_power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
@@ -136,7 +136,8 @@ Algorithm select_algorithm(Collective c, const MessageShape& s) {
     case C::Alltoall: return select_alltoall(s);
     case C::Alltoallv: return A::Linear;
     case C::ReduceScatter: case C::ReduceScatterBlock:
-      return s.commutative ? A::Pairwise : A::ReduceThenScatter;
+      if (!s.commutative) return A::ReduceThenScatter;
+      return s.bytes < redscat_commutative_long_msg_size ? A::RecursiveHalving : A::Pairwise;
     default: return algorithms_of(c).front();
   }
 }

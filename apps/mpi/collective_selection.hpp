@@ -30,6 +30,7 @@ enum class Algorithm : std::uint8_t {
   Bruck,              // allgather(v), alltoall
   Pairwise,           // alltoall(v), reduce_scatter(_block)
   ReduceThenScatter,  // reduce_scatter(_block): binomial reduce to rank 0, linear scatterv
+  RecursiveHalving,   // reduce_scatter(_block), commutative ops
 };
 
 std::string_view collective_name(Collective c);  // "bcast", "reduce_scatter_block", ...
@@ -60,9 +61,10 @@ inline constexpr std::size_t allgather_short_msg_size = 81920;
 inline constexpr std::size_t allgather_long_msg_size = 524288;
 inline constexpr std::size_t alltoall_short_msg_size = 256;
 inline constexpr std::size_t alltoall_medium_msg_size = 32768;
+inline constexpr std::size_t redscat_commutative_long_msg_size = 524288;
 
 // What the selection looks at. bytes: the message of one rank (bcast: the buffer; allreduce: the
-// vector; allgather(v): the total gathered; alltoall: one block).
+// vector; allgather(v): the total gathered; alltoall: one block; reduce_scatter: the whole vector).
 struct MessageShape {
   std::size_t bytes = 0;
   int ranks = 1;

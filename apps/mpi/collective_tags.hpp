@@ -15,7 +15,7 @@ enum class CollectivePhase : std::uint8_t {
   Barrier = 1, BcastTree, BcastScatter, BcastAllgather, ReduceTree, ReduceForward, AllreduceFold,
   AllreduceExchange, AllreduceUnfold, AllreduceRingScatter, AllreduceRingGather, RabenseifnerHalving,
   RabenseifnerDoubling, Gather, Gatherv, Scatter, Scatterv, Allgather, Alltoall, Alltoallv, ReduceScatter,
-  Scan, Exscan,
+  Scan, Exscan, ReduceScatterFold, ReduceScatterHalving, ReduceScatterUnfold,
 };
 
 inline constexpr int collective_tag(std::uint32_t sequence, CollectivePhase phase) {

@@ -206,6 +206,23 @@ TEST(MpiCollectiveSchedule, ReduceScatterPairwiseAndReduceThenScatter) {
     }
 }
 
+// On a power of two each rank hands on p/2 + p/4 + ... + 1 = p-1 blocks and reduces as many.
+TEST(MpiCollectiveSchedule, RecursiveHalvingReduceScatterIsPLog2PMessagesPlusTheFold) {
+  for (int n : rank_counts) {
+    const int p = floor_pow2(n), rem = n - p, lg = ceil_log2(p);
+    const ScheduleStats s = stats_of(n, [&](const CollectiveCall& call, int r) {
+      Bytes result(2 * 4);
+      reduce_scatter_block(call, sum_int().data(r, sz(2 * n)), result, 2, sum_int().reduction, A::RecursiveHalving);
+    });
+    EXPECT_EQ(s.messages, sz(p * lg + 2 * rem)) << n;
+    EXPECT_EQ(s.rounds, lg + (rem > 0 ? 2 : 0)) << n;
+    if (rem == 0) {
+      EXPECT_EQ(s.bytes, sz(n * (n - 1)) * 2 * 4) << n;
+      EXPECT_EQ(s.reduction_bytes, sz(n * (n - 1)) * 2 * 4) << n;
+    }
+  }
+}
+
 TEST(MpiCollectiveSchedule, ScanAndExscanRecursiveDoublingAndChain) {
   for (int n : rank_counts)
     for (A a : {A::RecursiveDoubling, A::Linear})

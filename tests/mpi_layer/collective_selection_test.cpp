@@ -95,7 +95,10 @@ TEST(MpiCollectiveSelection, TheRestFollowMpichsFixedChoices) {
   EXPECT_EQ(select_algorithm(C::Gather, {.bytes = 1 << 20, .ranks = 5}), A::Binomial);
   EXPECT_EQ(select_algorithm(C::Scan, {.bytes = 1 << 20, .ranks = 5}), A::RecursiveDoubling);
   EXPECT_EQ(select_algorithm(C::ReduceScatter, {.ranks = 5, .commutative = false}), A::ReduceThenScatter);
-  EXPECT_EQ(select_algorithm(C::ReduceScatter, {.ranks = 5}), A::Pairwise);
+  EXPECT_EQ(select_algorithm(C::ReduceScatter, {.bytes = redscat_commutative_long_msg_size - 1, .ranks = 5}),
+            A::RecursiveHalving);
+  EXPECT_EQ(select_algorithm(C::ReduceScatterBlock, {.bytes = redscat_commutative_long_msg_size, .ranks = 5}),
+            A::Pairwise);
   for (std::size_t i = 0; i < collective_count; ++i)
     EXPECT_NE(select_algorithm(static_cast<Collective>(i), {.bytes = 100, .ranks = 9}), A::Auto);
 }
