@@ -5,8 +5,9 @@
 
 namespace gcsim::mpi_layer {
 
-void barrier(const CollectiveCall& call, Algorithm) {
+void barrier(const CollectiveCall& call, Algorithm algorithm) {
   const int n = call.channel.size(), r = call.channel.rank();
+  resolve_algorithm(Collective::Barrier, algorithm, {.ranks = n});  // only checks the name
   for (int distance = 1; distance < n; distance *= 2)
     steps::exchange(call, CollectivePhase::Barrier, (r + distance) % n, {}, (r - distance + n) % n, {});
 }

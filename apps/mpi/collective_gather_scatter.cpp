@@ -90,8 +90,10 @@ void gather(const CollectiveCall& call, std::span<const std::byte> send, std::sp
 }
 
 void gatherv(const CollectiveCall& call, std::span<const std::byte> send, std::span<std::byte> result,
-             std::span<const std::size_t> counts, std::span<const std::size_t> displacements, int root, Algorithm) {
+             std::span<const std::size_t> counts, std::span<const std::size_t> displacements, int root,
+             Algorithm algorithm) {
   const int r = call.channel.rank();
+  resolve_algorithm(Collective::Gatherv, algorithm, {.ranks = call.channel.size()});  // only checks the name
   if (r != root) {
     if (!send.empty()) steps::send(call, Phase::Gatherv, root, send);
     return;
@@ -119,8 +121,10 @@ void scatter(const CollectiveCall& call, std::span<const std::byte> send, std::s
 }
 
 void scatterv(const CollectiveCall& call, std::span<const std::byte> send, std::span<const std::size_t> counts,
-              std::span<const std::size_t> displacements, std::span<std::byte> result, int root, Algorithm) {
+              std::span<const std::size_t> displacements, std::span<std::byte> result, int root,
+              Algorithm algorithm) {
   const int r = call.channel.rank();
+  resolve_algorithm(Collective::Scatterv, algorithm, {.ranks = call.channel.size()});  // only checks the name
   if (r != root) {
     if (!result.empty()) steps::recv(call, Phase::Scatterv, root, result);
     return;

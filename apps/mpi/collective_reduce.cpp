@@ -29,8 +29,9 @@ void binomial_tree(const CollectiveCall& call, steps::Bytes& acc, std::size_t co
 }  // namespace
 
 void reduce(const CollectiveCall& call, std::span<const std::byte> send, std::span<std::byte> result,
-            std::size_t count, const Reduction& reduction, int root, Algorithm) {
+            std::size_t count, const Reduction& reduction, int root, Algorithm algorithm) {
   const int r = call.channel.rank();
+  resolve_algorithm(Collective::Reduce, algorithm, {.ranks = call.channel.size()});  // only checks the name
   if (count == 0) return;
   steps::Bytes acc(send.begin(), send.end());
   const int tree_root = reduction.commutative ? root : 0;

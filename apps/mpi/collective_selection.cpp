@@ -143,7 +143,11 @@ Algorithm select_algorithm(Collective c, const MessageShape& s) {
 }
 
 Algorithm resolve_algorithm(Collective c, Algorithm requested, const MessageShape& shape) {
-  return requested == A::Auto ? select_algorithm(c, shape) : requested;
+  if (requested == A::Auto) return select_algorithm(c, shape);
+  for (Algorithm known : algorithms_of(c))
+    if (known == requested) return requested;
+  throw std::invalid_argument("collective " + std::string(collective_name(c)) + " has no algorithm '" +
+                              std::string(algorithm_name(requested)) + "' (known: " + known_algorithms(c) + ")");
 }
 
 }  // namespace gcsim::mpi_layer

@@ -73,7 +73,8 @@ struct MessageShape {
 };
 // The algorithm MPICH's default selection picks (never Auto).
 Algorithm select_algorithm(Collective c, const MessageShape& shape);
-// requested, or select_algorithm's pick when it is Auto.
+// requested, or select_algorithm's pick when it is Auto; std::invalid_argument if c has no such
+// algorithm (a caller that bypassed parse_algorithm_spec).
 Algorithm resolve_algorithm(Collective c, Algorithm requested, const MessageShape& shape);
 
 }  // namespace gcsim::mpi_layer

@@ -60,6 +60,18 @@ TEST(MpiCollectiveSelection, MalformedItemsAreRejected) {
   EXPECT_NE(error_of_spec("bcast=binomial,").find("trailing"), std::string::npos);
 }
 
+TEST(MpiCollectiveSelection, AnAlgorithmACollectiveDoesNotHaveIsRefusedByName) {
+  try {
+    resolve_algorithm(C::Bcast, A::Ring, {.bytes = 8, .ranks = 4});
+    ADD_FAILURE() << "bcast accepted ring";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("bcast has no algorithm 'ring' (known: auto, binomial, scatter_allgather)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(resolve_algorithm(C::Bcast, A::ScatterAllgather, {.bytes = 8, .ranks = 4}), A::ScatterAllgather);
+}
+
 TEST(MpiCollectiveSelection, BcastSwitchesToScatterAllgatherForLongMessagesOnEnoughRanks) {
   EXPECT_EQ(select_algorithm(C::Bcast, {.bytes = bcast_short_msg_size - 1, .ranks = 64}), A::Binomial);
   EXPECT_EQ(select_algorithm(C::Bcast, {.bytes = bcast_short_msg_size, .ranks = 64}), A::ScatterAllgather);
