@@ -11,7 +11,7 @@ namespace {
 
 using Phase = CollectivePhase;
 
-// Blocks packed one after the other, in the order of `order` (ranks).
+// Every rank's block packed one after the other, in rank order starting at first_rank.
 class PackedBlocks {
  public:
   PackedBlocks(std::span<const std::size_t> counts, int first_rank) : counts_(counts), first_(first_rank) {
