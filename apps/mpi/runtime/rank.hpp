@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/mpi/collective_selection.hpp"
 #include "apps/mpi/datatype.hpp"
 #include "apps/mpi/error.hpp"
 #include "apps/mpi/registry.hpp"
@@ -74,6 +75,7 @@ class Rank {
   double now_seconds() const { return processor_.now_seconds(); }
   Registry& registry() { return registry_; }
   bool counts_compute = true;  // gcsim_mpi_compute charges time (--compute annotated), or not (none)
+  AlgorithmChoice collective_algorithms;  // gcsim mpirun --coll; Auto: MPICH's selection
   bool initialized = false;
   bool finalized = false;
 
