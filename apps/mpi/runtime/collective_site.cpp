@@ -1,6 +1,7 @@
 #include "apps/mpi/runtime/collective_site.hpp"
 
 #include <cstring>
+#include <utility>
 
 #include "apps/mpi/type_transfer.hpp"
 
@@ -14,19 +15,27 @@ namespace {
 std::string described(const char* call, MPI_Comm comm, const std::string& details) {
   return std::string(call) + "(" + (details.empty() ? "" : details + ", ") + "comm=" + Rank::comm_name(comm) + ")";
 }
-Communicator& comm_of(Rank& rank, const char* call, MPI_Comm comm) {
+std::optional<std::uint32_t> reserved_sequence;  // ranks switch only inside blocking calls
+}  // namespace
+
+Communicator& communicator_of(Rank& rank, const char* call, MPI_Comm comm) {
   try {
     return rank.comm(comm);
   } catch (const Error& e) {
     fail_in(call, e.code(), e.what());
   }
 }
-}  // namespace
+
+ReservedSequence::ReservedSequence(std::uint32_t sequence) { reserved_sequence = sequence; }
+ReservedSequence::~ReservedSequence() { reserved_sequence.reset(); }
 
 CollectiveSite::CollectiveSite(Rank& rank, const char* call, MPI_Comm comm, const std::string& details)
-    : rank_(rank), call_(call), comm_(comm_of(rank, call, comm)), channel_(rank, comm, described(call, comm, details)) {}
+    : rank_(rank), call_(call), comm_(communicator_of(rank, call, comm)), channel_(rank, comm, described(call, comm, details)) {}
 
-CollectiveCall CollectiveSite::call() { return CollectiveCall{channel_, comm_.collectives++}; }
+CollectiveCall CollectiveSite::call() {
+  if (reserved_sequence) return CollectiveCall{channel_, *std::exchange(reserved_sequence, std::nullopt)};
+  return CollectiveCall{channel_, comm_.collectives++};
+}
 
 void CollectiveSite::check_root(int root) const {
   if (root < 0 || root >= size()) {

@@ -4,6 +4,8 @@
 // next collective sequence number, and packs the user's typed buffers into the packed bytes the
 // algorithms (apps/mpi/collective_algorithms.hpp) work on, then unpacks the result.
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +50,18 @@ class CollectiveSite {
   Communicator& comm_;
   RankChannel channel_;
 };
+
+// A non-blocking collective runs its blocking form later with the sequence number it took at its
+// start: while one of these lives, the next CollectiveSite::call() uses `sequence`.
+class ReservedSequence {
+ public:
+  explicit ReservedSequence(std::uint32_t sequence);
+  ~ReservedSequence();
+  ReservedSequence(const ReservedSequence&) = delete;
+  ReservedSequence& operator=(const ReservedSequence&) = delete;
+};
+// The communicator a collective names; MPI_ERR_COMM naming the call if none.
+Communicator& communicator_of(Rank& rank, const char* call, MPI_Comm comm);
 
 // Typed buffers <-> packed bytes. at(buf, index, type): the address of element `index`.
 Bytes pack_of(const void* buf, long long count, const Datatype& type);

@@ -6,6 +6,7 @@
 namespace gcsim::mpi_layer {
 
 bool Rank::test(MPI_Request handle) {
+  if (operation(handle).collective) run_collectives_until(handle);
   progress();
   Operation& op = operation(handle);
   if (!op.done) return false;
