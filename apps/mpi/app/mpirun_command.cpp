@@ -24,6 +24,7 @@ parix::Program rank_program(const MpirunOptions& o, const ProgramCopies& copies,
   return [&o, &copies, &capture, costs, &statuses](parix::Processor& p) {
     Rank rank(p, costs);
     rank.counts_compute = o.compute == "annotated";
+    rank.collective_algorithms = o.collectives;
     const int id = p.id();
     rank.before_switch = [&capture, id] { capture.attribute(id); };
     std::vector<std::string> args{o.program};

@@ -1,5 +1,7 @@
 #include "apps/mpi/app/mpirun_options.hpp"
 
+#include <stdexcept>
+
 #include <CLI/CLI.hpp>
 
 namespace gcsim::mpi_layer::app {
@@ -29,6 +31,14 @@ std::int64_t size_of(const std::string& text) {
   return bytes;
 }
 
+AlgorithmChoice algorithms_of_spec(const std::string& spec) {
+  try {
+    return parse_algorithm_spec(spec);
+  } catch (const std::invalid_argument& e) {
+    bad(std::string("--coll: ") + e.what());
+  }
+}
+
 }  // namespace
 
 std::string mpirun_summary() { return "Run an MPI program built with gcsim-mpicc on N simulated nodes (one rank per node)"; }
@@ -45,6 +55,8 @@ std::string mpirun_usage() {
          "  --stack-size SIZE    stack reserved per rank, committed as used (default 8M)\n"
          "  --compute MODE       none: computation takes no simulated time; annotated (default): only\n"
          "                       gcsim_mpi_compute(seconds) from <gcsim/mpi_ext.h> does\n"
+         "  --coll SPEC          algorithms of collectives, e.g. bcast=binomial,allreduce=ring (default:\n"
+         "                       MPICH's selection by size; apps/mpi/README.md lists the names)\n"
          "Output: each rank's stdout, then stderr, in rank order; then the simulated and wall time.\n"
          "Exit status: the program's (the first non-zero rank's), or gcsim's own (deadlock 5, ...).\n";
 }
@@ -67,6 +79,7 @@ MpirunOptions parse_mpirun_options(const std::vector<std::string>& words) {
     else if (w == "--tag-output") o.tag_output = true;
     else if (w == "--stack-size") o.stack_bytes = size_of(value(w));
     else if (w == "--compute") o.compute = value(w);
+    else if (w == "--coll") o.collectives = algorithms_of_spec(value(w));
     else if (w == "-h" || w == "--help") o.help = true;
     else if (!w.empty() && w[0] == '-') bad("unknown option '" + w + "'\n" + mpirun_usage());
     else o.program = w;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/mpi/collective_selection.hpp"
 #include "apps/pipeline/machine_options.hpp"
 
 namespace gcsim::mpi_layer::app {
@@ -15,6 +16,7 @@ struct MpirunOptions {
   bool tag_output = false;
   std::int64_t stack_bytes = std::int64_t{8} << 20;  // per rank, reserved and committed as used
   std::string compute = "annotated";                 // none | annotated
+  AlgorithmChoice collectives;                       // --coll bcast=binomial,...; Auto elsewhere
   std::string program;
   std::vector<std::string> args;
   bool help = false;

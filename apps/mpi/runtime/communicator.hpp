@@ -8,6 +8,8 @@
 #include <memory>
 #include <vector>
 
+#include "apps/mpi/topology.hpp"
+
 namespace gcsim::mpi_layer {
 
 struct Communicator {
@@ -15,6 +17,8 @@ struct Communicator {
   int rank = 0;                                      // this rank in the communicator
   std::int64_t context = 0;                          // even: point-to-point; context + 1: collectives
   std::int64_t children = 0;                         // contexts derived from this one so far
+  std::shared_ptr<const CartTopology> cart;  // MPI_Cart_create's grid, if it made this one
+  std::uint32_t collectives = 0;  // collectives started on it: the next one's sequence number
   // Kept for MPI_Comm_get_errhandler; errors are returned whichever it is (apps/mpi/README.md).
   int errhandler = 2;  // MPI_ERRORS_RETURN
 

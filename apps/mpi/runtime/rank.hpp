@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/mpi/collective_selection.hpp"
 #include "apps/mpi/datatype.hpp"
 #include "apps/mpi/error.hpp"
 #include "apps/mpi/registry.hpp"
@@ -56,6 +57,9 @@ struct Operation {  // behind one MPI_Request
   std::optional<Datatype> type;
   std::span<std::byte> raw;
   bool is_raw = false;
+  // A non-blocking collective not run yet: runs (blocking) at the first test or wait of it or of a
+  // later one on its communicator (rank_deferred_collectives.cpp); returns its error code.
+  std::function<int()> collective;
 };
 
 class Rank {
@@ -74,6 +78,7 @@ class Rank {
   double now_seconds() const { return processor_.now_seconds(); }
   Registry& registry() { return registry_; }
   bool counts_compute = true;  // gcsim_mpi_compute charges time (--compute annotated), or not (none)
+  AlgorithmChoice collective_algorithms;  // gcsim mpirun --coll; Auto: MPICH's selection
   bool initialized = false;
   bool finalized = false;
 
@@ -88,6 +93,8 @@ class Rank {
   MPI_Request start_recv(const Communicator& c, std::int64_t context, int source, int tag, void* buffer, MPI_Count count,
                          const Datatype& type, std::string call);
   MPI_Request start_raw_recv(const Communicator& c, std::int64_t context, int source, int tag, std::span<std::byte> into);
+  // A non-blocking collective on the collective context `context`, run when first tested.
+  MPI_Request start_collective(std::string call, std::int64_t context, std::function<int()> run);
   // A request complete at once, as a communication with MPI_PROC_NULL is.
   MPI_Request start_null(std::string call);
   Operation& operation(MPI_Request handle);  // MPI_ERR_REQUEST if it names none
@@ -119,6 +126,7 @@ class Rank {
     std::int64_t sender_op = 0;
     parix::Bytes data;
   };
+  void run_collectives_until(MPI_Request handle);
   void on_letter(parix::Letter& l);
   void on_message(Arrived&& m);
   void match(Operation& r, MPI_Request handle, Arrived&& m);

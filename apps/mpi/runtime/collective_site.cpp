@@ -1,0 +1,108 @@
+#include "apps/mpi/runtime/collective_site.hpp"
+
+#include <cstring>
+#include <utility>
+
+#include "apps/mpi/type_transfer.hpp"
+
+namespace gcsim::mpi_layer {
+
+void fail_in(const std::string& call, int code, const std::string& what) {
+  throw Error(code, (call + ": " + what).c_str());
+}
+
+namespace {
+std::string described(const char* call, MPI_Comm comm, const std::string& details) {
+  return std::string(call) + "(" + (details.empty() ? "" : details + ", ") + "comm=" + Rank::comm_name(comm) + ")";
+}
+std::optional<std::uint32_t> reserved_sequence;  // ranks switch only inside blocking calls
+}  // namespace
+
+Communicator& communicator_of(Rank& rank, const char* call, MPI_Comm comm) {
+  try {
+    return rank.comm(comm);
+  } catch (const Error& e) {
+    fail_in(call, e.code(), e.what());
+  }
+}
+
+ReservedSequence::ReservedSequence(std::uint32_t sequence) { reserved_sequence = sequence; }
+ReservedSequence::~ReservedSequence() { reserved_sequence.reset(); }
+
+CollectiveSite::CollectiveSite(Rank& rank, const char* call, MPI_Comm comm, const std::string& details)
+    : rank_(rank), call_(call), comm_(communicator_of(rank, call, comm)), channel_(rank, comm, described(call, comm, details)) {}
+
+CollectiveCall CollectiveSite::call() {
+  if (reserved_sequence) return CollectiveCall{channel_, *std::exchange(reserved_sequence, std::nullopt)};
+  return CollectiveCall{channel_, comm_.collectives++};
+}
+
+void CollectiveSite::check_root(int root) const {
+  if (root < 0 || root >= size()) {
+    fail(MPI_ERR_ROOT, "root " + std::to_string(root) + " outside the communicator of " + std::to_string(size()) + " ranks");
+  }
+}
+
+void CollectiveSite::check_count(long long count, const char* which) const {
+  if (count < 0) fail(MPI_ERR_COUNT, std::string("negative ") + which + " " + std::to_string(count));
+}
+
+const Datatype& CollectiveSite::datatype(MPI_Datatype handle) const {
+  try {
+    return datatype_arg(rank_.registry(), handle, true);
+  } catch (const Error& e) {
+    fail(e.code(), e.what());
+  }
+}
+
+const Op& CollectiveSite::op(MPI_Op handle) const {
+  try {
+    return op_arg(rank_.registry(), handle);
+  } catch (const Error& e) {
+    fail(e.code(), e.what());
+  }
+}
+
+void CollectiveSite::check_buffer(const void* buf, long long count, bool in_place_allowed, const char* which) const {
+  if (buf == MPI_IN_PLACE && !in_place_allowed) fail(MPI_ERR_BUFFER, std::string("MPI_IN_PLACE is not allowed as ") + which + " here");
+  if (buf == nullptr && count > 0) fail(MPI_ERR_BUFFER, std::string("null ") + which + " for " + std::to_string(count) + " elements");
+}
+
+void CollectiveSite::check_counts(const int* counts, const char* which) const {
+  if (!counts) fail(MPI_ERR_ARG, std::string("null ") + which);
+  for (int r = 0; r < size(); ++r) check_count(counts[r], which);
+}
+
+Bytes pack_of(const void* buf, long long count, const Datatype& type) {
+  Bytes b(static_cast<std::size_t>(pack_size(count, type)));
+  if (b.empty()) return b;
+  MPI_Count position = 0;
+  pack(buf, count, type, b, position);
+  return b;
+}
+
+void unpack_into(std::span<const std::byte> bytes, void* buf, long long count, const Datatype& type) {
+  if (count == 0) return;
+  MPI_Count position = 0;
+  unpack(bytes, position, buf, count, type);
+}
+
+const void* element_at(const void* buf, long long index, const Datatype& type) {
+  return static_cast<const char*>(buf) + index * type.extent();
+}
+
+void* element_at(void* buf, long long index, const Datatype& type) {
+  return static_cast<char*>(buf) + index * type.extent();
+}
+
+std::vector<std::size_t> end_to_end(const std::vector<std::size_t>& sizes) {
+  std::vector<std::size_t> displacements(sizes.size());
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    displacements[i] = at;
+    at += sizes[i];
+  }
+  return displacements;
+}
+
+}  // namespace gcsim::mpi_layer
