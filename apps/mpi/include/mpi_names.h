@@ -12,6 +12,7 @@
 #define MPI_Allreduce gcsim_MPI_Allreduce
 #define MPI_Alltoall gcsim_MPI_Alltoall
 #define MPI_Alltoallv gcsim_MPI_Alltoallv
+#define MPI_Alltoallw gcsim_MPI_Alltoallw
 #define MPI_Attr_delete gcsim_MPI_Attr_delete
 #define MPI_Attr_get gcsim_MPI_Attr_get
 #define MPI_Attr_put gcsim_MPI_Attr_put
