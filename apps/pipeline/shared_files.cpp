@@ -65,7 +65,7 @@ void classify(const std::string& command, const CLI::Option& opt, Role& r) {
       continue;
     }
     if (name == "--trace") {
-      for (NamedFile& t : trace_files(value)) r.outputs.push_back(std::move(t));
+      for (NamedFile& t : named_trace_files(value)) r.outputs.push_back(std::move(t));
     } else if (name == "--json" || name == "--csv" || name == "--image" || name == "--steps-csv" ||
                name == "--radiosities" || name == "--out") {
       r.outputs.push_back(f);
@@ -92,7 +92,7 @@ std::string described(const NamedFile& f) {
 
 }  // namespace
 
-std::vector<NamedFile> trace_files(const std::string& path) {
+std::vector<NamedFile> named_trace_files(const std::string& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
     throw FileError(fmt::format("--trace {}: is not a regular file; a trace is FILE.json with FILE.csv and FILE.paje "

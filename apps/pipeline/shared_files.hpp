@@ -23,7 +23,7 @@ void check_distinct_files(const std::vector<NamedFile>& outputs, const std::vect
 // The files `--trace PATH` writes: PATH's .json, .csv and .paje. Throws FileError when PATH
 // exists and is not a regular file (a device such as /dev/full): the other two would be
 // created beside it, in /dev.
-std::vector<NamedFile> trace_files(const std::string& path);
+std::vector<NamedFile> named_trace_files(const std::string& path);
 
 // Runs check_distinct_files on the options of the command being run, after parsing and before any
 // command's callback: --json, --csv, --image, --steps-csv, --radiosities, --trace, a file --out
