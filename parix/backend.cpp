@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "parix/sim/simulated_runtime.hpp"
+
 namespace gcsim::parix {
 
 namespace {

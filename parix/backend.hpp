@@ -1,7 +1,7 @@
 #pragma once
 // One entry point for running an SPMD program: the backend is a name in RunOptions, so an
 // application never calls a particular runtime. "simulated" runs the program on the discrete-event
-// model of the machine (simulated_runtime.hpp) and is always there; another backend (parix/mpi/)
+// model of the machine (parix/sim/simulated_runtime.hpp) and is always there; another backend (parix/mpi/)
 // registers itself beside it with a BackendRegistrar from its own folder, and a build without it
 // simply does not offer its name.
 #include <functional>
@@ -11,7 +11,7 @@
 
 #include "parix/processor.hpp"
 #include "parix/run_result.hpp"
-#include "parix/sim/simulated_runtime.hpp"
+#include "parix/simulation_options.hpp"
 
 namespace gcsim::parix {
 

@@ -28,7 +28,7 @@
 #include <utility>
 
 #include "machine/sim_time.hpp"
-#include "parix/sim/activity.hpp"
+#include "parix/activity.hpp"
 
 namespace gcsim::parix {
 
@@ -42,9 +42,6 @@ struct OpCount {
 };
 
 class Processor;
-namespace detail {
-class PayloadPool;
-}
 
 // One end of a virtual link. Move-only; closes the link when destroyed.
 class Link {
@@ -73,38 +70,32 @@ class Link {
   const void* hint_ = nullptr;
 };
 
-namespace detail {
-struct RequestHome;
-}
-
-// Shared state of an asynchronous send or receive, an activity (parix/sim/activity.hpp): running, then
-// done or cancelled. Backends fill it in; its waiter is backend-private (who to wake).
+// Shared state of an asynchronous send or receive, an activity (parix/activity.hpp): running, then
+// done or cancelled. Backends fill it in; its waiter is backend-private (who to wake). A backend
+// keeps what else it needs in a class of its own derived from it (the simulated one:
+// parix/sim/sim_request.hpp), and says there where a state goes when its last Request lets go.
 // Reference-counted by the Requests that hold it (intrusively: no control block, no atomics --
 // a request belongs to one host thread, the simulation's or an MPI processor's).
 struct RequestState : detail::Activity {
+  RequestState() = default;
+  RequestState(const RequestState&) = delete;
+  RequestState& operator=(const RequestState&) = delete;
+  virtual ~RequestState() = default;
+
   bool is_receive = false;
   Bytes data;                  // received bytes once done (receives only)
   std::int64_t link = -1;      // link handle
   int peer = -1;
-  bool cpu_charged = false;    // backend-private: the receive's CPU cost was paid
-  std::int64_t sent_at = 0;    // backend-private: when the received message's sender sent it (simulated ps)
-  detail::PayloadPool* payloads = nullptr;  // backend-private: where take_into recycles storage
-  // Backend-private: takes the state back when its last Request lets go (a pool); null: delete.
-  detail::RequestHome* home = nullptr;
 
  private:
   friend class Request;
+  // The last Request let go: deleted, unless the backend takes its states back (a pool).
+  virtual void release() noexcept { delete this; }
+  // The caller's old storage after Request::take_into: freed, unless the backend keeps it for
+  // later messages.
+  virtual void recycle(Bytes&& storage) noexcept { Bytes().swap(storage); }
   std::uint32_t refs_ = 0;
 };
-
-namespace detail {
-struct RequestHome {
-  virtual void recycle(RequestState* s) noexcept = 0;
-
- protected:
-  ~RequestHome() = default;
-};
-}  // namespace detail
 
 // Handle to an asynchronous send or receive; copies share the state.
 class Request {
@@ -125,7 +116,7 @@ class Request {
     return *this;
   }
   ~Request() {
-    if (state_ && --state_->refs_ == 0) release(state_);
+    if (state_ && --state_->refs_ == 0) state_->release();
   }
   void swap(Request& o) noexcept { std::swap(state_, o.state_); }
 
@@ -140,16 +131,15 @@ class Request {
   // The same into a caller-owned vector, by swapping storage: into's old contents are dropped and
   // its storage goes back to the backend for later messages (parix/sim/payload_pool.hpp), so a loop
   // that reuses one Bytes receives without allocating. into is left empty for a cancelled receive.
-  void take_into(Bytes& into);
+  void take_into(Bytes& into) {
+    into.swap(state_->data);
+    state_->recycle(std::move(state_->data));
+  }
   RequestState* state() const { return state_; }
   // Whether this is the only Request holding its state (a backend may then reuse the state).
   bool unique() const { return state_ && state_->refs_ == 1; }
 
  private:
-  static void release(RequestState* s) noexcept {
-    if (s->home) s->home->recycle(s);
-    else delete s;
-  }
   RequestState* state_ = nullptr;
 };
 

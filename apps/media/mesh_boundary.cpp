@@ -43,7 +43,9 @@ double signed_volume(const std::vector<glm::dvec3>& p, const scene::TriangleMesh
   return six_v / 6.0;
 }
 
-std::vector<glm::dvec3> placed_positions(const scene::TriangleMesh& mesh, const MeshPlacement& placement) {
+}  // namespace
+
+scene::TriangleMesh place_mesh(const scene::TriangleMesh& mesh, const MeshPlacement& placement) {
   glm::dvec3 lo(kInf), hi(-kInf);
   for (const glm::dvec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
   const glm::dvec3 middle = 0.5 * (lo + hi);
@@ -51,14 +53,16 @@ std::vector<glm::dvec3> placed_positions(const scene::TriangleMesh& mesh, const 
   for (const glm::dvec3& p : mesh.positions) far = std::max(far, glm::length(p - middle));
   const double scale = far > 0.0 ? placement.radius / far : 1.0;
   const double a = glm::radians(placement.rotate_y_degrees), c = std::cos(a), s = std::sin(a);
-  std::vector<glm::dvec3> out;
-  out.reserve(mesh.positions.size());
+  scene::TriangleMesh out{{}, mesh.triangles};
+  out.positions.reserve(mesh.positions.size());
   for (const glm::dvec3& p : mesh.positions) {
     const glm::dvec3 v = scale * (p - middle);
-    out.push_back(placement.centre + glm::dvec3(c * v.x + s * v.z, v.y, -s * v.x + c * v.z));
+    out.positions.push_back(placement.centre + glm::dvec3(c * v.x + s * v.z, v.y, -s * v.x + c * v.z));
   }
   return out;
 }
+
+namespace {
 
 void count(BoundaryTally* tally, const geometry::TestTally& t) {
   if (!tally) return;
@@ -68,10 +72,10 @@ void count(BoundaryTally* tally, const geometry::TestTally& t) {
 
 }  // namespace
 
-MeshBoundary::MeshBoundary(const scene::TriangleMesh& mesh, const MeshPlacement& placement, const std::string& source) {
+MeshBoundary::MeshBoundary(const scene::TriangleMesh& mesh, const std::string& source) {
   if (mesh.triangles.empty()) throw std::invalid_argument(source + ": the object's mesh has no triangles");
   check_closed(mesh, source);
-  const std::vector<glm::dvec3> p = placed_positions(mesh, placement);
+  const std::vector<glm::dvec3>& p = mesh.positions;
   if (!(signed_volume(p, mesh) > 0.0))
     throw std::invalid_argument(source + ": the mesh is wound inwards (negative signed volume); the object's "
                                 "triangles must be counter-clockwise seen from outside");
@@ -137,7 +141,7 @@ glm::dvec3 MeshBoundary::leave_surface(const glm::dvec3& at, const BoundaryHit& 
 std::shared_ptr<MeshBoundary> load_mesh_boundary(const std::filesystem::path& file, const MeshPlacement& placement) {
   if (!std::filesystem::is_regular_file(file))
     throw std::runtime_error("media object mesh '" + file.string() + "': no such file");
-  return std::make_shared<MeshBoundary>(scene::load_obj_mesh(file), placement, file.string());
+  return std::make_shared<MeshBoundary>(place_mesh(scene::load_obj_mesh(file), placement), file.string());
 }
 
 }  // namespace gcsim::media

@@ -23,11 +23,15 @@ struct MeshPlacement {
   double rotate_y_degrees = 0.0;
 };
 
+// The mesh moved and scaled to `placement` (in double; the boundary rounds it to float once).
+scene::TriangleMesh place_mesh(const scene::TriangleMesh& mesh, const MeshPlacement& placement);
+
 class MeshBoundary final : public Boundary {
  public:
-  // Throws std::invalid_argument (naming `source`) unless the mesh is closed, consistently wound
-  // (every edge used once in each direction) and wound outwards (positive signed volume).
-  MeshBoundary(const scene::TriangleMesh& mesh, const MeshPlacement& placement, const std::string& source);
+  // The mesh as it is placed in the scene. Throws std::invalid_argument (naming `source`) unless it
+  // is closed, consistently wound (every edge used once in each direction) and wound outwards
+  // (positive signed volume).
+  MeshBoundary(const scene::TriangleMesh& mesh, const std::string& source);
 
   std::optional<BoundaryHit> intersect(const glm::dvec3& o, const glm::dvec3& d, double t_min, double t_max,
                                        BoundaryTally* tally = nullptr) const override;

@@ -8,6 +8,7 @@
 #include "apps/media/frame.hpp"
 #include "parix/collectives.hpp"
 #include "parix/processor.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::media {
 namespace {

@@ -121,6 +121,10 @@ std::vector<PointLight> lower_lights(const scene::SceneDescription& d) {
       lights.push_back({glm::vec3(p->position), glm::vec3(p->intensity)});
       continue;
     }
+    const auto* disk = std::get_if<scene::DiskLight>(&light);
+    if (disk != nullptr)
+      throw std::invalid_argument("scene '" + d.name + "': a disk light (the media renderer's): the ray tracer lights by "
+                                  "point and spot lights only");
     const auto& spot = std::get<scene::SpotLight>(light);
     PointLight l{glm::vec3(spot.position), glm::vec3(spot.intensity)};
     l.spot_direction = glm::vec3(glm::normalize(spot.direction));

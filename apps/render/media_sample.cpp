@@ -7,6 +7,7 @@
 #include "apps/render/render_setup.hpp"
 #include "apps/render/sampled_view.hpp"
 #include "apps/render/view_sample.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::render {
 

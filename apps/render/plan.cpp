@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <set>
 #include <stdexcept>
+#include <type_traits>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -57,7 +58,13 @@ struct Analysis {
 Analysis analyse(const SceneDescription& d) {
   Analysis a{d, visible_sides(d), {}, false, {}, {}, {}};
   for (const auto& light : d.lights)
-    std::visit([&](const auto& l) { if (scene::largest(l.intensity) > 0.0) a.light_positions.push_back(l.position); }, light);
+    std::visit([&](const auto& l) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(l)>, scene::DiskLight>) {
+        if (scene::largest(l.power) > 0.0) a.light_positions.push_back(l.position);
+      } else if (scene::largest(l.intensity) > 0.0) {
+        a.light_positions.push_back(l.position);
+      }
+    }, light);
   for (const auto& s : d.shapes) {
     a.used_materials.insert(s.material);
     if (s.back_material >= 0) a.used_materials.insert(s.back_material);

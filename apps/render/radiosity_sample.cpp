@@ -9,6 +9,7 @@
 #include "apps/radiosity/radiosity.hpp"
 #include "apps/render/medium_region.hpp"
 #include "apps/render/radiosity_media.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::render {
 

@@ -6,6 +6,7 @@
 #include "apps/radiosity/radiosity.hpp"
 #include "apps/render/render_setup.hpp"
 #include "apps/render/unified_render.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::render {
 

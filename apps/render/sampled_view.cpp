@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "apps/raytrace/raytrace.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::render {
 

@@ -77,6 +77,9 @@ PhotonLights photon_lights(const scene::SceneDescription& d) {
     if (const auto* p = std::get_if<scene::PointLight>(&light)) {
       add_emitter(l, {PhotonLights::Emitter::Kind::point, p->position, {}, {}, {}, -1.0, 4 * media::kPi * luminance(p->intensity)},
                   4 * media::kPi * p->intensity);
+    } else if (std::holds_alternative<scene::DiskLight>(light)) {
+      throw std::invalid_argument("a disk light (the media renderer's): the photon pass emits from polygons, point and "
+                                  "spot lights only");
     } else {
       const auto& s = std::get<scene::SpotLight>(light);
       const double cos_cone = std::cos(s.cone_degrees * media::kPi / 180.0);

@@ -18,17 +18,10 @@ struct MpiRequest : RequestState {
   int tag = 0;
 };
 
-// Deletes MPI requests as what they are (RequestState has no virtual destructor). Stateless, so
-// requests may outlive the processor that made them.
-struct MpiRequestHome final : detail::RequestHome {
-  void recycle(RequestState* s) noexcept override { delete static_cast<MpiRequest*>(s); }
-};
-MpiRequestHome mpi_requests;
-
-// A new MpiRequest, held by `handle` at once.
+// A new MpiRequest, held by `handle` at once; deleted (RequestState's default) when its last
+// Request lets go, so requests may outlive the processor that made them.
 MpiRequest& new_request(Request& handle) {
   auto* r = new MpiRequest;
-  r->home = &mpi_requests;
   handle = Request(r);
   return *r;
 }

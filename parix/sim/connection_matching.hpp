@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "machine/sim_time.hpp"
-#include "parix/sim/activity.hpp"
+#include "parix/activity.hpp"
 #include "parix/sim/connection_matcher.hpp"
 #include "parix/sim/link_end.hpp"
 #include "parix/sim/link_table.hpp"

@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "parix/sim/sim_process.hpp"
+#include "parix/sim/sim_request.hpp"
 
 namespace gcsim::parix::detail {
 
@@ -41,7 +42,7 @@ inline void MessageTransport::hand_over(LinkEnd& e, Message&& m) {
   }
   Request r = std::move(posted.request);
   r.state()->data = std::move(m.data);
-  r.state()->sent_at = m.sent;
+  sim_state(r).sent_at = m.sent;
   e.receives.drop_front();
   if (m.synchronous) m.send.state()->complete();
   r.state()->complete();

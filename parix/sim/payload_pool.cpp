@@ -2,16 +2,7 @@
 
 #include <utility>
 
-namespace gcsim::parix {
-
-void Request::take_into(Bytes& into) {
-  into.swap(state_->data);
-  // The caller's old storage: back to the run's pool (simulated backend), else freed now.
-  if (state_->payloads) state_->payloads->give(std::move(state_->data));
-  else Bytes().swap(state_->data);
-}
-
-namespace detail {
+namespace gcsim::parix::detail {
 
 Bytes PayloadPool::take_elsewhere(std::size_t bytes) {
   // The next two classes always fit, and hold under 8x the request, so a small message never pins
@@ -37,5 +28,4 @@ std::size_t PayloadPool::kept() const {
   return n;
 }
 
-}  // namespace detail
-}  // namespace gcsim::parix
+}  // namespace gcsim::parix::detail

@@ -16,7 +16,7 @@
 #include "machine/network_model.hpp"
 #include "parix/mailbox.hpp"
 #include "parix/run_result.hpp"
-#include "parix/sim/activity.hpp"
+#include "parix/activity.hpp"
 #include "parix/sim/in_order_delivery.hpp"
 
 namespace gcsim::parix::detail {

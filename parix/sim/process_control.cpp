@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "parix/sim/sim_request.hpp"
 #include "parix/sim/simulation.hpp"
 
 namespace gcsim::parix::detail {
@@ -38,7 +39,7 @@ std::size_t SimProcess::wait_any(std::span<Request* const> rs) {
   }
   const machine::SimTime end = sim_.kernel.now();
   stats_.comm += end - start;
-  if (rs[i]->state()->is_receive) stats_.waiting += waited_for_sender(rs[i]->state()->sent_at, start, end);
+  if (rs[i]->state()->is_receive) stats_.waiting += waited_for_sender(sim_state(*rs[i]).sent_at, start, end);
   if (sim_.trace.enabled() && end > start) {
     sim_.trace.record({TraceKind::wait, id_, rs[i]->state()->peer, start, end, 0, -1, "wait_any", thread_});
   }

@@ -179,7 +179,7 @@ Request SimProcess::post_receive(Link& link) {
 }
 
 [[gnu::always_inline]] inline void SimProcess::post_receive(Request& req, LinkEnd& e, const Link& link) {
-  RequestState& s = *req.state();
+  SimRequest& s = sim_state(req);
   s.is_receive = true;
   s.payloads = &sim_.payloads;
   s.link = link.handle();
@@ -205,7 +205,7 @@ Request SimProcess::post_receive(Link& link) {
 // so only this process holds it; one still queued (the run abandoned) is left there and replaced.
 [[gnu::always_inline]] inline Request& SimProcess::blocking_receive() {
   if (blocking_receive_.unique()) [[likely]] {
-    RequestState& s = *blocking_receive_.state();
+    SimRequest& s = sim_state(blocking_receive_);
     s.rearm();
     s.cpu_charged = false;
   } else {
@@ -238,7 +238,7 @@ void SimProcess::wait_for_running(RequestState& r, const char* call, TraceKind k
   const machine::SimTime end = sim_.kernel.now();
   stats_.comm += end - start;
   if (r.cancelled()) return;  // withdrawn (before the wait, or by another thread meanwhile)
-  if (r.is_receive) stats_.waiting += waited_for_sender(r.sent_at, start, end);
+  if (r.is_receive) stats_.waiting += waited_for_sender(static_cast<SimRequest&>(r).sent_at, start, end);
   if (sim_.trace.enabled() && end > start) [[unlikely]] trace_wait(r, call, kind, start);
   charge_receive_cpu(r);
 }
@@ -289,13 +289,14 @@ void SimProcess::recv(Link& link, Bytes& into) {
 }
 
 void SimProcess::charge_receive_cpu(RequestState& r) {
-  if (!sim_.charges_comm_cpu || !r.is_receive || r.cpu_charged) return;  // the first test: per message
+  // The first test: per message. Every state this backend is given is its own (sim_state).
+  if (!sim_.charges_comm_cpu || !r.is_receive || static_cast<SimRequest&>(r).cpu_charged) return;
   charge_receive_cpu_now(r);
 }
 
 // Out of line: its callers run once per message, and a published machine never charges.
 [[gnu::noinline]] void SimProcess::charge_receive_cpu_now(RequestState& r) {
-  r.cpu_charged = true;
+  static_cast<SimRequest&>(r).cpu_charged = true;
   charge_comm_cpu(sim_.config.comm_cpu.recv, static_cast<std::int64_t>(r.data.size()), "recv_cpu");
 }
 

@@ -14,7 +14,7 @@
 #include "parix/mailbox.hpp"
 #include "parix/processor.hpp"
 #include "parix/run_result.hpp"
-#include "parix/sim/activity.hpp"
+#include "parix/activity.hpp"
 #include "parix/sim/fiber_processes.hpp"
 #include "parix/sim/link_end.hpp"
 

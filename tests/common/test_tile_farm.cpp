@@ -14,6 +14,7 @@
 
 #include "apps/common/tile_farm.hpp"
 #include "tests/support/published_machine.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::apps {
 namespace {

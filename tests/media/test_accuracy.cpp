@@ -7,6 +7,7 @@
 #include "apps/common/rng.hpp"
 #include "apps/media/accuracy.hpp"
 #include "apps/media/image_error.hpp"
+#include "apps/media/lower_media_scene.hpp"
 #include "apps/common/tone_map.hpp"
 
 namespace gcsim::media {
@@ -79,7 +80,7 @@ TEST(ToneMap, ThePercentileMapsToWhiteAndFaintValuesKeepTheirRatio) {
 }
 
 MediaScene tiny(const std::string& name) {
-  MediaScene s = scene_by_name(name);
+  MediaScene s = load_media_scene(name);
   s.photons_emitted = 3000, s.k_nearest = 30;
   return s;
 }

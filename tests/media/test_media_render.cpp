@@ -4,6 +4,7 @@
 
 #include <cstring>
 
+#include "apps/media/lower_media_scene.hpp"
 #include "apps/media/media_render.hpp"
 #include "apps/media/photon_tracer.hpp"
 
@@ -11,7 +12,7 @@ namespace gcsim::media {
 namespace {
 
 MediaScene tiny_scene() {
-  MediaScene s = small_scene();
+  MediaScene s = load_media_scene("small");
   s.photons_emitted = 4000;
   s.k_nearest = 30;
   s.image.width = 16, s.image.height = 12;

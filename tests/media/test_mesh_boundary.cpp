@@ -12,7 +12,7 @@
 #include "apps/common/rng.hpp"
 #include "apps/common/scene/obj_mesh.hpp"
 #include "apps/media/fresnel.hpp"
-#include "apps/media/media_scene.hpp"
+#include "apps/media/builtin_scenes.hpp"
 #include "apps/media/mesh_boundary.hpp"
 #include "apps/common/media/sampling.hpp"
 #include "apps/media/scene_data.hpp"
@@ -212,7 +212,7 @@ TEST(MeshBoundary, TessellatedSphereMatchesTheAnalyticSphereWithinItsTessellatio
   const double radius = 0.9;
   const scene::TriangleMesh ico = icosphere(4);  // 5120 triangles
   // The icosahedron is symmetric about its centre, so placement keeps centre and radius.
-  const MeshBoundary mesh(ico, {centre, radius, 0.0}, "icosphere");
+  const MeshBoundary mesh(place_mesh(ico, {centre, radius, 0.0}), "icosphere");
   const SphereBoundary sphere(centre, radius);
   // How far a flat triangle lies inside the sphere: at most r (1 − cos of its longest vertex angle).
   double min_cos = 1.0;
@@ -254,11 +254,11 @@ scene::TriangleMesh tetrahedron() {
 }
 
 TEST(MeshBoundary, RefusesOpenInwardAndMissingMeshesByName) {
-  EXPECT_NO_THROW(MeshBoundary(tetrahedron(), {}, "tet"));
+  EXPECT_NO_THROW(MeshBoundary(place_mesh(tetrahedron(), {}), "tet"));
   scene::TriangleMesh open = tetrahedron();
   open.triangles.pop_back();
   try {
-    MeshBoundary(open, {}, "open.obj");
+    MeshBoundary(place_mesh(open, {}), "open.obj");
     FAIL() << "an open mesh was accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("open.obj"), std::string::npos) << e.what();
@@ -267,7 +267,7 @@ TEST(MeshBoundary, RefusesOpenInwardAndMissingMeshesByName) {
   scene::TriangleMesh inward = tetrahedron();
   for (auto& t : inward.triangles) std::swap(t[1], t[2]);
   try {
-    MeshBoundary(inward, {}, "inward.obj");
+    MeshBoundary(place_mesh(inward, {}), "inward.obj");
     FAIL() << "an inward mesh was accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("inward.obj"), std::string::npos) << e.what();

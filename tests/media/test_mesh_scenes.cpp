@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "apps/media/frame.hpp"
+#include "apps/media/lower_media_scene.hpp"
 #include "apps/media/parallel_media.hpp"
 #include "machine/machine_config.hpp"
 #include "tests/support/published_machine.hpp"
@@ -12,14 +13,14 @@ namespace gcsim::media {
 namespace {
 
 MediaScene few_photon_bunny() {
-  MediaScene s = scene_by_name("exp1-bunny");
+  MediaScene s = load_media_scene("exp1-bunny");
   s.photons_emitted = 4000, s.k_nearest = 30, s.image.width = 24, s.image.height = 18;
   return s;
 }
 
 TEST(BunnyScenes, NamedLikeTheirSphereScenesWithTheMeshAsObject) {
   for (const char* name : {"exp1", "exp2"}) {
-    const MediaScene sphere = scene_by_name(name), bunny = scene_by_name(std::string(name) + "-bunny");
+    const MediaScene sphere = load_media_scene(name), bunny = load_media_scene(std::string(name) + "-bunny");
     EXPECT_EQ(bunny.name, std::string(name) + "-bunny");
     EXPECT_NE(dynamic_cast<const MeshBoundary*>(bunny.object.get()), nullptr);
     EXPECT_NE(dynamic_cast<const SphereBoundary*>(sphere.object.get()), nullptr);
@@ -70,7 +71,7 @@ TEST(BunnyScenes, ImageIsBitIdenticalOnOneAndTwoNodesAndTheMeshIsCharged) {
 }
 
 TEST(BunnyScenes, TheSphereScenesCountNoMeshWork) {
-  MediaScene s = scene_by_name("exp1");
+  MediaScene s = load_media_scene("exp1");
   s.photons_emitted = 2000, s.image.width = 8, s.image.height = 6;
   const PhotonPassResult r = trace_photons(s, 0, s.photons_emitted);
   EXPECT_FALSE(r.boundary.any());

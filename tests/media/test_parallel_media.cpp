@@ -2,6 +2,7 @@
 // to the sequential render; compute is charged and splits over the nodes.
 #include <gtest/gtest.h>
 
+#include "apps/media/lower_media_scene.hpp"
 #include "apps/media/parallel_media.hpp"
 #include "machine/machine_config.hpp"
 #include "tests/support/published_machine.hpp"
@@ -10,7 +11,7 @@ namespace gcsim::media {
 namespace {
 
 TEST(ParallelMedia, ImageDoesNotDependOnTheNodeCount) {
-  MediaScene s = small_scene();
+  MediaScene s = load_media_scene("small");
   s.photons_emitted = 3000, s.k_nearest = 30, s.image.width = 20, s.image.height = 15;
   const MarchSettings settings{Estimator::radiance, 4.0};
   SceneCaches caches = build_caches(s, trace_photons(s, 0, s.photons_emitted));
@@ -37,7 +38,7 @@ TEST(ParallelMedia, ImageDoesNotDependOnTheNodeCount) {
 // Tiles are handed out by simulated time, which is deterministic: the same run twice gives the same
 // makespan to the picosecond, and every tile is assigned once.
 TEST(ParallelMedia, DynamicTilesGiveADeterministicMakespan) {
-  MediaScene s = small_scene();
+  MediaScene s = load_media_scene("small");
   s.photons_emitted = 2000, s.k_nearest = 20, s.image.width = 40, s.image.height = 36;
   const MarchSettings settings{Estimator::radiance, 4.0};
   const ParallelMediaResult a = render_media_parallel(s, settings, 7, test_support::published_machine(4));
@@ -51,7 +52,7 @@ TEST(ParallelMedia, DynamicTilesGiveADeterministicMakespan) {
 // --host-threads: tiles rendered ahead from node 0's caches (parallel_media.hpp) change no pixel,
 // no count and no simulated time; some tiles were rendered by the workers.
 TEST(ParallelMedia, HostThreadsChangeNothingButWallTime) {
-  MediaScene s = small_scene();
+  MediaScene s = load_media_scene("small");
   s.photons_emitted = 2000, s.k_nearest = 20, s.image.width = 96, s.image.height = 64;
   const MarchSettings settings{Estimator::radiance, 4.0};
   std::int64_t by_workers = 0;

@@ -2,6 +2,8 @@
 // property that tells them apart, and the uniformly lit fog case.
 #include <gtest/gtest.h>
 
+#include "apps/media/builtin_scenes.hpp"
+#include "apps/media/lower_media_scene.hpp"
 #include "apps/media/photon_tracer.hpp"
 
 namespace gcsim::media {
@@ -10,7 +12,7 @@ namespace {
 constexpr double kLuminance = 0.2126 * 0.8 + 0.7152 * 0.9 + 0.0722 * 0.8;
 
 TEST(Experiment1, TheTwoReadingsDifferOnlyInTheInsideScatteringCoefficient) {
-  const MediaScene albedo = experiment1_scene(Exp1Reading::albedo), literal = experiment1_scene(Exp1Reading::literal);
+  const MediaScene albedo = load_media_scene("exp1"), literal = load_media_scene("exp1-literal");
   EXPECT_EQ(albedo.inside.sigma_t, 50.0);
   EXPECT_EQ(literal.inside.sigma_t, 50.0);
   EXPECT_NEAR(albedo.inside.albedo(), kLuminance, 1e-12);         // (0.8, 0.9, 0.8) read as the albedo
@@ -27,7 +29,7 @@ TEST(Experiment1, TheTwoReadingsDifferOnlyInTheInsideScatteringCoefficient) {
 // (the object is a dark absorber); read as the albedo, it scatters several times (it glows).
 TEST(Experiment1, InteractionsPerEnteringPhotonAreBoundedByTheAlbedo) {
   for (Exp1Reading reading : {Exp1Reading::literal, Exp1Reading::albedo}) {
-    MediaScene s = experiment1_scene(reading);
+    MediaScene s = lower_media_scene(experiment1_description(reading));
     s.photons_emitted = 80000;  // about 1 in 75 enters the sphere
     const PhotonPassResult r = trace_photons(s, 0, s.photons_emitted);
     ASSERT_GT(r.entered, 500u);
@@ -45,7 +47,7 @@ TEST(Experiment1, InteractionsPerEnteringPhotonAreBoundedByTheAlbedo) {
 }
 
 TEST(UniformFog, InScatteredRadianceVariesLittleAlongAViewRay) {
-  MediaScene s = uniform_fog_scene();
+  MediaScene s = load_media_scene("fog");
   s.photons_emitted = 20000;
   EXPECT_FALSE(s.object);
   const PhotonPassResult r = trace_photons(s, 0, s.photons_emitted);

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "parix/sim/activity.hpp"
+#include "parix/activity.hpp"
 #include "parix/sim/connection_matcher.hpp"
 #include "parix/sim/deadlock_report.hpp"
 #include "parix/sim/in_order_delivery.hpp"
@@ -142,7 +142,7 @@ TEST(Request, ReportsItsCommunicationsState) {
   EXPECT_FALSE(Request().cancelled());
   auto* done = new RequestState;
   auto* withdrawn = new RequestState;
-  Request d(done), w(withdrawn);  // deleted with the last Request (no home)
+  Request d(done), w(withdrawn);  // deleted with the last Request (RequestState's own release)
   EXPECT_FALSE(d.test());
   done->data = Bytes(3);
   done->complete();
@@ -151,6 +151,40 @@ TEST(Request, ReportsItsCommunicationsState) {
   EXPECT_TRUE(w.cancelled() && !w.test() && !w.done());
   EXPECT_EQ(d.take().size(), 3u);
   EXPECT_TRUE(w.take().empty());
+}
+
+// A backend's own state: where a state goes when its last Request lets go, and where take_into
+// puts the caller's old storage, are the backend's (release and recycle).
+struct CountingState final : RequestState {
+  int* released;
+  std::size_t* recycled_capacity;
+  CountingState(int* r, std::size_t* c) : released(r), recycled_capacity(c) {}
+
+ private:
+  void release() noexcept override {
+    ++*released;
+    delete this;
+  }
+  void recycle(Bytes&& storage) noexcept override { *recycled_capacity += storage.capacity(); }
+};
+
+TEST(Request, TheBackendsStateDecidesWhereItAndOldStorageGo) {
+  int released = 0;
+  std::size_t recycled = 0;
+  {
+    Request a(new CountingState(&released, &recycled));
+    Request b = a;
+    a.state()->data = Bytes(7);
+    a.state()->complete();
+    Bytes into;
+    into.reserve(100);
+    b.take_into(into);
+    EXPECT_EQ(into.size(), 7u);
+    EXPECT_GE(recycled, 100u);  // into's old storage went to the backend
+    a = Request();
+    EXPECT_EQ(released, 0);  // b still holds it
+  }
+  EXPECT_EQ(released, 1);
 }
 
 // GCC 12 sees Request's release path (delete when a state has no home) inlined into `a = Request()`

@@ -8,6 +8,7 @@
 
 #include "apps/pipeline/app_registry.hpp"
 #include "parix/backend.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::pipeline {
 namespace {

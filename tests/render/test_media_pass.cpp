@@ -15,7 +15,8 @@
 
 #include "apps/common/scene/scene_file.hpp"
 #include "apps/media/media_render.hpp"
-#include "apps/media/media_scene.hpp"
+#include "apps/media/builtin_scenes.hpp"
+#include "apps/media/lower_media_scene.hpp"
 #include "apps/media/scene_caches.hpp"
 #include "apps/raytrace/pixel_encoding.hpp"
 #include "apps/render/plan.hpp"
@@ -230,40 +231,14 @@ TEST(MediaPass, InScatteredLightIsSingleScatteringPlusALittle) {
   }
 }
 
-// The media app's "small" scene (a glass sphere of Schlick medium in isotropic fog, one point light)
-// as a scene description.
-scene::SceneDescription small_scene_description(const media::MediaScene& app) {
-  scene::SceneDescription d;
-  d.name = "small";
-  d.camera = app.camera;
-  d.image.width = app.image.width, d.image.height = app.image.height;
-  d.image.background = d.image.ambient = scene::Rgb(0.0);
-  auto medium = [](const media::HomogeneousMedium& m, double ior) {
-    scene::Medium out{scene::Rgb(m.sigma_s), scene::Rgb(m.sigma_t - m.sigma_s)};
-    out.phase = m.phase.kind() == media::PhaseKind::isotropic ? scene::PhaseKind::isotropic : scene::PhaseKind::schlick;
-    out.phase_g = m.phase.parameter();
-    out.boundary_ior = ior;
-    return out;
-  };
-  scene::Material fog, inside;
-  fog.name = "fog", inside.name = "inside";
-  fog.diffuse = inside.diffuse = scene::Rgb(0.0);
-  fog.medium = medium(app.outside, 1.0);
-  inside.medium = medium(app.inside, app.ior);
-  d.shapes.push_back({scene::Box{app.fog_box.lo, app.fog_box.hi}, d.add_material(fog)});
-  const auto* sphere = dynamic_cast<const media::SphereBoundary*>(app.object.get());
-  if (sphere == nullptr) throw std::logic_error("the small scene's object is no longer a sphere");
-  d.shapes.push_back({scene::Sphere{sphere->centre(), sphere->radius()}, d.add_material(inside)});
-  d.lights.push_back(scene::PointLight{app.light.position, scene::Rgb(app.light.intensity)});
-  return d;
-}
-
 TEST(MediaPass, AgreesWithTheMediaApplicationOnItsSmallScene) {
   // The small scene seen by the unified renderer's view, against the media app's own camera paths:
   // the images' means agree (the view shows pi L).
-  media::MediaScene app = media::small_scene();
-  app.image = {64, 48};  // the size the 1 % below was measured at (the scene's own is larger)
-  const scene::SceneDescription d = small_scene_description(app);
+  // The media app's "small" scene (a glass sphere of Schlick medium in isotropic fog, one point
+  // light): the built-in description, and the media app's lowering of it.
+  scene::SceneDescription d = media::small_description();
+  d.image.width = 64, d.image.height = 48;  // the size the 1 % below was measured at (the scene's own is larger)
+  const media::MediaScene app = media::lower_media_scene(d);
 
   // The media app's photons, through the unified view and through the app's own camera paths: the
   // same map, so only the distance samples differ (at 200000 photons of each tracer on its own the
@@ -297,8 +272,9 @@ TEST(MediaPass, AgreesWithTheMediaApplicationOnItsSmallScene) {
 // fog and in the sphere agree within 4 standard errors of the difference (per-seed totals are the
 // samples: one emitted photon stores several interactions, so single counts are clustered).
 TEST(MediaPass, ThePhotonTracersStoreAlikeOverSeeds) {
-  media::MediaScene app = media::small_scene();
-  const RenderSetup setup = prepare_render(small_scene_description(app), make_plan(small_scene_description(app)), "small.toml");
+  const scene::SceneDescription d = media::small_description();
+  media::MediaScene app = media::lower_media_scene(d);
+  const RenderSetup setup = prepare_render(d, make_plan(d), "small.toml");
   ASSERT_EQ(setup.media->regions.size(), 2u);  // the fog, then the sphere
   const std::size_t n = 20000;
   constexpr int kSeeds = 32;

@@ -17,6 +17,7 @@
 #include "apps/render/view_sample.hpp"
 #include "machine/machine_config.hpp"
 #include "tests/support/published_machine.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::render {
 namespace {

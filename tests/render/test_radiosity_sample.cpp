@@ -14,6 +14,7 @@
 #include "apps/render/unified_render.hpp"
 #include "machine/machine_config.hpp"
 #include "tests/support/published_machine.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::render {
 namespace {

@@ -16,6 +16,7 @@
 #include "apps/render/unified_render.hpp"
 #include "apps/render/view_sample.hpp"
 #include "tests/support/published_machine.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::render {
 namespace {

@@ -4,6 +4,8 @@
     check_structure.py SOURCE_DIR
 
 - layering: machine/ includes nothing of parix/ or apps/; parix/ nothing of apps/ (apps -> parix -> machine);
+- the runtime's API: a header directly in parix/ (processor.hpp, backend.hpp, ...) includes nothing of the simulated
+  backend (parix/sim/), which implements the API and is one backend among others;
 - size: no source file of machine/, parix/ or apps/ over 450 lines (generated-looking data tables, *_data.hpp, aside);
 - functions: no function body over 80 lines.
 
@@ -21,6 +23,9 @@ SOURCES = ("machine", "parix", "apps")
 LAYERS = {"machine": ("parix/", "apps/"), "parix": ("apps/",)}
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"', re.M)
 # What may stand between a parameter list's ')' and the body's '{'.
+# A header of the runtime's API (directly in parix/) and the backend folder it must not include.
+API_HEADER = re.compile(r"^parix/[^/]+\.(?:hpp|h)$")
+API_MUST_NOT_INCLUDE = "parix/sim/"
 QUALIFIERS = re.compile(r"^\s*(?:const|noexcept(?:\([^)]*\))?|override|final|mutable|&&?|->\s*[\w:<>,\s*&]+|\s)*$")
 
 
@@ -79,6 +84,19 @@ def long_functions(text):
     return found
 
 
+def include_problems(rel, text):
+    """The includes of the file at rel (relative to the source root) that break the layering or the API rule."""
+    top = rel.split("/")[0]
+    problems = []
+    for inc in INCLUDE.findall(text):
+        if any(inc.startswith(bad) for bad in LAYERS.get(top, ())):
+            problems.append(f"{rel}: includes {inc}: {top}/ must not depend on {inc.split('/')[0]}/")
+        elif API_HEADER.match(rel) and inc.startswith(API_MUST_NOT_INCLUDE):
+            problems.append(f"{rel}: includes {inc}: the runtime's API headers must not depend on the simulated "
+                            f"backend ({API_MUST_NOT_INCLUDE})")
+    return problems
+
+
 def main(root):
     problems = []
     for top in SOURCES:
@@ -87,9 +105,7 @@ def main(root):
                 continue
             rel = path.relative_to(root).as_posix()
             text = path.read_text(encoding="utf-8", errors="replace")
-            for inc in INCLUDE.findall(text):
-                if any(inc.startswith(bad) for bad in LAYERS.get(top, ())):
-                    problems.append(f"{rel}: includes {inc}: {top}/ must not depend on {inc.split('/')[0]}/")
+            problems += include_problems(rel, text)
             lines = text.count("\n")
             if lines > MAX_FILE_LINES:
                 problems.append(f"{rel}: {lines} lines (at most {MAX_FILE_LINES}: split it by concept)")

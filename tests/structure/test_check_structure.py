@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""The structure checker finds what it claims to find: long functions, and only functions."""
+"""The structure checker finds what it claims to find: long functions, and only functions; includes across layers
+and into the simulated backend from the runtime's API."""
 import pathlib
 import sys
 import unittest
@@ -43,6 +44,23 @@ class LongFunctions(unittest.TestCase):
         blank = cs.blank_comments_and_strings(text)
         self.assertEqual(blank.count("\n"), text.count("\n"))
         self.assertNotIn("{", blank)
+
+
+class Includes(unittest.TestCase):
+    def test_api_headers_must_not_include_the_simulated_backend(self):
+        sim = '#include "parix/sim/simulation.hpp"\n'
+        self.assertEqual(len(cs.include_problems("parix/backend.hpp", sim)), 1)
+        self.assertIn("API", cs.include_problems("parix/processor.hpp", sim)[0])
+        # The backend itself, its sources and other folders of parix/ may.
+        self.assertEqual(cs.include_problems("parix/sim/sim_process.hpp", sim), [])
+        self.assertEqual(cs.include_problems("parix/backend.cpp", sim), [])
+        self.assertEqual(cs.include_problems("parix/mpi/mpi_runtime.hpp", sim), [])
+        self.assertEqual(cs.include_problems("parix/backend.hpp", '#include "parix/run_result.hpp"\n'), [])
+
+    def test_layers_go_one_way(self):
+        self.assertEqual(len(cs.include_problems("machine/mesh.cpp", '#include "parix/processor.hpp"\n')), 1)
+        self.assertEqual(len(cs.include_problems("parix/backend.cpp", '#include "apps/common/image.hpp"\n')), 1)
+        self.assertEqual(cs.include_problems("apps/cli/main.cpp", '#include "parix/sim/simulation.hpp"\n'), [])
 
 
 if __name__ == "__main__":

@@ -203,5 +203,22 @@ class MachineLine(unittest.TestCase):
             self.assertIn("not recorded", style.machine_line(bare))
 
 
+class NodePositions(unittest.TestCase):
+    def test_positions_come_from_the_trace_else_row_major(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            # An interconnect whose coordinates are not row-major: node 1 sits below node 0.
+            write(tmp, "t.json", '[\n{"ph":"M","pid":0,"name":"process_name","args":{"name":"processors"}}'
+                                 ',\n{"ph":"M","pid":0,"tid":0,"name":"thread_name","args":{"name":"P0 node (0,0)"}}'
+                                 ',\n{"ph":"M","pid":0,"tid":1,"name":"thread_name","args":{"name":"P1 node (0,1)"}}'
+                                 ',\n{"ph":"X","pid":0,"tid":1,"name":"thread_name","args":{"name":"P2 node (5,5)"}}\n')
+            trace = make_trace(os.path.join(tmp, "t.csv"), [("compute", 0, -1, 0, 1, 0, 0)], width=2, height=2)
+            self.assertEqual(trace.node_xy(1), (0, 1))
+            self.assertEqual(gantt.row_labels(trace, [0, 1]), ["P0 (0,0)", "P1 (0,1)"])
+            self.assertEqual(trace.node_xy(2), (0, 1))  # a record, not metadata: not read; row-major
+            old = make_trace(os.path.join(tmp, "old.csv"), [("compute", 0, -1, 0, 1, 0, 0)], width=2, height=2)
+            self.assertEqual(old.node_xy(1), (1, 0))
+            self.assertEqual(old.node_xy(3), (1, 1))
+
+
 if __name__ == "__main__":
     unittest.main(verbosity=2)

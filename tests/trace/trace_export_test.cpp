@@ -1,6 +1,7 @@
 // The three trace exports (Chrome JSON, CSV, Paje) of a small run whose every event time is known
 // (tests/trace/trace_test_support.hpp).
 #include "tests/trace/trace_test_support.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim {
 namespace {

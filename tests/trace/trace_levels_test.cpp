@@ -2,6 +2,7 @@
 // interrupted traces, and the CSV reader's errors.
 #include "tests/trace/trace_test_support.hpp"
 #include "machine/mesh.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim {
 namespace {

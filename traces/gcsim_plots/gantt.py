@@ -25,7 +25,7 @@ DENSITY_BINS = 400
 
 
 def row_labels(trace, procs):
-    return [f"P{p} ({p % trace.mesh_width},{p // trace.mesh_width})" for p in procs]
+    return [f"P{p} ({trace.node_xy(p)[0]},{trace.node_xy(p)[1]})" for p in procs]
 
 
 def state_mask(trace, window):

@@ -19,6 +19,9 @@ HEADER = re.compile(r"^# gcsim trace; level (\w+); (\d+) processors; mesh (\d+)x
 # After "mesh WxH" (the grid of nodes) when the machine's interconnect is not the GC's mesh.
 INTERCONNECT = re.compile(r"; interconnect ([\w.-]+)")
 PS_PER_MS = 1e9
+# A processor's track in the Chrome JSON: "P3 node (3,0)", the node's position by the interconnect's
+# coordinates hook (machine/interconnect.hpp), written before any record.
+NODE_LABEL = re.compile(r'"tid":(\d+),"name":"thread_name","args":\{"name":"P\d+ node \((-?\d+),(-?\d+)\)"\}')
 
 
 class Trace:
@@ -41,6 +44,7 @@ class Trace:
         self.id = ident
         self.thread = thread  # 0: the processor itself; 1, 2, ...: threads it spawned
         self.machine = machine_of(path)  # "" when the trace does not say
+        self.node_positions = node_positions_of(path)  # node -> (x, y); empty: row by row
 
     def __len__(self):
         return len(self.kind)
@@ -53,7 +57,10 @@ class Trace:
         return np.isin(self.kind, codes)
 
     def node_xy(self, node):
-        return node % self.mesh_width, node // self.mesh_width
+        """Where the trace put the node (the interconnect's coordinates), else row-major on the mesh
+        (traces written before the positions were read from the trace)."""
+        at = self.node_positions.get(int(node))
+        return at if at is not None else (node % self.mesh_width, node // self.mesh_width)
 
 
 def csv_path_for(path):
@@ -64,6 +71,24 @@ def csv_path_for(path):
     if ext in (".json", ".paje"):
         return stem + ".csv"
     return path + ".csv" if not os.path.exists(path) else path
+
+
+def node_positions_of(csv):
+    """Each node's (x, y) from the processors' track names at the head of the Chrome JSON beside the
+    CSV (metadata events come first, so reading stops at the first record). {} when absent."""
+    path = os.path.splitext(csv)[0] + ".json"
+    positions = {}
+    try:
+        with open(path, "r", encoding="utf-8", errors="replace") as f:
+            for n, line in enumerate(f):
+                if n > 0 and '"ph":"M"' not in line:
+                    break
+                m = NODE_LABEL.search(line)
+                if m:
+                    positions[int(m.group(1))] = (int(m.group(2)), int(m.group(3)))
+    except OSError:
+        return {}
+    return positions
 
 
 MACHINE_EVENT = re.compile(r'^,?(\{"ph":"M","pid":0,"name":"process_labels".*\}),?$')

@@ -2,9 +2,10 @@
 // The scene description every renderer reads, in double precision (as pbrt separates the parsed
 // scene from its primitives): shapes with a material each, lights, one camera and the image.
 // Radiosity lowers it to its patch/element mesh, the ray tracer to float primitive arrays, the
-// media renderer to its volumes. Loaders (WORLD/ENTITY, OBJ, built-ins) build it.
+// media renderer to its fog box, medium object and light. Loaders (WORLD/ENTITY, OBJ, built-ins) build it.
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <variant>
@@ -120,7 +121,22 @@ struct SpotLight {
   Rgb intensity{1.0};
   double cone_degrees = 30.0;  // half-angle of the cone
 };
-using Light = std::variant<PointLight, SpotLight>;  // area lights are shapes with emission
+// A disk emitting radiance ∝ cos^(exponent − 1) θ about its normal (photons leave ∝ cos^exponent;
+// exponent 1: Lambertian), `power` the total flux: the media renderer's directional light.
+struct DiskLight {
+  glm::dvec3 position{0.0}, normal{0.0, -1.0, 0.0};  // the disk's centre and the way it faces
+  double radius = 1.0, exponent = 1.0;
+  Rgb power{1.0};
+};
+using Light = std::variant<PointLight, SpotLight, DiskLight>;  // area lights are shapes with emission
+
+// The media renderer's photon-pass settings of a scene (its built-in scenes carry their own).
+struct MediaSettings {
+  std::size_t photons_emitted = 20000;
+  std::size_t k_nearest = 50;      // nearest photons per estimate
+  int max_photon_events = 64;      // scatterings plus surface events per photon
+  int max_specular_depth = 6;      // camera-path surface events ("split at Fresnel surfaces to depth 6")
+};
 
 struct ImageSettings {
   int width = 512, height = 512;
@@ -140,6 +156,7 @@ struct SceneDescription {
   // above its camera (the ray tracer's lowering does).
   bool light_above_camera = false;
   ImageSettings image;
+  std::optional<MediaSettings> media;  // none: the media renderer's defaults
   // Read from a WORLD file: the file's own entities, which to_world returns as they are (their
   // patches and elements are the file's, not a grid's); the shapes above are the same patches
   // placed, for the other renderers. Whoever edits the shapes must drop it.

@@ -12,6 +12,7 @@
 
 #include "apps/media/accuracy.hpp"
 #include "apps/media/image_error.hpp"
+#include "apps/media/lower_media_scene.hpp"
 #include "apps/common/tone_map.hpp"
 #include "apps/media/app/commands.hpp"
 #include "apps/pipeline/csv_comment.hpp"
@@ -254,7 +255,7 @@ void run_accuracy(AccuracyFlags f) {
   std::string at;  // what is being measured: an interrupted run says so
   try {
     for (const auto& name : names) {
-      const MediaScene scene = scene_by_name(name);
+      const MediaScene scene = load_media_scene(name);
       // measure_accuracy renders without the simulated machine: its progress calls are where an
       // interruption (SIGINT/SIGTERM) is noticed, one render apart.
       all.push_back(measure_accuracy(scene, f.o, m, [&](const std::string& what) {
@@ -289,7 +290,7 @@ void add_accuracy_command(pipeline::CommandGroups& g) {
       "high-sample reference (radiance sampling, two seeds) on the same photon map (so only the estimators differ), the noise spread\n"
       "over the image, the SH grid's share of the render time, the photon count's effect at fixed samples,\n"
       "and each goal (e.g. radiance sampling's error at most 0.6 x transmittance's) as measured. Wall times are the host's.");
-  pipeline::add_list_option(cmd, "--scenes", f->scenes, "Scenes (exp1, exp2, fog, small, exp1-literal, exp1-bunny, exp2-bunny)")->capture_default_str();
+  pipeline::add_list_option(cmd, "--scenes", f->scenes, "Scenes: built-in names (exp1, exp2, fog, small, exp1-literal, exp1-bunny, exp2-bunny) or scene files with a medium")->capture_default_str();
   pipeline::add_list_option(cmd, "--estimators", f->estimators, "Estimators to compare")->capture_default_str();
   pipeline::add_list_option(cmd, "--budgets", f->budgets, "Budgets in units (the transmittance estimator's time at M = unit-b S)")
       ->capture_default_str();

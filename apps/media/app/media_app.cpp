@@ -13,6 +13,7 @@
 
 #include "apps/common/image.hpp"
 #include "apps/media/app/commands.hpp"
+#include "apps/media/lower_media_scene.hpp"
 #include "apps/media/parallel_media.hpp"
 #include "apps/common/tone_map.hpp"
 #include "apps/pipeline/app_registry.hpp"
@@ -48,7 +49,7 @@ struct MediaOutcome : pipeline::Outcome {
 class MediaExperiment final : public pipeline::Experiment {
  public:
   explicit MediaExperiment(const MediaFlags& f)
-      : flags_(f), scene_(scene_by_name(f.scene)), settings_{*parse_estimator(f.estimator), f.b, f.b_histogram, f.alpha, f.rounding == "at-least-one",
+      : flags_(f), scene_(load_media_scene(f.scene)), settings_{*parse_estimator(f.estimator), f.b, f.b_histogram, f.alpha, f.rounding == "at-least-one",
                                                                    f.max_voxel_optical_depth} {
     if (f.photons) scene_.photons_emitted = static_cast<std::size_t>(*f.photons);
     if (f.k) scene_.k_nearest = static_cast<std::size_t>(*f.k);
@@ -154,8 +155,10 @@ void MediaExperiment::report(const pipeline::Outcome& out, nlohmann::json& extra
 pipeline::ExperimentFactory declare_options(CLI::App& cmd, pipeline::Verb verb) {
   auto f = std::make_shared<MediaFlags>();
   cmd.add_option("--scene", f->scene,
-                 "small, exp1 (sigma_s read as albedo), exp1-literal, exp2, fog, exp1-bunny, exp2-bunny (the Stanford "
-                 "bunny of scenes/meshes/bunny.obj in place of the sphere)")->capture_default_str();
+                 "a built-in scene: small, exp1 (sigma_s read as albedo), exp1-literal, exp2, fog, exp1-bunny, exp2-bunny "
+                 "(the Stanford bunny of scenes/meshes/bunny.obj in place of the sphere); or a scene file with a box of "
+                 "fog, e.g. scenes/media-small.toml (any scene of the catalogue: one without a medium is refused, saying why)")
+      ->capture_default_str();
   cmd.add_option("--estimator", f->estimator, "uniform, transmittance, radiance, equiangular, mis or grid")
       ->check(CLI::IsMember({"uniform", "transmittance", "radiance", "equiangular", "mis", "grid"}))
       ->capture_default_str();

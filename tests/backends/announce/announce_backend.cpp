@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "parix/backend.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::parix {
 namespace {

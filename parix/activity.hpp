@@ -3,7 +3,8 @@
 // -- a computation on its node, the set-up of a connection, a communication. Each is running until
 // it ends done (complete(), by the machine model's event, which wakes whoever waits on it) or
 // cancelled (cancel()); the first of the two wins and the state never changes again, so an event
-// arriving for a cancelled activity is ignored.
+// arriving for a cancelled activity is ignored. Part of the API (a Request's state is one, and an
+// application tests it), so it lives beside processor.hpp; the backends end activities.
 //  - Computations and connection set-ups are cancelled only when a run is abandoned (deadlock,
 //    error, interruption): SimProcess::wait_for_activity cancels what it was waiting for.
 //  - Communications are RequestState objects (parix/processor.hpp), the activity behind a Request.
