@@ -25,17 +25,10 @@ void allgather_v(const void* sendbuf, int sendcount, MPI_Datatype sendtype, void
   CollectiveSite s(Rank::current(), varying ? "MPI_Allgatherv" : "MPI_Allgather", comm);
   const bool in_place = sendbuf == MPI_IN_PLACE;
   const Datatype& recv_type = s.datatype(recvtype);
-  std::vector<int> uniform(static_cast<std::size_t>(s.size()), recvcount), offsets(uniform.size());
-  for (int r = 0; r < s.size(); ++r) offsets[static_cast<std::size_t>(r)] = r * recvcount;
-  if (varying) {
-    s.check_counts(recvcounts, "recvcounts");
-    if (!displs) s.fail(MPI_ERR_ARG, "null displs");
-  } else {
-    s.check_count(recvcount, "recvcount");
-    recvcounts = uniform.data();
-    displs = offsets.data();
-  }
-  std::vector<std::size_t> sizes(uniform.size());
+  const CollectiveSite::Blocks layout = s.blocks(recvcounts, displs, recvcount, varying);
+  recvcounts = layout.counts.data();
+  displs = layout.displs.data();
+  std::vector<std::size_t> sizes(layout.counts.size());
   for (int r = 0; r < s.size(); ++r) sizes[static_cast<std::size_t>(r)] = packed_bytes(recvcounts[r], recv_type);
   const std::vector<std::size_t> at = end_to_end(sizes);
   Bytes all(at.back() + sizes.back());

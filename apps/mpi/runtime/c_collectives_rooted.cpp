@@ -51,16 +51,9 @@ void gather_v(const void* sendbuf, int sendcount, MPI_Datatype sendtype, void* r
     return;
   }
   const Datatype& recv_type = s.datatype(recvtype);
-  std::vector<int> uniform(static_cast<std::size_t>(s.size()), recvcount), offsets(uniform.size());
-  for (int r = 0; r < s.size(); ++r) offsets[static_cast<std::size_t>(r)] = r * recvcount;
-  if (varying) {
-    s.check_counts(recvcounts, "recvcounts");
-    if (!displs) s.fail(MPI_ERR_ARG, "null displs");
-  } else {
-    s.check_count(recvcount, "recvcount");
-    recvcounts = uniform.data();
-    displs = offsets.data();
-  }
+  const CollectiveSite::Blocks layout = s.blocks(recvcounts, displs, recvcount, varying);
+  recvcounts = layout.counts.data();
+  displs = layout.displs.data();
   RootBlocks blocks = root_blocks(s, packed_sizes(s, recvcounts, recv_type));
   send = in_place ? pack_of(element_at(recvbuf, displs[root], recv_type), recvcounts[root], recv_type)
                   : pack_of(sendbuf, sendcount, *send_type);
@@ -101,16 +94,9 @@ void scatter_v(const void* sendbuf, const int* sendcounts, const int* displs, in
     return;
   }
   const Datatype& send_type = s.datatype(sendtype);
-  std::vector<int> uniform(static_cast<std::size_t>(s.size()), sendcount), offsets(uniform.size());
-  for (int r = 0; r < s.size(); ++r) offsets[static_cast<std::size_t>(r)] = r * sendcount;
-  if (varying) {
-    s.check_counts(sendcounts, "sendcounts");
-    if (!displs) s.fail(MPI_ERR_ARG, "null displs");
-  } else {
-    s.check_count(sendcount, "sendcount");
-    sendcounts = uniform.data();
-    displs = offsets.data();
-  }
+  const CollectiveSite::Blocks send_layout = s.blocks(sendcounts, displs, sendcount, varying, "send");
+  sendcounts = send_layout.counts.data();
+  displs = send_layout.displs.data();
   RootBlocks blocks = root_blocks(s, packed_sizes(s, sendcounts, send_type));
   for (int r = 0; r < s.size(); ++r) {
     const Bytes b = pack_of(element_at(sendbuf, displs[r], send_type), sendcounts[r], send_type);

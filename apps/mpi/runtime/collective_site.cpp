@@ -73,6 +73,20 @@ void CollectiveSite::check_counts(const int* counts, const char* which) const {
   for (int r = 0; r < size(); ++r) check_count(counts[r], which);
 }
 
+CollectiveSite::Blocks CollectiveSite::blocks(const int* counts, const int* displs, int count, bool varying,
+                                              const char* side) const {
+  const auto n = static_cast<std::size_t>(size());
+  if (varying) {
+    check_counts(counts, (std::string(side) + "counts").c_str());
+    if (!displs) fail(MPI_ERR_ARG, "null displs");
+    return {std::vector<int>(counts, counts + n), std::vector<int>(displs, displs + n)};
+  }
+  check_count(count, (std::string(side) + "count").c_str());
+  Blocks b{std::vector<int>(n, count), std::vector<int>(n)};
+  for (std::size_t r = 0; r < n; ++r) b.displs[r] = static_cast<int>(r) * count;
+  return b;
+}
+
 Bytes pack_of(const void* buf, long long count, const Datatype& type) {
   Bytes b(static_cast<std::size_t>(pack_size(count, type)));
   if (b.empty()) return b;

@@ -43,6 +43,13 @@ class CollectiveSite {
   void check_buffer(const void* buf, long long count, bool in_place_allowed, const char* which) const;
   // counts[i] >= 0 for every rank; null arrays are MPI_ERR_ARG.
   void check_counts(const int* counts, const char* which) const;
+  // The per-rank blocks of a gather- or scatter-like call: the v-form's counts and displacements
+  // (checked), or for the uniform form `count` elements per rank at rank * count. side names the
+  // arguments in errors: "recv" (recvcounts, recvcount) or "send".
+  struct Blocks {
+    std::vector<int> counts, displs;
+  };
+  Blocks blocks(const int* counts, const int* displs, int count, bool varying, const char* side = "recv") const;
 
  private:
   Rank& rank_;
