@@ -57,7 +57,7 @@ TEST(ObjectPlacement, AMirroringPlacementReversesTheWinding) {
   d.shapes.push_back({.geometry = quad, .material = m, .object = "card"});
   Placement mirror;
   mirror.scale = {-1, 1, 1};
-  d.layouts.push_back({.object = "card", .instances = {mirror}});
+  d.layouts.push_back({.object = "card", .surface_materials = {}, .vertices = {}, .instances = {mirror}});
   const SceneDescription placed = with_objects_placed(d);
   const auto& p = std::get<Polygon>(placed.shapes.at(0).geometry);
   EXPECT_EQ(p.vertex[0], glm::dvec3(0, 1, 0));  // the last corner first, mirrored in x
@@ -72,7 +72,7 @@ TEST(ObjectPlacement, RefusesASphereUnderANonUniformScale) {
   d.shapes.push_back({.geometry = Sphere{}, .material = m, .object = "ball"});
   Placement squash;
   squash.scale = {1, 2, 1};
-  d.layouts.push_back({.object = "ball", .instances = {squash}});
+  d.layouts.push_back({.object = "ball", .surface_materials = {}, .vertices = {}, .instances = {squash}});
   EXPECT_THROW(with_objects_placed(d), std::invalid_argument);
 }
 

@@ -33,9 +33,9 @@ Rank::Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs
   registry_.world_rank = processor.id();
   std::vector<int> world(static_cast<std::size_t>(processor.count()));
   for (std::size_t i = 0; i < world.size(); ++i) world[i] = static_cast<int>(i);
-  comms_[MPI_COMM_WORLD] = Communicator{std::make_shared<const std::vector<int>>(world), processor.id(), 2, 0};
+  comms_[MPI_COMM_WORLD] = Communicator{std::make_shared<const std::vector<int>>(world), processor.id(), 2, 0, nullptr};
   comms_[MPI_COMM_SELF] =
-      Communicator{std::make_shared<const std::vector<int>>(std::vector<int>{processor.id()}), 0, 4, 0};
+      Communicator{std::make_shared<const std::vector<int>>(std::vector<int>{processor.id()}), 0, 4, 0, nullptr};
 }
 
 Rank& Rank::current() {
