@@ -13,7 +13,7 @@ void FlowNetwork::transfer(int src, int dst, std::int64_t bytes, Kernel::Action&
     ctx_.kernel.after(lat, std::move(on_arrival));
     return;
   }
-  if (!solver_) solver_ = std::make_unique<MaxMinSolver>(ctx_.interconnect.channel_count(), ctx_.config.channel_bandwidth());
+  if (!solver_) solver_ = std::make_unique<MaxMinSolver>(ctx_.interconnect.channel_count(), channel_bandwidth_);
   const int slot = solver_->open();
   ctx_.interconnect.route(src, dst, solver_->route(slot));
   if (flows_.size() <= static_cast<std::size_t>(slot)) flows_.resize(static_cast<std::size_t>(slot) + 1);

@@ -42,6 +42,9 @@ class Interconnect {
     return out;
   }
 
+  // How many neighbours a node's links are spread over, evenly: one channel bundles
+  // links_per_node / directions links (the mesh: 4, east, west, north and south).
+  virtual int directions() const = 0;
   // Directed channels are numbered 0 .. channel_count() - 1; some ids may be unused (to == -1).
   virtual int channel_count() const = 0;
   virtual ChannelEnds channel_ends(int channel) const = 0;

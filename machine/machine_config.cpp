@@ -13,6 +13,7 @@
 #include "machine/builtin_machines.hpp"
 #include "machine/config_inheritance.hpp"
 #include "machine/input_file.hpp"
+#include "machine/interconnect.hpp"
 #include "machine/interconnect_registry.hpp"
 #include "machine/network_registry.hpp"
 
@@ -258,10 +259,12 @@ MachineConfig parse_machine_config(std::string_view text, const std::string& sou
   c.memory_bytes = static_cast<std::int64_t>(r.number(node, "memory_mb", "[node]", 1e-3, 1e9) * 1024 * 1024);
   c.comm_processors = r.integer(node, "comm_processors", "[node]", 1, 64);
   c.links_per_comm_processor = r.integer(node, "links_per_comm_processor", "[node]", 1, 64);
-  if (c.links_per_node() % 4 != 0) {
-    r.fail(node.get("links_per_comm_processor"), "comm_processors * links_per_comm_processor = " +
-                                                     std::to_string(c.links_per_node()) +
-                                                     "; expected a multiple of 4 (links are spread over the 4 mesh directions)");
+  const int directions = make_interconnect(c)->directions();
+  if (c.links_per_node() % directions != 0) {
+    r.fail(node.get("links_per_comm_processor"),
+           fmt::format("comm_processors * links_per_comm_processor = {}; expected a multiple of {} (the {} spreads a "
+                       "node's links evenly over its {} directions)",
+                       c.links_per_node(), directions, c.interconnect, directions));
   }
 
   const toml::table& net = r.table(root, "network");

@@ -85,9 +85,9 @@ struct MachineConfig {
   std::int64_t fiber_stack_bytes = 64 << 10;
 
   int links_per_node() const { return comm_processors * links_per_comm_processor; }
-  // The links of a node are spread evenly over its four mesh directions.
-  int links_per_direction() const { return links_per_node() / 4; }
-  double channel_bandwidth() const { return link_bandwidth * links_per_direction(); }
+  // A channel's bandwidth when the node's links are spread evenly over `directions` neighbours
+  // (Interconnect::directions; the parser checks that they divide evenly).
+  double channel_bandwidth(int directions) const { return link_bandwidth * (links_per_node() / directions); }
   double node_bandwidth() const { return link_bandwidth * links_per_node(); }
 };
 

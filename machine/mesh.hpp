@@ -38,6 +38,7 @@ class Mesh final : public Interconnect {
   using Interconnect::route;
   void route(int a, int b, std::vector<int>& out) const override;
 
+  int directions() const override { return 4; }
   // Channels are numbered node * 4 + direction; some ids (edges of the mesh) are unused.
   int channel_count() const override { return nodes() * 4; }
   int channel(int node, Direction d) const { return node * 4 + static_cast<int>(d); }

@@ -8,7 +8,7 @@ namespace gcsim::machine {
 
 SimTime NetworkModel::serialization(std::int64_t bytes) const {
   if (bytes <= 0) return 0;
-  return from_seconds(static_cast<double>(bytes) / ctx_.config.channel_bandwidth());
+  return from_seconds(static_cast<double>(bytes) / channel_bandwidth_);
 }
 
 void NetworkModel::account(const std::vector<int>& route, std::int64_t bytes, SimTime start, SimTime end) {

@@ -27,7 +27,8 @@ struct NetworkContext {
 
 class NetworkModel {
  public:
-  explicit NetworkModel(NetworkContext ctx) : ctx_(ctx) {}
+  explicit NetworkModel(NetworkContext ctx)
+      : ctx_(ctx), channel_bandwidth_(ctx.config.channel_bandwidth(ctx.interconnect.directions())) {}
   virtual ~NetworkModel() = default;
   virtual std::string_view name() const = 0;
 
@@ -63,6 +64,7 @@ class NetworkModel {
   virtual void settle() {}
   void account(const std::vector<int>& route, std::int64_t bytes, SimTime start, SimTime end);
   NetworkContext ctx_;
+  double channel_bandwidth_;  // bytes per second of one directed channel
   std::uint64_t messages_ = 0;
   std::vector<std::int64_t> channel_bytes_;
   std::vector<SimTime> channel_busy_;

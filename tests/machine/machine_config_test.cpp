@@ -88,7 +88,7 @@ TEST(MachineConfig, ParsesAValidFile) {
   const MachineConfig c = parse_machine_config(kValid, "tiny.toml");
   EXPECT_EQ(c.name, "tiny");
   EXPECT_EQ(c.network_model, "flow");
-  EXPECT_DOUBLE_EQ(c.channel_bandwidth(), 1e6);
+  EXPECT_DOUBLE_EQ(c.channel_bandwidth(4), 1e6);
   EXPECT_EQ(op_time(c, "cycle", 100), 1 * kMicrosecond);
 }
 

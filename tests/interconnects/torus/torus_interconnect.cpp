@@ -47,6 +47,7 @@ class Torus final : public Interconnect {
     }
   }
 
+  int directions() const override { return 4; }
   int channel_count() const override { return nodes() * 4; }
   // A dimension of extent 1 has no channels: its wrap-around would lead a node to itself.
   ChannelEnds channel_ends(int ch) const override {
