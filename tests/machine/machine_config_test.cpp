@@ -84,6 +84,18 @@ TEST(MachineConfig, FiberStackSizeComesFromTheRuntimeTable) {
   EXPECT_NE(unknown.find("unknown key 'stack' in [runtime]"), std::string::npos) << unknown;
 }
 
+TEST(MachineConfig, LinksMustSpreadEvenlyOverTheInterconnectsDirections) {
+  // The mesh spreads a node's links over 4 directions: 6 links do not divide, 8 do (2 per channel).
+  std::string six = kValid;
+  six.replace(six.find("links_per_comm_processor = 4"), 28, "links_per_comm_processor = 6");
+  const std::string e = error_of(six);
+  EXPECT_NE(e.find("bad.toml:10"), std::string::npos) << e;
+  EXPECT_NE(e.find("multiple of 4 (the mesh spreads"), std::string::npos) << e;
+  std::string eight = kValid;
+  eight.replace(eight.find("links_per_comm_processor = 4"), 28, "links_per_comm_processor = 8");
+  EXPECT_DOUBLE_EQ(parse_machine_config(eight, "eight.toml").channel_bandwidth(4), 2e6);
+}
+
 TEST(MachineConfig, ParsesAValidFile) {
   const MachineConfig c = parse_machine_config(kValid, "tiny.toml");
   EXPECT_EQ(c.name, "tiny");
