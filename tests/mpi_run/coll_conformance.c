@@ -10,15 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int failures = 0, checks = 0, rank, size;
-#define CHECK(cond)                                                                  \
-  do {                                                                               \
-    ++checks;                                                                        \
-    if (!(cond)) {                                                                   \
-      ++failures;                                                                    \
-      fprintf(stderr, "rank %d: check failed line %d: %s\n", rank, __LINE__, #cond); \
-    }                                                                                \
-  } while (0)
+static int rank, size;
+#include "conformance_check.h"
 
 enum { N = 5, HOLE = -7 };
 static int value(int r, int i) { return 1000 * r + i; }

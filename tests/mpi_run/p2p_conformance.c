@@ -8,15 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
-static int failures = 0, checks = 0;
-#define CHECK(cond)                                                            \
-  do {                                                                         \
-    ++checks;                                                                  \
-    if (!(cond)) {                                                             \
-      ++failures;                                                              \
-      fprintf(stderr, "rank %d: check failed line %d: %s\n", rank, __LINE__, #cond); \
-    }                                                                          \
-  } while (0)
+#include "conformance_check.h"
 
 static int rank, size;
 
