@@ -65,6 +65,9 @@ struct ParallelRender {
   std::int64_t tiles_by_workers = 0;  // render_parallel with host threads: tiles a worker rendered ahead
 };
 
+// The 8-bit RGB image node 0 assembles from the tiles: what a render holds of it in node memory.
+inline std::int64_t assembled_image_bytes(int width, int height) { return std::int64_t(width) * height * 3; }
+
 // The per-processor program of a parallel render, run by whichever backend the caller chooses.
 class ParallelRenderJob {
  public:
@@ -85,7 +88,7 @@ class ParallelRenderJob {
   // Node memory, declared before the host allocates it: every node's scene and tree, the 8-bit
   // image node 0 assembles, the buffers of one tile being rendered.
   std::int64_t scene_bytes() const;
-  std::int64_t image_bytes() const { return std::int64_t(settings_.width) * settings_.height * 3; }
+  std::int64_t image_bytes() const { return assembled_image_bytes(settings_.width, settings_.height); }
   std::int64_t tile_bytes() const;
 
  private:

@@ -125,11 +125,13 @@ void add_plan_command(pipeline::CommandGroups& g) {
     const parix::SimulationOptions simulation = pipeline::simulation_options(f->machine, 1);
     const machine::MachineConfig& machine = simulation.config;
     const int nodes = f->machine.nodes > 0 ? f->machine.nodes : 1;
-    // The samples render the scene's image on node 0: an [image] too large fails here, at once.
-    const std::int64_t image_bytes =
+    // The samples render the scene's image on node 0, which holds it as the render does (8-bit RGB);
+    // the host holds it in floats. An [image] too large for either fails here, at once.
+    const std::int64_t node_image_bytes = raytrace::assembled_image_bytes(d.image.width, d.image.height);
+    pipeline::check_node_memory({{"image", node_image_bytes}}, 0, machine.memory_bytes, simulation.memory_limit);
+    const std::int64_t host_image_bytes =
         pipeline::saturating_product(pipeline::saturating_product(d.image.width, d.image.height), sizeof(glm::vec3));
-    pipeline::check_node_memory({{"image", image_bytes}}, 0, machine.memory_bytes, simulation.memory_limit);
-    pipeline::check_host_memory(image_bytes, fmt::format("the {}x{} image of {}", d.image.width, d.image.height, f->scene));
+    pipeline::check_host_memory(host_image_bytes, fmt::format("the {}x{} image of {}", d.image.width, d.image.height, f->scene));
     const Plan plan = make_plan(d);
     CostModel model;
     model.photons = int(f->photons);
