@@ -32,7 +32,7 @@ PassProgress::PassProgress(std::vector<PassEstimate> passes) : passes_(std::move
 PassProgressState PassProgress::report(int pass, double fraction, double elapsed) {
   if (pass < 0 || pass >= passes()) throw std::out_of_range("PassProgress: no such pass");
   if (state_.fraction >= 1.0) return state_;  // finished: nothing moves any more
-  current_ = std::max(current_, pass);
+  if (pass > current_) current_ = pass, pass_start_ = elapsed;
   double before = 0.0;
   for (int i = 0; i < current_; ++i) before += passes_[std::size_t(i)].predicted;
   const double within = pass == current_ && std::isfinite(fraction) ? std::clamp(fraction, 0.0, 1.0) : 0.0;
@@ -40,9 +40,14 @@ PassProgressState PassProgress::report(int pass, double fraction, double elapsed
   state_.fraction = std::min(done_ / total_, kBeforeEnd);
   state_.pass = passes_[std::size_t(current_)].name;
   state_.number = current_ + 1;
-  // Wall seconds per predicted unit so far, applied to what is predicted to remain.
+  // Wall seconds per predicted unit so far, applied to what is predicted to remain; the running
+  // pass's rest at its own pace once a tenth of it is done (passes miss their estimates differently).
   state_.seconds_left.reset();
-  if (done_ > 0 && elapsed > 0) state_.seconds_left = std::max(0.0, elapsed / done_ * (total_ - done_));
+  if (done_ <= 0 || elapsed <= 0) return state_;
+  const double pace = elapsed / done_, predicted = passes_[std::size_t(current_)].predicted;
+  const double in_pass = std::clamp(done_ - before, 0.0, predicted), after = total_ - before - predicted;
+  const double own_pace = in_pass >= 0.1 * predicted ? (elapsed - pass_start_) / in_pass : pace;
+  state_.seconds_left = std::max(0.0, own_pace * (predicted - in_pass) + pace * after);
   return state_;
 }
 

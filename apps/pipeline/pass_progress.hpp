@@ -2,7 +2,7 @@
 // The progress of a command that runs passes one after the other, each with a predicted cost (for
 // a render: `gcsim plan`'s estimate of each pass's time). The fraction done weighs each pass by its
 // prediction; the time left is the predicted rest scaled by how the work done so far ran against
-// its prediction (wall seconds per predicted second). Pure arithmetic on the reports it is given
+// its prediction (wall seconds per predicted second; the running pass's rest at its own pace). Pure arithmetic on the reports it is given
 // (no clock, no terminal), so a test can drive it: the fraction never goes back, and reaches 1
 // only when finish() says the last pass is done.
 #include <optional>
@@ -44,6 +44,7 @@ class PassProgress {
   double total_ = 0.0;
   int current_ = 0;
   double done_ = 0.0;  // predicted cost done so far, never decreasing
+  double pass_start_ = 0.0;  // elapsed at the first report of the running pass
   PassProgressState state_;
 };
 

@@ -24,8 +24,13 @@ TEST(PassProgress, TimeLeftIsThePredictedRestAtThePaceOfTheWorkDone) {
   const PassProgressState s = p.report(1, 0.0, 2.0);
   ASSERT_TRUE(s.seconds_left.has_value());
   EXPECT_DOUBLE_EQ(*s.seconds_left, 6.0);
-  // Radiosity went faster than predicted: half of it (1 unit) in 0.5 s more, so 2.5 s for 2 units.
-  EXPECT_DOUBLE_EQ(*p.report(1, 0.5, 2.5).seconds_left, 2.5 / 2.0 * 2.0);
+  // Radiosity goes faster than predicted: half of it (1 unit) in 0.5 s, so its other half takes
+  // 0.5 s at its own pace; the view (1 unit) goes at the pace so far, 2.5 s for 2 units.
+  EXPECT_DOUBLE_EQ(*p.report(1, 0.5, 2.5).seconds_left, 0.5 + 2.5 / 2.0);
+  // Below a tenth of a pass done, its own pace is too noisy: the pace so far for all of it.
+  PassProgress q = three_passes();
+  q.report(1, 0.0, 2.0);
+  EXPECT_DOUBLE_EQ(*q.report(1, 0.05, 2.01).seconds_left, 2.01 / 1.1 * (4.0 - 1.1));
   EXPECT_FALSE(PassProgress({{"a", 1.0}}).report(0, 0.0, 1.0).seconds_left.has_value());  // nothing done yet
 }
 
