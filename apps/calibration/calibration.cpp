@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "machine/builtin_machines.hpp"
 
@@ -70,9 +71,9 @@ MeasuredTable table_from_spec(const std::string& spec, const std::string& option
   return t;
 }
 
-std::vector<MeasuredTable> tables_from_specs(const std::string& specs, const std::string& option) {
+std::vector<MeasuredTable> tables_from_specs(const std::vector<std::string>& specs, const std::string& option) {
   std::vector<MeasuredTable> out;
-  for (const auto& s : split_list(specs, ',')) {
+  for (const auto& s : specs) {
     if (s.empty()) throw std::invalid_argument(option + ": empty table name (expected e.g. 4.6 or 4.6,4.3@1)");
     out.push_back(table_from_spec(s, option));
   }
@@ -175,7 +176,7 @@ std::string interrupted_file_text(const MachineFile& file, const std::string& ou
   return text + key_lines(keys);
 }
 
-std::string fitted_file_text(const MachineFile& file, const std::string& out_path, const std::string& specs,
+std::string fitted_file_text(const MachineFile& file, const std::string& out_path, const std::vector<std::string>& specs,
                              const CalibrationResult& r, const std::string& command, const std::string& workload) {
   const std::string base = base_of(file, out_path);
   const auto s = summarize(r.cells);
@@ -187,9 +188,9 @@ std::string fitted_file_text(const MachineFile& file, const std::string& out_pat
                         100 * t.median_error, 100 * t.max_error);
   if (!workload.empty()) text += "# The scenes as the thesis's runs converged (table 4.2's loops; --workload):\n" + workload;
   text += "# Every other table is a prediction: `gcsim validate --config " + out_path + "`.\n";
-  text += fmt::format("base = \"{}\"\nname = \"{} (calibrated on {})\"\n\n", base, file.config().name, specs);
+  text += fmt::format("base = \"{}\"\nname = \"{} (calibrated on {})\"\n\n", base, file.config().name, fmt::join(specs, ","));
   text += fmt::format("[calibration]\nfitted = [");
-  for (std::size_t i = 0; auto t : split_list(specs, ',')) text += (i++ ? ", " : "") + fmt::format("\"{}\"", t);
+  for (std::size_t i = 0; const auto& t : specs) text += (i++ ? ", " : "") + fmt::format("\"{}\"", t);
   text += "]\n";
   std::string table;
   for (const auto& p : r.parameters) {

@@ -16,16 +16,17 @@
 
 namespace gcsim::calibration {
 
-// "a,b,c" -> {"a", "b", "c"} (empty items kept, so callers can name them in errors).
-std::vector<std::string> split_list(const std::string& s, char sep = ',');
+// "a+b+c" -> {"a", "b", "c"} (empty items kept, so callers can name them in errors): the rows and
+// columns inside one table spec. Lists on the command line are split by CLI11 (add_list_option).
+std::vector<std::string> split_list(const std::string& s, char sep);
 
 // "4.6" (a built-in table), "4.3@1" (only its 1-node row), "4.3@1+8", "4.3@CORNELL+PICROOM" (only
 // those columns), "4.3@1+8+CORNELL", or "PATH.csv:4.6[@...]" (a user's figures in table 4.6's
 // layout). Cells outside the named rows and columns are left out. Throws std::invalid_argument
 // naming `option`, the spec and what was expected.
 MeasuredTable table_from_spec(const std::string& spec, const std::string& option = "--fit");
-// Comma-separated specs.
-std::vector<MeasuredTable> tables_from_specs(const std::string& specs, const std::string& option = "--fit");
+// The specs of a list option (--fit 4.6,4.3@1 gives {"4.6", "4.3@1"}).
+std::vector<MeasuredTable> tables_from_specs(const std::vector<std::string>& specs, const std::string& option = "--fit");
 
 struct FittedParameter {
   std::string key;
@@ -59,7 +60,7 @@ CalibrationResult calibrate(const MachineFile& file, const std::vector<MeasuredT
 // The fitted machine file: `base = ...` and the fitted keys, with a header naming the command,
 // the tables and the fit's quality.
 // workload: comment lines (each "#   ...\n") saying how the scenes were matched to the thesis's runs.
-std::string fitted_file_text(const MachineFile& file, const std::string& out_path, const std::string& specs,
+std::string fitted_file_text(const MachineFile& file, const std::string& out_path, const std::vector<std::string>& specs,
                              const CalibrationResult& r, const std::string& command, const std::string& workload = "");
 
 // What an interrupted calibration leaves at --out: a machine file with the best trial's values so

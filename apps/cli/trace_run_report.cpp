@@ -109,14 +109,24 @@ void setting_rows(std::ostream& h, const std::string& prefix, const json& v, int
   }
 }
 
-// The page's title: the app, algorithm and scene the run names, and its node count.
+// The command the run's JSON recorded: "gcsim bcast", "gcsim run" (the app follows), "gcsim render".
+std::string recorded_command(const json& j) {
+  const json* argv = j.contains("provenance") && j["provenance"].is_object() && j["provenance"].contains("command_line")
+                         ? &j["provenance"]["command_line"] : nullptr;
+  if (!argv || !argv->is_array() || argv->size() < 2 || !(*argv)[1].is_string()) return "gcsim run";
+  return "gcsim " + escape((*argv)[1].get<std::string>());
+}
+
+// The page's title: the command, the app, algorithm and scene the run names, and its node count.
 std::string report_heading(const json& j) {
-  std::string heading = "gcsim run";
+  std::string heading = recorded_command(j);
   for (const char* k : {"experiment", "app", "algo", "scene"}) {
     const auto [app, v] = find_setting(j, k);
     if (!v) continue;
     if (!app.empty() && heading.find(app) == std::string::npos) heading += " &middot; " + escape(app);
-    heading += " &middot; " + escape(v->get<std::string>());
+    const std::string value = escape(v->get<std::string>());
+    if (heading == "gcsim " + value) continue;  // `gcsim bcast`'s experiment is bcast: said once
+    heading += " &middot; " + value;
   }
   if (j.contains("nodes") && j["nodes"].is_number_integer()) heading += fmt::format(" &middot; {} nodes", j["nodes"].get<int>());
   return heading;

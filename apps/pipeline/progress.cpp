@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -21,28 +23,60 @@ ProgressLine::ProgressLine(std::string what, int total)
 ProgressLine::~ProgressLine() { clear(); }
 
 void ProgressLine::clear() {
-  if (!enabled_) return;
+  if (!enabled_ || finished_) return;
   std::fputs("\r\033[K", stderr);  // back to the line's start and erase it
   std::fflush(stderr);
 }
 
+double ProgressLine::elapsed_seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+namespace {
+
+// Time left if the rest goes at the pace so far: crude (later sweep points have more nodes), but
+// it moves the right way.
+std::optional<double> at_pace_so_far(double fraction, double elapsed) {
+  if (fraction > 0 && fraction < 1) return elapsed * (1 - fraction) / fraction;
+  return std::nullopt;
+}
+
+// Whole percent, rounded down: 99.7 % of the work is not yet 100 %.
+std::string percent(double fraction) { return fmt::format("{:.0f}%", std::floor(100 * std::clamp(fraction, 0.0, 1.0))); }
+
+}  // namespace
+
 void ProgressLine::update(int done, std::string_view detail) {
-  if (enabled_ && total_ > 0) show(double(done) / total_, fmt::format("{}/{} done", done, total_), detail);
+  if (!enabled_ || total_ <= 0 || finished_ || !due()) return;
+  show(fmt::format("{}/{} done", done, total_), detail, at_pace_so_far(double(done) / total_, elapsed_seconds()));
 }
 
 void ProgressLine::update_fraction(double fraction, std::string_view detail) {
-  if (enabled_) show(fraction, fmt::format("{:.0f}%", 100 * fraction), detail);
+  update_fraction(fraction, detail, at_pace_so_far(fraction, elapsed_seconds()));
 }
 
-void ProgressLine::show(double fraction, const std::string& done, std::string_view detail) {
+void ProgressLine::update_fraction(double fraction, std::string_view detail, std::optional<double> seconds_left) {
+  if (enabled_ && !finished_ && due()) show(percent(fraction), detail, seconds_left);
+}
+
+void ProgressLine::finish(std::string_view detail) {
+  if (!enabled_ || finished_) return;
+  show("100%", detail, std::nullopt);
+  std::fputs("\n", stderr);
+  std::fflush(stderr);
+  finished_ = true;
+}
+
+bool ProgressLine::due() {
   const auto now = std::chrono::steady_clock::now();
-  if (now - last_ < std::chrono::milliseconds(100)) return;  // a terminal need not redraw faster
+  if (now - last_ < std::chrono::milliseconds(100)) return false;  // a terminal need not redraw faster
   last_ = now;
-  const double elapsed = std::chrono::duration<double>(now - start_).count();
-  // Time left if the rest goes at the pace so far: crude (later sweep points have more nodes),
-  // but it moves the right way.
-  const std::string left =
-      fraction > 0 && fraction < 1 ? fmt::format(", ~{:.0f} s left", elapsed * (1 - fraction) / fraction) : std::string();
+  return true;
+}
+
+void ProgressLine::show(const std::string& done, std::string_view detail, std::optional<double> seconds_left) {
+  const double elapsed = elapsed_seconds();
+  const std::string left = seconds_left ? fmt::format(", ~{:.0f} s left", *seconds_left) : std::string();
   std::fputs(fmt::format("\r\033[K{}: {} ({}){}, {:.0f} s so far", what_, done, detail, left, elapsed).c_str(), stderr);
   std::fflush(stderr);
 }

@@ -4,6 +4,7 @@
 // is a file or a pipe, so logs and tests see only the results. GCSIM_PROGRESS=0 turns it off,
 // =1 forces it on.
 #include <chrono>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -22,12 +23,20 @@ class ProgressLine {
   void update(int done, std::string_view detail);
   // A fraction in [0, 1] of the work is done; detail e.g. "loop 120, 97.1% of the energy shot".
   void update_fraction(double fraction, std::string_view detail);
+  // The same with the caller's own estimate of the wall seconds left (none: not shown), e.g. from
+  // a plan's predictions (pass_progress.hpp) rather than from the pace so far.
+  void update_fraction(double fraction, std::string_view detail, std::optional<double> seconds_left);
+  // The work is done: the line shows 100 % once, with detail, and stays (a newline ends it).
+  void finish(std::string_view detail);
+  double elapsed_seconds() const;  // wall seconds since the line was made
   // Erases the line, before the command prints on stdout to the same terminal.
   void clear();
   bool shown() const { return enabled_; }
 
  private:
-  void show(double fraction, const std::string& done, std::string_view detail);
+  void show(const std::string& done, std::string_view detail, std::optional<double> seconds_left);
+  bool due();  // at most ten redraws a second
+  bool finished_ = false;
   std::string what_;
   int total_;
   bool enabled_;

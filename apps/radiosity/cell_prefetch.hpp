@@ -10,19 +10,21 @@
 //
 // The kernel and the replicas' fibers stay on one host thread: only this pure work moves. One per
 // simulated run (with_shared_projections makes it); under MPI every rank computes its own cells.
-#include <condition_variable>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <thread>
 #include <utility>
 #include <vector>
 
+#include "apps/common/work_ahead.hpp"
 #include "apps/radiosity/cell_assignment.hpp"
 #include "apps/radiosity/hemicube.hpp"
 
 namespace gcsim::radiosity {
 
+// The host threads are the shared work-ahead pool (apps/common/work_ahead.hpp): each (loop,
+// shooter) adds its cells to it as one batch of items, in the order the replicas will take them.
 class CellPrefetch {
  public:
   // workers: host threads besides the simulation's (host threads - 1), at least 1; `assignment`
@@ -30,7 +32,7 @@ class CellPrefetch {
   // they are asked for.
   explicit CellPrefetch(int workers, CellAssignment assignment = CellAssignment::cyclic,
                         SideFaces side_faces = SideFaces::half);
-  ~CellPrefetch();  // the workers finish the cell in hand and stop
+  ~CellPrefetch() = default;  // the workers finish the cell in hand and stop
   CellPrefetch(const CellPrefetch&) = delete;
   CellPrefetch& operator=(const CellPrefetch&) = delete;
 
@@ -39,43 +41,39 @@ class CellPrefetch {
   // r, nodes, cells, side_faces); adds the cell's operations to `ops`. Every cell of a (step, shooter) must be taken once.
   CellFormFactors take(HemicubeRenderer& renderer, const Scene& scene, int step, int cell, int nodes, OpCounts& ops);
 
-  int workers() const { return int(threads_.size()); }
-  std::int64_t cells_by_workers() const;  // so far: cells a worker computed before a replica asked
+  int workers() const { return worker_count_; }
+  std::int64_t cells_by_workers() const { return ahead_ ? ahead_->by_workers() : 0; }
 
  private:
-  enum class State { pending, running, done };
-  struct Cell {
-    State state = State::pending;
+  struct ComputedCell {
     CellFormFactors ff;
-    OpCounts ops;
-    std::exception_ptr failure;
+    OpCounts ops;  // counted by the replica that takes the cell
   };
-  struct Batch {
+  struct Batch {  // one (step, shooter): items first .. first + cells - 1
     std::shared_ptr<const HemicubeProjection> projection;
-    std::vector<int> order;  // cells in the order the replicas are expected to take them
-    std::size_t next = 0;    // order[next...]: not yet handed to a worker
-    std::vector<Cell> cells;
-    int left = 0;            // cells not yet taken by a replica
+    std::int64_t first = 0;
+    int left = 0;  // cells not yet taken by a replica
   };
   using Key = std::pair<int, int>;  // (step, shooter)
+  using Ahead = apps::WorkAhead<ComputedCell, std::int64_t>;
 
-  Batch& batch_for(const HemicubeRenderer& renderer, int step, int nodes);
   void start_workers(const Scene& scene, const HemicubeOptions& options);
-  void work(HemicubeRenderer& renderer);
-  void help_while_running(HemicubeRenderer& renderer, Batch& b, Cell& needed, std::unique_lock<std::mutex>& held);
-  // A pending cell for a worker, marked running, or null (with its batch's projection).
-  std::pair<Cell*, int> claim(std::shared_ptr<const HemicubeProjection>& projection);
+  // The batch's first item, registering the batch (and expecting its cells) on its first cell.
+  std::int64_t first_item(const HemicubeRenderer& renderer, int step, int nodes);
+  // Item `item` with `own` if it holds the item's projection, else with `other` switched to it.
+  ComputedCell compute(std::int64_t item, HemicubeRenderer& own, HemicubeRenderer& other);
 
   const int worker_count_;
   const CellAssignment assignment_;
   const SideFaces side_faces_;
-  mutable std::mutex lock_;
-  std::condition_variable work_ready_, cell_done_;
-  std::map<Key, Batch> batches_;
-  bool stopping_ = false;
-  std::int64_t by_workers_ = 0;
-  std::vector<std::unique_ptr<HemicubeRenderer>> renderers_;  // one per worker, made on the simulation's thread
-  std::vector<std::jthread> threads_;
+  mutable std::mutex lock_;  // the batches: workers look up an item's projection
+  std::map<Key, std::int64_t> first_of_;
+  std::map<std::int64_t, Batch> batches_;  // by first item
+  std::int64_t next_item_ = 0;
+  // One per worker and one for a replica helping with another batch's cells, made on the
+  // simulation's thread.
+  std::vector<std::unique_ptr<HemicubeRenderer>> renderers_;
+  std::unique_ptr<Ahead> ahead_;  // last: its workers stop before the renderers go
 };
 
 }  // namespace gcsim::radiosity

@@ -54,8 +54,9 @@ struct GatheredPhotons {
   double media_absorbed = 0.0;  // this node's photons' luminance power absorbed in the media
 };
 
-// On every node: its share of the photons, charged, then the all-gather.
-GatheredPhotons photon_pass(parix::Processor& p, const MediaSetup& s);
+// On every node: its share of the photons, charged, then the all-gather. on_traced: host-side
+// progress, the photons this node traced (nothing of it is simulated).
+GatheredPhotons photon_pass(parix::Processor& p, const MediaSetup& s, const PhotonsTraced& on_traced = {});
 
 // This node's slice of the SH grids' construction (all: the whole grids' counts).
 void charge_grid_share(parix::Processor& p, const media::GridBuildCounts& all);

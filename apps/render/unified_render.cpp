@@ -22,8 +22,13 @@ void unified_render_program(parix::Processor& p, const scene::SceneDescription& 
                             const MediaSetup* media, UnifiedRender& out) {
   GatheredPhotons photons;
   if (media) {
-    if (p.id() == 0 && out.on_photons_start) out.on_photons_start();
-    photons = photon_pass(p, *media);
+    PhotonsTraced traced;
+    if (out.on_photons)
+      traced = [&out, total = std::uint64_t(media->traced > 0 ? media->traced : media->photons)](std::size_t n) {
+        out.photons_traced += n;
+        out.on_photons(out.photons_traced, total);
+      };
+    photons = photon_pass(p, *media, traced);
     out.photon_flights += photons.flights, out.photon_surface_events += photons.surface_events;
     out.media_absorbed += photons.media_absorbed;
   }

@@ -32,8 +32,9 @@ struct UnifiedRender {
   std::uint64_t wall_deposits = 0, wall_missed = 0;
   // Host-side progress of the view pass (tiles rendered, of all): nothing of it is simulated.
   std::function<void(int done, int total)> on_view_tile;
-  // Host-side: node 0 starts tracing its photons (the media pass reports nothing else while it runs).
-  std::function<void()> on_photons_start;
+  // Host-side progress of the media pass: photons traced so far over every node, of all emitted.
+  std::function<void(std::uint64_t traced, std::uint64_t total)> on_photons;
+  std::uint64_t photons_traced = 0;  // host-side, for on_photons
 
   explicit UnifiedRender(int nodes)
       : radiosity_end_s(std::size_t(nodes), 0.0), media_end_s(std::size_t(nodes), 0.0), view_start_s(std::size_t(nodes), 0.0) {}

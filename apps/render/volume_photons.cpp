@@ -180,7 +180,8 @@ std::optional<glm::dvec3> bounce(const raytrace::Scene& scene, const Ray& ray, c
 
 VolumePhotons trace_volume_photons(const raytrace::Scene& surfaces, const geometry::Bvh& bvh, const PhotonLights& lights,
                                    const std::vector<MediumRegion>& media, std::size_t first, std::size_t last,
-                                   std::size_t total, std::uint64_t seed, const WallHit& on_wall) {
+                                   std::size_t total, std::uint64_t seed, const WallHit& on_wall,
+                                   const PhotonsTraced& on_traced) {
   VolumePhotons out;
   out.per_region.resize(media.size());
   if (lights.emitters.empty() || total == 0) return out;
@@ -189,6 +190,7 @@ VolumePhotons trace_volume_photons(const raytrace::Scene& surfaces, const geomet
     fm.push_back({luminance_medium(r.medium), r.medium.sigma_s, r.medium.sigma_s + r.medium.sigma_a});
   const float power = float(lights.total_flux / double(total));
   for (std::size_t i = first; i < last; ++i) {
+    if (on_traced && i > first && (i - first) % kPhotonsPerReport == 0) on_traced(kPhotonsPerReport);
     apps::Rng rng(seed, 0x70686f746f6eULL + i);
     PhotonRay r = emit(lights, rng);
     bool scattered = false;  // this flight began at a scattering (or at a mirror or glass after one)
@@ -225,6 +227,7 @@ VolumePhotons trace_volume_photons(const raytrace::Scene& surfaces, const geomet
       r.direction = *next;
     }
   }
+  if (on_traced && last > first) on_traced((last - first - 1) % kPhotonsPerReport + 1);
   return out;
 }
 

@@ -61,10 +61,15 @@ struct VolumePhotons {
 // (unit): power is its RGB flux (luminance power times tint). Called before the surface's roulette.
 using WallHit = std::function<void(const glm::dvec3& origin, const glm::dvec3& direction, const glm::dvec3& power)>;
 
+// Host-side progress: `photons` more were traced (called every kPhotonsPerReport and at the end).
+using PhotonsTraced = std::function<void(std::size_t photons)>;
+inline constexpr std::size_t kPhotonsPerReport = 4096;
+
 // Photons [first, last) of `total`; photon i draws from its own stream (seed, i), so any split of the
 // range over nodes gives the same photons. Each carries total_flux / total.
 VolumePhotons trace_volume_photons(const raytrace::Scene& surfaces, const geometry::Bvh& bvh, const PhotonLights& lights,
                                    const std::vector<MediumRegion>& media, std::size_t first, std::size_t last,
-                                   std::size_t total, std::uint64_t seed, const WallHit& on_wall = {});
+                                   std::size_t total, std::uint64_t seed, const WallHit& on_wall = {},
+                                   const PhotonsTraced& on_traced = {});
 
 }  // namespace gcsim::render

@@ -1,5 +1,6 @@
 // gcsim rerun RUN.json: repeats a run from the command line its JSON recorded, in the directory it
-// ran in, with its outputs in a new place, and says whether the simulated figures are the same.
+// ran in, with its outputs in a new place, and says whether the simulated figures are the same, and
+// whether the trace files and images it wrote are (those of the recorded run still there).
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -11,11 +12,13 @@
 #include <memory>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "apps/pipeline/app_registry.hpp"
 #include "apps/pipeline/command_groups.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/rerun/figure_comparison.hpp"
+#include "apps/rerun/output_comparison.hpp"
 #include "apps/rerun/recorded_run.hpp"
 
 namespace gcsim::rerun {
@@ -73,6 +76,17 @@ nlohmann::json read_json(const std::string& path) {
   return nlohmann::json::parse(in);
 }
 
+// The recorded trace files and images against the rerun's: a line for each kind of result.
+void print_outputs(const OutputComparison& c) {
+  if (!c.identical.empty())
+    fmt::print("identical: {} file(s) the run wrote are the rerun's byte for byte: {}\n", c.identical.size(),
+               fmt::join(c.identical, ", "));
+  for (const std::string& m : c.missing) fmt::print("not compared: {}\n", m);
+  if (c.differ.empty()) return;
+  fmt::print("differ:   {} file(s) the run wrote differ from the rerun's:\n", c.differ.size());
+  for (const std::string& d : c.differ) fmt::print("  {}\n", d);
+}
+
 void rerun(const RerunFlags& f) {
   const RecordedRun run = read_recorded_run(f.run_json);
   for (const std::string& note : version_notes(run)) fmt::print("note      {}\n", note);
@@ -93,16 +107,22 @@ void rerun(const RerunFlags& f) {
     throw pipeline::ExitStatus{status};
   }
   const FigureComparison c = compare_figures(run.document, with_recorded_paths(read_json(plan.json), plan));
+  const OutputComparison files = compare_outputs(run, plan);
   fmt::print("\n");
   if (c.differ.empty()) {
     fmt::print("identical: all {} simulated figures of the rerun ({}) equal {}'s\n", c.compared, plan.json, f.run_json);
-    return;
+  } else {
+    fmt::print("differ:   {} of {} simulated figures of the rerun ({}) differ from {}'s (recorded -> rerun):\n",
+               c.differ.size(), c.compared, plan.json, f.run_json);
+    for (const std::string& d : c.differ) fmt::print("  {}\n", d);
   }
-  fmt::print("differ:   {} of {} simulated figures of the rerun ({}) differ from {}'s (recorded -> rerun):\n",
-             c.differ.size(), c.compared, plan.json, f.run_json);
-  for (const std::string& d : c.differ) fmt::print("  {}\n", d);
-  throw pipeline::RunFailure(fmt::format("the rerun's simulated figures differ from '{}' ({} of {})", f.run_json,
-                                         c.differ.size(), c.compared));
+  print_outputs(files);
+  if (!c.differ.empty())
+    throw pipeline::RunFailure(fmt::format("the rerun's simulated figures differ from '{}' ({} of {})", f.run_json,
+                                           c.differ.size(), c.compared));
+  if (!files.differ.empty())
+    throw pipeline::RunFailure(fmt::format("files the run wrote differ from the rerun's ({} of {})", files.differ.size(),
+                                           files.differ.size() + files.identical.size()));
 }
 
 void add_rerun_command(pipeline::CommandGroups& g) {
@@ -119,8 +139,9 @@ void add_rerun_command(pipeline::CommandGroups& g) {
       "\nThe rerun runs the recorded command line in the recorded working directory. It first checks the machine\n"
       "file (its content after inheritance) and the scene file against their recorded hashes and refuses when\n"
       "one changed (exit 3), unless --force. It then compares every figure of the two JSONs but the wall-clock\n"
-      "ones and the provenance block: exit 0 when all are identical; exit 1, listing each figure that differs;\n"
-      "the rerun's own exit status when it failed.\n\n"
+      "ones and the provenance block, and the trace files (--trace's .json, .csv, .paje) and PNG images the run\n"
+      "wrote, byte for byte, those still there (the others are named, not compared): exit 0 when all are\n"
+      "identical; exit 1, listing each figure and file that differs; the rerun's own exit status when it failed.\n\n"
       "Example:\n"
       "  gcsim run radiosity --scene cornell --nodes 8 --json r.json && gcsim rerun r.json");
   cmd->callback([f] { rerun(*f); });

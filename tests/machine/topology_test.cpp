@@ -54,7 +54,7 @@ TEST(Topology, MeshTwoByTwoIsARingOfFour) {
   EXPECT_DOUBLE_EQ(mesh.R, ring.R);
 }
 
-TEST(Topology, ThesisIssueFigures) {
+TEST(Topology, HypercubeOf64HasTheThesisDiameterAndDegree) {
   const TopologyMetrics h = exact_metrics(make_topology("hypercube", 64));
   EXPECT_EQ(h.D, 6);
   EXPECT_EQ(h.k, 6);

@@ -3,7 +3,9 @@
 a radiosity run (relative --config, run from the source tree, rerun from elsewhere) and a ray-tracing
 run are reported identical with their outputs written elsewhere and the originals untouched; a run
 JSON whose machine hash was edited is refused (exit 3) unless --force; one whose simulated time was
-edited is reported as differing (exit 1), naming the figure.
+edited is reported as differing (exit 1), naming the figure. The trace files and images a run wrote
+are compared byte for byte with the rerun's: all identical; one edited is named as differing (exit 1);
+one deleted is named as not compared.
 
   rerun_test.py GCSIM SOURCE_DIR WORKDIR
 """
@@ -44,6 +46,9 @@ def recorded_and_rerun(gcsim, source, work, name, args):
     redo = work / f"{name}-rerun"
     code, out = run(gcsim, ["rerun", str(work / f"{name}.json"), "--out-dir", str(redo)], work)
     check(code == IDENTICAL and "identical: all" in out, f"{name}: rerun reports identical", out)
+    files = [p for p in prov["outputs"] if p.endswith((".png", ".csv", ".paje")) or "trace" in p]
+    check(all(p in out for p in files) and "file(s) the run wrote are the rerun's byte for byte" in out,
+          f"{name}: its trace files and image compared identical ({len(files)})", out)
     check(digest(prov["outputs"]) == originals, f"{name}: the recorded outputs are untouched")
     check((redo / f"{name}.json").exists() and len(list(redo.iterdir())) >= 3, f"{name}: the rerun wrote into --out-dir")
     return doc
@@ -76,6 +81,14 @@ def main():
     (work / "edited.json").write_text(json.dumps(edited))
     code, out = run(gcsim, ["rerun", str(work / "edited.json"), "--out-dir", str(work / "edited")], work)
     check(code == DIFFER and "/simulated/total_s" in out, "an edited simulated time: differs, the figure listed", out)
+
+    csv, paje = work / "rad-trace.csv", work / "rad-trace.paje"
+    csv.write_text(csv.read_text() + "0,0,0\n")
+    paje.unlink()
+    code, out = run(gcsim, ["rerun", str(work / "rad.json"), "--out-dir", str(work / "files")], work)
+    check(code == DIFFER and "identical: all" in out and f"differ:   1 file(s)" in out and str(csv) in out,
+          "an edited trace CSV: the figures are identical, the file named as differing", out)
+    check(f"not compared: {paje} (no longer there)" in out, "a deleted trace file: named, not compared", out)
 
     code, out = run(gcsim, ["rerun", str(work / "rad.json"), "--out-dir", str(work)], work)
     check(code == REFUSED and "never overwrites" in out, "a rerun into the recorded run's own files is refused", out)

@@ -68,7 +68,7 @@ TEST(Obj, ErrorsNameFileLineAndExpectation) {
 }
 
 TEST(Obj, CoordinatesAreCappedAsInWorldFiles) {
-  // Issue 13: `v 1 1e23 -1` crashed the BVH builder; files now stop at the WORLD parser's 1e15.
+  // `v 1 1e23 -1` once crashed the BVH builder; files now stop at the WORLD parser's 1e15.
   const std::string cube_tail = "v 1 1 1\nv -1 1 1\nv -1 -1 1\nf 1 2 3\nf 2 3 4\n";
   // The tinyobjloader-based loader (apps/common/scene/obj_mesh) names the line and the coordinate.
   EXPECT_EQ(obj_error("v 1 1e23 -1\n" + cube_tail), "bad.obj:1: expected coordinate 2 of a vertex within +-1e15, got '1e23'");

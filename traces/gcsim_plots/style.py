@@ -1,4 +1,5 @@
 """Colours and labels shared by every plot (and by the Paje export in machine/paje_writer.cpp)."""
+import textwrap
 
 # Activity kinds of a processor, in the order they are stacked and listed in legends.
 STATE_KINDS = ("compute", "send", "recv", "wait", "connect")
@@ -28,6 +29,8 @@ SERIES_MARKERS = ("o", "D", "^", "v", "P", "X")
 MESSAGE_COLOR = "#222222"
 
 DPI = 120
+# Characters in a line of a subtitle: what the narrowest figure (the message matrix) holds at its font size.
+SUBTITLE_WIDTH = 100
 
 
 def human_bytes(n):
@@ -66,6 +69,6 @@ def machine_line(trace, shown=None):
     nodes = f"{trace.processors} nodes (mesh {trace.mesh_width}x{trace.mesh_height})"
     if shown is not None and shown != trace.processors:
         nodes += f", {shown} shown"
-    if trace.machine:
-        return f"{trace.machine}; {nodes}"
-    return f"{nodes}; machine and network model not recorded in this trace"
+    line = f"{trace.machine}; {nodes}" if trace.machine else f"{nodes}; machine and network model not recorded in this trace"
+    # Wrapped, so the narrower figures (the message matrix, the mesh heatmap) do not cut it off.
+    return textwrap.fill(line, width=SUBTITLE_WIDTH, break_on_hyphens=False)

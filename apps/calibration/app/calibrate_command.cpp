@@ -6,10 +6,12 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "apps/calibration/app/commands.hpp"
 #include "apps/calibration/app/prediction_flags.hpp"
 #include "apps/pipeline/failure.hpp"
+#include "apps/pipeline/list_parsing.hpp"
 #include "apps/pipeline/machine_options.hpp"
 #include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/pipeline/progress.hpp"
@@ -58,7 +60,8 @@ void report_interrupted_fit(const cal::MachineFile& file, const std::string& spe
 }
 
 struct CalibrateFlags {
-  std::string fit, free, config, out, json, csv;
+  std::vector<std::string> fit, free;  // split at ',' by CLI11 (add_list_option)
+  std::string config, out, json, csv;
   PredictFlags predict;
 };
 
@@ -68,13 +71,14 @@ void run_calibrate(const CalibrateFlags& f) {
     pipeline::check_writable(path, option);  // before the fit's many runs
   const cal::MachineFile file(f.config);
   const std::vector<cal::MeasuredTable> tables = cal::tables_from_specs(f.fit);
-  const std::vector<std::string> free = cal::split_list(f.free);
+  const std::vector<std::string>& free = f.free;
   for (const auto& k : free) file.check_free_key(k);
   cal::Predictor predictor(settings(f.predict));
-  const std::string command = "gcsim calibrate --fit " + f.fit + " --free " + f.free +
+  const std::string fit = fmt::format("{}", fmt::join(f.fit, ",")), free_text = fmt::format("{}", fmt::join(free, ","));
+  const std::string command = "gcsim calibrate --fit " + fit + " --free " + free_text +
                               (f.config.empty() ? "" : " --config " + f.config) + non_default_flags(f.predict) +
                               " --out " + f.out;
-  fmt::print("fitting {} to table(s) {} on {} ...\n", f.free, f.fit, file.source());
+  fmt::print("fitting {} to table(s) {} on {} ...\n", free_text, fit, file.source());
   std::fflush(stdout);
   FitProgress progress;
   predictor.on_run([&](int done, int total) { progress.run(done, total); });
@@ -83,7 +87,7 @@ void run_calibrate(const CalibrateFlags& f) {
     r = cal::calibrate(file, tables, free, predictor, [&](const cal::CalibrationTrial& t) { progress.trial(t); });
   } catch (const parix::host::Interrupted&) {
     progress.line.clear();
-    report_interrupted_fit(file, f.fit, f.out, f.json, progress, command);
+    report_interrupted_fit(file, fit, f.out, f.json, progress, command);
     throw;
   }
   progress.line.clear();
@@ -123,13 +127,13 @@ void add_calibrate_command(pipeline::CommandGroups& g) {
       "positive factor of its value in the file. Prints every fitted cell, the fitted values with\n"
       "their standard errors, and writes a machine file that inherits --config and overrides only\n"
       "the fitted keys. Then `gcsim validate --config OUT` predicts the tables that were not fitted.");
-  cmd->add_option("--fit", f->fit,
+  pipeline::add_list_option(cmd, "--fit", f->fit,
                   "Tables to fit, comma-separated: 4.6, 4.7, 4.3, 4.4, 4.5, 4.8 (the thesis's, built in); "
                   "TABLE@N+N keeps those node counts only (4.3@1: the 1-node figures), TABLE@NAME+NAME those columns "
                   "(4.3@1+8+CORNELL+PICROOM: two rows of two scenes); PATH.csv:TABLE is your "
                   "own figures in that table's layout (header nodes,<its columns>)")
       ->required();
-  cmd->add_option("--free", f->free, "Keys to fit, comma-separated, as table.key: network.connect_base_us, ops.polygon_project, ...")
+  pipeline::add_list_option(cmd, "--free", f->free, "Keys to fit, comma-separated, as table.key: network.connect_base_us, ops.polygon_project, ...")
       ->required();
   pipeline::add_config_option(cmd, f->config, "Base machine file");
   cmd->add_option("--out", f->out, "Write the fitted machine file here")->required();

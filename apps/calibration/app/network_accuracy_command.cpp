@@ -10,11 +10,13 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "apps/pipeline/csv_comment.hpp"
 #include "apps/calibration/app/commands.hpp"
 #include "apps/calibration/app/prediction_flags.hpp"
 #include "apps/pipeline/failure.hpp"
+#include "apps/pipeline/list_parsing.hpp"
 #include "apps/pipeline/machine_options.hpp"
 #include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/pipeline/progress.hpp"
@@ -26,18 +28,18 @@ namespace {
 
 using pipeline::write_json_file;
 
-// Table specs for `accuracy network`: the broadcast grid and the CORNELL sweeps.
-constexpr const char* kNetworkAccuracyTables = "4.6,4.7,4.3,4.8";
-
-// "analytic,flow,packet": every registered model, as --models takes them.
-std::string every_model() {
-  std::string out;
-  for (const std::string& m : machine::network_model_names()) out += (out.empty() ? "" : ",") + m;
+// Every registered model, as --models takes them by default.
+std::vector<std::string> every_model() {
+  std::vector<std::string> out;
+  for (const std::string& m : machine::network_model_names()) out.push_back(m);
   return out;
 }
 
 struct NetworkAccuracyFlags {
-  std::string config, models = every_model(), tables = kNetworkAccuracyTables, scene = "CORNELL", json, csv;
+  // Lists split at ',' by CLI11 (add_list_option).
+  // The tables: the broadcast grid and the CORNELL sweeps.
+  std::vector<std::string> models = every_model(), tables = {"4.6", "4.7", "4.3", "4.8"};
+  std::string config, scene = "CORNELL", json, csv;
   PredictFlags predict;
 };
 
@@ -99,8 +101,7 @@ void run_network_accuracy(const NetworkAccuracyFlags& f) {
   if (!f.csv.empty()) {
     csv.open(f.csv);
     if (!csv) throw std::runtime_error("cannot write CSV file '" + f.csv + "'");
-    std::string models = f.models;  // one series per model: the comment names them all
-    std::replace(models.begin(), models.end(), ',', ' ');
+    const std::string models = fmt::format("{}", fmt::join(f.models, " "));  // one series per model: the comment names them all
     csv << pipeline::csv_comment("accuracy network", file.config().name, "each table's", models) << '\n';
     csv << "model,table,median_error,max_error,within_15,cells,wall_s\n";
   }
@@ -111,7 +112,7 @@ void run_network_accuracy(const NetworkAccuracyFlags& f) {
   fmt::print("{}", workload_lines(scenes, f.predict.energy, "workload  "));
   fmt::print("{:<9} {:<6} {:>6} {:>9} {:>9} {:>11} {:>9}\n", "model", "table", "cells", "median", "max", "within 15%", "wall_s");
   pipeline::ProgressLine progress("accuracy network", 0);
-  for (const auto& model : cal::split_list(f.models)) compare_model(f, model, file, tables, scenes, progress, j, csv);
+  for (const auto& model : f.models) compare_model(f, model, file, tables, scenes, progress, j, csv);
   fmt::print("wall_s: host seconds to predict all the tables under that model (--jobs {})\n", f.predict.jobs);
   if (!f.json.empty()) write_json_file(f.json, j);
 }
@@ -127,10 +128,10 @@ void add_network_accuracy_command(pipeline::CommandGroups& g) {
           ", with the error against the measured figures and the host time each\n"
           "model took (the broadcast grid of tables 4.6/4.7 and one scene's columns of 4.3/4.8).");
   pipeline::add_config_option(cmd, f->config);
-  cmd->add_option("--models", f->models, "Network models to compare, comma-separated: " + pipeline::network_model_summaries())
+  pipeline::add_list_option(cmd, "--models", f->models, "Network models to compare, comma-separated: " + pipeline::network_model_summaries())
       ->check(pipeline::each_network_model())
       ->capture_default_str();
-  cmd->add_option("--tables", f->tables, "Tables, as for calibrate --fit")->capture_default_str();
+  pipeline::add_list_option(cmd, "--tables", f->tables, "Tables, as for calibrate --fit")->capture_default_str();
   cmd->add_option("--scene", f->scene, "Radiosity tables: the scene column to predict (ROOM, PICROOM, CORNELL)")->capture_default_str();
   pipeline::add_json_option(cmd, f->json, "the comparison");
   cmd->add_option("--csv", f->csv, "Write model,table,median,max,within_15,cells,wall_s as CSV (gcsim plot draws error against time)");

@@ -12,6 +12,7 @@
 #include "apps/calibration/app/commands.hpp"
 #include "apps/calibration/app/prediction_flags.hpp"
 #include "apps/pipeline/failure.hpp"
+#include "apps/pipeline/list_parsing.hpp"
 #include "apps/pipeline/machine_options.hpp"
 #include "apps/pipeline/option_vocabulary.hpp"
 #include "apps/pipeline/progress.hpp"
@@ -23,13 +24,14 @@ namespace {
 using pipeline::write_json_file;
 
 struct ValidateFlags {
-  std::string config, tables, json, csv;
+  std::vector<std::string> tables;  // split at ',' by CLI11 (add_list_option)
+  std::string config, json, csv;
   PredictFlags predict;
 };
 
 // The tables to validate: those named, or every built-in table not wholly fitted; cells the fit
 // used are marked.
-std::vector<cal::MeasuredTable> validation_tables(const std::string& named, const machine::MachineConfig& c) {
+std::vector<cal::MeasuredTable> validation_tables(const std::vector<std::string>& named, const machine::MachineConfig& c) {
   std::vector<cal::MeasuredTable> out;
   if (!named.empty()) return cal::tables_from_specs(named, "--tables");
   for (const auto& id : cal::thesis_table_ids()) {
@@ -99,7 +101,7 @@ void add_validate_command(pipeline::CommandGroups& g) {
       "name as fitted; cells the fit used are marked and left out of the summaries. Per table: the\n"
       "largest and median relative error and the cells within 15 % and 25 %.");
   pipeline::add_config_option(cmd, f->config);
-  cmd->add_option("--tables", f->tables, "Tables to predict, as for calibrate --fit; default: every table not fitted");
+  pipeline::add_list_option(cmd, "--tables", f->tables, "Tables to predict, as for calibrate --fit; default: every table not fitted");
   pipeline::add_json_option(cmd, f->json, "every cell and the summaries");
   cmd->add_option("--csv", f->csv, "Write every cell as CSV (gcsim plot --calibration draws it)");
   add_predict_options(cmd, f->predict);

@@ -78,8 +78,8 @@ class RenderExperiment : public pipeline::Experiment {
       std::array<bool, 5> running{};
       for (const PassPlan& p : plan_.passes) running[static_cast<std::size_t>(p.id)] = runs(p.id);
       running[static_cast<std::size_t>(PassId::media)] = setup_.media && setup_.media->photon_pass;
-      o.progress = std::make_unique<RenderProgress>(plan_, running, o.options.simulation.config,
-                                                    o.options.simulation.config.nodes, int(photons_));
+      o.progress = std::make_unique<RenderProgress>(
+          render_stages(plan_, running, o.options.simulation.config, o.options.simulation.config.nodes, int(photons_)));
     }
     radiosity::ParallelOptions shown = radiosity::with_shared_projections(options_, o.options);
     // As `gcsim run radiosity`'s line: unshot energy falls about geometrically per loop.
@@ -87,16 +87,20 @@ class RenderExperiment : public pipeline::Experiment {
       o.loops_done = loop, o.shot_fraction = shot;
       if (!o.progress) return;
       const double fraction = goal < 0 ? std::clamp(std::log(std::max(1 - shot, 1e-300)) / goal, 0.0, 1.0) : 1.0;
-      o.progress->update(PassId::radiosity, fraction, fmt::format("loop {}, {:.4f}% of the energy shot", loop, 100 * shot));
+      o.progress->update(RenderStage::radiosity, fraction,
+                         fmt::format("loop {}, {:.4f}% of the energy shot", loop, 100 * shot));
     };
     const radiosity::Scene* mesh = setup_.mesh_or_null();
     UnifiedRender* render = o.render.get();
-    render->on_view_tile = [&o](int done, int total) {
-      if (o.progress) o.progress->update(PassId::view, double(done) / total, fmt::format("tile {} of {}", done, total));
-    };
-    render->on_photons_start = [&o, photons = setup_.media ? setup_.media->photons : 0] {
-      if (o.progress) o.progress->update(PassId::media, 0.0, fmt::format("{} photons", photons));
-    };
+    if (o.progress) {
+      render->on_view_tile = [&o](int done, int total) {
+        o.progress->update(RenderStage::view, double(done) / total, fmt::format("tile {} of {}", done, total));
+      };
+      render->on_photons = [&o](std::uint64_t traced, std::uint64_t total) {
+        o.progress->update(RenderStage::photons, double(traced) / double(total),
+                           fmt::format("{} of {} photons traced", traced, total));
+      };
+    }
     ViewSettings view = view_;
     view.host_threads = shown.host_threads;  // the run's, on the simulated backend
     return [this, render, mesh, shown, view](parix::Processor& p) {
@@ -105,7 +109,8 @@ class RenderExperiment : public pipeline::Experiment {
   }
   void after_run(pipeline::Outcome& out) const override {
     RenderOutcome& o = pipeline::outcome_as<RenderOutcome>(out);
-    o.progress.reset();  // erases the line before the report
+    if (o.progress) o.progress->finish();  // 100 %, once, before the report
+    o.progress.reset();
     finish(*o.render);
   }
   void report_interrupted(const pipeline::Outcome& out, nlohmann::json& reached) const override {

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "apps/render/plan_cost.hpp"
 
@@ -11,30 +12,33 @@ namespace gcsim::render::app {
 
 namespace {
 
-constexpr std::array<const char*, 3> kStageNames = {"media pass: photons", "radiosity pass", "view pass"};
+// The view's name says what it traces besides camera rays.
+std::string view_name(const std::array<bool, 5>& runs) {
+  std::vector<std::string> with;
+  for (PassId id : {PassId::specular, PassId::shadows, PassId::media})
+    if (runs[static_cast<std::size_t>(id)]) with.emplace_back(pass_name(id));
+  return with.empty() ? "view" : fmt::format("view ({})", fmt::join(with, ", "));
+}
 
 }  // namespace
 
-int RenderProgress::stage_of(PassId pass) {
-  if (pass == PassId::media) return 0;
-  if (pass == PassId::radiosity) return 1;
-  return 2;  // the view, with the specular and shadow rays it traces
-}
-
-RenderProgress::RenderProgress(const Plan& plan, const std::array<bool, 5>& runs, const machine::MachineConfig& machine,
-                               int nodes, int photons) {
+RenderStages render_stages(const Plan& plan, const std::array<bool, 5>& runs, const machine::MachineConfig& machine,
+                           int nodes, int photons) {
   CostModel model;
   model.photons = photons;
-  std::array<double, 3> seconds{};
+  std::array<double, 3> seconds{};  // by RenderStage; 0: unknown (weighs as the others' mean)
+  std::array<bool, 3> running{false, false, true};
   for (const PassPlan& p : plan.passes) {
     if (!runs[static_cast<std::size_t>(p.id)]) continue;
-    runs_[static_cast<std::size_t>(stage_of(p.id))] = true;
+    const RenderStage stage = p.id == PassId::media ? RenderStage::photons
+                              : p.id == PassId::radiosity ? RenderStage::radiosity : RenderStage::view;
+    running[static_cast<std::size_t>(stage)] = true;
     PassPlan on = p;
     on.on = true;  // a forced pass costs what it would if the plan had it on
     try {
       const double s = estimate_pass(on, plan.facts, machine, nodes, model).seconds_per_node;
       if (p.id != PassId::media) {
-        seconds[static_cast<std::size_t>(stage_of(p.id))] += s;
+        seconds[static_cast<std::size_t>(stage)] += s;
         continue;
       }
       // The media pass's estimate holds the photons and the view's marching through the media:
@@ -45,30 +49,32 @@ RenderProgress::RenderProgress(const Plan& plan, const std::array<bool, 5>& runs
       seconds[0] += photons_s;
       seconds[2] += s - photons_s;
     } catch (const std::invalid_argument&) {
-      // The machine file lacks an operation the estimate counts: the passes then weigh alike.
+      // The machine file lacks an operation the estimate counts: this pass weighs as the others.
     }
   }
-  double total = 0;
-  for (double s : seconds) total += s;
-  int running = 0;
-  for (bool r : runs_) running += r;
-  for (std::size_t i = 0; i < 3; ++i)
-    share_[i] = !runs_[i] ? 0.0 : total > 0 ? seconds[i] / total : 1.0 / std::max(running, 1);
+  constexpr std::array<const char*, 2> kNames = {"media: photons", "radiosity"};
+  RenderStages out;
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (!running[i]) continue;
+    out.order.push_back(RenderStage(i));
+    out.estimates.push_back({i < 2 ? std::string(kNames[i]) : view_name(runs), seconds[i]});
+  }
+  return out;
 }
 
-void RenderProgress::update(PassId pass, double fraction, std::string_view detail) {
-  const int stage = stage_of(pass);
-  double done = 0;
-  for (int i = 0; i < stage; ++i) done += share_[static_cast<std::size_t>(i)];
-  done += share_[static_cast<std::size_t>(stage)] * std::clamp(fraction, 0.0, 1.0);
-  int number = 0, of = 0;
-  for (int i = 0; i < 3; ++i) {
-    if (!runs_[static_cast<std::size_t>(i)]) continue;
-    ++of;
-    if (i <= stage) number = of;
-  }
-  const std::string what = fmt::format("{}, {} of {}", kStageNames[static_cast<std::size_t>(stage)], number, of);
-  line_.update_fraction(std::min(done, 1.0), detail.empty() ? what : fmt::format("{}: {}", what, detail));
+RenderProgress::RenderProgress(const RenderStages& stages) : order_(stages.order), model_(stages.estimates) {}
+
+void RenderProgress::update(RenderStage stage, double fraction, std::string_view detail) {
+  const auto at = std::ranges::find(order_, stage);
+  if (at == order_.end()) return;  // a stage that does not run reports nothing
+  const pipeline::PassProgressState s = model_.report(int(at - order_.begin()), fraction, line_.elapsed_seconds());
+  const std::string what = fmt::format("{}, pass {} of {}", s.pass, s.number, s.of);
+  line_.update_fraction(s.fraction, detail.empty() ? what : fmt::format("{}: {}", what, detail), s.seconds_left);
+}
+
+void RenderProgress::finish() {
+  const pipeline::PassProgressState s = model_.finish();
+  line_.finish(fmt::format("{} passes done", s.of));
 }
 
 }  // namespace gcsim::render::app
