@@ -162,7 +162,7 @@ def simulated_of(a, program, ranks, args, config):
 
 def test_sweep(a):
     program = build(a)
-    args, counts = ["24", "30"], [1, 2, 4]
+    args, counts = ["0.5", "10"], [1, 2, 4]
     run([a.gcsim, "sweep", "mpi", "--csv", "sweep.csv", "--json", "sweep.json", program] + args +
         ["--nodes", ",".join(map(str, counts))], a.work)
     rows = records(os.path.join(a.work, "sweep.csv"))
@@ -183,6 +183,8 @@ def test_sweep(a):
                 fail(f"{machine}, {n} nodes: speedup {r['speedup']} or efficiency {r['efficiency']} is not "
                      f"{first / t} / {first / t / n}")
             waiting, communicating, comm = (float(r[k]) for k in ("waiting_s", "communicating_s", "comm_s"))
+            if n > 1 and not 1 < float(r["speedup"]) <= n:
+                fail(f"{machine}, {n} nodes: speedup {r['speedup']} outside (1, {n}] for work that divides evenly")
             if abs(waiting + communicating - comm) > 1e-8:
                 fail(f"{machine}, {n} nodes: communicating {communicating} + waiting {waiting} != comm {comm}")
     if has_matplotlib(a):

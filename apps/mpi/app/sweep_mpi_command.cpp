@@ -70,6 +70,9 @@ void sweep_machine(const SweepMpiOptions& o, const SweepMachine& m, std::ofstrea
     const std::unique_ptr<pipeline::Outcome> out = run_point(o, m, o.nodes[i]);
     const double t = out->run.simulated_seconds();
     if (i == 0) first_seconds = t;
+    if (i == 0 && t <= 0)
+      fmt::print("note: {} nodes take no simulated time, so no speedup is measured against them (computation takes "
+                 "time only where annotated with gcsim_mpi_compute, <gcsim/mpi_ext.h>)\n", o.nodes[i]);
     const pipeline::SweepRow row{o.nodes[i], *out, t > 0 ? first_seconds / t : 0.0, i == 0};
     table->print_row(row);
     std::fflush(stdout);

@@ -32,7 +32,7 @@ void CallSpan::Peers::add(int p) {
 }
 
 void CallSpan::involve(int peer, bool receives) {
-  if (depth_ > 0) (receives ? receives_ : sends_).add(peer);
+  if (depth_ > 0 && peer >= 0) (receives ? receives_ : sends_).add(peer);  // MPI_PROC_NULL, MPI_ANY_SOURCE: none
 }
 
 }  // namespace gcsim::mpi_layer

@@ -24,12 +24,13 @@ class CallSpan {
   // call receives from (what it waits for), else the one it sends to; none when there are several.
   void involve(int peer, bool receives);
   void add_sent(std::int64_t bytes) { sent_ += bytes; }
-  void add_received(std::int64_t bytes) { received_ += bytes; }
+  void add_received(std::int64_t bytes) { received_ += bytes; }  // a receive posted (its capacity)
+  void note_received(std::int64_t bytes) { received_ = received_ > 0 ? received_ : bytes; }  // one completed
 
   // The call's name, or `fallback` outside a named call.
   std::string_view label(std::string_view fallback) const { return name_.empty() ? fallback : std::string_view(name_); }
   int peer() const { return receives_.any ? receives_.peer() : sends_.peer(); }
-  // What the call sends, or (a receive) what it received.
+  // What the call sends, or (a receive) what it can receive, or received.
   std::int64_t bytes() const { return sent_ > 0 ? sent_ : received_; }
 
  private:

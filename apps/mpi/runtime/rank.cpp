@@ -156,6 +156,7 @@ MPI_Request Rank::start_recv(const Communicator& c, std::int64_t context, int so
   op.type = type;
   call_span.describe(op.call);
   call_span.involve(op.peer_world, true);
+  call_span.add_received(pack_size(count, type));
   const MPI_Request h = add_operation(std::move(op));
   posted_.push_back(h);
   progress();  // an arrived message matches at once
@@ -172,6 +173,7 @@ MPI_Request Rank::start_raw_recv(const Communicator& c, std::int64_t context, in
   op.raw = into;
   op.is_raw = true;
   call_span.involve(op.peer_world, true);
+  call_span.add_received(static_cast<std::int64_t>(into.size()));
   const MPI_Request h = add_operation(std::move(op));
   posted_.push_back(h);
   progress();

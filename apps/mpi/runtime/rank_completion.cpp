@@ -13,7 +13,7 @@ bool Rank::test(MPI_Request handle) {
   call_span.involve(op.peer_world, !op.is_send);
   if (!op.is_send && !op.charged) {
     op.charged = true;
-    call_span.add_received(op.status.gcsim_bytes);
+    call_span.note_received(op.status.gcsim_bytes);
     charge(op.status.gcsim_bytes);
   }
   return true;
