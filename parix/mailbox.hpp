@@ -42,6 +42,10 @@ class Mailbox {
   virtual void await(std::span<const Request> requests, const char* call, int peer) = 0;
   // Holds one of the node's CPUs for `duration`, counted as communication (as_comm) or compute.
   virtual void occupy(SimTime duration, std::string_view label, bool as_comm) = 0;
+  // Puts [start, now) on this processor's track of the trace, when one is written, as a wait the
+  // layer above names: `label` its call, `peer` the processor waited for (-1: none in particular),
+  // `bytes` what the call moves. Only for time spent in await(), so no two intervals overlap.
+  virtual void trace_blocked(std::string_view label, SimTime start, int peer, std::int64_t bytes) = 0;
 
  protected:
   ~Mailbox() = default;

@@ -44,4 +44,10 @@ void SimProcess::occupy(SimTime duration, std::string_view label, bool as_comm) 
   (as_comm ? stats_.comm : stats_.compute) += duration;
 }
 
+void SimProcess::trace_blocked(std::string_view label, SimTime start, int peer, std::int64_t bytes) {
+  const machine::SimTime end = sim_.kernel.now();
+  if (!sim_.trace.enabled() || end <= start) return;
+  sim_.trace.record({TraceKind::wait, id_, peer, start, end, bytes, -1, label, thread_});
+}
+
 }  // namespace gcsim::parix::detail

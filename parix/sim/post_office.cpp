@@ -26,7 +26,7 @@ Request PostOffice::post(int source, int dest, const Envelope& envelope, std::sp
   sent.state()->peer = dest;
   const std::int64_t id = next_id_++;
   Ordered& order = ordered_[{source, dest}];
-  InTransit t{Letter{source, envelope, Bytes(data.begin(), data.end())}, sent};
+  InTransit t{Letter{source, envelope, Bytes(data.begin(), data.end())}, sent, parts_.kernel.now(), id};
   in_flight_.emplace(id, std::pair{order.sent++, std::move(t)});
   const auto bytes = static_cast<std::int64_t>(data.size());
   parts_.stats[source].messages_sent += 1;
@@ -57,6 +57,10 @@ void PostOffice::arrive(std::int64_t id, std::int64_t seq) {
 
 void PostOffice::deliver(InTransit&& t) {
   const auto dest = static_cast<std::size_t>(t.sent.state()->peer);
+  if (parts_.trace.enabled()) {
+    parts_.trace.record({machine::TraceKind::message, t.letter.source, static_cast<int>(dest), t.posted, parts_.kernel.now(),
+                         static_cast<std::int64_t>(t.letter.data.size()), t.id, "message"});
+  }
   boxes_[dest].push_back(std::move(t.letter));
   t.sent.state()->complete();
   if (Waiter* w = waiters_[dest]) w->wake();

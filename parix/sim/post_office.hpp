@@ -14,6 +14,7 @@
 #include "machine/connection_service.hpp"
 #include "machine/kernel.hpp"
 #include "machine/network_model.hpp"
+#include "machine/trace.hpp"
 #include "parix/mailbox.hpp"
 #include "parix/run_result.hpp"
 #include "parix/activity.hpp"
@@ -29,6 +30,7 @@ class PostOffice {
     machine::ConnectionService& connections;
     std::vector<ProcessorStats>& stats;
     const std::vector<int>& node_of;
+    machine::TraceWriter& trace;  // each delivered letter is a message record, as a link's message is
   };
   explicit PostOffice(const Parts& parts);
 
@@ -42,6 +44,8 @@ class PostOffice {
   struct InTransit {
     Letter letter;
     Request sent;
+    machine::SimTime posted = 0;
+    std::int64_t id = 0;
   };
   struct Ordered {  // one sender to one receiver
     std::int64_t sent = 0;

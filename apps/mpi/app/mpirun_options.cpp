@@ -79,7 +79,7 @@ MpirunOptions parse_mpirun_options(const std::vector<std::string>& words) {
     else if (w == "--tag-output") o.tag_output = true;
     else if (w == "--stack-size") o.stack_bytes = size_of(value(w));
     else if (w == "--compute") o.compute = value(w);
-    else if (w == "--coll") o.collectives = algorithms_of_spec(value(w));
+    else if (w == "--coll") o.collectives = algorithms_of_spec(o.collectives_spec = value(w));
     else if (w == "-h" || w == "--help") o.help = true;
     else if (!w.empty() && w[0] == '-') bad("unknown option '" + w + "'\n" + mpirun_usage());
     else o.program = w;

@@ -17,6 +17,7 @@ struct MpirunOptions {
   std::int64_t stack_bytes = std::int64_t{8} << 20;  // per rank, reserved and committed as used
   std::string compute = "annotated";                 // none | annotated
   AlgorithmChoice collectives;                       // --coll bcast=binomial,...; Auto elsewhere
+  std::string collectives_spec;                      // --coll's text, for the run's JSON
   std::string program;
   std::vector<std::string> args;
   bool help = false;

@@ -91,6 +91,7 @@ void OutputCapture::finish() {
     drain(*s, s->fd == 1 ? outs_ : errs_, 0);
     ::close(s->memory);
   }
+  if (silent_) return;
   print(out_, outs_, "stdout");
   print(err_, errs_, "stderr");
 }

@@ -20,6 +20,10 @@ class OutputCapture {
   void attribute(int rank);
   // Restores stdout and stderr and prints every rank's output; later calls do nothing.
   void finish();
+  // Keeps the output instead of printing it at finish() (a sweep's points): each rank's stderr
+  // stays readable for a failure's message.
+  void keep_silent() { silent_ = true; }
+  const std::string& stderr_of(int rank) const { return errs_[static_cast<std::size_t>(rank)]; }
 
  private:
   struct Stream {
@@ -34,6 +38,7 @@ class OutputCapture {
   std::vector<std::string> outs_, errs_;
   bool tag_;
   bool finished_ = false;
+  bool silent_ = false;
 };
 
 }  // namespace gcsim::mpi_layer::app

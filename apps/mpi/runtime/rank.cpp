@@ -98,7 +98,7 @@ void Rank::charge(std::int64_t bytes) {
   const machine::SimTime d = costs_.call_overhead + machine::from_seconds(costs_.seconds_per_byte * static_cast<double>(bytes));
   if (d <= 0) return;
   if (before_switch) before_switch();
-  mailbox_.occupy(d, "mpi_overhead", true);
+  mailbox_.occupy(d, call_span.label("mpi_overhead"), true);
   install();
 }
 
@@ -106,7 +106,7 @@ void Rank::charge_reduction(std::size_t bytes) {
   const machine::SimTime d = machine::from_seconds(costs_.reduce_seconds_per_byte * static_cast<double>(bytes));
   if (d <= 0) return;
   if (before_switch) before_switch();
-  mailbox_.occupy(d, "mpi_reduction", true);
+  mailbox_.occupy(d, call_span.label("mpi_reduction"), true);
   install();
 }
 
@@ -127,6 +127,9 @@ MPI_Request Rank::start_send(const Communicator& c, std::int64_t context, int de
   op.tag = tag;
   op.peer_world = c.world_rank_of(dest);
   const auto size = static_cast<std::int64_t>(payload.size());
+  call_span.describe(op.call);
+  call_span.involve(op.peer_world, false);
+  call_span.add_sent(size);
   charge(size);
   const bool rendezvous = mode == SendMode::synchronous || (mode == SendMode::standard && size > costs_.eager_limit_bytes);
   if (!rendezvous) {
@@ -151,6 +154,9 @@ MPI_Request Rank::start_recv(const Communicator& c, std::int64_t context, int so
   op.buffer = buffer;
   op.count = count;
   op.type = type;
+  call_span.describe(op.call);
+  call_span.involve(op.peer_world, true);
+  call_span.add_received(pack_size(count, type));
   const MPI_Request h = add_operation(std::move(op));
   posted_.push_back(h);
   progress();  // an arrived message matches at once
@@ -166,6 +172,8 @@ MPI_Request Rank::start_raw_recv(const Communicator& c, std::int64_t context, in
   op.peer_world = c.world_rank_of(source);
   op.raw = into;
   op.is_raw = true;
+  call_span.involve(op.peer_world, true);
+  call_span.add_received(static_cast<std::int64_t>(into.size()));
   const MPI_Request h = add_operation(std::move(op));
   posted_.push_back(h);
   progress();

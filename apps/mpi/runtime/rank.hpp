@@ -23,6 +23,7 @@
 #include "apps/mpi/datatype.hpp"
 #include "apps/mpi/error.hpp"
 #include "apps/mpi/registry.hpp"
+#include "apps/mpi/runtime/call_span.hpp"
 #include "apps/mpi/runtime/communicator.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/mailbox.hpp"
@@ -81,6 +82,7 @@ class Rank {
   AlgorithmChoice collective_algorithms;  // gcsim mpirun --coll; Auto: MPICH's selection
   bool initialized = false;
   bool finalized = false;
+  CallSpan call_span;  // the MPI call in progress, as the trace names it
 
   Communicator& comm(MPI_Comm handle);  // MPI_ERR_COMM if it names none
   MPI_Comm add_comm(Communicator c);
@@ -153,7 +155,13 @@ class Rank {
 template <class F>
 int runtime_call(F&& body) {
   try {
-    body(Rank::current());
+    Rank& rank = Rank::current();
+    struct Span {  // closed also when the call fails or the run is abandoned
+      CallSpan& span;
+      explicit Span(CallSpan& s) : span(s) { span.enter(); }
+      ~Span() { span.leave(); }
+    } span(rank.call_span);
+    body(rank);
     return MPI_SUCCESS;
   } catch (const Error& e) {
     return e.code();

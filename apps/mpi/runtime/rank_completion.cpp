@@ -10,8 +10,10 @@ bool Rank::test(MPI_Request handle) {
   progress();
   Operation& op = operation(handle);
   if (!op.done) return false;
+  call_span.involve(op.peer_world, !op.is_send);
   if (!op.is_send && !op.charged) {
     op.charged = true;
+    call_span.note_received(op.status.gcsim_bytes);
     charge(op.status.gcsim_bytes);
   }
   return true;
@@ -29,6 +31,7 @@ int Rank::finish(MPI_Request& handle, MPI_Status* status) {
 
 void Rank::wait_until(const std::function<bool()>& done, const std::string& call) {
   std::vector<parix::Request> wires;
+  call_span.describe(call);
   for (;;) {
     progress();
     if (done()) return;
@@ -37,7 +40,9 @@ void Rank::wait_until(const std::function<bool()>& done, const std::string& call
       if (op.is_send && !op.done && op.wire.valid()) wires.push_back(op.wire);
     }
     if (before_switch) before_switch();
+    const machine::SimTime blocked_from = processor_.now();
     mailbox_.await(wires, call.c_str(), -1);
+    mailbox_.trace_blocked(call_span.label("mpi_wait"), blocked_from, call_span.peer(), call_span.bytes());
     install();
   }
 }

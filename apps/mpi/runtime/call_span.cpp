@@ -1,0 +1,38 @@
+#include "apps/mpi/runtime/call_span.hpp"
+
+#include <cctype>
+
+namespace gcsim::mpi_layer {
+
+std::string_view call_name(std::string_view description) {
+  std::size_t n = 0;
+  while (n < description.size() && (std::isalnum(static_cast<unsigned char>(description[n])) || description[n] == '_')) ++n;
+  return description.substr(0, n);
+}
+
+void CallSpan::enter() {
+  if (depth_++ > 0) return;
+  name_.clear();
+  receives_ = sends_ = Peers{};
+  sent_ = received_ = 0;
+}
+
+void CallSpan::leave() {
+  if (depth_ > 0 && --depth_ == 0) name_.clear();  // between calls, records are not a call's
+}
+
+void CallSpan::describe(std::string_view description) {
+  if (depth_ > 0 && name_.empty()) name_ = call_name(description);
+}
+
+void CallSpan::Peers::add(int p) {
+  if (!any) first = p;
+  else if (p != first) several = true;
+  any = true;
+}
+
+void CallSpan::involve(int peer, bool receives) {
+  if (depth_ > 0 && peer >= 0) (receives ? receives_ : sends_).add(peer);  // MPI_PROC_NULL, MPI_ANY_SOURCE: none
+}
+
+}  // namespace gcsim::mpi_layer
