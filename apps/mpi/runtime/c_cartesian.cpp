@@ -1,7 +1,7 @@
 // The C entry points of Cartesian topologies that need a communicator (MPI 3.1 section 7.5):
 // MPI_Cart_create (no reordering: rank r of the old communicator is rank r of the grid; ranks
-// beyond the grid get MPI_COMM_NULL), the queries, and MPI_Cart_shift; the arithmetic is the
-// core's (topology.hpp).
+// beyond the grid get MPI_COMM_NULL), the queries, MPI_Cart_shift, MPI_Cart_sub, MPI_Cart_map
+// and MPI_Topo_test; the arithmetic is the core's (topology.hpp).
 #include <algorithm>
 #include <memory>
 #include <vector>
@@ -96,8 +96,39 @@ int MPI_Cart_shift(MPI_Comm comm, int direction, int disp, int* rank_source, int
   });
 }
 
+// A split of the grid by the coordinates dropped (the colour), ordered by those kept (the key), so
+// each sub-grid's ranks are row-major in it as the standard asks.
+int MPI_Cart_sub(MPI_Comm comm, const int remain_dims[], MPI_Comm* newcomm) {
+  return runtime_call([&](Rank& rank) {
+    cart_of(rank, comm);
+    MPI_Comm& out = out_arg(newcomm);
+    const std::shared_ptr<const CartTopology> grid = rank.comm(comm).cart;
+    if (grid->ndims() > 0 && !remain_dims) fail(MPI_ERR_ARG, "MPI_Cart_sub: null remain_dims");
+    std::vector<bool> remain;
+    for (int d = 0; d < grid->ndims(); ++d) remain.push_back(remain_dims[d] != 0);
+    auto sub = std::make_shared<const CartTopology>(grid->sub(remain));
+    const int me = rank.comm(comm).rank;
+    MPI_Comm part = MPI_COMM_NULL;
+    if (const int code = MPI_Comm_split(comm, grid->sub_color(me, remain), grid->sub_rank(me, remain), &part); code != MPI_SUCCESS) {
+      fail(code, "MPI_Cart_sub: its split failed");
+    }
+    rank.comm(part).cart = std::move(sub);
+    out = part;
+  });
+}
+
+int MPI_Cart_map(MPI_Comm comm, int ndims, const int dims[], const int periods[], int* newrank) {
+  return runtime_call([&](Rank& rank) {
+    const Communicator& c = rank.comm(comm);
+    out_arg(newrank) = grid_of(ndims, dims, periods, c.size()).map(c.rank);
+  });
+}
+
 int MPI_Topo_test(MPI_Comm comm, int* status) {
-  return runtime_call([&](Rank& rank) { out_arg(status) = rank.comm(comm).cart ? MPI_CART : MPI_UNDEFINED; });
+  return runtime_call([&](Rank& rank) {
+    const Communicator& c = rank.comm(comm);
+    out_arg(status) = c.cart ? MPI_CART : c.graph ? MPI_GRAPH : MPI_UNDEFINED;
+  });
 }
 
 }  // extern "C"

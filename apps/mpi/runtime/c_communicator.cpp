@@ -6,6 +6,7 @@
 
 #include "apps/mpi/c_call.hpp"
 #include "apps/mpi/group.hpp"
+#include "apps/mpi/runtime/attributes.hpp"
 #include "apps/mpi/runtime/rank_channel.hpp"
 
 using namespace gcsim::mpi_layer;
@@ -53,7 +54,18 @@ extern "C" {
 int MPI_Comm_dup(MPI_Comm comm, MPI_Comm* newcomm) {
   return runtime_call([&](Rank& rank) {
     Communicator& parent = rank.comm(comm);
-    out_arg(newcomm) = child(rank, parent, *parent.members);
+    MPI_Comm& out = out_arg(newcomm);
+    const MPI_Comm dup = child(rank, parent, *parent.members);
+    rank.comm(dup).cart = parent.cart;  // a duplicate keeps the topology, as the standard says
+    rank.comm(dup).graph = parent.graph;
+    try {
+      copy_attributes(rank, comm, dup);  // a callback's error fails the dup, its copies deleted
+    } catch (const Error&) {
+      delete_attributes(rank, dup);
+      rank.free_comm(dup);
+      throw;
+    }
+    out = dup;
   });
 }
 
@@ -90,6 +102,9 @@ int MPI_Comm_create(MPI_Comm comm, MPI_Group group, MPI_Comm* newcomm) {
 int MPI_Comm_free(MPI_Comm* comm) {
   return runtime_call([&](Rank& rank) {
     MPI_Comm& c = out_arg(comm);
+    rank.comm(c);
+    if (c == MPI_COMM_WORLD || c == MPI_COMM_SELF) fail(MPI_ERR_COMM, "cannot free a predefined communicator");
+    delete_attributes(rank, c);  // the delete callbacks first, as the standard says
     rank.free_comm(c);
     c = MPI_COMM_NULL;
   });

@@ -18,9 +18,13 @@ std::string calls_of(Rank& rank, const char* call, int count, const MPI_Request*
   return text;
 }
 
-bool all_null(int count, const MPI_Request* rs) {
+// Whether Waitany, Testany, Waitsome and Testsome look at a request: not null, and not an
+// inactive persistent one (which they skip, as the standard says).
+bool counted(Rank& rank, MPI_Request r) { return r != MPI_REQUEST_NULL && !rank.inactive(r); }
+
+bool all_null(Rank& rank, int count, const MPI_Request* rs) {
   for (int i = 0; i < count; ++i) {
-    if (rs[i] != MPI_REQUEST_NULL) return false;
+    if (counted(rank, rs[i])) return false;
   }
   return true;
 }
@@ -37,7 +41,7 @@ int finish_done(Rank& rank, int count, MPI_Request* rs, MPI_Status* statuses, in
   int error = MPI_SUCCESS;
   int n = 0;
   for (int i = 0; i < count; ++i) {
-    if (rs[i] == MPI_REQUEST_NULL || !rank.test(rs[i])) continue;
+    if (rs[i] == MPI_REQUEST_NULL || (indices && rank.inactive(rs[i])) || !rank.test(rs[i])) continue;
     MPI_Status* st = statuses ? &statuses[indices ? n : i] : nullptr;
     const int e = rank.finish(rs[i], st);
     if (e != MPI_SUCCESS) error = MPI_ERR_IN_STATUS;
@@ -118,11 +122,11 @@ int MPI_Waitany(int count, MPI_Request array_of_requests[], int* index, MPI_Stat
   const int code = runtime_call([&](Rank& rank) {
     int& which = out_arg(index);
     which = MPI_UNDEFINED;
-    if (all_null(count, array_of_requests)) return empty_status(status);
+    if (all_null(rank, count, array_of_requests)) return empty_status(status);
     const std::string call = calls_of(rank, "MPI_Waitany", count, array_of_requests);
     rank.wait_until([&] {
       for (int i = 0; i < count; ++i) {
-        if (array_of_requests[i] != MPI_REQUEST_NULL && rank.test(array_of_requests[i])) return (which = i), true;
+        if (counted(rank, array_of_requests[i]) && rank.test(array_of_requests[i])) return (which = i), true;
       }
       return false;
     }, call);
@@ -137,10 +141,10 @@ int MPI_Testany(int count, MPI_Request array_of_requests[], int* index, int* fla
     int& which = out_arg(index);
     int& found = out_arg(flag);
     which = MPI_UNDEFINED;
-    found = all_null(count, array_of_requests) ? 1 : 0;
+    found = all_null(rank, count, array_of_requests) ? 1 : 0;
     if (found) return empty_status(status);
     for (int i = 0; i < count && !found; ++i) {
-      if (array_of_requests[i] != MPI_REQUEST_NULL && rank.test(array_of_requests[i])) which = i, found = 1;
+      if (counted(rank, array_of_requests[i]) && rank.test(array_of_requests[i])) which = i, found = 1;
     }
     if (found) error = rank.finish(array_of_requests[which], status);
     else rank.charge(0);
@@ -153,11 +157,11 @@ int MPI_Waitsome(int incount, MPI_Request array_of_requests[], int* outcount, in
   int error = MPI_SUCCESS;
   const int code = runtime_call([&](Rank& rank) {
     int& n = out_arg(outcount);
-    if (all_null(incount, array_of_requests)) return (void)(n = MPI_UNDEFINED);
+    if (all_null(rank, incount, array_of_requests)) return (void)(n = MPI_UNDEFINED);
     const std::string call = calls_of(rank, "MPI_Waitsome", incount, array_of_requests);
     rank.wait_until([&] {
       for (int i = 0; i < incount; ++i) {
-        if (array_of_requests[i] != MPI_REQUEST_NULL && rank.test(array_of_requests[i])) return true;
+        if (counted(rank, array_of_requests[i]) && rank.test(array_of_requests[i])) return true;
       }
       return false;
     }, call);
@@ -171,7 +175,7 @@ int MPI_Testsome(int incount, MPI_Request array_of_requests[], int* outcount, in
   int error = MPI_SUCCESS;
   const int code = runtime_call([&](Rank& rank) {
     int& n = out_arg(outcount);
-    if (all_null(incount, array_of_requests)) return (void)(n = MPI_UNDEFINED);
+    if (all_null(rank, incount, array_of_requests)) return (void)(n = MPI_UNDEFINED);
     error = finish_done(rank, incount, array_of_requests, array_of_statuses, &n, array_of_indices);
     if (n == 0) rank.charge(0);
   });

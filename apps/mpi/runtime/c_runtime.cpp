@@ -1,19 +1,15 @@
 // The C entry points of the environment (MPI 3.1 chapter 8): start, end, abort, clocks, names,
 // and the communicators' sizes and ranks.
-#include <climits>
 #include <cstdio>
 #include <cstring>
 #include <string>
 
 #include "apps/mpi/c_call.hpp"
 #include "apps/mpi/include/gcsim/mpi_ext.h"
+#include "apps/mpi/runtime/attributes.hpp"
 #include "apps/mpi/runtime/rank.hpp"
 
 using namespace gcsim::mpi_layer;
-
-namespace {
-const int tag_upper_bound = INT_MAX;
-}
 
 extern "C" {
 
@@ -44,6 +40,7 @@ int MPI_Is_thread_main(int* flag) {
 int MPI_Finalize(void) {
   return runtime_call([](Rank& rank) {
     if (!rank.initialized || rank.finalized) fail(MPI_ERR_OTHER, "MPI_Finalize without MPI_Init, or twice");
+    delete_attributes(rank, MPI_COMM_SELF);  // first, as the standard says (its callbacks may still communicate)
     // As MPI implementations do: no rank leaves while others may still talk to it.
     if (const int code = MPI_Barrier(MPI_COMM_WORLD); code != MPI_SUCCESS) fail(code, "MPI_Finalize: its barrier failed");
     rank.finalize_checks();
@@ -97,22 +94,6 @@ int MPI_Comm_test_inter(MPI_Comm comm, int* flag) {
     rank.comm(comm);
     out_arg(flag) = 0;  // no intercommunicators
   });
-}
-
-int MPI_Comm_get_attr(MPI_Comm comm, int comm_keyval, void* attribute_val, int* flag) {
-  return runtime_call([&](Rank& rank) {
-    rank.comm(comm);
-    int& found = out_arg(flag);
-    found = 0;
-    if (comm_keyval != MPI_TAG_UB) return;  // the one predefined attribute kept
-    if (!attribute_val) fail(MPI_ERR_ARG, "null attribute_val");
-    *static_cast<const int**>(attribute_val) = &tag_upper_bound;
-    found = 1;
-  });
-}
-
-int MPI_Attr_get(MPI_Comm comm, int keyval, void* attribute_val, int* flag) {
-  return MPI_Comm_get_attr(comm, keyval, attribute_val, flag);
 }
 
 int gcsim_mpi_compute(double seconds) {

@@ -5,6 +5,7 @@
 // contexts never need agreeing on. Point-to-point uses the even context, collectives the odd one
 // next to it, so no user receive, wildcards included, ever matches a collective's message.
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -21,6 +22,8 @@ struct Communicator {
   std::uint32_t collectives = 0;  // collectives started on it: the next one's sequence number
   // Kept for MPI_Comm_get_errhandler; errors are returned whichever it is (apps/mpi/README.md).
   int errhandler = 2;  // MPI_ERRORS_RETURN
+  std::shared_ptr<const GraphTopology> graph = nullptr;  // MPI_Graph_create's graph, if it made this one
+  std::map<int, void*> attributes{};           // keyval -> value (MPI_Comm_set_attr)
 
   int size() const { return static_cast<int>(members->size()); }
   int world_rank_of(int rank_in_comm) const { return (*members)[static_cast<std::size_t>(rank_in_comm)]; }

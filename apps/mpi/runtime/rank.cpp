@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "apps/mpi/runtime/rank_letters.hpp"
 #include "apps/mpi/type_transfer.hpp"
 #include "parix/sim/fiber_stack.hpp"
 
@@ -10,15 +11,6 @@ namespace gcsim::mpi_layer {
 namespace {
 
 thread_local Rank* running = nullptr;
-
-enum Kind : std::int64_t { kEager = 1, kRequestToSend = 2, kClearToSend = 3, kData = 4 };
-
-// words: [0] kind | size << 8, [1] context, [2] tag or the receiver's operation, [3] the sender's.
-parix::Envelope envelope(Kind kind, std::int64_t size, std::int64_t context, std::int64_t third, std::int64_t fourth) {
-  parix::Envelope e;
-  e.words = {kind | (size << 8), context, third, fourth};
-  return e;
-}
 
 parix::Mailbox& mailbox_or_fail(parix::Processor& p) {
   parix::Mailbox* box = parix::mailbox_of(p);
@@ -204,6 +196,7 @@ void Rank::progress() {
   for (auto& [h, op] : operations_) {
     if (op.is_send && !op.done && op.wire.valid() && op.wire.test()) op.done = true;
   }
+  drop_freed();
 }
 
 void Rank::on_letter(parix::Letter& l) {
@@ -219,6 +212,10 @@ void Rank::on_letter(parix::Letter& l) {
   } else if (kind == kData) {
     Operation& r = operations_.at(w[2]);
     deliver(r, l.data);
+  } else if (kind == kCancelAsk) {
+    on_cancel_asked(l);
+  } else if (kind == kCancelAnswer) {
+    on_cancel_answered(l);
   }
 }
 

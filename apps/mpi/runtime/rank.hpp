@@ -25,6 +25,7 @@
 #include "apps/mpi/registry.hpp"
 #include "apps/mpi/runtime/call_span.hpp"
 #include "apps/mpi/runtime/communicator.hpp"
+#include "apps/mpi/runtime/keyvals.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/mailbox.hpp"
 #include "parix/processor.hpp"
@@ -38,6 +39,8 @@ struct AbortRequested {
 };
 
 enum class SendMode { standard, synchronous, buffered, ready };
+
+class Rank;
 
 struct Operation {  // behind one MPI_Request
   bool is_send = false;
@@ -61,6 +64,13 @@ struct Operation {  // behind one MPI_Request
   // A non-blocking collective not run yet: runs (blocking) at the first test or wait of it or of a
   // later one on its communicator (rank_deferred_collectives.cpp); returns its error code.
   std::function<int()> collective;
+  // MPI_Request_free of an active one: it runs on unseen and is dropped once done (rank_cancel.cpp).
+  bool freed = false;
+  bool cancel_asked = false;  // MPI_Cancel of a rendezvous send: the receiver's answer awaited
+  // A persistent request (MPI_Send_init ...): each MPI_Start calls `restart`, whose operation is
+  // `started` until finished; inactive (MPI_REQUEST_NULL) it completes at once, status empty.
+  std::function<MPI_Request(Rank&)> restart;
+  MPI_Request started = MPI_REQUEST_NULL;
 };
 
 class Rank {
@@ -100,6 +110,12 @@ class Rank {
   // A request complete at once, as a communication with MPI_PROC_NULL is.
   MPI_Request start_null(std::string call);
   Operation& operation(MPI_Request handle);  // MPI_ERR_REQUEST if it names none
+  // Persistent requests, MPI_Request_free and MPI_Cancel (rank_persistent.cpp, rank_cancel.cpp).
+  MPI_Request add_persistent(std::string call, std::function<MPI_Request(Rank&)> restart);
+  void start_persistent(MPI_Request handle);  // MPI_ERR_REQUEST if not persistent or still active
+  bool inactive(MPI_Request handle);          // a persistent request not started
+  void free_request(MPI_Request handle);
+  void cancel(MPI_Request handle);
   // Finishes handle (done): its status, its error; the handle is freed.
   int finish(MPI_Request& handle, MPI_Status* status);
   // Blocks until done(); describes the wait as call.
@@ -117,6 +133,7 @@ class Rank {
 
   void* attached_buffer = nullptr;
   int attached_size = 0;
+  Keyvals keyvals;  // attribute keys (c_attributes.cpp)
 
  private:
   struct Arrived {  // an eager message or a request-to-send, not matched yet
@@ -129,6 +146,10 @@ class Rank {
     parix::Bytes data;
   };
   void run_collectives_until(MPI_Request handle);
+  void on_cancel_asked(const parix::Letter& l);
+  void on_cancel_answered(const parix::Letter& l);
+  void drop_freed();
+  int finish_persistent(Operation& p, MPI_Status* status);
   void on_letter(parix::Letter& l);
   void on_message(Arrived&& m);
   void match(Operation& r, MPI_Request handle, Arrived&& m);
@@ -166,6 +187,13 @@ int runtime_call(F&& body) {
   } catch (const Error& e) {
     return e.code();
   }
+}
+
+// The simulated node a world rank runs on (MPI_Comm_split_type's MPI_COMM_TYPE_SHARED): one rank
+// per node today, so a rank's node is its own processor number.
+inline int node_of_world_rank(const Rank& rank, int world_rank) {
+  (void)rank;
+  return world_rank;
 }
 
 }  // namespace gcsim::mpi_layer

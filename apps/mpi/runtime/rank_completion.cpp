@@ -6,6 +6,7 @@
 namespace gcsim::mpi_layer {
 
 bool Rank::test(MPI_Request handle) {
+  if (const Operation& p = operation(handle); p.restart) return p.started == MPI_REQUEST_NULL || test(p.started);
   if (operation(handle).collective) run_collectives_until(handle);
   progress();
   Operation& op = operation(handle);
@@ -22,6 +23,7 @@ bool Rank::test(MPI_Request handle) {
 int Rank::finish(MPI_Request& handle, MPI_Status* status) {
   const auto it = operations_.find(handle);
   if (it == operations_.end()) fail(MPI_ERR_REQUEST, "invalid request");
+  if (it->second.restart) return finish_persistent(it->second, status);
   const int error = it->second.status.MPI_ERROR;
   if (status) *status = it->second.status;
   operations_.erase(it);
