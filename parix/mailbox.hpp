@@ -42,6 +42,9 @@ class Mailbox {
   virtual void await(std::span<const Request> requests, const char* call, int peer) = 0;
   // Holds one of the node's CPUs for `duration`, counted as communication (as_comm) or compute.
   virtual void occupy(SimTime duration, std::string_view label, bool as_comm) = 0;
+  // The node processor `processor` runs on: several processors share one when a run packs them
+  // (SimulationOptions::processors_per_node), and their letters then need no network.
+  virtual int node_of(int processor) const = 0;
 
  protected:
   ~Mailbox() = default;

@@ -44,4 +44,11 @@ void SimProcess::occupy(SimTime duration, std::string_view label, bool as_comm) 
   (as_comm ? stats_.comm : stats_.compute) += duration;
 }
 
+int SimProcess::node_of(int processor) const {
+  if (processor < 0 || processor >= count()) {
+    throw ParixError(fmt::format("processor {}: node of processor {}, which does not exist (0..{})", id_, processor, count() - 1));
+  }
+  return sim_.node_of[static_cast<std::size_t>(processor)];
+}
+
 }  // namespace gcsim::parix::detail

@@ -21,8 +21,11 @@ namespace {
 // What one rank does: its Rank installed, the program's main on its own copy, its exit status kept.
 parix::Program rank_program(const MpirunOptions& o, const ProgramCopies& copies, OutputCapture& capture,
                             const machine::MachineConfig::Mpi& costs, std::vector<int>& statuses) {
-  return [&o, &copies, &capture, costs, &statuses](parix::Processor& p) {
-    Rank rank(p, costs);
+  std::vector<int> members(static_cast<std::size_t>(o.np));
+  for (int r = 0; r < o.np; ++r) members[static_cast<std::size_t>(r)] = r;
+  auto world = std::make_shared<const std::vector<int>>(std::move(members));  // one for all ranks
+  return [&o, &copies, &capture, costs, &statuses, world](parix::Processor& p) {
+    Rank rank(p, costs, world);
     rank.counts_compute = o.compute == "annotated";
     rank.collective_algorithms = o.collectives;
     const int id = p.id();
@@ -50,6 +53,9 @@ parix::Program rank_program(const MpirunOptions& o, const ProgramCopies& copies,
 void run_mpirun(const MpirunOptions& o) {
   parix::RunOptions run = pipeline::run_options(o.machine, o.np);
   run.simulation.config.fiber_stack_bytes = o.stack_bytes;
+  if (o.ranks_per_node > 1) {  // rank r on node r / K
+    for (int r = 0; r < o.np; ++r) run.simulation.placement.push_back(r / o.ranks_per_node);
+  }
   const machine::MachineConfig::Mpi costs = run.simulation.config.mpi;
   pipeline::check_machine_outputs(o.machine);
   const ProgramCopies copies(o.program, o.np);
@@ -65,7 +71,9 @@ void run_mpirun(const MpirunOptions& o) {
       throw pipeline::ExitStatus{a.code == 0 ? 1 : a.code};
     }
   }
-  pipeline::report_run(result, o.machine, {{"mpi_ranks", o.np}, {"program", o.program}});
+  nlohmann::json extra{{"mpi_ranks", o.np}, {"program", o.program}};
+  if (o.ranks_per_node > 1) extra["ranks_per_node"] = o.ranks_per_node;  // one per node: the JSON as before
+  pipeline::report_run(result, o.machine, extra);
   for (int s : statuses) {
     if (s != 0) throw pipeline::ExitStatus{s};
   }

@@ -26,14 +26,28 @@ parix::Mailbox& mailbox_or_fail(parix::Processor& p) {
   return *box;
 }
 
+// The communicator rank of world rank `world` among members: at its own index in MPI_COMM_WORLD
+// and its duplicates (found at once), else searched (members are distinct).
+int rank_in(const std::vector<int>& members, int world) {
+  const auto at = static_cast<std::size_t>(world);
+  if (at < members.size() && members[at] == world) return world;
+  return static_cast<int>(std::find(members.begin(), members.end(), world) - members.begin());
+}
+
+std::shared_ptr<const std::vector<int>> world_members(int size) {
+  std::vector<int> world(static_cast<std::size_t>(size));
+  for (std::size_t i = 0; i < world.size(); ++i) world[i] = static_cast<int>(i);
+  return std::make_shared<const std::vector<int>>(std::move(world));
+}
+
 }  // namespace
 
-Rank::Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs)
+Rank::Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs, std::shared_ptr<const std::vector<int>> world)
     : processor_(processor), mailbox_(mailbox_or_fail(processor)), name_("rank " + std::to_string(processor.id())), costs_(costs) {
   registry_.world_rank = processor.id();
-  std::vector<int> world(static_cast<std::size_t>(processor.count()));
-  for (std::size_t i = 0; i < world.size(); ++i) world[i] = static_cast<int>(i);
-  comms_[MPI_COMM_WORLD] = Communicator{std::make_shared<const std::vector<int>>(world), processor.id(), 2, 0, nullptr};
+  if (!world) world = world_members(processor.count());
+  if (static_cast<int>(world->size()) != processor.count()) fail(MPI_ERR_INTERN, "the world's members are not the run's ranks");
+  comms_[MPI_COMM_WORLD] = Communicator{std::move(world), processor.id(), 2, 0, nullptr};
   comms_[MPI_COMM_SELF] =
       Communicator{std::make_shared<const std::vector<int>>(std::vector<int>{processor.id()}), 0, 4, 0, nullptr};
 }
@@ -227,7 +241,7 @@ void Rank::on_message(Arrived&& m) {
 
 void Rank::match(Operation& r, MPI_Request handle, Arrived&& m) {
   r.status.MPI_TAG = m.tag;
-  r.status.MPI_SOURCE = static_cast<int>(std::find(r.members->begin(), r.members->end(), m.source) - r.members->begin());
+  r.status.MPI_SOURCE = rank_in(*r.members, m.source);
   r.status.gcsim_bytes = m.size;
   if (!m.rendezvous) {
     deliver(r, m.data);

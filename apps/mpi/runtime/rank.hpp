@@ -64,7 +64,10 @@ struct Operation {  // behind one MPI_Request
 
 class Rank {
  public:
-  Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs);
+  // world: MPI_COMM_WORLD's members 0..N-1, one vector shared by every rank of a run (4096 ranks
+  // would otherwise hold 64 MiB of copies); made here when not given.
+  Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs,
+       std::shared_ptr<const std::vector<int>> world = nullptr);
 
   // The rank whose fiber runs now; MPI_ERR_OTHER outside `gcsim mpirun`.
   static Rank& current();
@@ -75,6 +78,9 @@ class Rank {
 
   int world_rank() const { return processor_.id(); }
   int world_size() const { return processor_.count(); }
+  // The simulated node a rank runs on (gcsim mpirun --ranks-per-node K: world rank r on r / K).
+  int node() const { return mailbox_.node_of(world_rank()); }
+  int node_of(int world_rank) const { return mailbox_.node_of(world_rank); }
   double now_seconds() const { return processor_.now_seconds(); }
   Registry& registry() { return registry_; }
   bool counts_compute = true;  // gcsim_mpi_compute charges time (--compute annotated), or not (none)
