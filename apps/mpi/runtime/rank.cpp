@@ -54,6 +54,7 @@ Rank::Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs
 
 Rank& Rank::current() {
   if (!running) fail(MPI_ERR_OTHER, "no MPI rank runs here: start the program with gcsim mpirun");
+  running->program_ran_ = true;  // every MPI call of the program comes here first
   return *running;
 }
 
@@ -108,10 +109,16 @@ Operation& Rank::operation(MPI_Request handle) {
   return it->second;
 }
 
+void Rank::leave_cpu() {
+  if (!program_ran_ || !before_switch) return;
+  program_ran_ = false;
+  before_switch();
+}
+
 void Rank::charge(std::int64_t bytes) {
   const machine::SimTime d = costs_.call_overhead + machine::from_seconds(costs_.seconds_per_byte * static_cast<double>(bytes));
   if (d <= 0) return;
-  if (before_switch) before_switch();
+  leave_cpu();
   mailbox_.occupy(d, "mpi_overhead", true);
   install();
 }
@@ -119,7 +126,7 @@ void Rank::charge(std::int64_t bytes) {
 void Rank::charge_reduction(std::size_t bytes) {
   const machine::SimTime d = machine::from_seconds(costs_.reduce_seconds_per_byte * static_cast<double>(bytes));
   if (d <= 0) return;
-  if (before_switch) before_switch();
+  leave_cpu();
   mailbox_.occupy(d, "mpi_reduction", true);
   install();
 }
@@ -127,7 +134,7 @@ void Rank::charge_reduction(std::size_t bytes) {
 void Rank::compute(double seconds) {
   if (seconds < 0) fail(MPI_ERR_ARG, "negative compute time");
   if (!counts_compute) return;
-  if (before_switch) before_switch();
+  leave_cpu();
   mailbox_.occupy(machine::from_seconds(seconds), "gcsim_mpi_compute", false);
   install();
 }

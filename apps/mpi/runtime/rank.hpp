@@ -73,7 +73,8 @@ class Rank {
   static Rank& current();
   // Makes this the current rank (and its registry the C calls' one); done as its fiber resumes.
   void install();
-  // Called before the rank blocks or yields (the output capture attributes what it printed).
+  // Called before the rank blocks or yields (the output capture attributes what it printed), once
+  // per MPI call: only the program prints, and it runs only between MPI calls.
   std::function<void()> before_switch;
 
   int world_rank() const { return processor_.id(); }
@@ -133,6 +134,7 @@ class Rank {
     parix::Bytes data;
   };
   void run_collectives_until(MPI_Request handle);
+  void leave_cpu();  // before a switch: the program's output since the last MPI call is attributed
   void on_letter(parix::Letter& l);
   void on_message(Arrived&& m);
   void match(Operation& r, MPI_Request handle, Arrived&& m);
@@ -152,6 +154,9 @@ class Rank {
   std::vector<MPI_Request> posted_;  // receives waiting for a message, in posting order
   std::vector<Arrived> unexpected_;  // messages waiting for a receive, in arrival order
   std::vector<parix::Letter> letters_;
+  // Set as the program enters an MPI call (current()), cleared once its output is attributed: a
+  // call's later switches have nothing new to attribute (the program has not run since).
+  bool program_ran_ = true;
 };
 
 // A C entry point that may block: what the core throws (Error) is returned; anything else (the
