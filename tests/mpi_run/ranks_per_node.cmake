@@ -47,3 +47,11 @@ foreach(run ring_16 jacobi_4)
     set_tests_properties(mpi_run_one_per_node_identical_${run}_${option} PROPERTIES TIMEOUT 120 LABELS mpi_run)
   endforeach()
 endforeach()
+
+# Bad input: K outside 1..N is refused, naming the option, exit 2.
+gcsim_mpi_run_test(mpi_run_packed_refuses_zero_per_node ${examples}/ring.c 4 OPTIONS --ranks-per-node@@0 EXIT 2
+                   EXPECT "--ranks-per-node expects 1..N \\(the ranks, -np\\)")
+gcsim_mpi_run_test(mpi_run_packed_refuses_more_per_node_than_ranks ${examples}/ring.c 4 OPTIONS --ranks-per-node@@5 EXIT 2
+                   EXPECT "--ranks-per-node expects 1..N")
+gcsim_mpi_run_test(mpi_run_packed_refuses_a_word ${examples}/ring.c 4 OPTIONS --ranks-per-node@@two EXIT 2
+                   EXPECT "--ranks-per-node expects a whole number, got 'two'")

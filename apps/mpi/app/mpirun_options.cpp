@@ -41,7 +41,9 @@ AlgorithmChoice algorithms_of_spec(const std::string& spec) {
 
 }  // namespace
 
-std::string mpirun_summary() { return "Run an MPI program built with gcsim-mpicc on N simulated nodes (one rank per node)"; }
+std::string mpirun_summary() {
+  return "Run an MPI program built with gcsim-mpicc on N simulated nodes (one rank per node, or K with --ranks-per-node)";
+}
 
 std::string mpirun_usage() {
   return "usage: gcsim mpirun -np N [options] PROGRAM [ARGS...]\n"
