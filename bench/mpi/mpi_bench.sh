@@ -31,16 +31,20 @@ peak_kib() {
 elapsed_s() { sed -n 's/^.*Elapsed (wall clock) time (h:mm:ss or m:ss): //p' "$work/time.txt" |
   awk -F: '{ s = 0; for (i = 1; i <= NF; ++i) s = s * 60 + $i; print s }'; }
 
+cpu_s() { awk -F': ' '/User time|System time/ { s += $2 } END { print s }' "$work/time.txt"; }
+
 ring_kib=$(peak_kib "$gcsim" mpirun -np "$ranks" --model analytic --compute none --json "$work/ring.json" "$work/ring" "$reps")
-python3 - "$work/ring.json" "$ranks" "$reps" "$(elapsed_s)" "$ring_kib" <<'PY'
+python3 - "$work/ring.json" "$ranks" "$reps" "$(elapsed_s)" "$ring_kib" "$(cpu_s)" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))
-ranks, reps, elapsed, kib = int(sys.argv[2]), int(sys.argv[3]), float(sys.argv[4]), int(sys.argv[5])
+ranks, reps, elapsed, kib, cpu = int(sys.argv[2]), int(sys.argv[3]), float(sys.argv[4]), int(sys.argv[5]), float(sys.argv[6])
 messages = ranks * (ranks - 1) * reps
 wall = j["wall"]["total_s"]
 print(f"ring     {ranks} ranks x {reps} rings: {messages} MPI messages ({j['messages']} letters), simulated {j['simulated']['total_s']:.6f} s")
 print(f"ring     simulation wall {wall:.3f} s: {messages / wall / 1e6:.2f} M messages/s "
       f"(whole process {elapsed:.2f} s: {messages / elapsed / 1e6:.2f} M/s), peak RSS {kib / 1024:.1f} MiB")
+print(f"ring     whole process CPU {cpu:.2f} s (user + system): {messages / cpu / 1e6:.2f} M messages per CPU second "
+      f"(what one free core gives on a loaded host)")
 PY
 
 config=$here/configs/whatif-4096-nodes.toml
