@@ -86,10 +86,14 @@ TraceWriter::TraceWriter(const TraceOptions& options, int processors, const Inte
     json_buffer_ += fmt::format(",\n{{\"ph\":\"M\",\"pid\":0,\"name\":\"process_labels\",\"args\":{{\"labels\":\"{}\"}}}}", machine);
   }
   for (int p = 0; p < processors; ++p) {
-    const NodeCoordinates at = net_.coordinates(p);
-    json_buffer_ += fmt::format(
-        ",\n{{\"ph\":\"M\",\"pid\":0,\"tid\":{},\"name\":\"thread_name\",\"args\":{{\"name\":\"P{} node ({},{})\"}}}}", p, p,
-        at.x, at.y);
+    if (processors > net_.nodes()) {  // several per node (a packed placement): processors only
+      json_buffer_ += fmt::format(",\n{{\"ph\":\"M\",\"pid\":0,\"tid\":{},\"name\":\"thread_name\",\"args\":{{\"name\":\"P{}\"}}}}", p, p);
+    } else {
+      const NodeCoordinates at = net_.coordinates(p);
+      json_buffer_ += fmt::format(
+          ",\n{{\"ph\":\"M\",\"pid\":0,\"tid\":{},\"name\":\"thread_name\",\"args\":{{\"name\":\"P{} node ({},{})\"}}}}", p,
+          p, at.x, at.y);
+    }
     json_buffer_ += fmt::format(
         ",\n{{\"ph\":\"M\",\"pid\":0,\"tid\":{},\"name\":\"thread_sort_index\",\"args\":{{\"sort_index\":{}}}}}", p,
         sort_index(p, 0));

@@ -46,6 +46,9 @@ class Mailbox {
   // layer above names: `label` its call, `peer` the processor waited for (-1: none in particular),
   // `bytes` what the call moves. Only for time spent in await(), so no two intervals overlap.
   virtual void trace_blocked(std::string_view label, SimTime start, int peer, std::int64_t bytes) = 0;
+  // The node processor `processor` runs on: several processors share one when a run packs them
+  // (SimulationOptions::processors_per_node), and their letters then need no network.
+  virtual int node_of(int processor) const = 0;
 
  protected:
   ~Mailbox() = default;

@@ -50,4 +50,11 @@ void SimProcess::trace_blocked(std::string_view label, SimTime start, int peer, 
   sim_.trace.record({TraceKind::wait, id_, peer, start, end, bytes, -1, label, thread_});
 }
 
+int SimProcess::node_of(int processor) const {
+  if (processor < 0 || processor >= count()) {
+    throw ParixError(fmt::format("processor {}: node of processor {}, which does not exist (0..{})", id_, processor, count() - 1));
+  }
+  return sim_.node_of[static_cast<std::size_t>(processor)];
+}
+
 }  // namespace gcsim::parix::detail

@@ -12,9 +12,10 @@ machine::SimTime PostOffice::connection_up(int a, int b) {
   const auto it = up_.find(key);
   if (it != up_.end()) return it->second;
   const machine::SimTime now = parts_.kernel.now();
-  const machine::SimTime up = a == b ? now : parts_.connections.set_up(parts_.node_of[a], parts_.node_of[b], now);
+  const bool one_node = parts_.node_of[a] == parts_.node_of[b];  // itself, or a processor sharing its node
+  const machine::SimTime up = one_node ? now : parts_.connections.set_up(parts_.node_of[a], parts_.node_of[b], now);
   up_.emplace(key, up);
-  if (a != b) {
+  if (!one_node) {
     parts_.stats[a].connections += 1;
     parts_.stats[b].connections += 1;
   }
@@ -36,6 +37,9 @@ Request PostOffice::post(int source, int dest, const Envelope& envelope, std::sp
   const machine::SimTime up = connection_up(source, dest);
   if (source == dest) {
     parts_.kernel.at(parts_.kernel.now(), [this, id] { arrive(id, in_flight_.at(id).first); });
+  } else if (from == to) {  // another processor of the node: no network, the models' zero-hop time
+    parts_.kernel.at(parts_.kernel.now() + parts_.network.uncontended_time(0, bytes),
+                     [this, id] { arrive(id, in_flight_.at(id).first); });
   } else if (up > parts_.kernel.now()) {
     parts_.kernel.at(up, [this, id, from, to, bytes] { leave(id, from, to, bytes); });
   } else {

@@ -4,6 +4,9 @@
 // connection is up. A letter leaves when the pair's connection is up (the first letter of a pair
 // asks the connection service, as connect() does), crosses the network model like any message,
 // and is put in the receiver's mailbox in its pair's sending order; the receiver's await wakes.
+// Between two processors of one node (SimulationOptions::processors_per_node) a letter needs no
+// connection and no network: it arrives after the network model's zero-hop time, its set-up
+// (NetworkModel::uncontended_time(0, n) = [network] message_setup).
 #include <cstdint>
 #include <map>
 #include <span>

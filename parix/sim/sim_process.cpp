@@ -16,7 +16,7 @@ SimProcess::SimProcess(Simulation& sim, int id, int thread)
     : sim_(sim), id_(id), thread_(thread), stats_(sim.stats.at(id)), node_(sim.node_of.at(id)) {}
 
 int SimProcess::id() const { return id_; }
-int SimProcess::count() const { return sim_.config.nodes; }
+int SimProcess::count() const { return sim_.processors; }
 SimTime SimProcess::now() const { return sim_.kernel.now(); }
 
 void SimProcess::block(const char* call, int peer) {

@@ -57,6 +57,7 @@ class SimProcess final : public Processor, public Mailbox, public Waiter {
   void await(std::span<const Request> requests, const char* call, int peer) override;
   void occupy(SimTime duration, std::string_view label, bool as_comm) override;
   void trace_blocked(std::string_view label, SimTime start, int peer, std::int64_t bytes) override;
+  int node_of(int processor) const override;
 
   // Suspends this fiber until wake(); `call` and `peer` describe the wait for deadlock reports.
   void block(const char* call, int peer);

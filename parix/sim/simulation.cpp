@@ -20,7 +20,7 @@ std::deque<machine::Node> Simulation::make_nodes(machine::Kernel& kernel, const 
 
 RunResult Simulation::run(const std::function<void(Processor&)>& program) {
   const auto wall_start = std::chrono::steady_clock::now();
-  for (int i = 0; i < config.nodes; ++i) processes.add(std::make_unique<SimProcess>(*this, i, 0));
+  for (int i = 0; i < processors; ++i) processes.add(std::make_unique<SimProcess>(*this, i, 0));
   const ProcessLifetime::End end = processes.run(program);
   trace.close();
   if (processes.failure()) std::rethrow_exception(processes.failure());
@@ -38,7 +38,7 @@ RunResult Simulation::result(std::chrono::steady_clock::time_point wall_start, b
   r.link_end_slots = static_cast<std::int64_t>(links.slots());
   r.processors = stats;
   if (interrupted) r.makespan = kernel.now();  // the simulated time reached
-  for (int i = 0; i < config.nodes; ++i) {
+  for (int i = 0; i < processors; ++i) {
     const machine::NodeMemory& m = memory.of(i);
     if (m.peak() > r.memory_peak) r.memory_peak = m.peak(), r.memory_peak_processor = i;
   }

@@ -3,6 +3,7 @@
 // composes the runtime's parts -- message transport, the node-memory ledger, connection matching
 // and the processes' lifetime -- that the processes (SimProcess) use. Internal to parix/sim/:
 // applications use parix/sim/simulated_runtime.hpp.
+#include <algorithm>
 #include <chrono>
 #include <deque>
 #include <functional>
@@ -40,13 +41,14 @@ class Simulation {
   explicit Simulation(const SimulationOptions& o)
       : config(o.config),
         interconnect(machine::make_interconnect(config)),
-        trace(o.trace, config.nodes, *interconnect),
+        trace(o.trace, processor_count(o), *interconnect),
         network(machine::make_network_model(config.network_model,
                                             {kernel, *interconnect, config, trace.enabled() ? &trace : nullptr})),
         connections(config, *interconnect),
         nodes(make_nodes(kernel, config, o.memory_limit)),
-        stats(config.nodes),
+        stats(static_cast<std::size_t>(processor_count(o))),
         node_of(checked_placement(o.placement, config.nodes)),
+        processors(static_cast<int>(node_of.size())),
         memory(nodes, node_of),
         processes(kernel, stats, static_cast<std::size_t>(config.fiber_stack_bytes)),
         transport({kernel, *network, trace, memory, payloads, links, processes}),
@@ -69,6 +71,7 @@ class Simulation {
   std::deque<machine::Node> nodes;
   std::vector<ProcessorStats> stats;
   std::vector<int> node_of;  // processor -> node (SimulationOptions::placement)
+  int processors;            // node_of.size(): config.nodes unless the placement packs several on a node
   MemoryLedger memory;
   LinkTable<LinkEnd> links;
   ProcessLifetime processes;
@@ -77,6 +80,9 @@ class Simulation {
   PostOffice post_office;  // addressed messages (parix/mailbox.hpp)
 
  private:
+  static int processor_count(const SimulationOptions& o) {
+    return std::max(o.config.nodes, static_cast<int>(o.placement.size()));
+  }
   static std::deque<machine::Node> make_nodes(machine::Kernel& kernel, const machine::MachineConfig& config,
                                               machine::MemoryLimit limit);
 };

@@ -18,6 +18,9 @@ namespace {
 void run_mpirun(const MpirunOptions& o) {
   parix::RunOptions run = pipeline::run_options(o.machine, o.np);
   run.simulation.config.fiber_stack_bytes = o.stack_bytes;
+  if (o.ranks_per_node > 1) {  // rank r on node r / K
+    for (int r = 0; r < o.np; ++r) run.simulation.placement.push_back(r / o.ranks_per_node);
+  }
   pipeline::check_machine_outputs(o.machine);
   RankRun ran;
   try {

@@ -41,11 +41,15 @@ AlgorithmChoice algorithms_of_spec(const std::string& spec) {
 
 }  // namespace
 
-std::string mpirun_summary() { return "Run an MPI program built with gcsim-mpicc on N simulated nodes (one rank per node)"; }
+std::string mpirun_summary() {
+  return "Run an MPI program built with gcsim-mpicc on N simulated nodes (one rank per node, or K with --ranks-per-node)";
+}
 
 std::string mpirun_usage() {
   return "usage: gcsim mpirun -np N [options] PROGRAM [ARGS...]\n"
-         "  -np, -n, --np N      ranks, one per node of the machine (required)\n"
+         "  -np, -n, --np N      ranks, one per node of the machine unless --ranks-per-node (required)\n"
+         "  --ranks-per-node K   K ranks per node (rank r on node r / K, ceil(N / K) nodes), sharing its\n"
+         "                       CPUs and memory; their messages cost a node-local transfer (default 1)\n"
          "  --config FILE        machine file (default: the built-in calibrated GC-PowerPlus)\n"
          "  --model NAME         network model: analytic, flow or packet (default: the machine file's)\n"
          "  --shape WxH          the sub-mesh the N nodes occupy\n"
@@ -71,6 +75,7 @@ MpirunOptions parse_mpirun_options(const std::vector<std::string>& words) {
   for (; i < words.size() && o.program.empty(); ++i) {
     const std::string& w = words[i];
     if (w == "-np" || w == "-n" || w == "--np") o.np = static_cast<int>(integer_of(w, value(w)));
+    else if (w == "--ranks-per-node") o.ranks_per_node = static_cast<int>(integer_of(w, value(w)));
     else if (w == "--config") o.machine.config = value(w);
     else if (w == "--model") o.machine.model = value(w);
     else if (w == "--shape") o.machine.shape = value(w);
@@ -89,7 +94,8 @@ MpirunOptions parse_mpirun_options(const std::vector<std::string>& words) {
   if (o.compute != "none" && o.compute != "annotated") bad("--compute expects none or annotated, got '" + o.compute + "'");
   if (o.np < 1) bad("-np N is required: the number of ranks, 1 or more");
   if (o.program.empty()) bad("no program given: gcsim mpirun -np N PROGRAM [ARGS...]");
-  o.machine.nodes = o.np;
+  if (o.ranks_per_node < 1 || o.ranks_per_node > o.np) bad("--ranks-per-node expects 1..N (the ranks, -np)");
+  o.machine.nodes = (o.np + o.ranks_per_node - 1) / o.ranks_per_node;
   return o;
 }
 

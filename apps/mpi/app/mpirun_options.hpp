@@ -12,6 +12,7 @@ namespace gcsim::mpi_layer::app {
 
 struct MpirunOptions {
   int np = 0;
+  int ranks_per_node = 1;  // --ranks-per-node K: rank r on node r / K, ceil(np / K) nodes
   pipeline::MachineOptions machine;  // --config, --model, --shape, --json, --trace
   bool tag_output = false;
   std::int64_t stack_bytes = std::int64_t{8} << 20;  // per rank, reserved and committed as used

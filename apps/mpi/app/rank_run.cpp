@@ -1,6 +1,8 @@
 #include "apps/mpi/app/rank_run.hpp"
 
 #include <cstdio>
+#include <memory>
+#include <vector>
 
 #include "apps/mpi/app/output_capture.hpp"
 #include "apps/mpi/app/program_copies.hpp"
@@ -14,8 +16,11 @@ namespace {
 // What one rank does: its Rank installed, the program's main on its own copy, its exit status kept.
 parix::Program rank_program(const MpirunOptions& o, const ProgramCopies& copies, OutputCapture& capture,
                             const machine::MachineConfig::Mpi& costs, std::vector<int>& statuses) {
-  return [&o, &copies, &capture, costs, &statuses](parix::Processor& p) {
-    Rank rank(p, costs);
+  std::vector<int> members(static_cast<std::size_t>(o.np));
+  for (int r = 0; r < o.np; ++r) members[static_cast<std::size_t>(r)] = r;
+  auto world = std::make_shared<const std::vector<int>>(std::move(members));  // one for all ranks
+  return [&o, &copies, &capture, costs, &statuses, world](parix::Processor& p) {
+    Rank rank(p, costs, world);
     rank.counts_compute = o.compute == "annotated";
     rank.collective_algorithms = o.collectives;
     const int id = p.id();

@@ -14,6 +14,7 @@ nlohmann::json run_fields(const MpirunOptions& o, const std::string& machine_nam
   j["program"] = o.program;
   j["arguments"] = o.args;
   j["mpi_ranks"] = o.np;
+  if (o.ranks_per_node > 1) j["ranks_per_node"] = o.ranks_per_node;  // one per node: the JSON as before
   j["mpi"] = {{"compute", o.compute}, {"collectives", o.collectives_spec.empty() ? "auto" : o.collectives_spec}};
   const std::vector<std::string> files = pipeline::trace_files(o.machine.trace);
   if (!files.empty()) j["trace_files"] = files;

@@ -49,7 +49,9 @@ int MPI_Cart_create(MPI_Comm comm_old, int ndims, const int dims[], const int pe
     }
     Communicator c;
     c.rank = parent.rank;
-    c.members = std::make_shared<const std::vector<int>>(parent.members->begin(), parent.members->begin() + grid->size());
+    c.members = grid->size() == parent.size()  // the whole parent: its members, shared, not copied
+                    ? parent.members
+                    : std::make_shared<const std::vector<int>>(parent.members->begin(), parent.members->begin() + grid->size());
     c.context = context;
     c.cart = std::move(grid);
     out = rank.add_comm(std::move(c));

@@ -10,10 +10,18 @@ namespace parix = gcsim::parix;
 
 namespace {
 
+// Built on every call (a deadlock report names it): one allocation, appended in place.
 std::string describe(const char* call, const char* peer_name, int peer, int tag, MPI_Comm comm) {
-  std::string peer_text = peer == MPI_ANY_SOURCE ? "MPI_ANY_SOURCE" : std::to_string(peer);
-  std::string tag_text = tag == MPI_ANY_TAG ? "MPI_ANY_TAG" : std::to_string(tag);
-  return std::string(call) + "(" + peer_name + "=" + peer_text + ", tag=" + tag_text + ", comm=" + Rank::comm_name(comm) + ")";
+  std::string text;
+  text.reserve(64);
+  text.append(call).append("(").append(peer_name).append("=");
+  if (peer == MPI_ANY_SOURCE) text.append("MPI_ANY_SOURCE");
+  else text.append(std::to_string(peer));
+  text.append(", tag=");
+  if (tag == MPI_ANY_TAG) text.append("MPI_ANY_TAG");
+  else text.append(std::to_string(tag));
+  text.append(", comm=").append(Rank::comm_name(comm)).append(")");
+  return text;
 }
 
 void check_peer(const Communicator& c, int peer, bool any_allowed) {
@@ -58,7 +66,7 @@ MPI_Request start_recv(Rank& rank, void* buf, int count, MPI_Datatype datatype, 
 }
 
 int wait_for(Rank& rank, MPI_Request& h, MPI_Status* status) {
-  const std::string call = rank.operation(h).call;
+  const std::string& call = rank.operation(h).call;  // the operation stays until finish()
   rank.wait_until([&] { return rank.test(h); }, call);
   return rank.finish(h, status);
 }

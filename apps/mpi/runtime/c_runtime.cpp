@@ -75,7 +75,7 @@ double MPI_Wtick(void) { return 1e-12; }  // the simulated clock counts picoseco
 int MPI_Get_processor_name(char* name, int* resultlen) {
   return runtime_call([&](Rank& rank) {
     if (!name) fail(MPI_ERR_ARG, "null name");
-    const std::string text = "gc-node-" + std::to_string(rank.world_rank());
+    const std::string text = "gc-node-" + std::to_string(rank.node());  // ranks of one node share it
     std::memcpy(name, text.c_str(), text.size() + 1);
     out_arg(resultlen) = static_cast<int>(text.size());
   });

@@ -18,20 +18,35 @@ parix::Mailbox& mailbox_or_fail(parix::Processor& p) {
   return *box;
 }
 
+// The communicator rank of world rank `world` among members: at its own index in MPI_COMM_WORLD
+// and its duplicates (found at once), else searched (members are distinct).
+int rank_in(const std::vector<int>& members, int world) {
+  const auto at = static_cast<std::size_t>(world);
+  if (at < members.size() && members[at] == world) return world;
+  return static_cast<int>(std::find(members.begin(), members.end(), world) - members.begin());
+}
+
+std::shared_ptr<const std::vector<int>> world_members(int size) {
+  std::vector<int> world(static_cast<std::size_t>(size));
+  for (std::size_t i = 0; i < world.size(); ++i) world[i] = static_cast<int>(i);
+  return std::make_shared<const std::vector<int>>(std::move(world));
+}
+
 }  // namespace
 
-Rank::Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs)
+Rank::Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs, std::shared_ptr<const std::vector<int>> world)
     : processor_(processor), mailbox_(mailbox_or_fail(processor)), name_("rank " + std::to_string(processor.id())), costs_(costs) {
   registry_.world_rank = processor.id();
-  std::vector<int> world(static_cast<std::size_t>(processor.count()));
-  for (std::size_t i = 0; i < world.size(); ++i) world[i] = static_cast<int>(i);
-  comms_[MPI_COMM_WORLD] = Communicator{std::make_shared<const std::vector<int>>(world), processor.id(), 2, 0, nullptr};
+  if (!world) world = world_members(processor.count());
+  if (static_cast<int>(world->size()) != processor.count()) fail(MPI_ERR_INTERN, "the world's members are not the run's ranks");
+  comms_[MPI_COMM_WORLD] = Communicator{std::move(world), processor.id(), 2, 0, nullptr};
   comms_[MPI_COMM_SELF] =
       Communicator{std::make_shared<const std::vector<int>>(std::vector<int>{processor.id()}), 0, 4, 0, nullptr};
 }
 
 Rank& Rank::current() {
   if (!running) fail(MPI_ERR_OTHER, "no MPI rank runs here: start the program with gcsim mpirun");
+  running->program_ran_ = true;  // every MPI call of the program comes here first
   return *running;
 }
 
@@ -86,10 +101,16 @@ Operation& Rank::operation(MPI_Request handle) {
   return it->second;
 }
 
+void Rank::leave_cpu() {
+  if (!program_ran_ || !before_switch) return;
+  program_ran_ = false;
+  before_switch();
+}
+
 void Rank::charge(std::int64_t bytes) {
   const machine::SimTime d = costs_.call_overhead + machine::from_seconds(costs_.seconds_per_byte * static_cast<double>(bytes));
   if (d <= 0) return;
-  if (before_switch) before_switch();
+  leave_cpu();
   mailbox_.occupy(d, call_span.label("mpi_overhead"), true);
   install();
 }
@@ -97,7 +118,7 @@ void Rank::charge(std::int64_t bytes) {
 void Rank::charge_reduction(std::size_t bytes) {
   const machine::SimTime d = machine::from_seconds(costs_.reduce_seconds_per_byte * static_cast<double>(bytes));
   if (d <= 0) return;
-  if (before_switch) before_switch();
+  leave_cpu();
   mailbox_.occupy(d, call_span.label("mpi_reduction"), true);
   install();
 }
@@ -105,7 +126,7 @@ void Rank::charge_reduction(std::size_t bytes) {
 void Rank::compute(double seconds) {
   if (seconds < 0) fail(MPI_ERR_ARG, "negative compute time");
   if (!counts_compute) return;
-  if (before_switch) before_switch();
+  leave_cpu();
   mailbox_.occupy(machine::from_seconds(seconds), "gcsim_mpi_compute", false);
   install();
 }
@@ -232,7 +253,7 @@ void Rank::on_message(Arrived&& m) {
 
 void Rank::match(Operation& r, MPI_Request handle, Arrived&& m) {
   r.status.MPI_TAG = m.tag;
-  r.status.MPI_SOURCE = static_cast<int>(std::find(r.members->begin(), r.members->end(), m.source) - r.members->begin());
+  r.status.MPI_SOURCE = rank_in(*r.members, m.source);
   r.status.gcsim_bytes = m.size;
   if (!m.rendezvous) {
     deliver(r, m.data);

@@ -75,17 +75,24 @@ struct Operation {  // behind one MPI_Request
 
 class Rank {
  public:
-  Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs);
+  // world: MPI_COMM_WORLD's members 0..N-1, one vector shared by every rank of a run (4096 ranks
+  // would otherwise hold 64 MiB of copies); made here when not given.
+  Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs,
+       std::shared_ptr<const std::vector<int>> world = nullptr);
 
   // The rank whose fiber runs now; MPI_ERR_OTHER outside `gcsim mpirun`.
   static Rank& current();
   // Makes this the current rank (and its registry the C calls' one); done as its fiber resumes.
   void install();
-  // Called before the rank blocks or yields (the output capture attributes what it printed).
+  // Called before the rank blocks or yields (the output capture attributes what it printed), once
+  // per MPI call: only the program prints, and it runs only between MPI calls.
   std::function<void()> before_switch;
 
   int world_rank() const { return processor_.id(); }
   int world_size() const { return processor_.count(); }
+  // The simulated node a rank runs on (gcsim mpirun --ranks-per-node K: world rank r on r / K).
+  int node() const { return mailbox_.node_of(world_rank()); }
+  int node_of(int world_rank) const { return mailbox_.node_of(world_rank); }
   double now_seconds() const { return processor_.now_seconds(); }
   Registry& registry() { return registry_; }
   bool counts_compute = true;  // gcsim_mpi_compute charges time (--compute annotated), or not (none)
@@ -150,6 +157,7 @@ class Rank {
   void on_cancel_answered(const parix::Letter& l);
   void drop_freed();
   int finish_persistent(Operation& p, MPI_Status* status);
+  void leave_cpu();  // before a switch: the program's output since the last MPI call is attributed
   void on_letter(parix::Letter& l);
   void on_message(Arrived&& m);
   void match(Operation& r, MPI_Request handle, Arrived&& m);
@@ -169,6 +177,9 @@ class Rank {
   std::vector<MPI_Request> posted_;  // receives waiting for a message, in posting order
   std::vector<Arrived> unexpected_;  // messages waiting for a receive, in arrival order
   std::vector<parix::Letter> letters_;
+  // Set as the program enters an MPI call (current()), cleared once its output is attributed: a
+  // call's later switches have nothing new to attribute (the program has not run since).
+  bool program_ran_ = true;
 };
 
 // A C entry point that may block: what the core throws (Error) is returned; anything else (the
@@ -189,11 +200,8 @@ int runtime_call(F&& body) {
   }
 }
 
-// The simulated node a world rank runs on (MPI_Comm_split_type's MPI_COMM_TYPE_SHARED): one rank
-// per node today, so a rank's node is its own processor number.
-inline int node_of_world_rank(const Rank& rank, int world_rank) {
-  (void)rank;
-  return world_rank;
-}
+// The simulated node a world rank runs on (MPI_Comm_split_type's MPI_COMM_TYPE_SHARED): rank r on
+// node r / K under --ranks-per-node K.
+inline int node_of_world_rank(const Rank& rank, int world_rank) { return rank.node_of(world_rank); }
 
 }  // namespace gcsim::mpi_layer

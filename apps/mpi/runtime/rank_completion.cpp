@@ -41,7 +41,7 @@ void Rank::wait_until(const std::function<bool()>& done, const std::string& call
     for (auto& [h, op] : operations_) {
       if (op.is_send && !op.done && op.wire.valid()) wires.push_back(op.wire);
     }
-    if (before_switch) before_switch();
+    leave_cpu();
     const machine::SimTime blocked_from = processor_.now();
     mailbox_.await(wires, call.c_str(), -1);
     mailbox_.trace_blocked(call_span.label("mpi_wait"), blocked_from, call_span.peer(), call_span.bytes());
@@ -71,6 +71,7 @@ bool Rank::probe(const Communicator& c, int source, int tag, MPI_Status* status)
 
 void Rank::finalize_checks() {
   progress();
+  program_ran_ = true;  // its warnings are this rank's output
   for (const auto& [h, op] : operations_) {
     if (!op.done) std::fprintf(stderr, "gcsim: warning: rank %d: MPI_Finalize with a request never completed: %s\n", world_rank(), op.call.c_str());
   }
