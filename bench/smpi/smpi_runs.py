@@ -3,6 +3,7 @@
 compare.py and speed.py use it."""
 import pathlib
 import re
+import resource
 import shutil
 import subprocess
 import time
@@ -19,14 +20,25 @@ class RunError(Exception):
     pass
 
 
+def children_cpu_seconds():
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
 def run(command, what):
     """Runs a command; its stdout and the wall seconds it took, or a RunError with its output."""
-    start = time.perf_counter()
+    return run_timed(command, what)[:2]
+
+
+def run_timed(command, what):
+    """Runs a command: its stdout, the wall seconds and the CPU seconds (user + system, its
+    processes and theirs) it took, or a RunError with its output."""
+    cpu, start = children_cpu_seconds(), time.perf_counter()
     p = subprocess.run([str(c) for c in command], capture_output=True, text=True)
-    wall = time.perf_counter() - start
+    wall, cpu = time.perf_counter() - start, children_cpu_seconds() - cpu
     if p.returncode != 0:
         raise RunError(f"{what} failed (exit {p.returncode}): {' '.join(map(str, command))}\n{p.stdout}{p.stderr}")
-    return p.stdout, wall
+    return p.stdout, wall, cpu
 
 
 def field(output, pattern, what):

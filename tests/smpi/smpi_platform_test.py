@@ -101,6 +101,11 @@ class BadInput(unittest.TestCase):
         self.assertEqual(m.eager_limit, 100)
         self.assertIn("--cfg=smpi/send-is-detached-thresh:101", smpi_platform.smpi_options(m))
 
+    def test_a_shape_too_large_for_a_full_zone_is_refused(self):
+        m = smpi_platform.Machine(smpi_platform.load_machine(smpi_platform.DEFAULT_MACHINE))
+        with self.assertRaisesRegex(smpi_platform.MachineError, "--shape 32x32: 1024 nodes"):
+            smpi_platform.platform_xml(m, 32, 32)
+
     def test_bad_shapes(self):
         for text in ("8", "0x4", "axb"):
             with self.assertRaisesRegex(smpi_platform.MachineError, "--shape"):
