@@ -79,7 +79,7 @@ class Comparison:
                             float(field(ours, STEP, "gcsim ring")), float(field(theirs, STEP, "SMPI ring")))
 
     def table(self):
-        lines = ["| program | bytes | hops | gcsim machine | gcsim (s) | SMPI (s) | difference |",
+        lines = ["| program | bytes | hops or mesh | gcsim machine | gcsim (s) | SMPI (s) | difference |",
                  "|---|---:|---|---|---:|---:|---:|"]
         for kind, size, hop_text, label, ours, theirs, difference in self.rows:
             lines.append(f"| {kind} | {size} | {hop_text} | {label} | {ours:.6e} | {theirs:.6e} | {difference:+.4%} |")
