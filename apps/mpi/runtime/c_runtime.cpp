@@ -6,7 +6,6 @@
 #include <string>
 
 #include "apps/mpi/c_call.hpp"
-#include "apps/mpi/include/gcsim/mpi_ext.h"
 #include "apps/mpi/runtime/rank.hpp"
 
 using namespace gcsim::mpi_layer;
@@ -113,10 +112,6 @@ int MPI_Comm_get_attr(MPI_Comm comm, int comm_keyval, void* attribute_val, int* 
 
 int MPI_Attr_get(MPI_Comm comm, int keyval, void* attribute_val, int* flag) {
   return MPI_Comm_get_attr(comm, keyval, attribute_val, flag);
-}
-
-int gcsim_mpi_compute(double seconds) {
-  return runtime_call([&](Rank& rank) { rank.compute(seconds); });
 }
 
 }  // extern "C"

@@ -23,6 +23,7 @@
 #include "apps/mpi/datatype.hpp"
 #include "apps/mpi/error.hpp"
 #include "apps/mpi/registry.hpp"
+#include "apps/mpi/runtime/compute_meter.hpp"
 #include "apps/mpi/runtime/communicator.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/mailbox.hpp"
@@ -77,7 +78,7 @@ class Rank {
   int world_size() const { return processor_.count(); }
   double now_seconds() const { return processor_.now_seconds(); }
   Registry& registry() { return registry_; }
-  bool counts_compute = true;  // gcsim_mpi_compute charges time (--compute annotated), or not (none)
+  RankCompute computing;  // --compute: its settings, CPU meter and sampled sites (compute_meter.hpp)
   AlgorithmChoice collective_algorithms;  // gcsim mpirun --coll; Auto: MPICH's selection
   bool initialized = false;
   bool finalized = false;
@@ -110,7 +111,14 @@ class Rank {
 
   void charge(std::int64_t bytes);  // o + G * bytes, as communication
   void charge_reduction(std::size_t bytes);
+  // Computation (rank_compute.cpp): annotated seconds or flops (nothing under --compute none), node
+  // seconds charged as they are, and the marks of a call's entry and exit that --compute measured uses.
   void compute(double seconds);
+  void compute_flops(double flops);
+  void charge_compute(double node_seconds, const char* what);
+  void start_computing();
+  void enter_call();
+  void leave_call();
   void finalize_checks();
 
   void* attached_buffer = nullptr;
@@ -153,7 +161,13 @@ class Rank {
 template <class F>
 int runtime_call(F&& body) {
   try {
-    body(Rank::current());
+    Rank& rank = Rank::current();
+    struct InCall {  // the rank's CPU time since its last call is charged first (--compute measured)
+      Rank& rank;
+      explicit InCall(Rank& r) : rank(r) { rank.enter_call(); }
+      ~InCall() { rank.leave_call(); }
+    } in_call{rank};
+    body(rank);
     return MPI_SUCCESS;
   } catch (const Error& e) {
     return e.code();
