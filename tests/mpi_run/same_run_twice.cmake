@@ -1,5 +1,5 @@
 # Compiles SOURCE with COMPILER and runs it twice with RUNNER, each run writing a trace, then checks
-# that the two runs printed the same lines (all but gcsim's wall-clock line) and wrote byte-identical
+# that the two runs printed the same lines (all but gcsim's wall-clock and trace-file lines) and wrote byte-identical
 # traces (.json and .csv): the simulated times and events of such a run may not vary.
 #   cmake -DCOMPILER=... -DSOURCE=... -DWORK=... "-DRUNNER=gcsim@@mpirun@@-np@@4@@--compute@@annotated"
 #         [-DARGS=a@@b] [-DEXPECT=re] -P same_run_twice.cmake
@@ -18,7 +18,7 @@ foreach(run 1 2)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "run ${run} exited with ${status}:\n${out${run}}${err}")
   endif()
-  string(REGEX REPLACE "\nwall [^\n]*" "" out${run} "${out${run}}")
+  string(REGEX REPLACE "\n(wall|trace) [^\n]*" "" out${run} "${out${run}}")  # host time; the file's name
 endforeach()
 if(NOT out1 STREQUAL out2)
   message(FATAL_ERROR "the two runs printed different lines:\n--- first\n${out1}\n--- second\n${out2}")
