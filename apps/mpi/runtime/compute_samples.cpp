@@ -24,6 +24,9 @@ bool begin_sample(Rank& rank, const char* file, int line, bool global, int sampl
   const std::string key = site_key(file, line);
   if (samples < 1) fail(MPI_ERR_ARG, ("GCSIM_SAMPLE at " + key + ": samples must be 1 or more, got " + std::to_string(samples)).c_str());
   RankCompute& c = rank.computing;
+  for (const OpenSample& open : c.open) {  // a site cannot contain itself: its last body never ended
+    if (open.key == key) fail(MPI_ERR_OTHER, ("GCSIM_SAMPLE at " + key + ": a body left by break, goto or return").c_str());
+  }
   SampleSites::Site& site = sites_of(rank, global).site(key, samples);
   ComputeTotals* totals = c.settings.totals;
   if (site.sampled()) {
