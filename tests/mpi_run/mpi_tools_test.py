@@ -87,7 +87,7 @@ def check_no_overlap(rows):
 
 
 def traced_run(a, program, name, ranks, args):
-    run([a.gcsim, "mpirun", "-np", str(ranks), "--trace", f"{name}.json", "--json", f"{name}_run.json", program] + args,
+    run([a.gcsim, "mpirun", "-np", str(ranks), "--compute", "annotated", "--trace", f"{name}.json", "--json", f"{name}_run.json", program] + args,
         a.work)
     return os.path.join(a.work, name)
 
@@ -155,7 +155,8 @@ def test_plot(a):
 def simulated_of(a, program, ranks, args, config):
     options = ["--config", config] if config else []
     out = os.path.join(a.work, f"single_{ranks}_{'published' if config else 'calibrated'}.json")
-    run([a.gcsim, "mpirun", "-np", str(ranks)] + options + ["--json", out, program] + args, a.work)
+    run([a.gcsim, "mpirun", "-np", str(ranks), "--compute", "annotated"] + options + ["--json", out, program] + args,
+        a.work)
     with open(out) as f:
         return json.load(f)["simulated"]["total_s"]
 
@@ -163,7 +164,7 @@ def simulated_of(a, program, ranks, args, config):
 def test_sweep(a):
     program = build(a)
     args, counts = ["0.5", "10"], [1, 2, 4]
-    run([a.gcsim, "sweep", "mpi", "--csv", "sweep.csv", "--json", "sweep.json", program] + args +
+    run([a.gcsim, "sweep", "mpi", "--compute", "annotated", "--csv", "sweep.csv", "--json", "sweep.json", program] + args +
         ["--nodes", ",".join(map(str, counts))], a.work)
     rows = records(os.path.join(a.work, "sweep.csv"))
     published = os.path.join(a.configs, "gc-powerplus.toml")

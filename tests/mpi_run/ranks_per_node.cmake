@@ -42,7 +42,7 @@ foreach(run ring_16 jacobi_4)
     add_test(NAME mpi_run_one_per_node_identical_${run}_${option}
              COMMAND ${CMAKE_COMMAND} -DCOMPILER=${GCSIM_MPICC} -DSOURCE=${examples}/${program}.c
                      -DWORK=${CMAKE_CURRENT_BINARY_DIR}/one_per_node_${run}_${option}
-                     "-DRUNNER=$<TARGET_FILE:gcsim>@@mpirun@@-np@@${np}@@${extra}--model@@analytic" "-DARGS=${args}"
+                     "-DRUNNER=$<TARGET_FILE:gcsim>@@mpirun@@-np@@${np}@@${extra}--model@@analytic@@--compute@@annotated" "-DARGS=${args}"
                      -DEXPECTED=${CMAKE_CURRENT_SOURCE_DIR}/one_per_node/${run} -P ${CMAKE_CURRENT_SOURCE_DIR}/same_trace.cmake)
     set_tests_properties(mpi_run_one_per_node_identical_${run}_${option} PROPERTIES TIMEOUT 120 LABELS mpi_run)
   endforeach()

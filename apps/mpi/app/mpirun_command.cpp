@@ -7,6 +7,7 @@
 #include "apps/mpi/app/rank_run.hpp"
 #include "apps/mpi/app/run_fields.hpp"
 #include "apps/mpi/app/sweep_mpi_command.hpp"
+#include "apps/mpi/app/run_computing.hpp"
 #include "apps/pipeline/app_registry.hpp"
 #include "apps/pipeline/command_groups.hpp"
 #include "apps/pipeline/machine_options.hpp"
@@ -22,14 +23,18 @@ void run_mpirun(const MpirunOptions& o) {
     for (int r = 0; r < o.np; ++r) run.simulation.placement.push_back(r / o.ranks_per_node);
   }
   pipeline::check_machine_outputs(o.machine);
+  RunComputing computing(o, run.simulation.config);
   RankRun ran;
   try {
-    ran = run_ranks(o, run, false);
+    ran = run_ranks(o, run, computing.settings, false);
   } catch (const parix::host::Interrupted& x) {  // after the ranks' output: the trace and the JSON are kept
     pipeline::report_interrupted_run(x.partial(), o.machine);
     throw;
   }
-  pipeline::report_run(ran.result, o.machine, run_fields(o, ran.result.config_name));
+  computing.print();
+  nlohmann::json fields = run_fields(o, ran.result.config_name);
+  fields["compute"] = computing.to_json();
+  pipeline::report_run(ran.result, o.machine, fields);
   if (ran.failed_rank >= 0) throw pipeline::ExitStatus{ran.statuses[static_cast<std::size_t>(ran.failed_rank)]};
 }
 

@@ -39,6 +39,14 @@ AlgorithmChoice algorithms_of_spec(const std::string& spec) {
   }
 }
 
+HostSpeedChoice host_speed_of(const std::string& text) {
+  try {
+    return parse_host_speed(text);
+  } catch (const std::invalid_argument& e) {
+    bad(std::string("--host-speed ") + e.what());
+  }
+}
+
 }  // namespace
 
 std::string mpirun_summary() {
@@ -57,8 +65,17 @@ std::string mpirun_usage() {
          "  --trace FILE         a trace of the run (.json, with .csv beside it)\n"
          "  --tag-output         prefix each line with [1,RANK]<stdout>: or <stderr>: as Open MPI does\n"
          "  --stack-size SIZE    stack reserved per rank, committed as used (default 8M)\n"
-         "  --compute MODE       none: computation takes no simulated time; annotated (default): only\n"
-         "                       gcsim_mpi_compute(seconds) from <gcsim/mpi_ext.h> does\n"
+         "  --compute MODE       what computation between MPI calls costs on the rank's node:\n"
+         "                       measured (default): the rank's host CPU time between calls times the\n"
+         "                       host speed, plus what the program annotates (not byte-identical);\n"
+         "                       annotated: only gcsim_mpi_compute(seconds), gcsim_mpi_compute_flops(n)\n"
+         "                       and the GCSIM_SAMPLE macros of <gcsim/mpi_ext.h>; none: nothing.\n"
+         "                       annotated and none runs are byte-identical unless they sample\n"
+         "  --host-speed X       host seconds -> node seconds for measured and sampled time: auto\n"
+         "                       (default: times a daxpy kernel once on this host and divides by the\n"
+         "                       node's rate on it, clock / the machine file's [ops] daxpy_flop), a\n"
+         "                       ratio (4: the host is 4x the node), or the host's rate (2Gf, 500Mf).\n"
+         "                       Printed after the run and kept in --json\n"
          "  --coll SPEC          algorithms of collectives, e.g. bcast=binomial,allreduce=ring (default:\n"
          "                       MPICH's selection by size; apps/mpi/README.md lists the names)\n"
          "Output: each rank's stdout, then stderr, in rank order; then the simulated and wall time.\n"
@@ -85,13 +102,15 @@ MpirunOptions parse_mpirun_options(const std::vector<std::string>& words) {
     else if (w == "--stack-size") o.stack_bytes = size_of(value(w));
     else if (w == "--compute") o.compute = value(w);
     else if (w == "--coll") o.collectives = algorithms_of_spec(o.collectives_spec = value(w));
+    else if (w == "--host-speed") o.host_speed = host_speed_of(value(w));
     else if (w == "-h" || w == "--help") o.help = true;
     else if (!w.empty() && w[0] == '-') bad("unknown option '" + w + "'\n" + mpirun_usage());
     else o.program = w;
   }
   o.args.assign(words.begin() + static_cast<std::ptrdiff_t>(i), words.end());
   if (o.help) return o;
-  if (o.compute != "none" && o.compute != "annotated") bad("--compute expects none or annotated, got '" + o.compute + "'");
+  if (o.compute != "none" && o.compute != "annotated" && o.compute != "measured")
+    bad("--compute expects measured, annotated or none, got '" + o.compute + "'");
   if (o.np < 1) bad("-np N is required: the number of ranks, 1 or more");
   if (o.program.empty()) bad("no program given: gcsim mpirun -np N PROGRAM [ARGS...]");
   if (o.ranks_per_node < 1 || o.ranks_per_node > o.np) bad("--ranks-per-node expects 1..N (the ranks, -np)");

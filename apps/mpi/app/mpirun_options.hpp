@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "apps/mpi/collective_selection.hpp"
+#include "apps/mpi/runtime/host_speed.hpp"
 #include "apps/pipeline/machine_options.hpp"
 
 namespace gcsim::mpi_layer::app {
@@ -16,7 +17,8 @@ struct MpirunOptions {
   pipeline::MachineOptions machine;  // --config, --model, --shape, --json, --trace
   bool tag_output = false;
   std::int64_t stack_bytes = std::int64_t{8} << 20;  // per rank, reserved and committed as used
-  std::string compute = "annotated";                 // none | annotated
+  std::string compute = "measured";                  // none | annotated | measured (runtime/compute_meter.hpp)
+  HostSpeedChoice host_speed;                        // --host-speed auto | RATIO | RATE
   AlgorithmChoice collectives;                       // --coll bcast=binomial,...; Auto elsewhere
   std::string collectives_spec;                      // --coll's text, for the run's JSON
   std::string program;

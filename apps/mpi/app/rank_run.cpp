@@ -15,13 +15,14 @@ namespace {
 
 // What one rank does: its Rank installed, the program's main on its own copy, its exit status kept.
 parix::Program rank_program(const MpirunOptions& o, const ProgramCopies& copies, OutputCapture& capture,
-                            const machine::MachineConfig::Mpi& costs, std::vector<int>& statuses) {
+                            const machine::MachineConfig::Mpi& costs, const ComputeSettings& computing,
+                            std::vector<int>& statuses) {
   std::vector<int> members(static_cast<std::size_t>(o.np));
   for (int r = 0; r < o.np; ++r) members[static_cast<std::size_t>(r)] = r;
   auto world = std::make_shared<const std::vector<int>>(std::move(members));  // one for all ranks
-  return [&o, &copies, &capture, costs, &statuses, world](parix::Processor& p) {
+  return [&o, &copies, &capture, costs, computing, &statuses, world](parix::Processor& p) {
     Rank rank(p, costs, world);
-    rank.counts_compute = o.compute == "annotated";
+    rank.computing.settings = computing;
     rank.collective_algorithms = o.collectives;
     const int id = p.id();
     rank.before_switch = [&capture, id] { capture.attribute(id); };
@@ -41,13 +42,16 @@ parix::Program rank_program(const MpirunOptions& o, const ProgramCopies& copies,
         parix::describe_running_stack(nullptr, nullptr);
       }
     } leave{rank, capture, id};
+    rank.start_computing();  // from here the rank's CPU time is its own until it calls MPI
     statuses[static_cast<std::size_t>(id)] = copies.main_of(id)(static_cast<int>(args.size()), argv.data());
+    rank.enter_call();  // what it computed after its last call (usually MPI_Finalize)
+    rank.leave_call();
   };
 }
 
 }  // namespace
 
-RankRun run_ranks(const MpirunOptions& o, const parix::RunOptions& run, bool silent) {
+RankRun run_ranks(const MpirunOptions& o, const parix::RunOptions& run, const ComputeSettings& computing, bool silent) {
   const machine::MachineConfig::Mpi costs = run.simulation.config.mpi;
   const ProgramCopies copies(o.program, o.np);
   RankRun out;
@@ -55,7 +59,7 @@ RankRun run_ranks(const MpirunOptions& o, const parix::RunOptions& run, bool sil
   OutputCapture capture(o.np, o.tag_output);
   if (silent) capture.keep_silent();
   try {
-    out.result = parix::run(run, rank_program(o, copies, capture, costs, out.statuses));
+    out.result = parix::run(run, rank_program(o, copies, capture, costs, computing, out.statuses));
   } catch (const AbortRequested& a) {
     capture.finish();
     std::fprintf(stderr, "gcsim: rank %d called MPI_Abort with error code %d\n", a.rank, a.code);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "apps/mpi/app/mpirun_options.hpp"
+#include "apps/mpi/runtime/compute_meter.hpp"
 #include "parix/backend.hpp"
 #include "parix/run_result.hpp"
 
@@ -18,9 +19,10 @@ struct RankRun {
   std::string failed_stderr;  // that rank's stderr when the output was kept silent
 };
 
-// Runs o's program on o.np ranks with `run` (machine, nodes, trace). The ranks' output is printed
+// Runs o's program on o.np ranks with `run` (machine, nodes, trace), charging computation as
+// `computing` says. The ranks' output is printed
 // in rank order at the end, or kept (`silent`). MPI_Abort ends it with pipeline::ExitStatus after
 // saying so; parix::host::Interrupted and the runtime's errors go on up.
-RankRun run_ranks(const MpirunOptions& o, const parix::RunOptions& run, bool silent);
+RankRun run_ranks(const MpirunOptions& o, const parix::RunOptions& run, const ComputeSettings& computing, bool silent);
 
 }  // namespace gcsim::mpi_layer::app

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "apps/mpi/app/rank_run.hpp"
+#include "apps/mpi/app/run_computing.hpp"
 #include "apps/mpi/app/sweep_mpi_options.hpp"
 #include "apps/mpi/app/sweep_mpi_table.hpp"
 #include "apps/pipeline/experiment.hpp"
@@ -39,7 +40,9 @@ std::unique_ptr<pipeline::Outcome> run_point(const SweepMpiOptions& o, const Swe
   MpirunOptions point = o.run;
   point.np = nodes;
   point.machine.nodes = nodes;
-  const RankRun ran = run_ranks(point, point_options(o, m, nodes), true);
+  const parix::RunOptions run = point_options(o, m, nodes);
+  const RunComputing computing(point, run.simulation.config);
+  const RankRun ran = run_ranks(point, run, computing.settings, true);
   if (ran.failed_rank >= 0) {
     throw pipeline::RunFailure(fmt::format("{} nodes on the {} machine: rank {} exited with status {}{}{}", nodes, m.label,
                                            ran.failed_rank, ran.statuses[static_cast<std::size_t>(ran.failed_rank)],

@@ -15,7 +15,7 @@ namespace {
 
 const std::set<std::string> kSweepOptions{"--nodes", "--config", "--csv", "--json"};
 // mpirun's options that take a value, passed on to its parser.
-const std::set<std::string> kRunValueOptions{"--model", "--stack-size", "--compute", "--coll"};
+const std::set<std::string> kRunValueOptions{"--model", "--stack-size", "--compute", "--host-speed", "--coll"};
 const std::set<std::string> kNotForSweeps{"-np", "-n", "--np", "--shape", "--trace", "--tag-output"};
 
 // Takes a sweep option and its value at words[i]; false when words[i] is none.
@@ -71,7 +71,7 @@ std::string sweep_mpi_usage() {
          "  --model NAME         network model: analytic, flow or packet (default: each machine file's)\n"
          "  --csv FILE           the table as CSV (`gcsim plot --sweep FILE` draws it), one row per machine and count\n"
          "  --json FILE          every run's summary as JSON\n"
-         "  --compute, --coll, --stack-size   as for gcsim mpirun\n"
+         "  --compute, --host-speed, --coll, --stack-size   as for gcsim mpirun\n"
          "gcsim's options go before PROGRAM; after it, the program's arguments, which the sweep's own options\n"
          "above may follow. Words after `--` (before the arguments) are all the program's.\n"
          "Each point is one `gcsim mpirun -np N` of the program, its output kept back (a rank exiting non-zero\n"

@@ -5,7 +5,6 @@
 #include <string>
 
 #include "apps/mpi/c_call.hpp"
-#include "apps/mpi/include/gcsim/mpi_ext.h"
 #include "apps/mpi/runtime/attributes.hpp"
 #include "apps/mpi/runtime/rank.hpp"
 
@@ -94,10 +93,6 @@ int MPI_Comm_test_inter(MPI_Comm comm, int* flag) {
     rank.comm(comm);
     out_arg(flag) = 0;  // no intercommunicators
   });
-}
-
-int gcsim_mpi_compute(double seconds) {
-  return runtime_call([&](Rank& rank) { rank.compute(seconds); });
 }
 
 }  // extern "C"

@@ -123,14 +123,6 @@ void Rank::charge_reduction(std::size_t bytes) {
   install();
 }
 
-void Rank::compute(double seconds) {
-  if (seconds < 0) fail(MPI_ERR_ARG, "negative compute time");
-  if (!counts_compute) return;
-  leave_cpu();
-  mailbox_.occupy(machine::from_seconds(seconds), "gcsim_mpi_compute", false);
-  install();
-}
-
 MPI_Request Rank::start_send(const Communicator& c, std::int64_t context, int dest, int tag, parix::Bytes payload,
                              SendMode mode, std::string call) {
   Operation op;

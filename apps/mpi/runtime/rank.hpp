@@ -24,6 +24,7 @@
 #include "apps/mpi/error.hpp"
 #include "apps/mpi/registry.hpp"
 #include "apps/mpi/runtime/call_span.hpp"
+#include "apps/mpi/runtime/compute_meter.hpp"
 #include "apps/mpi/runtime/communicator.hpp"
 #include "apps/mpi/runtime/keyvals.hpp"
 #include "machine/machine_config.hpp"
@@ -95,7 +96,7 @@ class Rank {
   int node_of(int world_rank) const { return mailbox_.node_of(world_rank); }
   double now_seconds() const { return processor_.now_seconds(); }
   Registry& registry() { return registry_; }
-  bool counts_compute = true;  // gcsim_mpi_compute charges time (--compute annotated), or not (none)
+  RankCompute computing;  // --compute: its settings, CPU meter and sampled sites (compute_meter.hpp)
   AlgorithmChoice collective_algorithms;  // gcsim mpirun --coll; Auto: MPICH's selection
   bool initialized = false;
   bool finalized = false;
@@ -135,7 +136,14 @@ class Rank {
 
   void charge(std::int64_t bytes);  // o + G * bytes, as communication
   void charge_reduction(std::size_t bytes);
+  // Computation (rank_compute.cpp): annotated seconds or flops (nothing under --compute none), node
+  // seconds charged as they are, and the marks of a call's entry and exit that --compute measured uses.
   void compute(double seconds);
+  void compute_flops(double flops);
+  void charge_compute(double node_seconds, const char* what);
+  void start_computing();
+  void enter_call();
+  void leave_call();
   void finalize_checks();
 
   void* attached_buffer = nullptr;
@@ -188,6 +196,11 @@ template <class F>
 int runtime_call(F&& body) {
   try {
     Rank& rank = Rank::current();
+    struct InCall {  // the rank's CPU time since its last call is charged first (--compute measured)
+      Rank& rank;
+      explicit InCall(Rank& r) : rank(r) { rank.enter_call(); }
+      ~InCall() { rank.leave_call(); }
+    } in_call{rank};
     struct Span {  // closed also when the call fails or the run is abandoned
       CallSpan& span;
       explicit Span(CallSpan& s) : span(s) { span.enter(); }
