@@ -8,21 +8,27 @@
 #include "apps/mpi/app/mpirun_options.hpp"
 #include "apps/mpi/app/output_capture.hpp"
 #include "apps/mpi/app/program_copies.hpp"
+#include "apps/mpi/app/rank_deadlock_report.hpp"
+#include "apps/mpi/runtime/collective_ledger.hpp"
+#include "apps/mpi/runtime/error_routing.hpp"
 #include "apps/mpi/runtime/rank.hpp"
 #include "apps/pipeline/app_registry.hpp"
 #include "apps/pipeline/command_groups.hpp"
 #include "apps/pipeline/failure.hpp"
 #include "apps/pipeline/machine_options.hpp"
 #include "parix/sim/fiber_stack.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::mpi_layer::app {
 namespace {
 
 // What one rank does: its Rank installed, the program's main on its own copy, its exit status kept.
 parix::Program rank_program(const MpirunOptions& o, const ProgramCopies& copies, OutputCapture& capture,
-                            const machine::MachineConfig::Mpi& costs, std::vector<int>& statuses) {
-  return [&o, &copies, &capture, costs, &statuses](parix::Processor& p) {
+                            const machine::MachineConfig::Mpi& costs, std::vector<int>& statuses,
+                            CollectiveLedger& ledger) {
+  return [&o, &copies, &capture, costs, &statuses, &ledger](parix::Processor& p) {
     Rank rank(p, costs);
+    rank.collective_ledger = &ledger;
     rank.counts_compute = o.compute == "annotated";
     rank.collective_algorithms = o.collectives;
     const int id = p.id();
@@ -54,15 +60,22 @@ void run_mpirun(const MpirunOptions& o) {
   pipeline::check_machine_outputs(o.machine);
   const ProgramCopies copies(o.program, o.np);
   std::vector<int> statuses(static_cast<std::size_t>(o.np), 0);
+  CollectiveLedger ledger;  // the ranks' collective calls, compared as they are made
   parix::RunResult result;
   {
     OutputCapture capture(o.np, o.tag_output);
     try {
-      result = pipeline::run_program(run, rank_program(o, copies, capture, costs, statuses), o.machine);
+      result = pipeline::run_program(run, rank_program(o, copies, capture, costs, statuses, ledger), o.machine);
     } catch (const AbortRequested& a) {
       capture.finish();
       std::fprintf(stderr, "gcsim: rank %d called MPI_Abort with error code %d\n", a.rank, a.code);
       throw pipeline::ExitStatus{a.code == 0 ? 1 : a.code};
+    } catch (const parix::DeadlockError& d) {
+      throw parix::DeadlockError(rank_deadlock_report(d.what()));
+    } catch (const FatalMpiError& e) {
+      capture.finish();
+      std::fprintf(stderr, "gcsim: %s\n", e.message.c_str());
+      throw pipeline::ExitStatus{pipeline::kExitMpiError};
     }
   }
   pipeline::report_run(result, o.machine, {{"mpi_ranks", o.np}, {"program", o.program}});

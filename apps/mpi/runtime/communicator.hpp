@@ -19,8 +19,8 @@ struct Communicator {
   std::int64_t children = 0;                         // contexts derived from this one so far
   std::shared_ptr<const CartTopology> cart;  // MPI_Cart_create's grid, if it made this one
   std::uint32_t collectives = 0;  // collectives started on it: the next one's sequence number
-  // Kept for MPI_Comm_get_errhandler; errors are returned whichever it is (apps/mpi/README.md).
-  int errhandler = 2;  // MPI_ERRORS_RETURN
+  int errhandler = 1;  // MPI_ERRORS_ARE_FATAL, the standard's default; a child inherits its parent's
+  int handle = 0;      // its MPI_Comm, set by Rank::add_comm
 
   int size() const { return static_cast<int>(members->size()); }
   int world_rank_of(int rank_in_comm) const { return (*members)[static_cast<std::size_t>(rank_in_comm)]; }
