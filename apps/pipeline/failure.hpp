@@ -16,7 +16,6 @@ enum ExitCode : int {
   kExitFile = 3,          // a file that cannot be read, parsed or written (scene, machine file, output path)
   kExitResource = 4,      // host or node memory exhausted
   kExitDeadlock = 5,      // every simulated processor blocked with nothing pending
-  kExitMpiError = 6,      // gcsim mpirun: an MPI error under MPI_ERRORS_ARE_FATAL (the default handler)
   kExitInterrupted = 130, // SIGINT or SIGTERM: what was finished is written, marked "interrupted"
   // 70: a simulated processor overflowed its fiber stack (parix/sim/fiber_stack.hpp; raise fiber_stack_kib)
 };

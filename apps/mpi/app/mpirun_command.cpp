@@ -75,7 +75,7 @@ void run_mpirun(const MpirunOptions& o) {
     } catch (const FatalMpiError& e) {
       capture.finish();
       std::fprintf(stderr, "gcsim: %s\n", e.message.c_str());
-      throw pipeline::ExitStatus{pipeline::kExitMpiError};
+      throw pipeline::ExitStatus{kMpiErrorExitCode};
     }
   }
   pipeline::report_run(result, o.machine, {{"mpi_ranks", o.np}, {"program", o.program}});

@@ -21,6 +21,9 @@ struct FatalMpiError {
   std::string message;
 };
 
+// gcsim mpirun's exit status after a fatal MPI error (README "Exit codes", `gcsim --help`).
+inline constexpr int kMpiErrorExitCode = 6;
+
 // The router the ranks' registries use (it works on the rank whose fiber runs).
 ErrorRouter& runtime_error_router();
 
