@@ -8,10 +8,13 @@ namespace gcsim::mpi_layer {
 
 std::string entry_point_name(const char* signature) {
   const char* open = std::strchr(signature, '(');
-  if (!open) return signature;
+  if (!open) return signature;  // named by the caller
   const char* start = open;
   while (start > signature && start[-1] != ' ' && start[-1] != ':') --start;
-  return std::string(start, open);
+  std::string name(start, open);
+  // The entry points' link names are gcsim_MPI_* (include/mpi_names.h); the program wrote MPI_*.
+  if (name.starts_with("gcsim_MPI_")) name.erase(0, 6);
+  return name;
 }
 
 CallScope::CallScope(Registry& r, const char* signature) : registry_(r) {

@@ -43,7 +43,8 @@ class ErrorRouter {
   ~ErrorRouter() = default;
 };
 
-// "MPI_Send" from a function signature as std::source_location spells it (or a bare name).
+// "MPI_Send" from a function signature as std::source_location spells it ("int gcsim_MPI_Send(const
+// void*, ...)": the link name), or a bare name.
 std::string entry_point_name(const char* signature);
 
 // Marks one entry point running on r's rank; raise() routes its error.

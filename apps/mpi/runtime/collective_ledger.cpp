@@ -43,9 +43,9 @@ std::string CollectiveSignature::text() const {
   return call + "(" + args + ")";
 }
 
-void CollectiveLedger::arrive(std::int64_t context, std::uint32_t sequence, int comm_size, int comm_rank,
-                              const std::string& comm_name, const CollectiveSignature& mine) {
-  const auto key = std::make_pair(context, sequence);
+void CollectiveLedger::arrive(std::int64_t context, int first_member, std::uint32_t sequence, int comm_size,
+                              int comm_rank, const std::string& comm_name, const CollectiveSignature& mine) {
+  const auto key = std::make_tuple(context, first_member, sequence);
   auto it = entries_.find(key);
   if (it == entries_.end()) it = entries_.emplace(key, Entry{mine, comm_rank, 0}).first;
   const Entry& e = it->second;

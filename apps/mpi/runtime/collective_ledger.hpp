@@ -2,7 +2,8 @@
 // Mismatched collectives found when they are called (MPI 3.1 section 5.1: every rank of a
 // communicator calls the same collective, with the same root and op, and type signatures that
 // match). All ranks of `gcsim mpirun` live in one gcsim process, so each call's signature is
-// recorded host-side per (collective context, sequence number) and compared with the first
+// recorded host-side per (collective context, first member, sequence number; the groups of one
+// MPI_Comm_split share a context, being disjoint) and compared with the first
 // arrival's as the others arrive: no simulated cost, no extra message, the same on every run.
 // The first arrival goes on (it cannot know yet); a later one that disagrees fails with the class
 // of the first difference, naming both calls. Forgotten once every member has arrived.
@@ -10,7 +11,7 @@
 #include <map>
 #include <optional>
 #include <string>
-#include <utility>
+#include <tuple>
 
 #include "apps/mpi/datatype.hpp"
 #include "apps/mpi/include/mpi.h"
@@ -33,8 +34,9 @@ class CollectiveLedger {
  public:
   // Throws Error (MPI_ERR_OTHER: another collective; MPI_ERR_ROOT, MPI_ERR_OP, MPI_ERR_TYPE or
   // MPI_ERR_COUNT) if mine disagrees with the first rank's call of this (context, sequence).
-  void arrive(std::int64_t context, std::uint32_t sequence, int comm_size, int comm_rank, const std::string& comm_name,
-              const CollectiveSignature& mine);
+  // first_member: the world rank of the communicator's rank 0.
+  void arrive(std::int64_t context, int first_member, std::uint32_t sequence, int comm_size, int comm_rank,
+              const std::string& comm_name, const CollectiveSignature& mine);
 
  private:
   struct Entry {
@@ -42,7 +44,7 @@ class CollectiveLedger {
     int first_rank = 0;
     int arrived = 0;
   };
-  std::map<std::pair<std::int64_t, std::uint32_t>, Entry> entries_;
+  std::map<std::tuple<std::int64_t, int, std::uint32_t>, Entry> entries_;
 };
 
 }  // namespace gcsim::mpi_layer

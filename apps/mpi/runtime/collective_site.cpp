@@ -37,7 +37,8 @@ CollectiveSite::CollectiveSite(Rank& rank, const char* call, MPI_Comm comm, cons
 CollectiveCall CollectiveSite::call() {
   const std::uint32_t sequence = reserved_sequence ? *reserved_sequence : comm_.collectives;
   if (rank_.collective_ledger) {
-    rank_.collective_ledger->arrive(comm_.collective_context(), sequence, size(), rank(), Rank::comm_name(comm_.handle), signature_);
+    rank_.collective_ledger->arrive(comm_.collective_context(), comm_.world_rank_of(0), sequence, size(), rank(),
+                                    Rank::comm_name(comm_.handle), signature_);
   }
   if (reserved_sequence) reserved_sequence.reset();
   else ++comm_.collectives;
