@@ -1,25 +1,31 @@
 #pragma once
-// How a C entry point reports what the core throws: as its return value. Today every error is
-// returned (MPI_ERRORS_RETURN); the runtime will send it through the communicator's error
-// handler first, whose default, MPI_ERRORS_ARE_FATAL, aborts.
+// How a C entry point reports what the core throws: through the error handler of the
+// communicator it names (error_handling.hpp; the runtime acts on MPI_ERRORS_ARE_FATAL, the
+// default, MPI_ERRORS_RETURN and user handlers), then as its return value. The entry point names
+// itself through std::source_location, so no call repeats its own name.
 #include <new>
+#include <source_location>
 
 #include "apps/mpi/error.hpp"
+#include "apps/mpi/error_handling.hpp"
 #include "apps/mpi/registry.hpp"
 
 namespace gcsim::mpi_layer {
 
+// Not noexcept: a fatal error, or MPI_Abort from a user's handler, unwinds the rank's program.
 template <class F>
-int c_call(F&& body) noexcept {
+int c_call(F&& body, std::source_location where = std::source_location::current()) {
+  Registry& r = current_registry();
+  CallScope scope(r, where.function_name());
   try {
-    body(current_registry());
+    body(r);
     return MPI_SUCCESS;
   } catch (const Error& e) {
-    return e.code();
+    return scope.raise(e);
   } catch (const std::bad_alloc&) {
-    return MPI_ERR_NO_MEM;
+    return scope.raise(Error(MPI_ERR_NO_MEM, "out of host memory"));
   } catch (...) {
-    return MPI_ERR_INTERN;
+    return scope.raise(Error(MPI_ERR_INTERN, "an internal error of the MPI layer"));
   }
 }
 

@@ -18,11 +18,11 @@ std::span<const T> array_arg(const T* p, int count) {
 
 // Runs a constructor on the resolved old type and registers the result.
 template <class Make>
-int construct(MPI_Datatype oldtype, MPI_Datatype* newtype, Make make) {
+int construct(MPI_Datatype oldtype, MPI_Datatype* newtype, Make make, std::source_location where = std::source_location::current()) {
   return c_call([&](Registry& r) {
     MPI_Datatype& out = out_arg(newtype);
     out = r.datatypes.insert(make(datatype_arg(r, oldtype, false)));
-  });
+  }, where);
 }
 
 }  // namespace

@@ -24,12 +24,12 @@ std::vector<RankRange> range_array(int ranges[][3], int n) {
 
 // Registers a new group; an empty one is MPI_GROUP_EMPTY.
 template <class Make>
-int make_group(MPI_Group* newgroup, Make make) {
+int make_group(MPI_Group* newgroup, Make make, std::source_location where = std::source_location::current()) {
   return c_call([&](Registry& r) {
     MPI_Group& out = out_arg(newgroup);
     Group g = make(r);
     out = g.size() == 0 ? MPI_GROUP_EMPTY : r.groups.insert(std::move(g));
-  });
+  }, where);
 }
 
 }  // namespace

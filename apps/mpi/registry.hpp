@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "apps/mpi/datatype.hpp"
+#include "apps/mpi/error_handling.hpp"
 #include "apps/mpi/group.hpp"
 #include "apps/mpi/reduction.hpp"
 
@@ -39,6 +40,9 @@ struct Registry {
   HandleTable<Op> ops;
   HandleTable<Group> groups;
   int world_rank = 0;  // this rank in MPI_COMM_WORLD (MPI_Group_rank)
+  HandleTable<UserErrhandler> errhandlers;
+  CallInProgress call;             // the entry point this rank is in (error_handling.hpp)
+  ErrorRouter* errors = nullptr;   // the runtime's; null: every error is returned
 };
 
 Registry& current_registry();

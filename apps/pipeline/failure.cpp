@@ -18,6 +18,7 @@ std::string exit_code_table() {
          "    3  a file cannot be read, parsed or written (scene, machine file, output path)\n"
          "    4  resources: host or node memory exhausted\n"
          "    5  deadlock in the simulated program\n"
+         "    6  an MPI program's error under MPI_ERRORS_ARE_FATAL (gcsim mpirun)\n"
          "   70  a simulated processor overflowed its fiber stack (raise [runtime] fiber_stack_kib)\n"
          "  130  interrupted (SIGINT or SIGTERM): finished results written, marked \"interrupted\"";
 }

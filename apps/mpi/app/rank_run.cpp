@@ -6,9 +6,13 @@
 
 #include "apps/mpi/app/output_capture.hpp"
 #include "apps/mpi/app/program_copies.hpp"
+#include "apps/mpi/app/rank_deadlock_report.hpp"
+#include "apps/mpi/runtime/collective_ledger.hpp"
+#include "apps/mpi/runtime/error_routing.hpp"
 #include "apps/mpi/runtime/rank.hpp"
 #include "apps/pipeline/command_groups.hpp"
 #include "parix/sim/fiber_stack.hpp"
+#include "parix/sim/simulated_runtime.hpp"
 
 namespace gcsim::mpi_layer::app {
 namespace {
@@ -16,12 +20,13 @@ namespace {
 // What one rank does: its Rank installed, the program's main on its own copy, its exit status kept.
 parix::Program rank_program(const MpirunOptions& o, const ProgramCopies& copies, OutputCapture& capture,
                             const machine::MachineConfig::Mpi& costs, const ComputeSettings& computing,
-                            std::vector<int>& statuses) {
+                            std::vector<int>& statuses, CollectiveLedger& ledger) {
   std::vector<int> members(static_cast<std::size_t>(o.np));
   for (int r = 0; r < o.np; ++r) members[static_cast<std::size_t>(r)] = r;
   auto world = std::make_shared<const std::vector<int>>(std::move(members));  // one for all ranks
-  return [&o, &copies, &capture, costs, computing, &statuses, world](parix::Processor& p) {
+  return [&o, &copies, &capture, costs, computing, &statuses, world, &ledger](parix::Processor& p) {
     Rank rank(p, costs, world);
+    rank.collective_ledger = &ledger;
     rank.computing.settings = computing;
     rank.collective_algorithms = o.collectives;
     const int id = p.id();
@@ -58,12 +63,19 @@ RankRun run_ranks(const MpirunOptions& o, const parix::RunOptions& run, const Co
   out.statuses.assign(static_cast<std::size_t>(o.np), 0);
   OutputCapture capture(o.np, o.tag_output);
   if (silent) capture.keep_silent();
+  CollectiveLedger ledger;  // the ranks' collective calls, compared as they are made
   try {
-    out.result = parix::run(run, rank_program(o, copies, capture, costs, computing, out.statuses));
+    out.result = parix::run(run, rank_program(o, copies, capture, costs, computing, out.statuses, ledger));
   } catch (const AbortRequested& a) {
     capture.finish();
     std::fprintf(stderr, "gcsim: rank %d called MPI_Abort with error code %d\n", a.rank, a.code);
     throw pipeline::ExitStatus{a.code == 0 ? 1 : a.code};
+  } catch (const parix::DeadlockError& d) {
+    throw parix::DeadlockError(rank_deadlock_report(d.what()));
+  } catch (const FatalMpiError& e) {
+    capture.finish();
+    std::fprintf(stderr, "gcsim: %s\n", e.message.c_str());
+    throw pipeline::ExitStatus{kMpiErrorExitCode};
   }
   capture.finish();
   for (std::size_t r = 0; r < out.statuses.size() && out.failed_rank < 0; ++r) {

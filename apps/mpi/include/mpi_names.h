@@ -32,6 +32,7 @@
 #define MPI_Cart_shift gcsim_MPI_Cart_shift
 #define MPI_Cart_sub gcsim_MPI_Cart_sub
 #define MPI_Cartdim_get gcsim_MPI_Cartdim_get
+#define MPI_Comm_call_errhandler gcsim_MPI_Comm_call_errhandler
 #define MPI_Comm_compare gcsim_MPI_Comm_compare
 #define MPI_Comm_create gcsim_MPI_Comm_create
 #define MPI_Comm_create_errhandler gcsim_MPI_Comm_create_errhandler

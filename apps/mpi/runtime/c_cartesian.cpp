@@ -54,6 +54,7 @@ int MPI_Cart_create(MPI_Comm comm_old, int ndims, const int dims[], const int pe
                     : std::make_shared<const std::vector<int>>(parent.members->begin(), parent.members->begin() + grid->size());
     c.context = context;
     c.cart = std::move(grid);
+    c.errhandler = parent.errhandler;  // inherited (MPI 3.1 section 8.3.1)
     out = rank.add_comm(std::move(c));
   });
 }

@@ -43,6 +43,7 @@ void allgather_v(const void* sendbuf, int sendcount, MPI_Datatype sendtype, void
   }
   check_own_block(s, own.size(), sizes[me]);
   copy_into(all, at[me], own);
+  if (!varying) s.agree_on_data(recvcount, recv_type, recvtype);
   const CollectiveCall call = s.call();
   if (varying) allgatherv(call, all, sizes, at, s.algorithm(Collective::Allgatherv));
   else allgather(call, all, sizes[0], s.algorithm(Collective::Allgather));
@@ -136,6 +137,7 @@ int MPI_Allreduce(const void* sendbuf, void* recvbuf, int count, MPI_Datatype da
     s.check_buffer(sendbuf, count, true, "sendbuf");
     s.check_buffer(recvbuf, count, false, "recvbuf");
     const Datatype& type = s.datatype(datatype);
+    s.agree_on_data(count, type, datatype);
     const Reduction reduction = reduction_for(s.op(op), type, datatype);
     const Bytes send = pack_of(sendbuf == MPI_IN_PLACE ? recvbuf : sendbuf, count, type);
     Bytes result(send.size());

@@ -13,7 +13,7 @@ namespace {
 
 template <class Blocking>
 int start_nonblocking(const char* name, MPI_Comm comm, MPI_Request* request, Blocking blocking) {
-  return runtime_call([&](Rank& rank) {
+  return runtime_call_as(name, [&](Rank& rank) {
     MPI_Request& out = out_arg(request);
     Communicator& c = communicator_of(rank, name, comm);
     const std::uint32_t sequence = c.collectives++;

@@ -15,7 +15,7 @@ struct Operands {
   Reduction reduction;
 };
 
-Operands operands_of(const CollectiveSite& s, MPI_Datatype datatype, MPI_Op op) {
+Operands operands_of(CollectiveSite& s, MPI_Datatype datatype, MPI_Op op) {
   const Datatype& type = s.datatype(datatype);
   return {type, reduction_for(s.op(op), type, datatype)};
 }
@@ -32,6 +32,7 @@ void reduce_scatter_any(const char* name, const void* sendbuf, void* recvbuf, co
     s.check_counts(recvcounts, "recvcounts");
   }
   const Operands o = operands_of(s, datatype, op);
+  if (block) s.agree_on_data(recvcount, o.type, datatype);
   const long long total = std::accumulate(recvcounts, recvcounts + s.size(), 0ll);
   const int mine = recvcounts[s.rank()];
   s.check_buffer(sendbuf, total, true, "sendbuf");
@@ -56,6 +57,7 @@ void prefix(const char* name, const void* sendbuf, void* recvbuf, int count, MPI
   s.check_buffer(sendbuf, count, true, "sendbuf");
   s.check_buffer(recvbuf, count, false, "recvbuf");
   const Operands o = operands_of(s, datatype, op);
+  s.agree_on_data(count, o.type, datatype);
   const Bytes send = pack_of(sendbuf == MPI_IN_PLACE ? recvbuf : sendbuf, count, o.type);
   Bytes result(send.size());
   const CollectiveCall call = s.call();

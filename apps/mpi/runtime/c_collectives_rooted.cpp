@@ -45,6 +45,7 @@ void gather_v(const void* sendbuf, int sendcount, MPI_Datatype sendtype, void* r
   Bytes send;
   if (!at_root) {
     send = pack_of(sendbuf, sendcount, *send_type);
+    if (!varying) s.agree_on_data(sendcount, *send_type, sendtype);
     const CollectiveCall call = s.call();
     if (varying) gatherv(call, send, {}, {}, {}, root, s.algorithm(Collective::Gatherv));
     else gather(call, send, {}, root, s.algorithm(Collective::Gather));
@@ -61,6 +62,7 @@ void gather_v(const void* sendbuf, int sendcount, MPI_Datatype sendtype, void* r
     s.fail(MPI_ERR_TRUNCATE, "the root sends " + std::to_string(send.size()) + " bytes but receives " +
                                  std::to_string(blocks.sizes[static_cast<std::size_t>(root)]) + " from itself");
   }
+  if (!varying) s.agree_on_data(recvcount, recv_type, recvtype);
   const CollectiveCall call = s.call();
   if (varying) gatherv(call, send, blocks.all, blocks.sizes, blocks.displacements, root, s.algorithm(Collective::Gatherv));
   else gather(call, send, blocks.all, root, s.algorithm(Collective::Gather));
@@ -87,6 +89,7 @@ void scatter_v(const void* sendbuf, const int* sendcounts, const int* displs, in
   }
   Bytes mine(in_place ? 0 : packed_bytes(recvcount, *recv_type));
   if (!at_root) {
+    if (!varying) s.agree_on_data(recvcount, *recv_type, recvtype);
     const CollectiveCall call = s.call();
     if (varying) scatterv(call, {}, {}, {}, mine, root, s.algorithm(Collective::Scatterv));
     else scatter(call, {}, mine, root, s.algorithm(Collective::Scatter));
@@ -107,6 +110,7 @@ void scatter_v(const void* sendbuf, const int* sendcounts, const int* displs, in
     s.fail(MPI_ERR_TRUNCATE, "the root receives " + std::to_string(mine.size()) + " bytes but sends itself " +
                                  std::to_string(blocks.sizes[static_cast<std::size_t>(root)]));
   }
+  if (!varying) s.agree_on_data(sendcount, send_type, sendtype);
   const CollectiveCall call = s.call();
   if (varying) scatterv(call, blocks.all, blocks.sizes, blocks.displacements, mine, root, s.algorithm(Collective::Scatterv));
   else scatter(call, blocks.all, mine, root, s.algorithm(Collective::Scatter));
@@ -131,6 +135,7 @@ int MPI_Bcast(void* buffer, int count, MPI_Datatype datatype, int root, MPI_Comm
     s.check_root(root);
     s.check_buffer(buffer, count, false, "buffer");
     const Datatype& type = s.datatype(datatype);
+    s.agree_on_data(count, type, datatype);
     Bytes data = s.rank() == root ? pack_of(buffer, count, type) : Bytes(packed_bytes(count, type));
     bcast(s.call(), data, root, s.algorithm(Collective::Bcast));
     if (s.rank() != root) unpack_into(data, buffer, count, type);
@@ -146,6 +151,7 @@ int MPI_Reduce(const void* sendbuf, void* recvbuf, int count, MPI_Datatype datat
     s.check_buffer(sendbuf, count, at_root, "sendbuf");
     if (at_root) s.check_buffer(recvbuf, count, false, "recvbuf");
     const Datatype& type = s.datatype(datatype);
+    s.agree_on_data(count, type, datatype);
     const Reduction reduction = reduction_for(s.op(op), type, datatype);
     const Bytes send = pack_of(sendbuf == MPI_IN_PLACE ? recvbuf : sendbuf, count, type);
     Bytes result(at_root ? send.size() : 0);

@@ -44,6 +44,7 @@ MPI_Comm child(Rank& rank, Communicator& parent, std::vector<int> members) {
   c.rank = static_cast<int>(me - members.begin());
   c.members = std::make_shared<const std::vector<int>>(std::move(members));
   c.context = context;
+  c.errhandler = parent.errhandler;  // section 8.3.1: a new communicator inherits its parent's
   return rank.add_comm(std::move(c));
 }
 
@@ -127,19 +128,5 @@ int MPI_Comm_group(MPI_Comm comm, MPI_Group* group) {
     out_arg(group) = rank.registry().groups.insert(Group(*c.members));
   });
 }
-
-int MPI_Comm_set_errhandler(MPI_Comm comm, MPI_Errhandler errhandler) {
-  return runtime_call([&](Rank& rank) {
-    if (errhandler != MPI_ERRORS_RETURN && errhandler != MPI_ERRORS_ARE_FATAL) fail(MPI_ERR_ARG, "unknown error handler");
-    rank.comm(comm).errhandler = errhandler;
-  });
-}
-
-int MPI_Comm_get_errhandler(MPI_Comm comm, MPI_Errhandler* errhandler) {
-  return runtime_call([&](Rank& rank) { out_arg(errhandler) = rank.comm(comm).errhandler; });
-}
-
-int MPI_Errhandler_set(MPI_Comm comm, MPI_Errhandler errhandler) { return MPI_Comm_set_errhandler(comm, errhandler); }
-int MPI_Errhandler_get(MPI_Comm comm, MPI_Errhandler* errhandler) { return MPI_Comm_get_errhandler(comm, errhandler); }
 
 }  // extern "C"

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "apps/mpi/c_call.hpp"
+#include "apps/mpi/runtime/p2p_arguments.hpp"
 #include "apps/mpi/runtime/rank.hpp"
 
 using namespace gcsim::mpi_layer;
@@ -22,7 +23,9 @@ std::string calls_of(Rank& rank, const char* call, int count, const MPI_Request*
 // inactive persistent one (which they skip, as the standard says).
 bool counted(Rank& rank, MPI_Request r) { return r != MPI_REQUEST_NULL && !rank.inactive(r); }
 
+// Also refuses a negative count (MPI_ERR_COUNT): every call on an array of requests asks this first.
 bool all_null(Rank& rank, int count, const MPI_Request* rs) {
+  check_message_count(count);
   for (int i = 0; i < count; ++i) {
     if (counted(rank, rs[i])) return false;
   }
@@ -64,6 +67,7 @@ int MPI_Wait(MPI_Request* request, MPI_Status* status) {
     const std::string call = "MPI_Wait on " + rank.operation(h).call;
     rank.wait_until([&] { return rank.test(h); }, call);
     error = rank.finish(h, status);
+    fail_with(error);
   });
   return code != MPI_SUCCESS ? code : error;
 }
@@ -78,6 +82,7 @@ int MPI_Test(MPI_Request* request, int* flag, MPI_Status* status) {
     done = rank.test(h) ? 1 : 0;
     if (done) error = rank.finish(h, status);
     else rank.charge(0);  // a polling loop advances simulated time by o per try
+    fail_with(error);
   });
   return code != MPI_SUCCESS ? code : error;
 }
@@ -85,7 +90,7 @@ int MPI_Test(MPI_Request* request, int* flag, MPI_Status* status) {
 int MPI_Waitall(int count, MPI_Request array_of_requests[], MPI_Status array_of_statuses[]) {
   int error = MPI_SUCCESS;
   const int code = runtime_call([&](Rank& rank) {
-    if (count < 0) fail(MPI_ERR_COUNT, "negative count");
+    check_message_count(count);
     const std::string call = calls_of(rank, "MPI_Waitall", count, array_of_requests);
     rank.wait_until([&] {
       for (int i = 0; i < count; ++i) {
@@ -101,6 +106,7 @@ int MPI_Waitall(int count, MPI_Request array_of_requests[], MPI_Status array_of_
       const int e = rank.finish(array_of_requests[i], array_of_statuses ? &array_of_statuses[i] : nullptr);
       if (e != MPI_SUCCESS) error = MPI_ERR_IN_STATUS;
     }
+    fail_with(error);
   });
   return code != MPI_SUCCESS ? code : error;
 }
@@ -108,11 +114,12 @@ int MPI_Waitall(int count, MPI_Request array_of_requests[], MPI_Status array_of_
 int MPI_Testall(int count, MPI_Request array_of_requests[], int* flag, MPI_Status array_of_statuses[]) {
   return runtime_call([&](Rank& rank) {
     int& all = out_arg(flag);
+    check_message_count(count);
     all = 1;
     for (int i = 0; i < count; ++i) {
       if (array_of_requests[i] != MPI_REQUEST_NULL && !rank.test(array_of_requests[i])) all = 0;
     }
-    if (all) finish_done(rank, count, array_of_requests, array_of_statuses, nullptr, nullptr);
+    if (all) fail_with(finish_done(rank, count, array_of_requests, array_of_statuses, nullptr, nullptr));
     else rank.charge(0);
   });
 }
@@ -131,6 +138,7 @@ int MPI_Waitany(int count, MPI_Request array_of_requests[], int* index, MPI_Stat
       return false;
     }, call);
     error = rank.finish(array_of_requests[which], status);
+    fail_with(error);
   });
   return code != MPI_SUCCESS ? code : error;
 }
@@ -148,6 +156,7 @@ int MPI_Testany(int count, MPI_Request array_of_requests[], int* index, int* fla
     }
     if (found) error = rank.finish(array_of_requests[which], status);
     else rank.charge(0);
+    fail_with(error);
   });
   return code != MPI_SUCCESS ? code : error;
 }
@@ -166,6 +175,7 @@ int MPI_Waitsome(int incount, MPI_Request array_of_requests[], int* outcount, in
       return false;
     }, call);
     error = finish_done(rank, incount, array_of_requests, array_of_statuses, &n, array_of_indices);
+    fail_with(error);
   });
   return code != MPI_SUCCESS ? code : error;
 }
@@ -177,6 +187,7 @@ int MPI_Testsome(int incount, MPI_Request array_of_requests[], int* outcount, in
     int& n = out_arg(outcount);
     if (all_null(rank, incount, array_of_requests)) return (void)(n = MPI_UNDEFINED);
     error = finish_done(rank, incount, array_of_requests, array_of_statuses, &n, array_of_indices);
+    fail_with(error);
     if (n == 0) rank.charge(0);
   });
   return code != MPI_SUCCESS ? code : error;
@@ -185,6 +196,8 @@ int MPI_Testsome(int incount, MPI_Request array_of_requests[], int* outcount, in
 int MPI_Probe(int source, int tag, MPI_Comm comm, MPI_Status* status) {
   return runtime_call([&](Rank& rank) {
     const Communicator& c = rank.comm(comm);
+    check_peer(c, source, true);
+    check_tag(tag, true);
     if (source == MPI_PROC_NULL) {
       empty_status(status);
       if (status) status->MPI_SOURCE = MPI_PROC_NULL;
@@ -200,6 +213,8 @@ int MPI_Probe(int source, int tag, MPI_Comm comm, MPI_Status* status) {
 int MPI_Iprobe(int source, int tag, MPI_Comm comm, int* flag, MPI_Status* status) {
   return runtime_call([&](Rank& rank) {
     const Communicator& c = rank.comm(comm);
+    check_peer(c, source, true);
+    check_tag(tag, true);
     int& found = out_arg(flag);
     if (source == MPI_PROC_NULL) {
       found = 1;

@@ -2,6 +2,7 @@
 #include <string>
 
 #include "apps/mpi/c_call.hpp"
+#include "apps/mpi/runtime/p2p_arguments.hpp"
 #include "apps/mpi/runtime/rank.hpp"
 #include "apps/mpi/type_transfer.hpp"
 
@@ -24,26 +25,17 @@ std::string describe(const char* call, const char* peer_name, int peer, int tag,
   return text;
 }
 
-void check_peer(const Communicator& c, int peer, bool any_allowed) {
-  if (peer == MPI_PROC_NULL || (any_allowed && peer == MPI_ANY_SOURCE)) return;
-  if (peer < 0 || peer >= c.size()) fail(MPI_ERR_RANK, "rank outside the communicator");
-}
-
-void check_tag(int tag, bool any_allowed) {
-  if (any_allowed && tag == MPI_ANY_TAG) return;
-  if (tag < 0) fail(MPI_ERR_TAG, "negative tag");
-}
-
 // MPI_PROC_NULL: complete at once, source MPI_PROC_NULL, tag MPI_ANY_TAG, no bytes.
 MPI_Request done_request(Rank& rank, const char* call) { return rank.start_null(call); }
 
 MPI_Request start_send(Rank& rank, const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm,
                        SendMode mode, const char* call) {
   const Communicator& c = rank.comm(comm);
-  check_count_arg(count);
+  check_message_count(count);
   check_peer(c, dest, false);
   check_tag(tag, false);
   const Datatype& type = datatype_arg(rank.registry(), datatype, true);
+  check_message_buffer(buf, count, datatype);
   if (dest == MPI_PROC_NULL) return done_request(rank, call);
   parix::Bytes payload(static_cast<std::size_t>(pack_size(count, type)));
   MPI_Count position = 0;
@@ -57,10 +49,11 @@ MPI_Request start_send(Rank& rank, const void* buf, int count, MPI_Datatype data
 MPI_Request start_recv(Rank& rank, void* buf, int count, MPI_Datatype datatype, int source, int tag, MPI_Comm comm,
                        const char* call) {
   const Communicator& c = rank.comm(comm);
-  check_count_arg(count);
+  check_message_count(count);
   check_peer(c, source, true);
   check_tag(tag, true);
   const Datatype& type = datatype_arg(rank.registry(), datatype, true);
+  check_message_buffer(buf, count, datatype);
   if (source == MPI_PROC_NULL) return done_request(rank, call);
   return rank.start_recv(c, c.context, source, tag, buf, count, type, describe(call, "source", source, tag, comm));
 }
@@ -74,16 +67,17 @@ int wait_for(Rank& rank, MPI_Request& h, MPI_Status* status) {
 int blocking_send(const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm, SendMode mode,
                   const char* call) {
   int error = MPI_SUCCESS;
-  const int code = runtime_call([&](Rank& rank) {
+  const int code = runtime_call_as(call, [&](Rank& rank) {
     MPI_Request h = start_send(rank, buf, count, datatype, dest, tag, comm, mode, call);
     error = wait_for(rank, h, MPI_STATUS_IGNORE);
+    fail_with(error);
   });
   return code != MPI_SUCCESS ? code : error;
 }
 
 int nonblocking_send(const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm, SendMode mode,
                      const char* call, MPI_Request* request) {
-  return runtime_call([&](Rank& rank) {
+  return runtime_call_as(call, [&](Rank& rank) {
     out_arg(request) = start_send(rank, buf, count, datatype, dest, tag, comm, mode, call);
   });
 }
@@ -122,6 +116,7 @@ int MPI_Recv(void* buf, int count, MPI_Datatype datatype, int source, int tag, M
   const int code = runtime_call([&](Rank& rank) {
     MPI_Request h = start_recv(rank, buf, count, datatype, source, tag, comm, "MPI_Recv");
     error = wait_for(rank, h, status);
+    fail_with(error);
   });
   return code != MPI_SUCCESS ? code : error;
 }
@@ -140,6 +135,7 @@ int MPI_Sendrecv(const void* sendbuf, int sendcount, MPI_Datatype sendtype, int 
     rank.wait_until([&] { return rank.test(s) && rank.test(r); }, call);
     rank.finish(s, MPI_STATUS_IGNORE);
     error = rank.finish(r, status);
+    fail_with(error);
   });
   return code != MPI_SUCCESS ? code : error;
 }
@@ -155,6 +151,7 @@ int MPI_Sendrecv_replace(void* buf, int count, MPI_Datatype datatype, int dest, 
     rank.wait_until([&] { return rank.test(s) && rank.test(r); }, call);
     rank.finish(s, MPI_STATUS_IGNORE);
     error = rank.finish(r, status);
+    fail_with(error);
   });
   return code != MPI_SUCCESS ? code : error;
 }

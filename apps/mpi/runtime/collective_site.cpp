@@ -30,17 +30,34 @@ ReservedSequence::ReservedSequence(std::uint32_t sequence) { reserved_sequence =
 ReservedSequence::~ReservedSequence() { reserved_sequence.reset(); }
 
 CollectiveSite::CollectiveSite(Rank& rank, const char* call, MPI_Comm comm, const std::string& details)
-    : rank_(rank), call_(call), comm_(communicator_of(rank, call, comm)), channel_(rank, comm, described(call, comm, details)) {}
-
-CollectiveCall CollectiveSite::call() {
-  if (reserved_sequence) return CollectiveCall{channel_, *std::exchange(reserved_sequence, std::nullopt)};
-  return CollectiveCall{channel_, comm_.collectives++};
+    : rank_(rank), call_(call), comm_(communicator_of(rank, call, comm)), channel_(rank, comm, described(call, comm, details)) {
+  signature_.call = call;
 }
 
-void CollectiveSite::check_root(int root) const {
+CollectiveCall CollectiveSite::call() {
+  const std::uint32_t sequence = reserved_sequence ? *reserved_sequence : comm_.collectives;
+  if (rank_.collective_ledger) {
+    rank_.collective_ledger->arrive(comm_.collective_context(), comm_.world_rank_of(0), sequence, size(), rank(),
+                                    Rank::comm_name(comm_.handle), signature_);
+  }
+  if (reserved_sequence) reserved_sequence.reset();
+  else ++comm_.collectives;
+  return CollectiveCall{channel_, sequence};
+}
+
+void CollectiveSite::agree_on_data(long long count, const Datatype& type, MPI_Datatype handle) {
+  signature_.type = type;
+  signature_.count = count;
+  const auto basic = basic_of_handle(handle);
+  signature_.data_text = std::to_string(count) + " x " +
+                         (basic ? std::string(basic_name(*basic)) : "a derived type of " + std::to_string(type.size()) + " bytes");
+}
+
+void CollectiveSite::check_root(int root) {
   if (root < 0 || root >= size()) {
     fail(MPI_ERR_ROOT, "root " + std::to_string(root) + " outside the communicator of " + std::to_string(size()) + " ranks");
   }
+  signature_.root = root;
 }
 
 void CollectiveSite::check_count(long long count, const char* which) const {
@@ -55,9 +72,11 @@ const Datatype& CollectiveSite::datatype(MPI_Datatype handle) const {
   }
 }
 
-const Op& CollectiveSite::op(MPI_Op handle) const {
+const Op& CollectiveSite::op(MPI_Op handle) {
   try {
-    return op_arg(rank_.registry(), handle);
+    const Op& found = op_arg(rank_.registry(), handle);
+    signature_.op = handle;
+    return found;
   } catch (const Error& e) {
     fail(e.code(), e.what());
   }

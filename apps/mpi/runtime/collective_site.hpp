@@ -11,6 +11,7 @@
 
 #include "apps/mpi/c_call.hpp"
 #include "apps/mpi/collective_algorithms.hpp"
+#include "apps/mpi/runtime/collective_ledger.hpp"
 #include "apps/mpi/runtime/rank_channel.hpp"
 
 namespace gcsim::mpi_layer {
@@ -31,14 +32,19 @@ class CollectiveSite {
   Registry& registry() { return rank_.registry(); }
   Algorithm algorithm(Collective c) const { return rank_.collective_algorithms[c]; }
   // The sequence number is taken here, once the arguments are checked, so a call refused on one
-  // rank does not shift the numbering of the next ones.
+  // rank does not shift the numbering of the next ones. Then the call's signature (its name, and
+  // the root, op and data the checks below recorded) must agree with the other ranks'
+  // (collective_ledger.hpp), or the call fails.
   CollectiveCall call();
+  // Every rank's block has the signature of count x type (bcast, the reductions, the uniform
+  // gathers and scatters); the v-forms' blocks are checked by their sizes as they arrive.
+  void agree_on_data(long long count, const Datatype& type, MPI_Datatype handle);
 
   [[noreturn]] void fail(int code, const std::string& what) const { fail_in(call_, code, what); }
-  void check_root(int root) const;
+  void check_root(int root);
   void check_count(long long count, const char* which = "count") const;
   const Datatype& datatype(MPI_Datatype handle) const;
-  const Op& op(MPI_Op handle) const;
+  const Op& op(MPI_Op handle);
   // A buffer that holds count > 0 elements must not be null; MPI_IN_PLACE only where allowed.
   void check_buffer(const void* buf, long long count, bool in_place_allowed, const char* which) const;
   // counts[i] >= 0 for every rank; null arrays are MPI_ERR_ARG.
@@ -56,6 +62,7 @@ class CollectiveSite {
   const char* call_;
   Communicator& comm_;
   RankChannel channel_;
+  CollectiveSignature signature_;
 };
 
 // A non-blocking collective runs its blocking form later with the sequence number it took at its

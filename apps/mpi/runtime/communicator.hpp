@@ -20,8 +20,8 @@ struct Communicator {
   std::int64_t children = 0;                         // contexts derived from this one so far
   std::shared_ptr<const CartTopology> cart;  // MPI_Cart_create's grid, if it made this one
   std::uint32_t collectives = 0;  // collectives started on it: the next one's sequence number
-  // Kept for MPI_Comm_get_errhandler; errors are returned whichever it is (apps/mpi/README.md).
-  int errhandler = 2;  // MPI_ERRORS_RETURN
+  int errhandler = 1;  // MPI_ERRORS_ARE_FATAL, the standard's default; a child inherits its parent's
+  int handle = 0;      // its MPI_Comm, set by Rank::add_comm
   std::shared_ptr<const GraphTopology> graph = nullptr;  // MPI_Graph_create's graph, if it made this one
   std::map<int, void*> attributes{};           // keyval -> value (MPI_Comm_set_attr)
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "apps/mpi/runtime/rank_letters.hpp"
+#include "apps/mpi/runtime/error_routing.hpp"
 #include "apps/mpi/type_transfer.hpp"
 #include "parix/sim/fiber_stack.hpp"
 
@@ -42,6 +43,9 @@ Rank::Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs
   comms_[MPI_COMM_WORLD] = Communicator{std::move(world), processor.id(), 2, 0, nullptr};
   comms_[MPI_COMM_SELF] =
       Communicator{std::make_shared<const std::vector<int>>(std::vector<int>{processor.id()}), 0, 4, 0, nullptr};
+  comms_[MPI_COMM_WORLD].handle = MPI_COMM_WORLD;
+  comms_[MPI_COMM_SELF].handle = MPI_COMM_SELF;
+  registry_.errors = &runtime_error_router();
 }
 
 Rank& Rank::current() {
@@ -58,12 +62,16 @@ void Rank::install() {
 
 Communicator& Rank::comm(MPI_Comm handle) {
   const auto it = comms_.find(handle);
-  if (it == comms_.end()) fail(MPI_ERR_COMM, "invalid communicator");
+  if (it == comms_.end()) {
+    fail(MPI_ERR_COMM, handle == MPI_COMM_NULL ? "MPI_COMM_NULL is not a communicator" : "invalid or freed communicator");
+  }
+  registry_.call.name_target(handle);
   return it->second;
 }
 
 MPI_Comm Rank::add_comm(Communicator c) {
   const MPI_Comm h = next_comm_++;
+  c.handle = h;
   comms_.emplace(h, std::move(c));
   return h;
 }
@@ -97,7 +105,8 @@ MPI_Request Rank::start_null(std::string call) {
 
 Operation& Rank::operation(MPI_Request handle) {
   const auto it = operations_.find(handle);
-  if (it == operations_.end()) fail(MPI_ERR_REQUEST, "invalid request");
+  if (it == operations_.end()) fail(MPI_ERR_REQUEST, "invalid or freed request");
+  registry_.call.name_target(it->second.comm);
   return it->second;
 }
 
@@ -128,6 +137,7 @@ MPI_Request Rank::start_send(const Communicator& c, std::int64_t context, int de
   Operation op;
   op.is_send = true;
   op.call = std::move(call);
+  op.comm = c.handle;
   op.context = context;
   op.tag = tag;
   op.peer_world = c.world_rank_of(dest);
@@ -152,6 +162,7 @@ MPI_Request Rank::start_recv(const Communicator& c, std::int64_t context, int so
                              MPI_Count count, const Datatype& type, std::string call) {
   Operation op;
   op.call = std::move(call);
+  op.comm = c.handle;
   op.members = c.members;
   op.context = context;
   op.tag = tag;
@@ -258,8 +269,12 @@ void Rank::deliver(Operation& r, std::span<const std::byte> data) {
   r.done = true;
   r.status.MPI_ERROR = MPI_SUCCESS;
   if (r.is_raw) {
-    if (data.size() != r.raw.size()) fail(MPI_ERR_INTERN, "a collective received a message of another size");
-    std::copy(data.begin(), data.end(), r.raw.begin());
+    // A block of another size than this rank expects (counts or types that disagree between the
+    // ranks' calls, as the v-forms allow to write): the collective's error, not the progress
+    // loop's, which must go on taking the other letters of its batch.
+    if (data.size() > r.raw.size()) r.status.MPI_ERROR = MPI_ERR_TRUNCATE;
+    if (data.size() < r.raw.size()) r.status.MPI_ERROR = MPI_ERR_COUNT;
+    std::copy_n(data.begin(), std::min(data.size(), r.raw.size()), r.raw.begin());
     return;
   }
   const MPI_Count capacity = pack_size(r.count, *r.type);

@@ -15,6 +15,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <source_location>
 #include <span>
 #include <string>
 #include <vector>
@@ -32,6 +33,8 @@
 #include "parix/processor.hpp"
 
 namespace gcsim::mpi_layer {
+
+class CollectiveLedger;
 
 // MPI_Abort: unwinds the rank's program; `gcsim mpirun` exits with the code.
 struct AbortRequested {
@@ -53,6 +56,7 @@ struct Operation {  // behind one MPI_Request
   std::int64_t context = 0;
   int tag = 0;
   int peer_world = -1;  // destination, or source (-1: MPI_ANY_SOURCE)
+  MPI_Comm comm = MPI_COMM_WORLD;  // whose error handler its errors go to
   // send
   parix::Bytes payload;   // rendezvous: kept until clear-to-send
   parix::Request wire;    // rendezvous: the data letter, delivered = complete
@@ -98,6 +102,7 @@ class Rank {
   Registry& registry() { return registry_; }
   RankCompute computing;  // --compute: its settings, CPU meter and sampled sites (compute_meter.hpp)
   AlgorithmChoice collective_algorithms;  // gcsim mpirun --coll; Auto: MPICH's selection
+  CollectiveLedger* collective_ledger = nullptr;  // the run's, shared by its ranks; null: not checked
   bool initialized = false;
   bool finalized = false;
   CallSpan call_span;  // the MPI call in progress, as the trace names it
@@ -190,10 +195,12 @@ class Rank {
   bool program_ran_ = true;
 };
 
-// A C entry point that may block: what the core throws (Error) is returned; anything else (the
-// runtime unwinding an abandoned run, MPI_Abort) goes on up through the program.
+// A C entry point that may block: what the core throws (Error) goes through the error handler of
+// the communicator it names (c_call.hpp), then is returned; anything else (the runtime unwinding an
+// abandoned run, MPI_Abort, a fatal error) goes on up through the program.
 template <class F>
-int runtime_call(F&& body) {
+int runtime_call_as(const char* call, F&& body) {
+  CallScope scope(current_registry(), call);
   try {
     Rank& rank = Rank::current();
     struct InCall {  // the rank's CPU time since its last call is charged first (--compute measured)
@@ -209,8 +216,18 @@ int runtime_call(F&& body) {
     body(rank);
     return MPI_SUCCESS;
   } catch (const Error& e) {
-    return e.code();
+    return scope.raise(e);
   }
+}
+template <class F>
+int runtime_call(F&& body, std::source_location where = std::source_location::current()) {
+  return runtime_call_as(where.function_name(), std::forward<F>(body));
+}
+// A call that ends with an error code (a request's status) raises it as the core's errors are.
+inline void fail_with(int code) {
+  if (code == MPI_SUCCESS) return;
+  const std::string_view text = error_text(code);
+  fail(code, std::string(text.substr(text.find(": ") + 2)).c_str());
 }
 
 // The simulated node a world rank runs on (MPI_Comm_split_type's MPI_COMM_TYPE_SHARED): rank r on

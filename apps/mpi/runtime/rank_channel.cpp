@@ -21,10 +21,20 @@ void RankChannel::wait_all(std::span<const Handle> handles) {
     }
     return true;
   }, call_);
+  std::string mismatch;
+  int error = MPI_SUCCESS;
   for (Handle h : handles) {
     MPI_Request r = h;
-    rank_.finish(r, nullptr);
+    const std::size_t expected = rank_.operation(r).raw.size();
+    MPI_Status status{};
+    const int code = rank_.finish(r, &status);
+    if (code == MPI_SUCCESS || error != MPI_SUCCESS) continue;
+    error = code;
+    mismatch = call_ + ": a block of " + std::to_string(status.gcsim_bytes) + " bytes from rank " +
+               std::to_string(status.MPI_SOURCE) + " where this rank expects " + std::to_string(expected) +
+               " (the ranks' counts or datatypes disagree)";
   }
+  if (error != MPI_SUCCESS) fail(error, mismatch.c_str());
 }
 
 }  // namespace gcsim::mpi_layer

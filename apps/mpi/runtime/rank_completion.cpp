@@ -82,8 +82,12 @@ void Rank::finalize_checks() {
                    world_rank(), m.source, static_cast<long long>(m.size));
       continue;
     }
-    std::fprintf(stderr, "gcsim: warning: rank %d: MPI_Finalize with a message never received: from rank %d, tag %d, %lld bytes\n",
-                 world_rank(), m.source, m.tag, static_cast<long long>(m.size));
+    std::string comm = "a freed communicator";
+    for (const auto& [handle, c] : comms_) {
+      if (c.context == m.context) comm = comm_name(handle);
+    }
+    std::fprintf(stderr, "gcsim: warning: rank %d: MPI_Finalize with a message never received: from rank %d, tag %d, %lld bytes, on %s\n",
+                 world_rank(), m.source, m.tag, static_cast<long long>(m.size), comm.c_str());
   }
 }
 
