@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <initializer_list>
 
-#include "apps/pipeline/failure.hpp"
+#include "apps/pipeline/command_groups.hpp"
 
 namespace gcsim::mpi_layer::app {
 namespace {

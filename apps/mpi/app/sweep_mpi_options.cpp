@@ -11,7 +11,7 @@
 namespace gcsim::mpi_layer::app {
 namespace {
 
-[[noreturn]] void bad(const std::string& what) { throw CLI::ValidationError("gcsim sweep mpi", what); }
+[[noreturn]] void refuse_sweep(const std::string& what) { throw CLI::ValidationError("gcsim sweep mpi", what); }
 
 const std::set<std::string> kSweepOptions{"--nodes", "--config", "--csv", "--json"};
 // mpirun's options that take a value, passed on to its parser.
@@ -23,7 +23,7 @@ bool take_sweep_option(SweepMpiOptions& o, const std::vector<std::string>& words
                        std::vector<std::string>& configs) {
   const std::string& w = words[i];
   if (!kSweepOptions.count(w)) return false;
-  if (i + 1 >= words.size()) bad(w + " expects a value");
+  if (i + 1 >= words.size()) refuse_sweep(w + " expects a value");
   const std::string& v = words[++i];
   if (w == "--nodes") o.nodes = pipeline::parse_int_list(v, "--nodes");
   else if (w == "--config") configs.push_back(v);
@@ -50,7 +50,7 @@ std::vector<SweepMachine> machines_of(const std::vector<std::string>& configs) {
   if (configs.empty()) return {{"calibrated", "", false}, {"published", "", true}};
   std::vector<SweepMachine> out;
   for (const std::string& f : configs) {
-    if (!std::filesystem::is_regular_file(f)) bad("--config " + f + ": no such machine file");
+    if (!std::filesystem::is_regular_file(f)) refuse_sweep("--config " + f + ": no such machine file");
     out.push_back({std::filesystem::path(f).stem().string(), f, false});
   }
   return out;
@@ -86,18 +86,18 @@ SweepMpiOptions parse_sweep_mpi_options(const std::vector<std::string>& words) {
   for (; i < words.size(); ++i) {
     const std::string& w = words[i];
     if (w == "-h" || w == "--help") o.help = true;
-    else if (kNotForSweeps.count(w)) bad(w + " is not an option of a sweep (each point's node count comes from --nodes; trace one "
+    else if (kNotForSweeps.count(w)) refuse_sweep(w + " is not an option of a sweep (each point's node count comes from --nodes; trace one "
                                           "point with gcsim mpirun)");
     else if (take_sweep_option(o, words, i, configs)) continue;
     else if (kRunValueOptions.count(w)) {
-      if (i + 1 >= words.size()) bad(w + " expects a value");
+      if (i + 1 >= words.size()) refuse_sweep(w + " expects a value");
       run_words.push_back(w);
       run_words.push_back(words[++i]);
-    } else if (!w.empty() && w[0] == '-') bad("unknown option '" + w + "'\n" + sweep_mpi_usage());
+    } else if (!w.empty() && w[0] == '-') refuse_sweep("unknown option '" + w + "'\n" + sweep_mpi_usage());
     else break;
   }
   if (o.help) return o;
-  if (i >= words.size()) bad("no program given: gcsim sweep mpi [options] PROGRAM [ARGS...]");
+  if (i >= words.size()) refuse_sweep("no program given: gcsim sweep mpi [options] PROGRAM [ARGS...]");
   std::vector<std::string> args(words.begin() + static_cast<std::ptrdiff_t>(i) + 1, words.end());
   if (!args.empty() && args.front() == "--") args.erase(args.begin());
   else take_trailing_options(o, args, configs);
@@ -105,7 +105,7 @@ SweepMpiOptions parse_sweep_mpi_options(const std::vector<std::string>& words) {
   o.run = parse_mpirun_options(run_words);
   o.run.args = args;
   o.machines = machines_of(configs);
-  if (o.nodes.empty()) bad("--nodes expects node counts such as 1,2,4");
+  if (o.nodes.empty()) refuse_sweep("--nodes expects node counts such as 1,2,4");
   return o;
 }
 
