@@ -181,7 +181,9 @@ def plot_mesh_heatmap(plt, trace, window, title, path):
     draw_mesh(axes[0], trace, window, total, bytes_norm, bytes_cmap, lw)
     draw_mesh(axes[1], trace, window, busy, busy_norm, busy_cmap, lw)
     axes[0].set_title(f"bytes carried per channel (max {human_bytes(total.max())})", fontsize=10)
-    axes[1].set_title(f"busy fraction per channel (max {busy.max():.0%})", fontsize=10)
+    # Shares below 10 % get a decimal, so that the ticks of a lightly loaded mesh differ.
+    share = (lambda v: f"{v:.1%}") if busy_top <= 0.1 else (lambda v: f"{v:.0%}")
+    axes[1].set_title(f"busy fraction per channel (max {share(busy.max())})", fontsize=10)
     cb = fig.colorbar(matplotlib.cm.ScalarMappable(norm=bytes_norm, cmap=bytes_cmap), ax=axes[0], shrink=0.8)
     cb.set_label("bytes in window")
     # Ticks at round numbers of the unit the maximum is shown in (KB, MB), not of bytes.
@@ -191,7 +193,7 @@ def plot_mesh_heatmap(plt, trace, window, title, path):
     cb.ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: human_bytes(v)))
     cb = fig.colorbar(matplotlib.cm.ScalarMappable(norm=busy_norm, cmap=busy_cmap), ax=axes[1], shrink=0.8)
     cb.set_label("busy fraction of the window")
-    cb.ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:.0%}"))
+    cb.ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: share(v)))
     subset = "; outlined: the selected processors" if window.subset else ""
     fig.suptitle(f"{title}\n{getattr(trace, 'interconnect', 'mesh')} channels {w}x{h}, {window.describe()}; from {source}; grey: unused{subset}",
                  fontsize=10)
