@@ -13,39 +13,12 @@
 #include "machine/machine_config.hpp"
 #include "machine/network_model.hpp"
 #include "parix/sim/simulated_runtime.hpp"
+#include "tests/mpi_run/ping_pong.hpp"
 
 namespace gcsim::mpi_layer {
 namespace {
 
 
-// Rank 0 and rank `peer` exchange `bytes` bytes `reps` times after one warm-up exchange.
-double measure(const parix::SimulationOptions& o, int peer, int bytes, int reps) {
-  double round_trip = 0;
-  parix::run_simulated(o, [&](parix::Processor& p) {
-    Rank rank(p, o.config.mpi);
-    rank.install();
-    MPI_Init(nullptr, nullptr);
-    std::vector<char> buffer(static_cast<std::size_t>(bytes) + 1);
-    const int me = p.id();
-    if (me == 0 || me == peer) {
-      const int other = me == 0 ? peer : 0;
-      double start = 0;
-      for (int i = 0; i <= reps; ++i) {
-        if (i == 1) start = MPI_Wtime();
-        if (me == 0) {
-          MPI_Send(buffer.data(), bytes, MPI_CHAR, other, 0, MPI_COMM_WORLD);
-          MPI_Recv(buffer.data(), bytes, MPI_CHAR, other, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        } else {
-          MPI_Recv(buffer.data(), bytes, MPI_CHAR, other, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-          MPI_Send(buffer.data(), bytes, MPI_CHAR, other, 0, MPI_COMM_WORLD);
-        }
-      }
-      if (me == 0) round_trip = (MPI_Wtime() - start) / reps;
-    }
-    install_registry(nullptr);  // no MPI_Finalize: its barrier would involve the idle ranks' time only
-  });
-  return round_trip;
-}
 
 TEST(MpiPingPong, RoundTripEqualsTheAnalyticModelsFormulaForEverySizeAndHopCount) {
   parix::SimulationOptions o;
@@ -64,7 +37,7 @@ TEST(MpiPingPong, RoundTripEqualsTheAnalyticModelsFormulaForEverySizeAndHopCount
       machine::SimTime one_way = 2 * cpu + network->uncontended_time(h, bytes);
       if (bytes > o.config.mpi.eager_limit_bytes) one_way += 2 * network->uncontended_time(h, 0);
       const double expected = machine::to_seconds(2 * one_way);
-      EXPECT_NEAR(measure(o, peer, bytes, 3), expected, 1e-12) << bytes << " bytes over " << h << " hops";
+      EXPECT_NEAR(measured_round_trip(o, peer, bytes, 3), expected, 1e-12) << bytes << " bytes over " << h << " hops";
     }
   }
 }

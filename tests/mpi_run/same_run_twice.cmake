@@ -5,13 +5,7 @@
 #         [-DARGS=a@@b] [-DEXPECT=re] -P same_run_twice.cmake
 string(REPLACE "@@" ";" RUNNER "${RUNNER}")
 string(REPLACE "@@" ";" ARGS "${ARGS}")
-file(MAKE_DIRECTORY ${WORK})
-get_filename_component(name ${SOURCE} NAME_WE)
-set(program ${WORK}/${name})
-execute_process(COMMAND ${COMPILER} -O2 -o ${program} ${SOURCE} -lm RESULT_VARIABLE built ERROR_VARIABLE build_errors)
-if(NOT built EQUAL 0)
-  message(FATAL_ERROR "${COMPILER} failed on ${SOURCE}:\n${build_errors}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/compile_program.cmake)
 foreach(run 1 2)
   execute_process(COMMAND ${RUNNER} --trace ${WORK}/trace${run}.json ${program} ${ARGS}
                   RESULT_VARIABLE status OUTPUT_VARIABLE out${run} ERROR_VARIABLE err)
