@@ -47,14 +47,8 @@ int MPI_Cart_create(MPI_Comm comm_old, int ndims, const int dims[], const int pe
       out = MPI_COMM_NULL;
       return;
     }
-    Communicator c;
-    c.rank = parent.rank;
-    c.members = grid->size() == parent.size()  // the whole parent: its members, shared, not copied
-                    ? parent.members
-                    : std::make_shared<const std::vector<int>>(parent.members->begin(), parent.members->begin() + grid->size());
-    c.context = context;
+    Communicator c = parent.first_members(grid->size(), context);
     c.cart = std::move(grid);
-    c.errhandler = parent.errhandler;  // inherited (MPI 3.1 section 8.3.1)
     out = rank.add_comm(std::move(c));
   });
 }

@@ -54,10 +54,7 @@ int MPI_Graph_create(MPI_Comm comm_old, int nnodes, const int index[], const int
       out = MPI_COMM_NULL;
       return;
     }
-    Communicator c;
-    c.rank = parent.rank;
-    c.members = std::make_shared<const std::vector<int>>(parent.members->begin(), parent.members->begin() + graph->nnodes());
-    c.context = context;
+    Communicator c = parent.first_members(graph->nnodes(), context);
     c.graph = std::move(graph);
     out = rank.add_comm(std::move(c));
   });

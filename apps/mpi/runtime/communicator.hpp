@@ -35,6 +35,16 @@ struct Communicator {
     return -1;
   }
   std::int64_t collective_context() const { return context + 1; }
+  // The child made of this communicator's first n members, in order (a Cartesian or graph
+  // topology's communicator): members shared when it is the whole, the error handler inherited.
+  Communicator first_members(int n, std::int64_t child_context) const {
+    Communicator c;
+    c.rank = rank;
+    c.members = n == size() ? members : std::make_shared<const std::vector<int>>(members->begin(), members->begin() + n);
+    c.context = child_context;
+    c.errhandler = errhandler;  // inherited (MPI 3.1 section 8.3.1)
+    return c;
+  }
   // The context of the next child: the same on every member, as each derives children in the
   // same collective order.
   std::int64_t next_child_context() {
