@@ -28,7 +28,7 @@ std::vector<T> concatenate(const std::vector<std::vector<T>>& parts) {
 RegionCache build_region_parallel(parix::Processor& p, const std::vector<Photon>& mine,
                                   const HomogeneousMedium& medium, std::size_t k, std::uint64_t& photon_bytes,
                                   std::uint64_t& grid_bytes, std::vector<parix::MemoryReservation>& held,
-                                  RenderCounters& counts) {
+                                  RenderCounters& counts, int jobs) {
   const auto parts = parix::allgather_vectors<Photon>(p, std::span<const Photon>(mine));
   std::size_t photons = 0;
   for (const auto& part : parts) photons += part.size();
@@ -48,7 +48,7 @@ RegionCache build_region_parallel(parix::Processor& p, const std::vector<Photon>
     const parix::MemoryReservation projections_held =
         p.reserve_memory(std::int64_t(region.map->photons().size() * sizeof(ShCoefficients)), "photon SH projections");
     GridBuildCounts mine_built;
-    my_voxels = build_voxel_range(grid, *region.map, medium, k, first, last, mine_built);
+    my_voxels = build_voxel_range(grid, *region.map, medium, k, first, last, mine_built, jobs);
     const auto ops = grid_build_ops(mine_built);
     const double start = p.now_seconds();
     p.compute(std::span<const parix::OpCount>(ops));
@@ -174,8 +174,10 @@ void media_program(parix::Processor& p, const MediaScene& scene, const MarchSett
                    ParallelMediaResult& result, std::vector<RenderCounters>& per_node, MediaHostThreads* host) {
   const int width = scene.image.width, height = scene.image.height;
   const int id = p.id(), nodes = p.count();
+  // Host threads also trace this node's photons and build its grid slices (byte-identical results).
+  const int jobs = host ? host->workers + 1 : 1;
   PhotonPassResult photons = trace_photons(scene, share_begin(scene.photons_emitted, id, nodes),
-                                           share_begin(scene.photons_emitted, id + 1, nodes));
+                                           share_begin(scene.photons_emitted, id + 1, nodes), jobs);
   p.compute("media_photon_step", static_cast<std::int64_t>(photons.flights + photons.surface_events));
   charge_boundary(p, photons.boundary);
   std::uint64_t photon_bytes = 0, grid_bytes = 0;
@@ -183,8 +185,10 @@ void media_program(parix::Processor& p, const MediaScene& scene, const MarchSett
   SceneCaches caches;
   std::vector<parix::MemoryReservation> held;  // node memory of the photon maps and grids
   RenderCounters& built = per_node[static_cast<std::size_t>(p.id())];
-  caches.outside = build_region_parallel(p, photons.outside, scene.outside, scene.k_nearest, photon_bytes, grid_bytes, held, built);
-  caches.inside = build_region_parallel(p, photons.inside, scene.inside, scene.k_nearest, photon_bytes, grid_bytes, held, built);
+  caches.outside =
+      build_region_parallel(p, photons.outside, scene.outside, scene.k_nearest, photon_bytes, grid_bytes, held, built, jobs);
+  caches.inside =
+      build_region_parallel(p, photons.inside, scene.inside, scene.k_nearest, photon_bytes, grid_bytes, held, built, jobs);
   // Node 0 assembles the whole image; the others hold a tile at a time.
   const std::int64_t image_bytes = id == 0 ? std::int64_t(width) * height * std::int64_t(sizeof(glm::vec3)) : 0;
   const parix::MemoryReservation image_held = p.reserve_memory(image_bytes, "image");

@@ -1,7 +1,9 @@
 #include "apps/media/photon_tracer.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "apps/common/ordered_parallel.hpp"
 #include "apps/common/rng.hpp"
 #include "apps/common/media/sampling.hpp"
 
@@ -35,7 +37,9 @@ void emit_photon(const MediaScene& scene, apps::Rng& rng, glm::dvec3& x, glm::dv
 
 }  // namespace
 
-PhotonPassResult trace_photons(const MediaScene& scene, std::size_t first, std::size_t last) {
+namespace {
+
+PhotonPassResult trace_photon_range(const MediaScene& scene, std::size_t first, std::size_t last) {
   PhotonPassResult out;
   const double flux = scene.area_light ? scene.area_light->power : 4.0 * kPi * scene.light.intensity;
   const auto power = static_cast<float>(flux / double(scene.photons_emitted));
@@ -77,6 +81,29 @@ PhotonPassResult trace_photons(const MediaScene& scene, std::size_t first, std::
     }
     if (events == scene.max_photon_events) ++out.capped;
   }
+  return out;
+}
+
+}  // namespace
+
+PhotonPassResult trace_photons(const MediaScene& scene, std::size_t first, std::size_t last, int jobs) {
+  if (jobs <= 1 || last <= first) return trace_photon_range(scene, first, last);
+  // Batches in photon order, each photon on its own stream: joined in order, they are one range's photons.
+  const std::size_t batches = std::min<std::size_t>(last - first, std::size_t(jobs) * kPhotonBatchesPerThread);
+  PhotonPassResult out;
+  apps::run_ordered<PhotonPassResult>(
+      int(batches), jobs,
+      [&](int b) {
+        return trace_photon_range(scene, first + (last - first) * std::size_t(b) / batches,
+                                  first + (last - first) * std::size_t(b + 1) / batches);
+      },
+      [&](int, PhotonPassResult& part) {
+        out.outside.insert(out.outside.end(), part.outside.begin(), part.outside.end());
+        out.inside.insert(out.inside.end(), part.inside.begin(), part.inside.end());
+        out.flights += part.flights, out.surface_events += part.surface_events, out.escaped += part.escaped;
+        out.absorbed += part.absorbed, out.capped += part.capped, out.entered += part.entered;
+        out.boundary.add(part.boundary);
+      });
   return out;
 }
 

@@ -20,7 +20,9 @@ struct PhotonPassResult {
 };
 
 // Traces photons [first, last) of the scene's photons_emitted; photon i uses its own random stream
-// (seed, i), so any split of the range over nodes gives the same photons.
-PhotonPassResult trace_photons(const MediaScene& scene, std::size_t first, std::size_t last);
+// (seed, i), so any split of the range over nodes gives the same photons. jobs > 1: batches of the
+// range on that many host threads, joined in photon order (the same result byte for byte).
+PhotonPassResult trace_photons(const MediaScene& scene, std::size_t first, std::size_t last, int jobs = 1);
+inline constexpr std::size_t kPhotonBatchesPerThread = 4;  // batches per host thread, for balance
 
 }  // namespace gcsim::media

@@ -39,7 +39,7 @@ namespace {
 
 // This node's share of the photons, with what they deposit on the walls when there are walls.
 VolumePhotons trace_share(parix::Processor& p, const MediaSetup& s, std::optional<DepositSums>& sums,
-                          geometry::TestTally& lookups, const PhotonsTraced& on_traced) {
+                          geometry::TestTally& lookups, const PhotonsTraced& on_traced, int host_threads) {
   const std::size_t first = share_begin(s.photons, p.id(), p.count());
   const std::size_t end = share_begin(s.photons, p.id() + 1, p.count());
   const std::size_t last = s.traced > 0 ? std::min<std::size_t>(end, first + share(s.traced, p.id(), p.count())) : end;
@@ -52,18 +52,19 @@ VolumePhotons trace_share(parix::Processor& p, const MediaSetup& s, std::optiona
       else d.add(e, power);
     };
   }
-  return trace_volume_photons(s.surfaces, s.bvh, s.lights, s.regions, first, last, s.photons, s.seed, on_wall, on_traced);
+  return trace_volume_photons(s.surfaces, s.bvh, s.lights, s.regions, first, last, s.photons, s.seed, on_wall, on_traced,
+                              host_threads);
 }
 
 }  // namespace
 
-GatheredPhotons photon_pass(parix::Processor& p, const MediaSetup& s, const PhotonsTraced& on_traced) {
+GatheredPhotons photon_pass(parix::Processor& p, const MediaSetup& s, const PhotonsTraced& on_traced, int host_threads) {
   GatheredPhotons out;
   out.per_region.resize(s.regions.size());
   if (!s.photon_pass) return out;
   std::optional<DepositSums> sums;
   geometry::TestTally lookups;  // the element lookups' tests
-  const VolumePhotons mine = trace_share(p, s, sums, lookups, on_traced);
+  const VolumePhotons mine = trace_share(p, s, sums, lookups, on_traced, host_threads);
   out.flights = mine.flights, out.surface_events = mine.surface_events, out.media_absorbed = mine.media_absorbed;
   const parix::OpCount ops[] = {{"media_photon_step", std::int64_t(mine.flights + mine.surface_events)},
                                 {"ray_box", mine.tests.boxes + lookups.boxes},

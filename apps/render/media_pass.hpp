@@ -56,7 +56,9 @@ struct GatheredPhotons {
 
 // On every node: its share of the photons, charged, then the all-gather. on_traced: host-side
 // progress, the photons this node traced (nothing of it is simulated).
-GatheredPhotons photon_pass(parix::Processor& p, const MediaSetup& s, const PhotonsTraced& on_traced = {});
+// host_threads: how many host threads trace the node's share (the same photons on any number).
+GatheredPhotons photon_pass(parix::Processor& p, const MediaSetup& s, const PhotonsTraced& on_traced = {},
+                            int host_threads = 1);
 
 // This node's slice of the SH grids' construction (all: the whole grids' counts).
 void charge_grid_share(parix::Processor& p, const media::GridBuildCounts& all);

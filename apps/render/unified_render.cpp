@@ -28,7 +28,7 @@ void unified_render_program(parix::Processor& p, const scene::SceneDescription& 
         out.photons_traced += n;
         out.on_photons(out.photons_traced, total);
       };
-    photons = photon_pass(p, *media, traced);
+    photons = photon_pass(p, *media, traced, view.host_threads);
     out.photon_flights += photons.flights, out.photon_surface_events += photons.surface_events;
     out.media_absorbed += photons.media_absorbed;
   }

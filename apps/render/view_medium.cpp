@@ -30,7 +30,7 @@ ViewMedium::ViewMedium(std::vector<MediumRegion> regions, std::vector<std::vecto
     if (i < photons.size() && !photons[i].empty() && r.lum.sigma_s > 0) {
       const media::UniformGrid grid = media::grid_for_photons(photons[i], s.k_nearest);
       r.map = std::make_unique<media::PhotonMap>(std::move(photons[i]));
-      if (s.radiance_estimate) r.grid = std::make_unique<media::RadianceGrid>(grid, *r.map, r.lum, s.k_nearest);
+      if (s.radiance_estimate) r.grid = std::make_unique<media::RadianceGrid>(grid, *r.map, r.lum, s.k_nearest, s.grid_jobs);
     }
     regions_.push_back(std::move(r));
   }

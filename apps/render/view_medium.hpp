@@ -30,6 +30,7 @@ struct ViewMediumSettings {
   // radiosity pass's exposure (1 without one).
   double display_scale = 3.14159265358979323846;
   glm::dvec3 light_chroma{1.0};  // PhotonLights::chroma
+  int grid_jobs = 1;             // host threads that build the SH grids (the same grids on any number)
 };
 
 class ViewMedium : public raytrace::RayMedia {

@@ -53,6 +53,7 @@ std::unique_ptr<ViewPass> make_view_pass(const scene::SceneDescription& d, const
   if (media) {
     ViewMediumSettings ms = media->view;
     ms.display_scale = 3.14159265358979323846 * v->exposure;  // the display shows exitance, pi L
+    ms.grid_jobs = view.host_threads;
     v->medium = std::make_unique<ViewMedium>(media->regions, std::move(photons), ms);
     v->settings.media = v->medium.get();
     v->settings.media_seed = media->seed;

@@ -1,6 +1,7 @@
 #include "apps/render/volume_photons.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 
 #include "apps/common/geometry/ray_offset.hpp"
 #include "apps/common/geometry/traversal.hpp"
+#include "apps/common/ordered_parallel.hpp"
 #include "apps/common/rng.hpp"
 #include "apps/common/media/sampling.hpp"
 #include "apps/raytrace/raytrace.hpp"
@@ -176,12 +178,10 @@ std::optional<glm::dvec3> bounce(const raytrace::Scene& scene, const Ray& ray, c
   return glm::normalize(glm::dvec3(*out));
 }
 
-}  // namespace
-
-VolumePhotons trace_volume_photons(const raytrace::Scene& surfaces, const geometry::Bvh& bvh, const PhotonLights& lights,
-                                   const std::vector<MediumRegion>& media, std::size_t first, std::size_t last,
-                                   std::size_t total, std::uint64_t seed, const WallHit& on_wall,
-                                   const PhotonsTraced& on_traced) {
+VolumePhotons trace_photon_range(const raytrace::Scene& surfaces, const geometry::Bvh& bvh, const PhotonLights& lights,
+                                 const std::vector<MediumRegion>& media, std::size_t first, std::size_t last,
+                                 std::size_t total, std::uint64_t seed, const WallHit& on_wall,
+                                 const PhotonsTraced& on_traced) {
   VolumePhotons out;
   out.per_region.resize(media.size());
   if (lights.emitters.empty() || total == 0) return out;
@@ -228,6 +228,53 @@ VolumePhotons trace_volume_photons(const raytrace::Scene& surfaces, const geomet
     }
   }
   if (on_traced && last > first) on_traced((last - first - 1) % kPhotonsPerReport + 1);
+  return out;
+}
+
+// A batch's photons and its wall hits, kept to be handed on in photon order.
+struct PhotonBatch {
+  VolumePhotons photons;
+  std::vector<std::array<glm::dvec3, 3>> wall_hits;  // origin, direction, power
+};
+
+}  // namespace
+
+VolumePhotons trace_volume_photons(const raytrace::Scene& surfaces, const geometry::Bvh& bvh, const PhotonLights& lights,
+                                   const std::vector<MediumRegion>& media, std::size_t first, std::size_t last,
+                                   std::size_t total, std::uint64_t seed, const WallHit& on_wall,
+                                   const PhotonsTraced& on_traced, int jobs) {
+  if (jobs <= 1 || last <= first)
+    return trace_photon_range(surfaces, bvh, lights, media, first, last, total, seed, on_wall, on_traced);
+  // Batches in photon order, each photon on its own stream; joined and their wall hits replayed in
+  // order, they give one range's photons, sums and calls exactly.
+  const std::size_t batches = std::min<std::size_t>(last - first, std::size_t(jobs) * kPhotonBatchesPerThread);
+  VolumePhotons out;
+  out.per_region.resize(media.size());
+  apps::run_ordered<PhotonBatch>(
+      int(batches), jobs,
+      [&](int b) {
+        PhotonBatch batch;
+        WallHit record;
+        if (on_wall)
+          record = [&batch](const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& power) {
+            batch.wall_hits.push_back({o, d, power});
+          };
+        batch.photons = trace_photon_range(surfaces, bvh, lights, media, first + (last - first) * std::size_t(b) / batches,
+                                           first + (last - first) * std::size_t(b + 1) / batches, total, seed, record, {});
+        return batch;
+      },
+      [&](int b, PhotonBatch& batch) {
+        const VolumePhotons& part = batch.photons;
+        for (std::size_t r = 0; r < part.per_region.size() && r < out.per_region.size(); ++r)
+          out.per_region[r].insert(out.per_region[r].end(), part.per_region[r].begin(), part.per_region[r].end());
+        out.flights += part.flights, out.surface_events += part.surface_events, out.wall_hits += part.wall_hits;
+        out.media_absorbed += part.media_absorbed;  // sums of one float power: exact in double in any grouping
+        out.tests.boxes += part.tests.boxes, out.tests.spheres += part.tests.spheres;
+        out.tests.triangles += part.tests.triangles, out.tests.sorts += part.tests.sorts;
+        for (const auto& hit : batch.wall_hits) on_wall(hit[0], hit[1], hit[2]);
+        if (on_traced)
+          on_traced((last - first) * std::size_t(b + 1) / batches - (last - first) * std::size_t(b) / batches);
+      });
   return out;
 }
 

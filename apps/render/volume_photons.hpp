@@ -66,10 +66,13 @@ using PhotonsTraced = std::function<void(std::size_t photons)>;
 inline constexpr std::size_t kPhotonsPerReport = 4096;
 
 // Photons [first, last) of `total`; photon i draws from its own stream (seed, i), so any split of the
-// range over nodes gives the same photons. Each carries total_flux / total.
+// range over nodes gives the same photons. Each carries total_flux / total. jobs > 1: batches of
+// the range on that many host threads, joined in photon order and on_wall called in that order on
+// the calling thread, so photons, sums and calls are the same as on one (on_traced per batch).
 VolumePhotons trace_volume_photons(const raytrace::Scene& surfaces, const geometry::Bvh& bvh, const PhotonLights& lights,
                                    const std::vector<MediumRegion>& media, std::size_t first, std::size_t last,
                                    std::size_t total, std::uint64_t seed, const WallHit& on_wall = {},
-                                   const PhotonsTraced& on_traced = {});
+                                   const PhotonsTraced& on_traced = {}, int jobs = 1);
+inline constexpr std::size_t kPhotonBatchesPerThread = 4;  // batches per host thread, for balance
 
 }  // namespace gcsim::render

@@ -6,6 +6,8 @@
 
 #include <glm/common.hpp>
 
+#include "apps/common/ordered_parallel.hpp"
+
 namespace gcsim::media {
 
 glm::ivec3 radiance_grid_dims(const glm::dvec3& lo, const glm::dvec3& hi, std::size_t photons, std::size_t k,
@@ -31,15 +33,18 @@ UniformGrid grid_for_photons(const std::vector<Photon>& photons, std::size_t k) 
   return {lo, hi, radiance_grid_dims(lo, hi, photons.size(), k)};
 }
 
-std::vector<ShCoefficients> build_voxel_range(const UniformGrid& grid, const PhotonMap& map,
+namespace {
+
+// Voxels [first, last) on one thread, with its own cache of projected photons; `used` marks the
+// photons it projected, so that a split range counts each photon once, as one range does.
+std::vector<ShCoefficients> build_voxel_chunk(const UniformGrid& grid, const PhotonMap& map,
                                               const HomogeneousMedium& medium, std::size_t k, std::size_t first,
-                                              std::size_t last, GridBuildCounts& counts) {
-  last = std::min(last, grid.voxel_count());
+                                              std::size_t last, GridBuildCounts& counts, std::vector<bool>& used) {
   std::vector<ShCoefficients> voxels(last > first ? last - first : 0);
   const std::vector<Photon>& photons = map.photons();
   // ΔΦ_p w'_l Y_lm(ω_p) / σt per photon, made on first use: a voxel then adds 16 products per photon.
   std::vector<ShCoefficients> projected(photons.size());
-  std::vector<bool> is_projected(photons.size(), false);
+  used.assign(photons.size(), false);
   const double voxel_width = grid.cell_size().x;
   double previous_radius = -1.0;  // r_k of the voxel before along x, or < 0: none
   for (std::size_t i = first; i < last; ++i) {
@@ -62,9 +67,9 @@ std::vector<ShCoefficients> build_voxel_range(const UniformGrid& grid, const Pho
     const float inverse_volume = static_cast<float>(1.0 / volume);
     ShCoefficients& f = voxels[i - first];
     for (std::uint32_t p : n.indices) {
-      if (!is_projected[p]) {
+      if (!used[p]) {
         projected[p] = sh_project_photon(medium.phase, medium.sigma_t, photons[p].power, glm::dvec3(photons[p].direction));
-        is_projected[p] = true, ++counts.projections;
+        used[p] = true;
       }
       for (int c = 0; c < kShCoefficients; ++c) f[c] += projected[p][c] * inverse_volume;
     }
@@ -73,10 +78,56 @@ std::vector<ShCoefficients> build_voxel_range(const UniformGrid& grid, const Pho
   return voxels;
 }
 
+// Where the range is cut for `jobs` threads: at row starts only (x = 0), where one thread would
+// take a k-NN descent too, so the counted work is the same however the range is cut.
+std::vector<std::size_t> chunk_bounds(const UniformGrid& grid, std::size_t first, std::size_t last, int jobs) {
+  std::vector<std::size_t> bounds{first};
+  const std::size_t row = static_cast<std::size_t>(grid.dims.x);
+  const std::size_t chunks = jobs <= 1 ? 1 : std::size_t(jobs) * kGridChunksPerThread;
+  for (std::size_t c = 1; c < chunks; ++c) {
+    const std::size_t at = (first + (last - first) * c / chunks + row - 1) / row * row;  // the next row start
+    if (at > bounds.back() && at < last) bounds.push_back(at);
+  }
+  bounds.push_back(last);
+  return bounds;
+}
+
+}  // namespace
+
+std::vector<ShCoefficients> build_voxel_range(const UniformGrid& grid, const PhotonMap& map,
+                                              const HomogeneousMedium& medium, std::size_t k, std::size_t first,
+                                              std::size_t last, GridBuildCounts& counts, int jobs) {
+  last = std::min(last, grid.voxel_count());
+  if (last <= first) return {};
+  const std::vector<std::size_t> bounds = chunk_bounds(grid, first, last, jobs);
+  const int chunks = static_cast<int>(bounds.size()) - 1;
+  struct Chunk {
+    std::vector<ShCoefficients> voxels;
+    GridBuildCounts counts;
+    std::vector<bool> used;
+  };
+  std::vector<Chunk> parts(static_cast<std::size_t>(chunks));
+  apps::parallel_for(chunks, jobs, [&](int c) {
+    Chunk& part = parts[std::size_t(c)];
+    part.voxels = build_voxel_chunk(grid, map, medium, k, bounds[std::size_t(c)], bounds[std::size_t(c) + 1],
+                                    part.counts, part.used);
+  });
+  std::vector<ShCoefficients> voxels;
+  voxels.reserve(last - first);
+  std::vector<bool> used(map.photons().size(), false);
+  for (Chunk& part : parts) {  // in range order: the same voxels and counts as one thread's
+    voxels.insert(voxels.end(), part.voxels.begin(), part.voxels.end());
+    counts.add(part.counts);
+    for (std::size_t p = 0; p < used.size(); ++p) used[p] = used[p] || part.used[p];
+  }
+  counts.projections += static_cast<std::uint64_t>(std::count(used.begin(), used.end(), true));
+  return voxels;
+}
+
 RadianceGrid::RadianceGrid(const UniformGrid& grid, const PhotonMap& map, const HomogeneousMedium& medium,
-                           std::size_t k)
+                           std::size_t k, int jobs)
     : grid_(grid) {
-  voxels_ = build_voxel_range(grid, map, medium, k, 0, grid.voxel_count(), counts_);  // after counts_ is made
+  voxels_ = build_voxel_range(grid, map, medium, k, 0, grid.voxel_count(), counts_, jobs);  // after counts_ is made
 }
 
 double RadianceGrid::eval(const glm::dvec3& x, const ShBasis& y_out) const {

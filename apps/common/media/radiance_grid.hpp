@@ -44,15 +44,19 @@ struct GridBuildCounts {
 };
 
 // The voxels [first, last) of the grid in linear order (one node's share, or all of them), each the SH
-// projection of the k-NN estimate at its centre; adds the work done to `counts`.
+// projection of the k-NN estimate at its centre; adds the work done to `counts`. jobs > 1: on that
+// many host threads, the range cut at row starts and joined in order, so the voxels and the counts
+// are the same byte for byte as on one.
 std::vector<ShCoefficients> build_voxel_range(const UniformGrid& grid, const PhotonMap& map,
                                               const HomogeneousMedium& medium, std::size_t k, std::size_t first,
-                                              std::size_t last, GridBuildCounts& counts);
+                                              std::size_t last, GridBuildCounts& counts, int jobs = 1);
+inline constexpr std::size_t kGridChunksPerThread = 4;  // pieces per host thread, for balance
 
 class RadianceGrid {
  public:
   // Builds every voxel from the photon map (the k nearest photons of each voxel centre); counts the work.
-  RadianceGrid(const UniformGrid& grid, const PhotonMap& map, const HomogeneousMedium& medium, std::size_t k);
+  RadianceGrid(const UniformGrid& grid, const PhotonMap& map, const HomogeneousMedium& medium, std::size_t k,
+               int jobs = 1);
   explicit RadianceGrid(const UniformGrid& grid) : grid_(grid), voxels_(grid.voxel_count()) {}
 
   const UniformGrid& grid() const { return grid_; }
