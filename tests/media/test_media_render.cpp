@@ -46,6 +46,20 @@ TEST(PhotonPass, SplittingThePhotonRangeGivesTheSamePhotons) {
   EXPECT_TRUE(same_photons(whole.inside, a.inside));
 }
 
+TEST(PhotonPass, HostThreadsGiveTheSamePhotonsAndCounts) {
+  MediaScene s = tiny_scene();
+  const PhotonPassResult one = trace_photons(s, 17, s.photons_emitted);
+  for (int jobs : {2, 3, 5}) {
+    const PhotonPassResult many = trace_photons(s, 17, s.photons_emitted, jobs);
+    EXPECT_TRUE(same_photons(one.outside, many.outside)) << jobs << " threads";
+    EXPECT_TRUE(same_photons(one.inside, many.inside)) << jobs << " threads";
+    EXPECT_EQ(one.flights, many.flights);
+    EXPECT_EQ(one.surface_events, many.surface_events);
+    EXPECT_EQ(one.escaped + one.absorbed + one.capped, many.escaped + many.absorbed + many.capped);
+    EXPECT_EQ(one.entered, many.entered);
+  }
+}
+
 TEST(MediaRender, ImageIsFiniteLitAndIndependentOfTheRowSplit) {
   MediaScene s = tiny_scene();
   SceneCaches caches = build_caches(s, trace_photons(s, 0, s.photons_emitted));

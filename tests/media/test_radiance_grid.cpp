@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -100,6 +102,31 @@ TEST(RadianceGrid, CoherentBuildEqualsOneKnnQueryPerVoxel) {
       sh_add_photon(ref, m.phase, m.sigma_t, map.photons()[p].power / volume, glm::dvec3(map.photons()[p].direction));
     for (int l = 0; l < kShCoefficients; ++l)
       ASSERT_NEAR(grid.voxel(i)[l], ref[l], 1e-5 * std::abs(ref[0]) + 1e-12) << "voxel " << i << " coefficient " << l;
+  }
+}
+
+// Host threads cut a slice at row starts and join the pieces in order: the same voxels bit for bit
+// and the same counted work (each photon projected once per slice) as one thread, for any slice.
+TEST(RadianceGrid, HostThreadsBuildTheSameVoxelsAndCounts) {
+  HomogeneousMedium m{1.0, 0.8, 0.0, Phase::schlick(0.5)};
+  auto traced = trace_point_light_infinite(m, glm::dvec3(0), 5.0, 20000, 8, 9);
+  PhotonMap map(std::move(traced.photons));
+  UniformGrid g{{-1.2, -1, -0.8}, {1, 1.1, 1}, {10, 9, 8}};
+  for (auto [first, last] : {std::pair<std::size_t, std::size_t>{0, 720}, {37, 500}, {95, 104}}) {
+    GridBuildCounts c1;
+    const std::vector<ShCoefficients> one = build_voxel_range(g, map, m, 40, first, last, c1);
+    for (int jobs : {2, 3, 7}) {
+      GridBuildCounts cn;
+      const std::vector<ShCoefficients> many = build_voxel_range(g, map, m, 40, first, last, cn, jobs);
+      ASSERT_EQ(one.size(), many.size());
+      EXPECT_EQ(0, std::memcmp(one.data(), many.data(), one.size() * sizeof(ShCoefficients))) << first << " " << jobs;
+      EXPECT_EQ(c1.knn_queries, cn.knn_queries);
+      EXPECT_EQ(c1.knn_photons, cn.knn_photons);
+      EXPECT_EQ(c1.range_queries, cn.range_queries);
+      EXPECT_EQ(c1.range_candidates, cn.range_candidates);
+      EXPECT_EQ(c1.projections, cn.projections);
+      EXPECT_EQ(c1.photon_adds, cn.photon_adds);
+    }
   }
 }
 
