@@ -2,11 +2,12 @@
 
 #ifdef GCSIM_HAVE_EMBREE
 #include <algorithm>
-#include <chrono>
 #include <limits>
 #include <utility>
 
 #include <embree3/rtcore.h>
+
+#include "apps/raytrace/bench_clock.hpp"
 #endif
 
 namespace gcsim::raytrace {
@@ -19,11 +20,9 @@ bool embree_available() { return true; }
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 std::pair<double, std::int64_t> time_single_rays(RTCScene rs, const Camera& camera) {
   std::int64_t hits = 0;
-  const auto start = Clock::now();
+  const double start = bench_thread_seconds();
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   for (int y = 0; y < camera.height(); ++y)
@@ -46,13 +45,13 @@ std::pair<double, std::int64_t> time_single_rays(RTCScene rs, const Camera& came
       rtcIntersect1(rs, &context, &rh);
       hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
     }
-  return {std::chrono::duration<double>(Clock::now() - start).count(), hits};
+  return {bench_thread_seconds() - start, hits};
 }
 
 // Coherent packets: the 4 x 2 pixels of a block, lanes outside the image masked off.
 std::pair<double, std::int64_t> time_packets8(RTCScene rs, const Camera& camera) {
   std::int64_t hits = 0;
-  const auto start = Clock::now();
+  const double start = bench_thread_seconds();
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
@@ -78,7 +77,7 @@ std::pair<double, std::int64_t> time_packets8(RTCScene rs, const Camera& camera)
       rtcIntersect8(valid, rs, &context, &rh);
       for (int k = 0; k < 8; ++k) hits += valid[k] && rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID;
     }
-  return {std::chrono::duration<double>(Clock::now() - start).count(), hits};
+  return {bench_thread_seconds() - start, hits};
 }
 
 }  // namespace

@@ -5,16 +5,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "apps/common/geometry/packet_triangle_lanes.hpp"
 #include "apps/common/geometry/traversal.hpp"
-
-#if defined(__x86_64__) && defined(__GNUC__)
-#define GCSIM_PACKET_AVX2 1
-#include <immintrin.h>
-// The kernel alone is compiled for AVX2 (no FMA: contracted products would round differently
-// from the scalar tests they must match); it runs only where the CPU reports AVX2.
-#define GCSIM_AVX2 __attribute__((target("avx2")))
-#define GCSIM_AVX2_INLINE __attribute__((target("avx2"), always_inline)) inline
-#endif
 
 namespace gcsim::geometry {
 namespace {
@@ -27,43 +19,15 @@ void one_by_one(const PrimitiveArrays& prims, const PackedTree& tree, const Ray 
 
 #if defined(GCSIM_PACKET_AVX2)
 
-constexpr int kPacketStackSize = 256;  // traverse_ordered's: a deeper walk falls back to it
+using namespace packet;
 
-// The per-lane constants, one array of eight per quantity (lane i in element i).
-struct Lanes {
-  alignas(32) float o[3][8];
-  alignas(32) float inv[3][8];
-  alignas(32) std::int32_t negative[3][8];  // all bits set where the lane runs towards -axis
-  alignas(32) float tmin[8];
-  alignas(32) float shear_x[8], shear_y[8], shear_z[8];
-  unsigned in_range = 0;  // lanes whose triangle tests may skip the float range check
-  struct Axes {
-    int kx, ky, kz;
-    unsigned lanes;
-  };
-  Axes axes[kPacketLanes];  // lanes grouped by the triangle test's axis permutation
-  int axes_count = 0;
-  SphereRay spheres[kPacketLanes];
-  int sphere_count = 0;                // primitive ids below are spheres
-  const Triangle* triangles = nullptr;  // primitive sphere_count + k is triangles[k]
-};
+constexpr int kPacketStackSize = 256;  // traverse_ordered's: a deeper walk falls back to it
 
 struct alignas(32) Entry {
   float entry[8];  // each lane's lower bound of its entry distance
   NodeRef node;
   unsigned lanes;
 };
-
-// Lanes of the packet that may have a nearest hit to update: their t, kept as an array to load.
-struct State {
-  alignas(32) float t[8];
-  Hit hit[kPacketLanes];
-};
-
-GCSIM_AVX2 inline __m256i lane_mask(unsigned lanes) {
-  const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-  return _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(lanes)), bit), bit);
-}
 
 // Each lane's counts, one 32-bit element per lane: kept apart from State, which the out-of-line
 // tests see, so that they can stay in registers through the walk.
@@ -73,118 +37,6 @@ struct Counts {
 
 // counter[i] += 1 for every lane i of `lanes`.
 GCSIM_AVX2 inline void count(__m256i& counter, unsigned lanes) { counter = _mm256_sub_epi32(counter, lane_mask(lanes)); }
-
-GCSIM_AVX2 inline void offer(State& s, int lane, float t, int prim, float b1 = 0, float b2 = 0) {
-  s.hit[lane].offer(t, prim, b1, b2);
-  s.t[lane] = s.hit[lane].t;
-}
-
-// The full scalar test for one lane (outside float's safe range, or an edge function exactly 0).
-GCSIM_AVX2 void scalar_triangle(const Triangle& tri, int prim, const Ray rays[], int i, State& s) {
-  float t, b1 = 0, b2 = 0;
-  if (intersect_triangle(tri, rays[i], s.t[i], &t, &b1, &b2)) offer(s, i, t, prim, b1, b2);
-}
-
-// max(|v0|, |v1|, |v2|) per lane.
-GCSIM_AVX2 inline __m256 largest(const __m256 v[3]) {
-  const __m256 sign = _mm256_set1_ps(-0.0f);
-  return _mm256_max_ps(_mm256_max_ps(_mm256_andnot_ps(sign, v[0]), _mm256_andnot_ps(sign, v[1])),
-                       _mm256_andnot_ps(sign, v[2]));
-}
-
-// The rounding bound on t for the lanes, term by term as triangle.cpp writes it.
-GCSIM_AVX2_INLINE __m256 t_error_bound(const __m256 (&zs)[3], const __m256 (&x)[3], const __m256 (&y)[3],
-                                       const __m256 (&e)[3], __m256 inv_det) {
-  const __m256 sign = _mm256_set1_ps(-0.0f);
-  const __m256 max_z = largest(zs), max_x = largest(x), max_y = largest(y), max_e = largest(e);
-  const __m256 g2 = _mm256_set1_ps(gamma_of<float>(2)), g3 = _mm256_set1_ps(gamma_of<float>(3)),
-               g5 = _mm256_set1_ps(gamma_of<float>(5));
-  const __m256 dz = _mm256_mul_ps(g3, max_z);
-  const __m256 dx = _mm256_mul_ps(g5, _mm256_add_ps(max_x, max_z));
-  const __m256 dy = _mm256_mul_ps(g5, _mm256_add_ps(max_y, max_z));
-  const __m256 de = _mm256_mul_ps(
-      _mm256_set1_ps(2.0f),
-      _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(_mm256_mul_ps(g2, max_x), max_y), _mm256_mul_ps(dy, max_x)),
-                    _mm256_mul_ps(dx, max_y)));
-  return _mm256_mul_ps(
-      _mm256_mul_ps(_mm256_set1_ps(3.0f),
-                    _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(_mm256_mul_ps(g3, max_e), max_z), _mm256_mul_ps(de, max_z)),
-                                  _mm256_mul_ps(dz, max_e))),
-      _mm256_andnot_ps(sign, inv_det));
-}
-
-// The watertight test of triangle.cpp (its float path) for the lanes of one axis permutation,
-// with the scalar test's float operations in its order, so each lane rounds as it would alone.
-// Hits are offered; returns the lanes the scalar test must decide: outside the float range, or
-// with an edge function exactly 0 (it retries those in double).
-GCSIM_AVX2_INLINE unsigned intersect_lanes(const Triangle& tri, int prim, const Lanes& l, const Lanes::Axes& ax,
-                                    unsigned lanes, State& s) {
-  const unsigned group = lanes & ax.lanes;
-  // The nine coordinates as floats in a row (glm's operator[] with a run-time index is a switch).
-  static_assert(sizeof(Triangle) == 9 * sizeof(float));
-  const float* p = &tri.p0.x;
-  __m256 x[3], y[3], z[3];
-  const __m256 sx = _mm256_load_ps(l.shear_x), sy = _mm256_load_ps(l.shear_y);
-  const __m256 ox = _mm256_load_ps(l.o[ax.kx]), oy = _mm256_load_ps(l.o[ax.ky]), oz = _mm256_load_ps(l.o[ax.kz]);
-  for (int v = 0; v < 3; ++v) {
-    z[v] = _mm256_sub_ps(_mm256_set1_ps(p[3 * v + ax.kz]), oz);
-    const __m256 vx = _mm256_sub_ps(_mm256_set1_ps(p[3 * v + ax.kx]), ox);
-    const __m256 vy = _mm256_sub_ps(_mm256_set1_ps(p[3 * v + ax.ky]), oy);
-    x[v] = _mm256_add_ps(vx, _mm256_mul_ps(sx, z[v]));
-    y[v] = _mm256_add_ps(vy, _mm256_mul_ps(sy, z[v]));
-  }
-  const __m256 e[3] = {_mm256_sub_ps(_mm256_mul_ps(x[1], y[2]), _mm256_mul_ps(y[1], x[2])),
-                       _mm256_sub_ps(_mm256_mul_ps(x[2], y[0]), _mm256_mul_ps(y[2], x[0])),
-                       _mm256_sub_ps(_mm256_mul_ps(x[0], y[1]), _mm256_mul_ps(y[0], x[1]))};
-  const __m256 zero = _mm256_setzero_ps();
-  __m256 unsure = zero, negative = zero, positive = zero;
-  for (const __m256& f : e) {
-    unsure = _mm256_or_ps(unsure, _mm256_cmp_ps(f, zero, _CMP_EQ_UQ));  // 0 or NaN
-    negative = _mm256_or_ps(negative, _mm256_cmp_ps(f, zero, _CMP_LT_OQ));
-    positive = _mm256_or_ps(positive, _mm256_cmp_ps(f, zero, _CMP_GT_OQ));
-  }
-  const unsigned scalar = group & ~(l.in_range & ~unsigned(_mm256_movemask_ps(unsure)));
-  const unsigned inside = group & ~scalar & ~unsigned(_mm256_movemask_ps(_mm256_and_ps(negative, positive)));
-  if (!inside) return scalar;
-
-  const __m256 det = _mm256_add_ps(_mm256_add_ps(e[0], e[1]), e[2]);
-  const __m256 sz = _mm256_load_ps(l.shear_z);
-  const __m256 zs[3] = {_mm256_mul_ps(z[0], sz), _mm256_mul_ps(z[1], sz), _mm256_mul_ps(z[2], sz)};
-  const __m256 t_scaled = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(e[0], zs[0]), _mm256_mul_ps(e[1], zs[1])),
-                                        _mm256_mul_ps(e[2], zs[2]));
-  const __m256 tmax = _mm256_load_ps(s.t), tmin = _mm256_load_ps(l.tmin);
-  const __m256 t0 = _mm256_mul_ps(tmin, det);
-  const __m256 t1 = _mm256_mul_ps(_mm256_mul_ps(tmax, _mm256_set1_ps(1 + 4.0f * std::numeric_limits<float>::epsilon())), det);
-  // det < 0: t_scaled in (t1 det, t0 det); det > 0: in (t0 det, t1 det]; det 0 or NaN: no hit.
-  const __m256 below = _mm256_andnot_ps(
-      _mm256_or_ps(_mm256_cmp_ps(t_scaled, t0, _CMP_GE_OQ), _mm256_cmp_ps(t_scaled, t1, _CMP_LT_OQ)),
-      _mm256_cmp_ps(det, zero, _CMP_LT_OQ));
-  const __m256 above = _mm256_andnot_ps(
-      _mm256_or_ps(_mm256_cmp_ps(t_scaled, t0, _CMP_LE_OQ), _mm256_cmp_ps(t_scaled, t1, _CMP_GT_OQ)),
-      _mm256_cmp_ps(det, zero, _CMP_GT_OQ));
-  unsigned hit = inside & unsigned(_mm256_movemask_ps(_mm256_or_ps(below, above)));
-  if (!hit) return scalar;
-  const __m256 inv_det = _mm256_div_ps(_mm256_set1_ps(1.0f), det);
-  const __m256 t = _mm256_mul_ps(t_scaled, inv_det);
-  const __m256 dt = t_error_bound(zs, x, y, e, inv_det);
-  const __m256 ok = _mm256_andnot_ps(_mm256_cmp_ps(t, dt, _CMP_LE_OQ),
-                                     _mm256_and_ps(_mm256_cmp_ps(t, tmin, _CMP_GT_OQ), _mm256_cmp_ps(t, tmax, _CMP_LE_OQ)));
-  hit &= unsigned(_mm256_movemask_ps(ok));
-  alignas(32) float tv[8], b1[8], b2[8];
-  _mm256_store_ps(tv, t);
-  _mm256_store_ps(b1, _mm256_mul_ps(e[1], inv_det));
-  _mm256_store_ps(b2, _mm256_mul_ps(e[2], inv_det));
-  // The lanes' t updated in one store, not eight scalar ones: the walk reads them back as one
-  // vector, which could not be forwarded from narrower stores. After an offer a lane's t is
-  // min(old t, t) whether or not the id tie-break took the hit.
-  _mm256_store_ps(s.t, _mm256_blendv_ps(tmax, _mm256_min_ps(tmax, t), _mm256_castsi256_ps(lane_mask(hit))));
-  for (; hit; hit &= hit - 1) {
-    const int i = std::countr_zero(hit);
-    s.hit[i].offer(tv[i], prim, b1[i], b2[i]);
-  }
-  return scalar;
-}
-
 // One sphere for the lanes of `lanes`, in double as intersect_sphere does, lane by lane.
 GCSIM_AVX2 void test_sphere_lanes(const Sphere& sphere, int prim, const Lanes& l, unsigned lanes, State& s) {
   for (unsigned m = lanes; m; m &= m - 1) {
@@ -256,44 +108,6 @@ GCSIM_AVX2 unsigned root_box(const Bounds3& b, const Lanes& l, __m256 tmax, __m2
   }
   entry = _mm256_mul_ps(t0, _mm256_set1_ps(1.0f - 2.0f * gamma(3)));
   return ~unsigned(_mm256_movemask_ps(miss)) & 0xffu;
-}
-
-GCSIM_AVX2 void prepare_lanes(const PrimitiveArrays& prims, const PackedTree& tree, const Ray rays[], unsigned lanes,
-                              Lanes& l) {
-  l.sphere_count = prims.sphere_count();
-  l.triangles = prims.triangles.data();
-  for (int i = 0; i < kPacketLanes; ++i) {
-    const Ray& r = rays[lanes >> i & 1u ? i : std::countr_zero(lanes)];  // idle lanes copy a live one
-    for (int a = 0; a < 3; ++a) {
-      l.o[a][i] = r.origin[a];
-      l.inv[a][i] = r.inv_direction[a];
-      l.negative[a][i] = std::signbit(r.inv_direction[a]) ? -1 : 0;
-    }
-    l.tmin[i] = r.tmin;
-    l.shear_x[i] = r.shear_x;
-    l.shear_y[i] = r.shear_y;
-    l.shear_z[i] = r.shear_z;
-    if (!(lanes >> i & 1u)) continue;
-    if (!prims.spheres.empty()) l.spheres[i] = SphereRay(r);
-    int g = 0;
-    while (g < l.axes_count && !(l.axes[g].kx == r.kx && l.axes[g].ky == r.ky && l.axes[g].kz == r.kz)) ++g;
-    if (g == l.axes_count) l.axes[l.axes_count++] = {r.kx, r.ky, r.kz, 0u};
-    l.axes[g].lanes |= 1u << i;
-  }
-  // TriangleRejectRay::assume_within for every lane: the root box in float's safe range as seen
-  // from the lane's origin, so every triangle below it is.
-  __m256 below = _mm256_castsi256_ps(_mm256_set1_epi32(-1)), above = _mm256_setzero_ps();
-  const __m256 sign = _mm256_set1_ps(-0.0f), big = _mm256_set1_ps(1e12f), small = _mm256_set1_ps(1e-12f);
-  for (int a = 0; a < 3; ++a) {
-    const __m256 o = _mm256_load_ps(l.o[a]);
-    const __m256 lo = _mm256_sub_ps(_mm256_set1_ps(tree.root_box.lo[a]), o);
-    const __m256 hi = _mm256_sub_ps(_mm256_set1_ps(tree.root_box.hi[a]), o);
-    below = _mm256_and_ps(below, _mm256_and_ps(_mm256_cmp_ps(_mm256_andnot_ps(sign, lo), big, _CMP_LE_OQ),
-                                               _mm256_cmp_ps(_mm256_andnot_ps(sign, hi), big, _CMP_LE_OQ)));
-    above = _mm256_or_ps(above, _mm256_or_ps(_mm256_cmp_ps(lo, small, _CMP_GE_OQ),
-                                             _mm256_cmp_ps(hi, _mm256_set1_ps(-1e-12f), _CMP_LE_OQ)));
-  }
-  l.in_range = lanes & unsigned(_mm256_movemask_ps(_mm256_and_ps(below, above)));
 }
 
 // Pushes a child for `lanes` with their entries; false when the single-ray stack would be full.
@@ -396,7 +210,7 @@ GCSIM_AVX2 bool walk(const PrimitiveArrays& prims, const PackedTree& tree, const
 GCSIM_AVX2 bool walk_packet(const PrimitiveArrays& prims, const PackedTree& tree, const Ray rays[], unsigned lanes,
                             Hit hits[], TestTally tallies[]) {
   Lanes l;
-  prepare_lanes(prims, tree, rays, lanes, l);
+  prepare_lanes(prims, tree.root_box, rays, lanes, l);
   int octant = 0;
   for (int a = 0; a < 3; ++a) {
     const unsigned negative = lanes & unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(
