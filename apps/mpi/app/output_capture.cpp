@@ -34,6 +34,7 @@ OutputCapture::OutputCapture(int ranks, bool tag_output)
     }
   }
   parix::report_stack_overflows_to(err_.saved);  // the run ends at once: the real stderr
+  streams_.emplace();
 }
 
 OutputCapture::~OutputCapture() { finish(); }
@@ -48,12 +49,18 @@ void OutputCapture::drain(Stream& s, std::vector<std::string>& into, int rank) {
   }
 }
 
+void OutputCapture::take_pending(int rank) {
+  streams_->flush();
+  for (int fd : {1, 2}) {
+    std::string& pending = streams_->pending(fd);
+    if (pending.empty()) continue;
+    (fd == 1 ? outs_ : errs_)[static_cast<std::size_t>(rank)].append(pending);
+    pending.clear();
+  }
+}
+
 void OutputCapture::attribute(int rank) {
-  if (finished_) return;
-  std::fflush(stdout);
-  std::fflush(stderr);
-  drain(out_, outs_, rank);
-  drain(err_, errs_, rank);
+  if (!finished_) take_pending(rank);
 }
 
 void OutputCapture::print(const Stream& s, const std::vector<std::string>& texts, const char* name) const {
@@ -77,6 +84,8 @@ void OutputCapture::print(const Stream& s, const std::vector<std::string>& texts
 
 void OutputCapture::finish() {
   if (finished_) return;
+  take_pending(0);  // nothing, unless a rank printed after its last MPI call (see below)
+  streams_.reset();
   std::fflush(stdout);
   std::fflush(stderr);
   finished_ = true;

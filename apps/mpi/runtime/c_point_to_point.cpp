@@ -1,5 +1,7 @@
 // The C entry points that start and finish point-to-point messages (MPI 3.1 chapter 3).
+#include <charconv>
 #include <string>
+#include <vector>
 
 #include "apps/mpi/c_call.hpp"
 #include "apps/mpi/runtime/p2p_arguments.hpp"
@@ -11,17 +13,38 @@ namespace parix = gcsim::parix;
 
 namespace {
 
+void append_number(std::string& text, int value) {
+  char digits[16];
+  const auto end = std::to_chars(digits, digits + sizeof digits, value).ptr;
+  text.append(digits, end);
+}
+
 // Built on every call (a deadlock report names it): one allocation, appended in place.
 std::string describe(const char* call, const char* peer_name, int peer, int tag, MPI_Comm comm) {
   std::string text;
   text.reserve(64);
   text.append(call).append("(").append(peer_name).append("=");
   if (peer == MPI_ANY_SOURCE) text.append("MPI_ANY_SOURCE");
-  else text.append(std::to_string(peer));
+  else append_number(text, peer);
   text.append(", tag=");
   if (tag == MPI_ANY_TAG) text.append("MPI_ANY_TAG");
-  else text.append(std::to_string(tag));
-  text.append(", comm=").append(Rank::comm_name(comm)).append(")");
+  else append_number(text, tag);
+  text.append(", comm=");
+  if (comm == MPI_COMM_WORLD) text.append("MPI_COMM_WORLD");
+  else text.append(Rank::comm_name(comm));
+  text.append(")");
+  return text;
+}
+
+// "MPI_Sendrecv(source=...) and MPI_Sendrecv(dest=...)", what a blocked Sendrecv waits for, in a
+// text kept per rank (and host thread: sweeps run simulations side by side) so that it is not
+// allocated on every call; it lives until the rank's next Sendrecv, past the wait that names it.
+const std::string& both_calls(Rank& rank, MPI_Request r, MPI_Request s) {
+  thread_local std::vector<std::string> texts;
+  const auto at = static_cast<std::size_t>(rank.world_rank());
+  if (texts.size() <= at) texts.resize(at + 1);
+  std::string& text = texts[at];
+  text.assign(rank.operation(r).call).append(" and ").append(rank.operation(s).call);
   return text;
 }
 
@@ -131,7 +154,7 @@ int MPI_Sendrecv(const void* sendbuf, int sendcount, MPI_Datatype sendtype, int 
   const int code = runtime_call([&](Rank& rank) {
     MPI_Request r = start_recv(rank, recvbuf, recvcount, recvtype, source, recvtag, comm, "MPI_Sendrecv");
     MPI_Request s = start_send(rank, sendbuf, sendcount, sendtype, dest, sendtag, comm, SendMode::standard, "MPI_Sendrecv");
-    const std::string call = rank.operation(r).call + " and " + rank.operation(s).call;
+    const std::string& call = both_calls(rank, r, s);
     rank.wait_until([&] { return rank.test(s) && rank.test(r); }, call);
     rank.finish(s, MPI_STATUS_IGNORE);
     error = rank.finish(r, status);
@@ -147,7 +170,7 @@ int MPI_Sendrecv_replace(void* buf, int count, MPI_Datatype datatype, int dest, 
     // The send packs buf before the receive may write it.
     MPI_Request s = start_send(rank, buf, count, datatype, dest, sendtag, comm, SendMode::standard, "MPI_Sendrecv_replace");
     MPI_Request r = start_recv(rank, buf, count, datatype, source, recvtag, comm, "MPI_Sendrecv_replace");
-    const std::string call = rank.operation(r).call + " and " + rank.operation(s).call;
+    const std::string& call = both_calls(rank, r, s);
     rank.wait_until([&] { return rank.test(s) && rank.test(r); }, call);
     rank.finish(s, MPI_STATUS_IGNORE);
     error = rank.finish(r, status);

@@ -1,12 +1,16 @@
 #include "apps/mpi/runtime/call_span.hpp"
 
-#include <cctype>
-
 namespace gcsim::mpi_layer {
+namespace {
+// An identifier's character in the C locale (isalnum consults the locale on every character).
+bool identifier_char(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+}  // namespace
 
 std::string_view call_name(std::string_view description) {
   std::size_t n = 0;
-  while (n < description.size() && (std::isalnum(static_cast<unsigned char>(description[n])) || description[n] == '_')) ++n;
+  while (n < description.size() && identifier_char(description[n])) ++n;
   return description.substr(0, n);
 }
 

@@ -32,14 +32,20 @@ void Rank::compute_flops(double flops) {
   charge_compute(flops * computing.settings.seconds_per_flop, "gcsim_mpi_compute_flops");
 }
 
+// Under --compute none the host CPU time is never charged (sampled bodies neither), so the meter
+// does not read the clock: CLOCK_THREAD_CPUTIME_ID is a system call, two per MPI call otherwise.
+namespace {
+bool reads_clock(const RankCompute& c) { return c.settings.mode != ComputeMode::none; }
+}  // namespace
+
 void Rank::start_computing() {
   computing.meter.depth = 0;
-  computing.meter.left_at = thread_cpu_seconds();
+  if (reads_clock(computing)) computing.meter.left_at = thread_cpu_seconds();
 }
 
 void Rank::enter_call() {
   ComputeMeter& m = computing.meter;
-  if (m.depth == 0) {
+  if (m.depth == 0 && reads_clock(computing)) {
     const double host = std::max(0.0, thread_cpu_seconds() - m.left_at);
     m.own += host;
     if (computing.settings.mode == ComputeMode::measured) {
@@ -53,7 +59,7 @@ void Rank::enter_call() {
 
 void Rank::leave_call() {
   ComputeMeter& m = computing.meter;
-  if (m.depth > 0 && --m.depth == 0) m.left_at = thread_cpu_seconds();
+  if (m.depth > 0 && --m.depth == 0 && reads_clock(computing)) m.left_at = thread_cpu_seconds();
 }
 
 }  // namespace gcsim::mpi_layer
