@@ -221,6 +221,7 @@ void Rank::progress() {
     if (op.is_send && !op.done && op.wire.valid() && op.wire.test()) op.done = true;
   }
   drop_freed();
+  advance_collectives();
 }
 
 void Rank::on_letter(parix::Letter& l) {
