@@ -154,6 +154,17 @@ static void errors(void) {
   CHECK(error_class(MPI_Ibarrier(MPI_COMM_NULL, &req)) == MPI_ERR_COMM);
   CHECK(MPI_Ibcast(&x, 1, MPI_INT, 0, MPI_COMM_WORLD, &req) == MPI_SUCCESS);
   CHECK(MPI_Wait(&req, MPI_STATUS_IGNORE) == MPI_SUCCESS && x == 9);
+  /* A communicator cannot be freed under a collective still in flight on it (this layer's limit):
+   * refused with MPI_ERR_COMM on the rank that has one; freed once it completed. */
+  MPI_Comm dup;
+  MPI_Comm_dup(MPI_COMM_WORLD, &dup);
+  MPI_Comm_set_errhandler(dup, MPI_ERRORS_RETURN);
+  CHECK(MPI_Ibarrier(dup, &req) == MPI_SUCCESS);
+  int flag = 0;
+  MPI_Test(&req, &flag, MPI_STATUS_IGNORE);
+  if (!flag) CHECK(error_class(MPI_Comm_free(&dup)) == MPI_ERR_COMM && dup != MPI_COMM_NULL);
+  if (!flag) CHECK(MPI_Wait(&req, MPI_STATUS_IGNORE) == MPI_SUCCESS);
+  CHECK(MPI_Comm_free(&dup) == MPI_SUCCESS && dup == MPI_COMM_NULL);
 }
 
 int main(int argc, char** argv) {
