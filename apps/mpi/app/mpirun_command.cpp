@@ -26,7 +26,7 @@ void run_mpirun(const MpirunOptions& o) {
   RunComputing computing(o, run.simulation.config);
   RankRun ran;
   try {
-    ran = run_ranks(o, run, computing.settings, false);
+    ran = run_ranks(o, run, computing.settings, false, CopiesAtEnd::leave_to_exit);  // the process's one run
   } catch (const parix::host::Interrupted& x) {  // after the ranks' output: the trace and the JSON are kept
     pipeline::report_interrupted_run(x.partial(), o.machine);
     throw;

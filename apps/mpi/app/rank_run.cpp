@@ -56,9 +56,10 @@ parix::Program rank_program(const MpirunOptions& o, const ProgramCopies& copies,
 
 }  // namespace
 
-RankRun run_ranks(const MpirunOptions& o, const parix::RunOptions& run, const ComputeSettings& computing, bool silent) {
+RankRun run_ranks(const MpirunOptions& o, const parix::RunOptions& run, const ComputeSettings& computing, bool silent,
+                  CopiesAtEnd at_end) {
   const machine::MachineConfig::Mpi costs = run.simulation.config.mpi;
-  const ProgramCopies copies(o.program, o.np);
+  const ProgramCopies copies(o.program, o.np, at_end);
   RankRun out;
   out.statuses.assign(static_cast<std::size_t>(o.np), 0);
   OutputCapture capture(o.np, o.tag_output);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "apps/mpi/app/mpirun_options.hpp"
+#include "apps/mpi/app/program_copies.hpp"
 #include "apps/mpi/runtime/compute_meter.hpp"
 #include "parix/backend.hpp"
 #include "parix/run_result.hpp"
@@ -22,7 +23,9 @@ struct RankRun {
 // Runs o's program on o.np ranks with `run` (machine, nodes, trace), charging computation as
 // `computing` says. The ranks' output is printed
 // in rank order at the end, or kept (`silent`). MPI_Abort ends it with pipeline::ExitStatus after
-// saying so; parix::host::Interrupted and the runtime's errors go on up.
-RankRun run_ranks(const MpirunOptions& o, const parix::RunOptions& run, const ComputeSettings& computing, bool silent);
+// saying so; parix::host::Interrupted and the runtime's errors go on up. at_end: what becomes of
+// the program's copies after the run (program_copies.hpp).
+RankRun run_ranks(const MpirunOptions& o, const parix::RunOptions& run, const ComputeSettings& computing, bool silent,
+                  CopiesAtEnd at_end);
 
 }  // namespace gcsim::mpi_layer::app

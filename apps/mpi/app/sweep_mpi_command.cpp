@@ -42,7 +42,7 @@ std::unique_ptr<pipeline::Outcome> run_point(const SweepMpiOptions& o, const Swe
   point.machine.nodes = nodes;
   const parix::RunOptions run = point_options(o, m, nodes);
   const RunComputing computing(point, run.simulation.config);
-  const RankRun ran = run_ranks(point, run, computing.settings, true);
+  const RankRun ran = run_ranks(point, run, computing.settings, true, CopiesAtEnd::unload);  // one of several runs
   if (ran.failed_rank >= 0) {
     throw pipeline::RunFailure(fmt::format("{} nodes on the {} machine: rank {} exited with status {}{}{}", nodes, m.label,
                                            ran.failed_rank, ran.statuses[static_cast<std::size_t>(ran.failed_rank)],

@@ -96,6 +96,7 @@
 #define MPI_Iallreduce gcsim_MPI_Iallreduce
 #define MPI_Ialltoall gcsim_MPI_Ialltoall
 #define MPI_Ialltoallv gcsim_MPI_Ialltoallv
+#define MPI_Ialltoallw gcsim_MPI_Ialltoallw
 #define MPI_Ibarrier gcsim_MPI_Ibarrier
 #define MPI_Ibcast gcsim_MPI_Ibcast
 #define MPI_Ibsend gcsim_MPI_Ibsend

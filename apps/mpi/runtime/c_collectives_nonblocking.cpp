@@ -1,8 +1,9 @@
 // The C entry points of the non-blocking collectives (MPI 3.1 section 5.12): each checks its
 // communicator and request argument, takes the communicator's sequence number now (so blocking
-// and non-blocking collectives interleave in the order the program starts them), and leaves its
-// blocking form to run at the request's first test or wait (rank_deferred_collectives.cpp).
-// The arguments' other checks happen then; their error is the request's.
+// and non-blocking collectives interleave in the order the program starts them), and starts its
+// blocking form's schedule, which progresses at the rank's later calls
+// (rank_nonblocking_collectives.cpp). The arguments' other checks run at once, inside the start;
+// their error is the request's, raised by its wait or test.
 #include <string>
 
 #include "apps/mpi/runtime/collective_site.hpp"
@@ -105,6 +106,14 @@ int MPI_Ialltoallv(const void* sendbuf, const int sendcounts[], const int sdispl
                    MPI_Comm comm, MPI_Request* request) {
   return start_nonblocking("MPI_Ialltoallv", comm, request, [=] {
     return MPI_Alltoallv(sendbuf, sendcounts, sdispls, sendtype, recvbuf, recvcounts, rdispls, recvtype, comm);
+  });
+}
+
+int MPI_Ialltoallw(const void* sendbuf, const int sendcounts[], const int sdispls[], const MPI_Datatype sendtypes[],
+                   void* recvbuf, const int recvcounts[], const int rdispls[], const MPI_Datatype recvtypes[],
+                   MPI_Comm comm, MPI_Request* request) {
+  return start_nonblocking("MPI_Ialltoallw", comm, request, [=] {
+    return MPI_Alltoallw(sendbuf, sendcounts, sdispls, sendtypes, recvbuf, recvcounts, rdispls, recvtypes, comm);
   });
 }
 

@@ -18,6 +18,10 @@ class CallSpan {
   // A C entry point begins or ends; only the outermost one opens and closes the span.
   void enter();
   void leave();
+  // How many entry points are open; a non-blocking collective's schedule counts its own only
+  // while it runs (collective_progress.hpp).
+  int depth() const { return depth_; }
+  void set_depth(int depth) { depth_ = depth; }
   // A description of what the call does names it, unless an earlier one did.
   void describe(std::string_view description);
   // An operation of the call with this peer (world rank; -1: any). The traced peer is the one the

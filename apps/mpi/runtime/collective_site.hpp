@@ -65,8 +65,9 @@ class CollectiveSite {
   CollectiveSignature signature_;
 };
 
-// A non-blocking collective runs its blocking form later with the sequence number it took at its
-// start: while one of these lives, the next CollectiveSite::call() uses `sequence`.
+// A non-blocking collective runs its blocking form on its own schedule (collective_progress.hpp)
+// with the sequence number it took at its start: while one of these lives, the next
+// CollectiveSite::call() uses `sequence`.
 class ReservedSequence {
  public:
   explicit ReservedSequence(std::uint32_t sequence);

@@ -78,7 +78,14 @@ MPI_Comm Rank::add_comm(Communicator c) {
 
 void Rank::free_comm(MPI_Comm handle) {
   if (handle == MPI_COMM_WORLD || handle == MPI_COMM_SELF) fail(MPI_ERR_COMM, "cannot free a predefined communicator");
-  if (comms_.erase(handle) == 0) fail(MPI_ERR_COMM, "invalid communicator");
+  const auto it = comms_.find(handle);
+  if (it == comms_.end()) fail(MPI_ERR_COMM, "invalid communicator");
+  for (const auto& schedule : schedules_) {  // its schedule reads the communicator until it ends
+    if (!schedule->finished() && operation(schedule->request()).context == it->second.collective_context()) {
+      fail(MPI_ERR_COMM, "a non-blocking collective on it is still in flight (complete it first)");
+    }
+  }
+  comms_.erase(it);
 }
 
 std::string Rank::comm_name(MPI_Comm handle) {
@@ -221,6 +228,7 @@ void Rank::progress() {
     if (op.is_send && !op.done && op.wire.valid() && op.wire.test()) op.done = true;
   }
   drop_freed();
+  advance_collectives();
 }
 
 void Rank::on_letter(parix::Letter& l) {

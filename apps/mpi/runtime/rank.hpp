@@ -25,6 +25,7 @@
 #include "apps/mpi/error.hpp"
 #include "apps/mpi/registry.hpp"
 #include "apps/mpi/runtime/call_span.hpp"
+#include "apps/mpi/runtime/collective_progress.hpp"
 #include "apps/mpi/runtime/compute_meter.hpp"
 #include "apps/mpi/runtime/communicator.hpp"
 #include "apps/mpi/runtime/keyvals.hpp"
@@ -66,9 +67,8 @@ struct Operation {  // behind one MPI_Request
   std::optional<Datatype> type;
   std::span<std::byte> raw;
   bool is_raw = false;
-  // A non-blocking collective not run yet: runs (blocking) at the first test or wait of it or of a
-  // later one on its communicator (rank_deferred_collectives.cpp); returns its error code.
-  std::function<int()> collective;
+  // A non-blocking collective's request: done when its schedule (collective_progress.hpp) ends.
+  bool collective = false;
   // MPI_Request_free of an active one: it runs on unseen and is dropped once done (rank_cancel.cpp).
   bool freed = false;
   bool cancel_asked = false;  // MPI_Cancel of a rendezvous send: the receiver's answer awaited
@@ -118,8 +118,11 @@ class Rank {
   MPI_Request start_recv(const Communicator& c, std::int64_t context, int source, int tag, void* buffer, MPI_Count count,
                          const Datatype& type, std::string call);
   MPI_Request start_raw_recv(const Communicator& c, std::int64_t context, int source, int tag, std::span<std::byte> into);
-  // A non-blocking collective on the collective context `context`, run when first tested.
+  // A non-blocking collective on the collective context `context`: `run`, its blocking form,
+  // starts now and progresses at the rank's later calls (rank_nonblocking_collectives.cpp).
   MPI_Request start_collective(std::string call, std::int64_t context, std::function<int()> run);
+  // The non-blocking collective whose schedule runs now (its waits yield to the rank), or null.
+  CollectiveProgress* running_schedule() const { return running_schedule_; }
   // A request complete at once, as a communication with MPI_PROC_NULL is.
   MPI_Request start_null(std::string call);
   Operation& operation(MPI_Request handle);  // MPI_ERR_REQUEST if it names none
@@ -165,7 +168,9 @@ class Rank {
     std::int64_t sender_op = 0;
     parix::Bytes data;
   };
-  void run_collectives_until(MPI_Request handle);
+  void advance_collectives();  // resumes every schedule whose awaited requests are complete
+  void run_schedule(CollectiveProgress& schedule);
+  void drop_finished_schedules();
   void on_cancel_asked(const parix::Letter& l);
   void on_cancel_answered(const parix::Letter& l);
   void drop_freed();
@@ -193,6 +198,9 @@ class Rank {
   // Set as the program enters an MPI call (current()), cleared once its output is attributed: a
   // call's later switches have nothing new to attribute (the program has not run since).
   bool program_ran_ = true;
+  // Outstanding non-blocking collectives in start order; last, so they unwind while the rest lives.
+  std::vector<std::unique_ptr<CollectiveProgress>> schedules_;
+  CollectiveProgress* running_schedule_ = nullptr;
 };
 
 // A C entry point that may block: what the core throws (Error) goes through the error handler of

@@ -21,7 +21,6 @@ void Rank::free_request(MPI_Request handle) {
     operations_.erase(handle);
     return;
   }
-  if (op.collective) run_collectives_until(handle);
   progress();
   operation(handle).freed = true;
   drop_freed();

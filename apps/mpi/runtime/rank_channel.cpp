@@ -15,12 +15,18 @@ CollectiveChannel::Handle RankChannel::start_recv(int peer, int tag, std::span<s
 }
 
 void RankChannel::wait_all(std::span<const Handle> handles) {
-  rank_.wait_until([&] {
+  const auto all_done = [&] {
     for (Handle h : handles) {
       if (!rank_.test(h)) return false;
     }
     return true;
-  }, call_);
+  };
+  if (CollectiveProgress* schedule = rank_.running_schedule()) {  // a non-blocking one: yield, never block
+    const std::vector<MPI_Request> waiting(handles.begin(), handles.end());
+    while (!all_done()) schedule->yield(waiting);
+  } else {
+    rank_.wait_until(all_done, call_);
+  }
   std::string mismatch;
   int error = MPI_SUCCESS;
   for (Handle h : handles) {

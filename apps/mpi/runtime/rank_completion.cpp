@@ -7,7 +7,6 @@ namespace gcsim::mpi_layer {
 
 bool Rank::test(MPI_Request handle) {
   if (const Operation& p = operation(handle); p.restart) return p.started == MPI_REQUEST_NULL || test(p.started);
-  if (operation(handle).collective) run_collectives_until(handle);
   progress();
   Operation& op = operation(handle);
   if (!op.done) return false;
