@@ -13,6 +13,7 @@
 #include <iterator>
 #include <system_error>
 
+#include "apps/mpi/app/program_symbols.hpp"
 #include "apps/pipeline/failure.hpp"
 
 namespace gcsim::mpi_layer::app {
@@ -76,10 +77,24 @@ class OpenFileAllowance {
   bool changed_ = false;
 };
 
+// A call gcsim's MPI does not provide would bind to whatever MPI_* the process holds: refused here.
+void refuse_missing_functions(const std::string& program, const std::string& bytes) {
+  const std::vector<std::string> missing = missing_mpi_functions(bytes);
+  if (missing.empty()) return;
+  std::string names;
+  for (std::size_t i = 0; i < missing.size() && i < 4; ++i) names += (i ? ", " : "") + missing[i];
+  if (missing.size() > 4) names += " and " + std::to_string(missing.size() - 4) + " more";
+  throw pipeline::FileError(program + ": calls " + names + ", which gcsim's MPI does not provide (its mpi.h does not " +
+                            "declare " + (missing.size() == 1 ? "it" : "them") +
+                            "; a C compiler took an implicit declaration). The function table of gcsim's MPI README " +
+                            "lists what is supported");
+}
+
 }  // namespace
 
 ProgramCopies::ProgramCopies(const std::string& program, int copies, CopiesAtEnd at_end) : at_end_(at_end) {
   const std::string bytes = contents_of(program);
+  refuse_missing_functions(program, bytes);
   const OpenFileAllowance allowance(program, copies);
   std::vector<int> fds;
   struct Close {
