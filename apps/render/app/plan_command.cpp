@@ -48,6 +48,12 @@ void measure_media(const PlanFlags& f, const scene::SceneDescription& d, const P
   }
   model.media_seconds = s.seconds();
   model.media_bytes = s.map_bytes;
+  model.media_photon_seconds = s.photon_seconds, model.media_grid_seconds = s.grid_seconds;
+  model.media_march_seconds = s.march_seconds;
+  // The photons' and the marching's sampled fractions, each part's share of the row.
+  const double photons_u = sampled_fraction_uncertainty(double(s.traced) / double(std::max<std::size_t>(f.photons, 1)));
+  const double march_u = sampled_fraction_uncertainty(double(s.tiles_rendered) / std::max(s.tiles, 1));
+  model.media_uncertainty = s.seconds() > 0 ? (photons_u * s.photon_seconds + march_u * (s.grid_seconds + s.march_seconds)) / s.seconds() : 0;
   model.media_measured = fmt::format(
       "{} and {} of the {} photons traced, then one run of {} tiles in {} of the view ({} of\n"
       "          {}) with and without the media, on the simulated machine: photons ~{:.3g} s (linear in the photons\n"
@@ -70,6 +76,7 @@ void measure_view(const PlanFlags& f, const scene::SceneDescription& d, const Pl
   model.view_sampled = true;
   model.view_seconds = s.view_seconds, model.specular_seconds = s.specular_seconds, model.shadow_seconds = s.shadow_seconds;
   model.view_bytes = s.bytes_per_node;
+  model.view_uncertainty = sampled_fraction_uncertainty(double(s.tiles_rendered) / std::max(s.tiles, 1));
   std::string rows = "view";
   if (plan.pass(PassId::specular).on) rows += ", specular";
   if (plan.pass(PassId::shadows).on) rows += ", shadows";
@@ -143,6 +150,8 @@ void add_plan_command(pipeline::CommandGroups& g) {
                                                        f->sample_loops, &media.wall_power);
       model.radiosity_seconds_per_loop = s.seconds_per_loop;
       model.radiosity_loops = s.expected_loops;
+      model.radiosity_uncertainty = s.relative_uncertainty;
+      model.radiosity_peak_bytes = s.peak_bytes;
     }
     if (f->sample_tiles != 0) measure_view(*f, d, plan, nodes, model);
     fmt::print("{}", format_plan(plan, machine, nodes, model));
