@@ -120,7 +120,7 @@ PassCost estimate_pass(const PassPlan& pass, const SceneFacts& f, const machine:
 
 double sampled_fraction_uncertainty(double sampled) {
   if (!(sampled < 1)) return 0;
-  return 0.085 / std::sqrt(1 - 0.75) * std::sqrt(1 - std::max(sampled, 0.0));
+  return 0.085 * std::sqrt((1 - std::max(sampled, 0.0)) / 0.75);
 }
 
 double pass_uncertainty(PassId id, const CostModel& m) {

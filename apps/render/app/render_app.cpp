@@ -362,6 +362,7 @@ pipeline::AppSpec spec() {
   s.commands = [](pipeline::CommandGroups& g) {
     add_plan_command(g);
     add_render_accuracy_command(g);
+    add_plan_accuracy_command(g);
     pipeline::add_run_command(*g.app, spec());
   };
   return s;
