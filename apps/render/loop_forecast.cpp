@@ -21,9 +21,9 @@ std::vector<int> hemicubes_per_patch(const radiosity::Scene& mesh, const radiosi
 }
 
 LoopForecast forecast_loops(const radiosity::Scene& mesh, radiosity::SolverOptions solver,
-                            const std::vector<int>& hemicubes_per_patch) {
+                            const std::vector<int>& hemicubes_per_patch, int resolution) {
   const auto start = std::chrono::steady_clock::now();
-  solver.hemicube.resolution = kForecastResolution;
+  solver.hemicube.resolution = resolution;
   solver.max_steps = radiosity::SolverOptions{}.max_steps;
   const radiosity::SolveResult solved = radiosity::solve_progressive(mesh, solver);
   LoopForecast f;

@@ -25,10 +25,10 @@ struct LoopForecast {
 inline constexpr int kForecastResolution = 16;
 inline constexpr double kForecastLoopSpread = 0.02;  // relative, of the loops between those resolutions
 
-// Solves `mesh` on the host as `solver` would, with the coarse hemicube (kForecastResolution).
+// Solves `mesh` on the host as `solver` would, with a coarse hemicube `resolution` across.
 // hemicubes_per_patch: the render's near-field samples per patch squared (its hemicube resolution's).
 LoopForecast forecast_loops(const radiosity::Scene& mesh, radiosity::SolverOptions solver,
-                            const std::vector<int>& hemicubes_per_patch);
+                            const std::vector<int>& hemicubes_per_patch, int resolution = kForecastResolution);
 
 // The hemicubes each patch projects when it shoots at `o`'s resolution (near-field samples squared).
 std::vector<int> hemicubes_per_patch(const radiosity::Scene& mesh, const radiosity::HemicubeOptions& o);
