@@ -34,8 +34,8 @@ std::string describe_estimate(const Plan& plan, const CostModel& model) {
   std::string out;
   if (model.radiosity_seconds_per_loop > 0)
     out += fmt::format("measured  radiosity: its first loops ran on the simulated machine{}, {:.4g} s each\n"
-                       "          (communication and waiting included), times ~{:.0f} loops from the decline of the "
-                       "unshot energy over them.\n",
+                       "          (communication and waiting included; each loop priced by the hemicubes its shooters project),\n"
+                       "          times ~{:.0f} loops forecast by solving the mesh on the host with a 16-cell hemicube.\n",
                        model.radiosity_deposits ? " from the photons' wall deposits" : "",
                        model.radiosity_seconds_per_loop, expected_loops(f, model));
   if (model.media_seconds > 0) out += "measured  media: " + model.media_measured + "\n";
