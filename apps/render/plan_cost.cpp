@@ -118,4 +118,26 @@ PassCost estimate_pass(const PassPlan& pass, const SceneFacts& f, const machine:
   return c;
 }
 
+double sampled_fraction_uncertainty(double sampled) {
+  if (!(sampled < 1)) return 0;
+  return 0.085 * std::sqrt((1 - std::max(sampled, 0.0)) / 0.75);
+}
+
+double pass_uncertainty(PassId id, const CostModel& m) {
+  if (id == PassId::radiosity) return m.radiosity_seconds_per_loop > 0 ? m.radiosity_uncertainty : 0;
+  if (id == PassId::media) return m.media_seconds > 0 ? m.media_uncertainty : 0;
+  return m.view_sampled ? m.view_uncertainty : 0;
+}
+
+PeakMemory predicted_peak(const Plan& plan, const machine::MachineConfig& machine, int nodes, const CostModel& m) {
+  auto bytes = [&](PassId id) { return estimate_pass(plan.pass(id), plan.facts, machine, nodes, m).bytes_per_node; };
+  const std::int64_t media = bytes(PassId::media);
+  const std::int64_t radiosity =
+      plan.pass(PassId::radiosity).on && m.radiosity_peak_bytes > 0 ? m.radiosity_peak_bytes : bytes(PassId::radiosity);
+  PeakMemory p;
+  p.bytes = media + std::max(radiosity, bytes(PassId::view));
+  if (p.bytes > 0) p.uncertainty = double(media) / double(p.bytes) * m.media_uncertainty;
+  return p;
+}
+
 }  // namespace gcsim::render

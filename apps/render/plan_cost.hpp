@@ -22,7 +22,8 @@ struct CostModel {
   // > 0: the radiosity pass's simulated seconds per loop measured on the machine by running its
   // first loops (radiosity_sample.hpp); the estimate is then this times the expected loops.
   double radiosity_seconds_per_loop = 0;
-  double radiosity_loops = 0;     // > 0: the loops to convergence extrapolated from that sample
+  double radiosity_loops = 0;     // > 0: the loops to convergence forecast (loop_forecast.hpp)
+  double radiosity_uncertainty = 0;  // relative, of the measured radiosity time
   int specular_depth = 4;         // upper bound: every camera ray meets mirrors or glass this deep
   // Distance samples per free path: the view takes 32 (1 - T) on a segment of transmittance T, so
   // a camera ray takes about 32 x SceneFacts::media_opacity (per pixel, CORNELL-FOG: 10 predicted,
@@ -35,12 +36,17 @@ struct CostModel {
   double media_seconds = 0;
   std::int64_t media_bytes = 0;
   std::string media_measured;     // how that sample ran, for the report
+  double media_photon_seconds = 0, media_grid_seconds = 0, media_march_seconds = 0;  // its parts
   // view_sampled: the view, specular and shadows passes measured on the machine by a sample of the
   // view's tiles (view_sample.hpp): each row's simulated seconds and the view's bytes.
   bool view_sampled = false;
   double view_seconds = 0, specular_seconds = 0, shadow_seconds = 0;
   std::int64_t view_bytes = 0;
   std::string view_measured;      // how that sample ran, for the report
+  // Relative uncertainties of the measured figures (0: exact or not measured): the view's and the
+  // media's from their sampled fractions, the radiosity's from its sample's loop times.
+  double view_uncertainty = 0, media_uncertainty = 0;
+  std::int64_t radiosity_peak_bytes = 0;  // > 0: the most a node held in the radiosity sample
   bool radiosity_deposits = false;  // the radiosity sample started from the photons' wall deposits
   int photons = 50000;            // `gcsim render --photons`' default (render_setup.hpp)
   int k_nearest = 50;             // photons per radiance estimate
@@ -61,6 +67,24 @@ struct PassCost {
 // the machine file's [ops] table lacks.
 PassCost estimate_pass(const PassPlan& pass, const SceneFacts& facts, const machine::MachineConfig& machine,
                        int nodes, const CostModel& model = {});
+// The relative uncertainty of a pass's estimate (0 for a counted pass: it has none to give).
+double pass_uncertainty(PassId id, const CostModel& m);
+
+// The most one node holds during the render: the photon map (kept from the media pass to the view's
+// end) plus the larger of the radiosity pass's replica and hemicube and the view's scene, tree and
+// image (the radiosity pass frees its own before the view). uncertainty: relative, the photon map's
+// share times the media's.
+struct PeakMemory {
+  std::int64_t bytes = 0;
+  double uncertainty = 0;
+};
+PeakMemory predicted_peak(const Plan& plan, const machine::MachineConfig& machine, int nodes, const CostModel& m);
+
+// The relative uncertainty of a figure scaled from a sampled fraction `sampled` of its work: none for
+// all of it, else the largest miss measured with one run of tiles in 4 (8.5 %) scaled by
+// sqrt(1 - sampled).
+double sampled_fraction_uncertainty(double sampled);
+
 // The radiosity loops the estimate assumes: shots_per_patch x patches / shooters_per_loop.
 double expected_loops(const SceneFacts& f, const CostModel& m);
 

@@ -1,5 +1,7 @@
 #include "apps/render/plan_report.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 namespace gcsim::render {
@@ -7,6 +9,12 @@ namespace gcsim::render {
 namespace {
 
 std::string mib(std::int64_t bytes) { return fmt::format("{:.2f} MiB", double(bytes) / (1 << 20)); }
+
+// "~80.0 s ± 6 %" for a measured figure, "~80.0 s" for a counted one (it has no spread to give).
+std::string with_uncertainty(double seconds, double relative, bool measured) {
+  if (!measured) return fmt::format("~{:.3g} s", seconds);
+  return fmt::format("~{:.3g} s ± {:.0f} %", seconds, std::max(relative * 100, 1.0));
+}
 
 std::string needs(const PassPlan& p) {
   std::string out;
@@ -26,8 +34,8 @@ std::string describe_estimate(const Plan& plan, const CostModel& model) {
   std::string out;
   if (model.radiosity_seconds_per_loop > 0)
     out += fmt::format("measured  radiosity: its first loops ran on the simulated machine{}, {:.4g} s each\n"
-                       "          (communication and waiting included), times ~{:.0f} loops from the decline of the "
-                       "unshot energy over them.\n",
+                       "          (communication and waiting included; each loop priced by the hemicubes its shooters project),\n"
+                       "          times ~{:.0f} loops forecast by solving the mesh on the host with a 16-cell hemicube.\n",
                        model.radiosity_deposits ? " from the photons' wall deposits" : "",
                        model.radiosity_seconds_per_loop, expected_loops(f, model));
   if (model.media_seconds > 0) out += "measured  media: " + model.media_measured + "\n";
@@ -56,20 +64,25 @@ std::string format_plan(const Plan& plan, const machine::MachineConfig& machine,
                      "primitives; {} emissive surfaces, {} point/spot lights; {} pixels x {} spp\n\n",
                      f.shapes, f.objects, f.patches, f.elements, f.primitives, f.emitters, f.point_lights, f.pixels,
                      f.samples_per_pixel);
-  out += fmt::format("{:<10} {:<4} {:>14} {:>12}  {}\n", "pass", "", "time/node", "memory/node", "needs");
+  out += fmt::format("{:<10} {:<4} {:>18} {:>12}  {}\n", "pass", "", "time/node", "memory/node", "needs");
   double total = 0;
   std::int64_t peak = 0;
   for (const PassPlan& p : plan.passes) {
     const PassCost c = estimate_pass(p, f, machine, nodes, model);
     total += c.seconds_per_node;
     peak = std::max(peak, c.bytes_per_node);
-    out += fmt::format("{:<10} {:<4} {:>14} {:>12}  {}\n", pass_name(p.id), p.on ? "ON" : "off",
-                       p.on ? fmt::format("~{:.3g} s", c.seconds_per_node) : "-", p.on ? mib(c.bytes_per_node) : "-",
+    const std::string time = with_uncertainty(c.seconds_per_node, pass_uncertainty(p.id, model), is_measured(p, model));
+    out += fmt::format("{:<10} {:<4} {:>18} {:>12}  {}\n", pass_name(p.id), p.on ? "ON" : "off", p.on ? time : "-",
+                       p.on ? mib(c.bytes_per_node) : "-",
                        needs(p));
     out += "           " + p.reason + "\n";
     if (!p.detail.empty() && (p.on || p.id == PassId::media)) out += "           " + p.detail + "\n";
   }
+  const PeakMemory held = predicted_peak(plan, machine, nodes, model);
   out += fmt::format("\ntotal     ~{:.3g} s per node (largest pass ~{} per node)\n", total, mib(peak));
+  out += fmt::format("memory    ~{} ± {:.0f} % at the peak on one node (the photon map with the larger of the\n"
+                     "          radiosity pass's replica and hemicube and the view's scene and image)\n",
+                     mib(held.bytes), std::max(held.uncertainty * 100, 1.0));
   out += describe_estimate(plan, model);
   return out;
 }
@@ -91,8 +104,15 @@ nlohmann::json plan_json(const Plan& plan, const machine::MachineConfig& machine
     j["passes"].push_back({{"name", pass_name(p.id)}, {"on", p.on}, {"reason", p.reason}, {"detail", p.detail},
                            {"estimate", !p.on ? "none" : is_measured(p, model) ? "measured" : "modeled"},
                            {"needs", needs_list}, {"estimated_seconds_per_node", c.seconds_per_node},
-                           {"estimated_bytes_per_node", c.bytes_per_node}});
+                           {"estimated_bytes_per_node", c.bytes_per_node},
+                           {"relative_uncertainty", p.on && is_measured(p, model) ? pass_uncertainty(p.id, model) : 0.0}});
+    if (p.id == PassId::media && p.on && model.media_seconds > 0)
+      j["passes"].back()["parts_s"] = {{"photons", model.media_photon_seconds}, {"sh_grid", model.media_grid_seconds},
+                                       {"marching", model.media_march_seconds}};
   }
+  const PeakMemory held = predicted_peak(plan, machine, nodes, model);
+  j["memory_peak_bytes"] = held.bytes;
+  j["memory_peak_relative_uncertainty"] = held.uncertainty;
   return j;
 }
 

@@ -7,6 +7,7 @@
 
 #include "apps/common/scene/description_to_world.hpp"
 #include "apps/radiosity/radiosity.hpp"
+#include "apps/render/loop_forecast.hpp"
 #include "apps/render/medium_region.hpp"
 #include "apps/render/radiosity_media.hpp"
 #include "parix/sim/simulated_runtime.hpp"
@@ -39,15 +40,38 @@ RadiositySample sample_radiosity_loops(const scene::SceneDescription& d, const s
   std::vector<radiosity::StepRecord> steps;
   bool converged = false;
   if (received && !received->empty()) options.solver.received = received;
+  std::vector<double> loop_ends;  // node 0's clock after each loop
   const parix::RunResult run = parix::run_simulated(machine, [&](parix::Processor& p) {
-    radiosity::ParallelOutcome out = radiosity::solve_replica(p, mesh, options);
+    radiosity::ParallelOptions mine = options;
+    if (p.id() == 0) mine.on_loop = [&](int, double) { loop_ends.push_back(p.now_seconds()); };
+    radiosity::ParallelOutcome out = radiosity::solve_replica(p, mesh, mine);
     if (p.id() == 0) steps = std::move(out.steps), converged = out.converged;
   });
   RadiositySample s;
   s.loops = int(steps.size());
-  if (converged) s.expected_loops = s.loops;
-  else s.expected_loops = extrapolate_loops(steps, options.solver.energy);
-  s.seconds_per_loop = s.loops > 0 ? run.simulated_seconds() / s.loops : 0.0;
+  s.extrapolated_loops = converged ? s.loops : extrapolate_loops(steps, options.solver.energy);
+  if (converged || s.loops == 0) {  // the sample is the pass
+    s.expected_loops = s.loops, s.seconds = run.simulated_seconds();
+  } else {
+    const std::vector<int> per_patch = hemicubes_per_patch(mesh, radiosity::hemicube_of(options));
+    const LoopForecast forecast = forecast_loops(mesh, options.solver, per_patch);
+    std::vector<double> loop_seconds;
+    std::vector<int> loop_hemicubes;
+    for (std::size_t i = 0; i < loop_ends.size() && i < steps.size(); ++i) {
+      loop_seconds.push_back(loop_ends[i] - (i > 0 ? loop_ends[i - 1] : 0.0));
+      int h = 0;
+      for (int patch : steps[i].shooters) h += per_patch[std::size_t(patch)];
+      loop_hemicubes.push_back(h);
+    }
+    const LoopPricing price = price_loops(forecast, loop_seconds, loop_hemicubes);
+    // The pass ends when its last node does: the sample's lag of the last node after node 0 kept.
+    const double lag = loop_ends.empty() ? 0.0 : std::max(0.0, run.simulated_seconds() - loop_ends.back());
+    s.expected_loops = forecast.loops();
+    s.seconds = price.seconds + lag;
+    s.relative_uncertainty = price.relative_uncertainty;
+  }
+  s.peak_bytes = run.memory_peak;
+  s.seconds_per_loop = s.expected_loops > 0 ? s.seconds / s.expected_loops : 0.0;
   s.host_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return s;
 }

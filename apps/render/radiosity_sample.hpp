@@ -3,6 +3,7 @@
 // machine (the radiosity app's own program, stopped after a few loops), so the time per loop
 // includes what an operation count misses, the repeated work, the communication and the waiting,
 // as SMPI predicts a run from a sample of it. `gcsim plan` multiplies it by the expected loops.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -14,12 +15,17 @@ namespace gcsim::render {
 
 struct RadiositySample {
   int loops = 0;                 // loops run (fewer if the solve converged sooner)
-  double seconds_per_loop = 0;   // simulated, the last node's end over the loops run
-  double host_seconds = 0;       // wall time the sample took
-  // Loops to shoot the energy fraction, extrapolated from the sample: the unshot energy taken to
-  // keep falling by the factor per loop it fell by over the sample's second half (0: converged in
-  // the sample, or no decline to extrapolate).
+  double host_seconds = 0;       // wall time the sample and the forecast took
+  // Loops to shoot the energy fraction: the sample's own where it converged, else the coarse host
+  // solve's (loop_forecast.hpp).
   double expected_loops = 0;
+  // The old forecast, for comparison: the unshot energy taken to keep falling by the factor per loop
+  // it fell by over the sample's second half (CORNELL: 193 loops against 254).
+  double extrapolated_loops = 0;
+  double seconds = 0;            // the pass, predicted: the forecast's loops priced by the sample's
+  double seconds_per_loop = 0;   // seconds over expected_loops
+  double relative_uncertainty = 0;  // of seconds, from the spread of the sample's loop times
+  std::int64_t peak_bytes = 0;   // the most a node held (replica and hemicube: the pass's own)
 };
 
 // The loops a progressive solve needs to shoot `energy`, from the steps it made so far: the unshot

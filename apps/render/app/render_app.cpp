@@ -139,6 +139,9 @@ class RenderExperiment : public pipeline::Experiment {
     const double radiosity_s = u.radiosity_seconds();
     // Under MPI the clocks are this rank's wall clock, and only this rank's pass end is known here.
     const bool real = o.run.clock == parix::Clock::wall;
+    // The highest any node held (the run's JSON has it only when a node went over its memory):
+    // what `gcsim plan`'s memory per node predicts.
+    if (!real) extra["memory_peak"] = {{"bytes", o.run.memory_peak}, {"processor", o.run.memory_peak_processor}};
     report_media(u, real, extra);  // the photons run first: radiosity receives what they leave on the walls
     if (!runs(PassId::radiosity)) {
       fmt::print("radiosity skipped: {}\n", plan_.pass(PassId::radiosity).reason);
@@ -359,6 +362,7 @@ pipeline::AppSpec spec() {
   s.commands = [](pipeline::CommandGroups& g) {
     add_plan_command(g);
     add_render_accuracy_command(g);
+    add_plan_accuracy_command(g);
     pipeline::add_run_command(*g.app, spec());
   };
   return s;
