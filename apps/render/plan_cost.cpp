@@ -129,13 +129,17 @@ double pass_uncertainty(PassId id, const CostModel& m) {
   return m.view_sampled ? m.view_uncertainty : 0;
 }
 
+std::int64_t pass_bytes_per_node(const PassPlan& pass, const SceneFacts& f, const machine::MachineConfig& machine,
+                                 int nodes, const CostModel& m) {
+  if (pass.id == PassId::radiosity && pass.on && m.radiosity_peak_bytes > 0) return m.radiosity_peak_bytes;
+  return estimate_pass(pass, f, machine, nodes, m).bytes_per_node;
+}
+
 PeakMemory predicted_peak(const Plan& plan, const machine::MachineConfig& machine, int nodes, const CostModel& m) {
-  auto bytes = [&](PassId id) { return estimate_pass(plan.pass(id), plan.facts, machine, nodes, m).bytes_per_node; };
+  auto bytes = [&](PassId id) { return pass_bytes_per_node(plan.pass(id), plan.facts, machine, nodes, m); };
   const std::int64_t media = bytes(PassId::media);
-  const std::int64_t radiosity =
-      plan.pass(PassId::radiosity).on && m.radiosity_peak_bytes > 0 ? m.radiosity_peak_bytes : bytes(PassId::radiosity);
   PeakMemory p;
-  p.bytes = media + std::max(radiosity, bytes(PassId::view));
+  p.bytes = media + std::max(bytes(PassId::radiosity), bytes(PassId::view));
   if (p.bytes > 0) p.uncertainty = double(media) / double(p.bytes) * m.media_uncertainty;
   return p;
 }

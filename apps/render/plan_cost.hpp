@@ -70,6 +70,11 @@ PassCost estimate_pass(const PassPlan& pass, const SceneFacts& facts, const mach
 // The relative uncertainty of a pass's estimate (0 for a counted pass: it has none to give).
 double pass_uncertainty(PassId id, const CostModel& m);
 
+// What one node holds for a pass: the radiosity sample's measured peak where it ran (the count
+// misses the replica's and hemicube's real size), else the count's estimate.
+std::int64_t pass_bytes_per_node(const PassPlan& pass, const SceneFacts& f, const machine::MachineConfig& machine,
+                                 int nodes, const CostModel& m);
+
 // The most one node holds during the render: the photon map (kept from the media pass to the view's
 // end) plus the larger of the radiosity pass's replica and hemicube and the view's scene, tree and
 // image (the radiosity pass frees its own before the view). uncertainty: relative, the photon map's

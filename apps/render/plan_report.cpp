@@ -69,11 +69,12 @@ std::string format_plan(const Plan& plan, const machine::MachineConfig& machine,
   std::int64_t peak = 0;
   for (const PassPlan& p : plan.passes) {
     const PassCost c = estimate_pass(p, f, machine, nodes, model);
+    const std::int64_t bytes = pass_bytes_per_node(p, f, machine, nodes, model);
     total += c.seconds_per_node;
-    peak = std::max(peak, c.bytes_per_node);
+    peak = std::max(peak, bytes);
     const std::string time = with_uncertainty(c.seconds_per_node, pass_uncertainty(p.id, model), is_measured(p, model));
     out += fmt::format("{:<10} {:<4} {:>18} {:>12}  {}\n", pass_name(p.id), p.on ? "ON" : "off", p.on ? time : "-",
-                       p.on ? mib(c.bytes_per_node) : "-",
+                       p.on ? mib(bytes) : "-",
                        needs(p));
     out += "           " + p.reason + "\n";
     if (!p.detail.empty() && (p.on || p.id == PassId::media)) out += "           " + p.detail + "\n";
@@ -104,7 +105,7 @@ nlohmann::json plan_json(const Plan& plan, const machine::MachineConfig& machine
     j["passes"].push_back({{"name", pass_name(p.id)}, {"on", p.on}, {"reason", p.reason}, {"detail", p.detail},
                            {"estimate", !p.on ? "none" : is_measured(p, model) ? "measured" : "modeled"},
                            {"needs", needs_list}, {"estimated_seconds_per_node", c.seconds_per_node},
-                           {"estimated_bytes_per_node", c.bytes_per_node},
+                           {"estimated_bytes_per_node", pass_bytes_per_node(p, f, machine, nodes, model)},
                            {"relative_uncertainty", p.on && is_measured(p, model) ? pass_uncertainty(p.id, model) : 0.0}});
     if (p.id == PassId::media && p.on && model.media_seconds > 0)
       j["passes"].back()["parts_s"] = {{"photons", model.media_photon_seconds}, {"sh_grid", model.media_grid_seconds},
