@@ -1,6 +1,7 @@
 #include "apps/render/sampled_view.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <numeric>
 
@@ -37,6 +38,13 @@ std::vector<int> tiles_of(const raytrace::ParallelRender& r) {
   return tiles;
 }
 
+// Holds node p's CPU until `at` (SampledViewInput::node_start), in raw cycles: a machine file
+// without the `cycle` operation starts every node at 0.
+void reach(parix::Processor& p, const parix::SimulationOptions& machine, double at) {
+  if (at <= 0 || !machine.config.cycles_per_op.contains("cycle")) return;
+  p.compute("cycle", std::llround(at * machine.config.clock_hz / machine.config.cycles_per_op.find("cycle")->second));
+}
+
 }  // namespace
 
 SampledView run_sampled_view(const SampledViewInput& in, const parix::SimulationOptions& machine) {
@@ -51,14 +59,16 @@ SampledView run_sampled_view(const SampledViewInput& in, const parix::Simulation
                          in.photons ? *in.photons : std::move(g.per_region));
       v->job->sample_tiles(in.tile_stride);
     }
+    if (!in.node_start.empty()) reach(p, machine, in.node_start[std::size_t(p.id())]);
     if (v->medium) charge_grid_share(p, scaled_counts(v->medium->grid_build(), in.grid_scale));
     start[std::size_t(p.id())] = p.now_seconds();
     v->job->program(p, v->result, nullptr);
   });
   SampledView out;
-  out.grid_seconds = *std::max_element(start.begin(), start.end());
-  out.seconds = r.simulated_seconds() - out.grid_seconds;
-  // Before its view a node only computed (its SH grid share; an absorbing medium's photon pass is empty).
+  const double last_start = *std::max_element(start.begin(), start.end());
+  out.grid_seconds = last_start - (in.node_start.empty() ? 0.0 : *std::max_element(in.node_start.begin(), in.node_start.end()));
+  out.seconds = r.simulated_seconds() - last_start;
+  // Before its view a node only computed (its node_start, its SH grid share; an absorbing medium's photon pass is empty).
   out.compute = r.mean_compute_seconds() - std::accumulate(start.begin(), start.end(), 0.0) / double(start.size());
   out.peak = r.memory_peak;
   out.tiles = v->result.tiles_total, out.rendered = v->job->tiles_rendered_per_run();

@@ -33,12 +33,16 @@ struct SampledViewInput {
   const std::vector<std::vector<media::Photon>>* photons = nullptr;
   double grid_scale = 1.0;
   int tile_stride = 1;
+  // When each node reaches its view (before its SH grid share), as the render's: there the view
+  // starts where the node's photon pass ends, and who asks node 0 for tiles first decides which node
+  // gets which tile. Empty: every node at 0.
+  std::vector<double> node_start;
 };
 
 struct SampledView {
   double seconds = 0;       // the view as the render reports it: the end less the last node's start
   double compute = 0;       // the nodes' mean CPU time in it (before it: the SH grid's share, left out)
-  double grid_seconds = 0;  // the SH grid's share: the last node's start of the view
+  double grid_seconds = 0;  // the SH grid's share: the last node's start of the view less the last node_start
   std::int64_t peak = 0;    // the largest node's memory
   int tiles = 0, rendered = 0;
   std::vector<int> rendered_tiles;  // which, in index order
