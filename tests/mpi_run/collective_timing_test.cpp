@@ -12,10 +12,8 @@
 
 #include "apps/mpi/include/mpi.h"
 #include "apps/mpi/runtime/rank.hpp"
-#include "machine/interconnect_registry.hpp"
-#include "machine/machine_config.hpp"
-#include "machine/network_model.hpp"
 #include "parix/sim/simulated_runtime.hpp"
+#include "tests/mpi_run/analytic_row.hpp"
 
 namespace gcsim::mpi_layer {
 namespace {
@@ -23,9 +21,7 @@ namespace {
 constexpr int kRanks = 8;
 constexpr int kBytes = 1000;
 
-// Simulated times in the machine's picoseconds (MPI_Wtime's seconds read back exactly).
 using machine::SimTime;
-SimTime picoseconds(double seconds) { return std::llround(seconds * 1e12); }
 
 struct Times {
   std::vector<SimTime> entered = std::vector<SimTime>(kRanks), left = std::vector<SimTime>(kRanks);
@@ -51,26 +47,7 @@ Times measure(const parix::SimulationOptions& o, Algorithm algorithm, mpi_layer:
   return t;
 }
 
-struct Model {
-  parix::SimulationOptions options;
-  std::unique_ptr<machine::Interconnect> interconnect;
-  machine::Kernel kernel;
-  std::unique_ptr<machine::NetworkModel> network;
-  SimTime cpu = 0;  // o + G n, as Rank::charge computes it
-  SimTime transit(int from, int to) const { return network->uncontended_time(interconnect->hops(from, to), kBytes); }
-};
-
-std::unique_ptr<Model> row_of_eight() {
-  auto m = std::make_unique<Model>();
-  m->options.config = machine::with_nodes(machine::default_machine_config(), kRanks, machine::MeshShape{kRanks, 1});
-  m->options.config.network_model = "analytic";
-  m->options.config.mpi.call_overhead = machine::from_seconds(5e-6);
-  m->options.config.mpi.seconds_per_byte = 2e-9;
-  m->interconnect = machine::make_interconnect(m->options.config);
-  m->network = machine::make_network_model("analytic", {m->kernel, *m->interconnect, m->options.config, nullptr});
-  m->cpu = m->options.config.mpi.call_overhead + machine::from_seconds(m->options.config.mpi.seconds_per_byte * kBytes);
-  return m;
-}
+std::unique_ptr<AnalyticRow> row_of_eight() { return analytic_row(kRanks, kBytes); }
 
 TEST(MpiCollectiveTiming, BinomialBroadcastFollowsItsTreeSchedule) {
   const auto m = row_of_eight();

@@ -16,10 +16,8 @@
 #include "apps/mpi/include/gcsim/mpi_ext.h"
 #include "apps/mpi/include/mpi.h"
 #include "apps/mpi/runtime/rank.hpp"
-#include "machine/interconnect_registry.hpp"
-#include "machine/machine_config.hpp"
-#include "machine/network_model.hpp"
 #include "parix/sim/simulated_runtime.hpp"
+#include "tests/mpi_run/analytic_row.hpp"
 
 namespace gcsim::mpi_layer::nonblocking_overlap {  // its own: the unity build puts the timing tests in one file
 namespace {
@@ -29,31 +27,8 @@ constexpr int kDoubles = 125;
 constexpr int kBytes = kDoubles * 8;
 
 using machine::SimTime;
-SimTime picoseconds(double seconds) { return std::llround(seconds * 1e12); }
 
-struct Model {
-  parix::SimulationOptions options;
-  std::unique_ptr<machine::Interconnect> interconnect;
-  machine::Kernel kernel;
-  std::unique_ptr<machine::NetworkModel> network;
-  SimTime cpu = 0;     // c = o + G n, as Rank::charge computes it
-  SimTime reduce = 0;  // R, as Rank::charge_reduction computes it
-  SimTime transit() const { return network->uncontended_time(interconnect->hops(0, 1), kBytes); }
-};
-
-std::unique_ptr<Model> pair_of_nodes() {
-  auto m = std::make_unique<Model>();
-  m->options.config = machine::with_nodes(machine::default_machine_config(), kRanks, machine::MeshShape{kRanks, 1});
-  m->options.config.network_model = "analytic";
-  m->options.config.mpi.call_overhead = machine::from_seconds(5e-6);
-  m->options.config.mpi.seconds_per_byte = 2e-9;
-  m->options.config.mpi.reduce_seconds_per_byte = 5e-9;
-  m->interconnect = machine::make_interconnect(m->options.config);
-  m->network = machine::make_network_model("analytic", {m->kernel, *m->interconnect, m->options.config, nullptr});
-  m->cpu = m->options.config.mpi.call_overhead + machine::from_seconds(m->options.config.mpi.seconds_per_byte * kBytes);
-  m->reduce = machine::from_seconds(m->options.config.mpi.reduce_seconds_per_byte * kBytes);
-  return m;
-}
+std::unique_ptr<AnalyticRow> pair_of_nodes() { return analytic_row(kRanks, kBytes, 5e-9); }
 
 struct Times {
   std::vector<SimTime> entered = std::vector<SimTime>(kRanks), left = std::vector<SimTime>(kRanks);
@@ -99,7 +74,7 @@ class NonblockingOverlap : public ::testing::TestWithParam<double> {};
 TEST_P(NonblockingOverlap, IallreduceTakesTheMaximumOfComputeAndTransfer) {
   const auto m = pair_of_nodes();
   const double compute = GetParam();
-  const SimTime c = m->cpu, C = machine::from_seconds(compute), T = m->transit();
+  const SimTime c = m->cpu, C = machine::from_seconds(compute), T = m->transit(0, 1);
   const Times t = measure(m->options, [&](int me, auto& mine, auto& sum) { overlapped(compute, me, mine, sum); });
   const Times b = measure(m->options, [&](int me, auto& mine, auto& sum) { blocking(compute, me, mine, sum); });
   for (int r = 0; r < kRanks; ++r) {
@@ -138,7 +113,7 @@ TEST(NonblockingProgress, AScheduleAdvancesWhileTheRankWaitsForAnotherRequest) {
     MPI_Wait(&request, MPI_STATUS_IGNORE);
   });
   const SimTime token_cpu = m->options.config.mpi.call_overhead + machine::from_seconds(m->options.config.mpi.seconds_per_byte * 4);
-  const SimTime allreduce_done = std::max(t.entered[0] + c, t.entered[1] + c + m->transit()) + c + m->reduce;
+  const SimTime allreduce_done = std::max(t.entered[0] + c, t.entered[1] + c + m->transit(0, 1)) + c + m->reduce;
   const SimTime token_arrives = t.entered[1] + c + C + token_cpu + message;
   EXPECT_EQ(t.left[0], std::max(allreduce_done, token_arrives) + token_cpu);
   EXPECT_EQ(t.sums[0], 3.0);

@@ -40,8 +40,9 @@ std::vector<std::string> missing_mpi_functions(std::string_view bytes) {
   for (std::uint64_t i = 0; i < header->e_shnum; ++i) {
     const auto section = read_at<Elf64_Shdr>(bytes, header->e_shoff + i * sizeof(Elf64_Shdr));
     if (!section || section->sh_type != SHT_DYNSYM || section->sh_entsize != sizeof(Elf64_Sym)) continue;
+    if (section->sh_link >= header->e_shnum) continue;
     const auto strings = read_at<Elf64_Shdr>(bytes, header->e_shoff + std::uint64_t(section->sh_link) * sizeof(Elf64_Shdr));
-    if (!strings || section->sh_link >= header->e_shnum) continue;
+    if (!strings) continue;
     for (std::uint64_t s = 0; s < section->sh_size / sizeof(Elf64_Sym); ++s) {
       const auto symbol = read_at<Elf64_Sym>(bytes, section->sh_offset + s * sizeof(Elf64_Sym));
       if (!symbol || symbol->st_shndx != SHN_UNDEF) continue;

@@ -68,9 +68,10 @@ nlohmann::json read_json(const fs::path& p) {
   return nlohmann::json::parse(in);
 }
 
-std::string figure(const PlanCheckRow& r) {
-  if (r.stage == "memory") return fmt::format("{:.3f} MiB", r.predicted / (1 << 20));
-  return fmt::format("{:.4g} s", r.predicted);
+// A row's figure in its unit: MiB for the memory, seconds for a stage.
+std::string figure(const PlanCheckRow& r, double value) {
+  if (r.stage == "memory") return fmt::format("{:.3f} MiB", value / (1 << 20));
+  return fmt::format("{:.4g} s", value);
 }
 
 // One scene on one node count: plan, render, the rows; returns the rows beyond the tolerance.
@@ -83,9 +84,8 @@ int check_one(const std::string& scene, int nodes, const PlanAccuracyFlags& f, c
   for (const PlanCheckRow& r : compare_plan_render(read_json(plan_json), read_json(render_json))) {
     const bool miss = std::abs(r.error()) > f.tolerance;
     misses += miss;
-    const std::string measured = r.stage == "memory" ? fmt::format("{:.3f} MiB", r.measured / (1 << 20)) : fmt::format("{:.4g} s", r.measured);
     fmt::print("{:<28} {:>5}  {:<14} {:>12} ± {:>2.0f} % {:>12} {:>+8.1f} %{}\n", fs::path(scene).filename().string(), nodes,
-               r.stage, figure(r), std::max(1.0, 100 * r.uncertainty), measured, 100 * r.error(), miss ? "  EXCEEDS" : "");
+               r.stage, figure(r, r.predicted), std::max(1.0, 100 * r.uncertainty), figure(r, r.measured), 100 * r.error(), miss ? "  EXCEEDS" : "");
   }
   fmt::print("{:<28} {:>5}  {:<14} plan {:.2f} s wall, {:.2f} s CPU; render {:.2f} s wall, {:.2f} s CPU ({:.1f} % of its CPU)\n",
              fs::path(scene).filename().string(), nodes, "host", plan.wall_s, plan.cpu_s, render.wall_s, render.cpu_s,
