@@ -10,12 +10,14 @@
 //  - The envelope is the layer's own (kind, communicator context, tag, ...): the runtime carries it
 //    and never reads it, so matching by source, tag and context is the layer's.
 //  - await() blocks until a letter arrives that collect() has not taken, or one of the given
-//    requests is over; its `call` text names the wait in a deadlock report.
+//    requests is over; its `call` names the wait in a deadlock report, its text built only when
+//    a report is written (a layer that blocks on every call need not format one each time).
 // A backend whose processors are not Mailboxes (the real-MPI backend) has no addressed messages:
 // mailbox_of() is then null and the layer says so.
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -33,13 +35,32 @@ struct Letter {
   Bytes data;
 };
 
+// What a blocked await() names in a deadlock report ("MPI_Recv(source=1, tag=0, ...)"); text() is
+// called only for a report, while the wait still blocks.
+class WaitDescription {
+ public:
+  virtual std::string text() const = 0;
+
+ protected:
+  ~WaitDescription() = default;
+};
+
 class Mailbox {
  public:
   virtual Request post(int dest, const Envelope& envelope, std::span<const std::byte> data) = 0;
   // Appends every letter that arrived since the last call to into, in arrival order.
   virtual void collect(std::vector<Letter>& into) = 0;
   // call must stay valid while blocked; peer: the processor waited for, -1 if none in particular.
-  virtual void await(std::span<const Request> requests, const char* call, int peer) = 0;
+  virtual void await(std::span<const Request> requests, const WaitDescription& call, int peer) = 0;
+  // The same with a fixed text, which must stay valid while blocked.
+  void await(std::span<const Request> requests, const char* call, int peer) {
+    const struct Fixed final : WaitDescription {
+      const char* call;
+      explicit Fixed(const char* c) : call(c) {}
+      std::string text() const override { return call; }
+    } fixed(call);
+    await(requests, fixed, peer);
+  }
   // Holds one of the node's CPUs for `duration`, counted as communication (as_comm) or compute.
   virtual void occupy(SimTime duration, std::string_view label, bool as_comm) = 0;
   // Puts [start, now) on this processor's track of the trace, when one is written, as a wait the

@@ -1,5 +1,6 @@
 #include "apps/mpi/registry.hpp"
 
+#include <functional>
 #include <vector>
 
 #include "apps/mpi/type_constructors.hpp"
@@ -51,6 +52,11 @@ bool is_predefined_datatype(MPI_Datatype handle) { return handle >= MPI_CHAR && 
 const Datatype* find_datatype(Registry& r, MPI_Datatype handle) {
   if (is_predefined_datatype(handle)) return &predefined_datatypes()[handle];
   return r.datatypes.find(handle);
+}
+
+bool is_predefined(const Datatype& type) {
+  const std::vector<Datatype>& all = predefined_datatypes();
+  return std::less_equal<>()(all.data(), &type) && std::less<>()(&type, all.data() + all.size());
 }
 
 Datatype* find_user_datatype(Registry& r, MPI_Datatype handle) { return r.datatypes.find(handle); }

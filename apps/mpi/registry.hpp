@@ -67,5 +67,7 @@ Datatype* find_user_datatype(Registry& r, MPI_Datatype handle);
 const Op* find_op(Registry& r, MPI_Op handle);
 const Group* find_group(Registry& r, MPI_Group handle);
 bool is_predefined_datatype(MPI_Datatype handle);
+// Whether type is one of the predefined objects find_datatype returns (they live for the process).
+bool is_predefined(const Datatype& type);
 
 }  // namespace gcsim::mpi_layer

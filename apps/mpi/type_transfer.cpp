@@ -91,6 +91,12 @@ MPI_Count pack_size(MPI_Count count, const Datatype& type) {
   return checked_multiply(count, type.size());
 }
 
+std::span<const std::byte> contiguous_bytes(const void* buffer, MPI_Count count, const Datatype& type) {
+  if (count <= 0 || !buffer || !type.is_dense()) return {};
+  const auto* at = static_cast<const std::byte*>(buffer) + type.runs().front().offset;
+  return {at, static_cast<std::size_t>(pack_size(count, type))};
+}
+
 void pack(const void* buffer, MPI_Count count, const Datatype& type, std::span<std::byte> out, MPI_Count& position) {
   const MPI_Count bytes = pack_size(count, type);
   if (position < 0 || position > static_cast<MPI_Count>(out.size()) ||

@@ -16,6 +16,9 @@ void pack(const void* buffer, MPI_Count count, const Datatype& type, std::span<s
 void unpack(std::span<const std::byte> in, MPI_Count& position, void* buffer, MPI_Count count, const Datatype& type);
 // What pack needs for count elements (MPI_Pack_size): their bytes, packed with no header.
 MPI_Count pack_size(MPI_Count count, const Datatype& type);
+// The bytes pack would write, where they lie in buffer as one block already (a dense type: one
+// run covering its extent); an empty span with a null data() otherwise, or for no bytes.
+std::span<const std::byte> contiguous_bytes(const void* buffer, MPI_Count count, const Datatype& type);
 
 // Copies from (count_from, from) into (count_to, to), element by element in type-map order, as a
 // receive does; stops at the end of either. Returns the bytes copied. The signatures are not

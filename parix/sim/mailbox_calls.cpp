@@ -14,7 +14,7 @@ Request SimProcess::post(int dest, const Envelope& envelope, std::span<const std
 
 void SimProcess::collect(std::vector<Letter>& into) { sim_.post_office.collect(id_, into); }
 
-void SimProcess::await(std::span<const Request> requests, const char* call, int peer) {
+void SimProcess::await(std::span<const Request> requests, const WaitDescription& call, int peer) {
   auto over = [&] {
     if (sim_.post_office.has_mail(id_)) return true;
     for (const Request& r : requests) {
@@ -30,11 +30,13 @@ void SimProcess::await(std::span<const Request> requests, const char* call, int 
     SimProcess* self;
     std::span<const Request> rs;
     ~Unregister() {
+      self->blocked_description = nullptr;
       self->sim_.post_office.set_waiter(self->id_, nullptr);
       for (const Request& r : rs) r.state()->waiter = nullptr;
     }
   } unregister{this, requests};
-  while (!over()) block(call, peer);
+  blocked_description = &call;
+  while (!over()) block("await", peer);
   stats_.comm += sim_.kernel.now() - start;
 }
 

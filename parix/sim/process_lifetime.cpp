@@ -3,6 +3,7 @@
 #include "parix/sim/process_lifetime.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include "parix/host/interruption.hpp"
 #include "parix/sim/deadlock_report.hpp"
@@ -78,8 +79,13 @@ ProcessLifetime::End ProcessLifetime::run(const std::function<void(Processor&)>&
 
 std::string ProcessLifetime::report_blocked() const {
   std::vector<BlockedProcess> blocked;
+  std::vector<std::string> described;  // the texts of lazily described waits, kept for the report
+  described.reserve(all_.size());      // no reallocation: the report points into them
   for (const auto& p : all_) {
-    if (!p->finished) blocked.push_back({p->id(), p->thread(), p->blocked_call, p->blocked_peer, p->blocked_since});
+    if (p->finished) continue;
+    const char* call = p->blocked_call;
+    if (p->blocked_description && call) call = described.emplace_back(p->blocked_description->text()).c_str();
+    blocked.push_back({p->id(), p->thread(), call, p->blocked_peer, p->blocked_since});
   }
   return parix::deadlock_report(kernel_.now(), blocked);
 }

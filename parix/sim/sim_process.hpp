@@ -54,7 +54,8 @@ class SimProcess final : public Processor, public Mailbox, public Waiter {
   // Addressed messages (parix/mailbox.hpp), in mailbox_calls.cpp.
   Request post(int dest, const Envelope& envelope, std::span<const std::byte> data) override;
   void collect(std::vector<Letter>& into) override;
-  void await(std::span<const Request> requests, const char* call, int peer) override;
+  void await(std::span<const Request> requests, const WaitDescription& call, int peer) override;
+  using Mailbox::await;
   void occupy(SimTime duration, std::string_view label, bool as_comm) override;
   void trace_blocked(std::string_view label, SimTime start, int peer, std::int64_t bytes) override;
   int node_of(int processor) const override;
@@ -81,6 +82,7 @@ class SimProcess final : public Processor, public Mailbox, public Waiter {
   bool finished = false;
   bool asleep = false;
   const char* blocked_call = nullptr;
+  const WaitDescription* blocked_description = nullptr;  // await()'s, named in place of blocked_call
   int blocked_peer = -1;
   machine::SimTime blocked_since = 0;
   FiberContext fiber;

@@ -5,6 +5,7 @@
 #include "apps/mpi/c_call.hpp"
 #include "apps/mpi/runtime/p2p_arguments.hpp"
 #include "apps/mpi/runtime/rank.hpp"
+#include "apps/mpi/runtime/operations_wait.hpp"
 
 using namespace gcsim::mpi_layer;
 
@@ -14,7 +15,9 @@ namespace {
 std::string calls_of(Rank& rank, const char* call, int count, const MPI_Request* rs) {
   std::string text = std::string(call) + " on";
   for (int i = 0; i < count; ++i) {
-    if (rs[i] != MPI_REQUEST_NULL) text += " " + rank.operation(rs[i]).call;
+    if (rs[i] == MPI_REQUEST_NULL) continue;
+    text += " ";
+    rank.operation(rs[i]).call.append_to(text);
   }
   return text;
 }
@@ -64,8 +67,8 @@ int MPI_Wait(MPI_Request* request, MPI_Status* status) {
   const int code = runtime_call([&](Rank& rank) {
     MPI_Request& h = out_arg(request);
     if (h == MPI_REQUEST_NULL) return empty_status(status);
-    const std::string call = "MPI_Wait on " + rank.operation(h).call;
-    rank.wait_until([&] { return rank.test(h); }, call);
+    const OperationsWait call(rank, "MPI_Wait on ", h);
+    rank.wait_until([&] { return rank.test(h); }, "MPI_Wait", call);
     error = rank.finish(h, status);
     fail_with(error);
   });

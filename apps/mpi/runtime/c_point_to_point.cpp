@@ -1,10 +1,10 @@
 // The C entry points that start and finish point-to-point messages (MPI 3.1 chapter 3).
-#include <charconv>
 #include <string>
 #include <vector>
 
 #include "apps/mpi/c_call.hpp"
 #include "apps/mpi/runtime/p2p_arguments.hpp"
+#include "apps/mpi/runtime/operations_wait.hpp"
 #include "apps/mpi/runtime/rank.hpp"
 #include "apps/mpi/type_transfer.hpp"
 
@@ -12,41 +12,6 @@ using namespace gcsim::mpi_layer;
 namespace parix = gcsim::parix;
 
 namespace {
-
-void append_number(std::string& text, int value) {
-  char digits[16];
-  const auto end = std::to_chars(digits, digits + sizeof digits, value).ptr;
-  text.append(digits, end);
-}
-
-// Built on every call (a deadlock report names it): one allocation, appended in place.
-std::string describe(const char* call, const char* peer_name, int peer, int tag, MPI_Comm comm) {
-  std::string text;
-  text.reserve(64);
-  text.append(call).append("(").append(peer_name).append("=");
-  if (peer == MPI_ANY_SOURCE) text.append("MPI_ANY_SOURCE");
-  else append_number(text, peer);
-  text.append(", tag=");
-  if (tag == MPI_ANY_TAG) text.append("MPI_ANY_TAG");
-  else append_number(text, tag);
-  text.append(", comm=");
-  if (comm == MPI_COMM_WORLD) text.append("MPI_COMM_WORLD");
-  else text.append(Rank::comm_name(comm));
-  text.append(")");
-  return text;
-}
-
-// "MPI_Sendrecv(source=...) and MPI_Sendrecv(dest=...)", what a blocked Sendrecv waits for, in a
-// text kept per rank (and host thread: sweeps run simulations side by side) so that it is not
-// allocated on every call; it lives until the rank's next Sendrecv, past the wait that names it.
-const std::string& both_calls(Rank& rank, MPI_Request r, MPI_Request s) {
-  thread_local std::vector<std::string> texts;
-  const auto at = static_cast<std::size_t>(rank.world_rank());
-  if (texts.size() <= at) texts.resize(at + 1);
-  std::string& text = texts[at];
-  text.assign(rank.operation(r).call).append(" and ").append(rank.operation(s).call);
-  return text;
-}
 
 // MPI_PROC_NULL: complete at once, source MPI_PROC_NULL, tag MPI_ANY_TAG, no bytes.
 MPI_Request done_request(Rank& rank, const char* call) { return rank.start_null(call); }
@@ -60,13 +25,19 @@ MPI_Request start_send(Rank& rank, const void* buf, int count, MPI_Datatype data
   const Datatype& type = datatype_arg(rank.registry(), datatype, true);
   check_message_buffer(buf, count, datatype);
   if (dest == MPI_PROC_NULL) return done_request(rank, call);
-  parix::Bytes payload(static_cast<std::size_t>(pack_size(count, type)));
-  MPI_Count position = 0;
-  pack(buf, count, type, payload, position);
+  // A contiguous buffer is the packed payload itself; any other is packed into the rank's scratch.
+  std::span<const std::byte> payload = contiguous_bytes(buf, count, type);
+  if (payload.data() == nullptr && pack_size(count, type) > 0) {
+    parix::Bytes& packed = rank.send_scratch();
+    packed.resize(static_cast<std::size_t>(pack_size(count, type)));
+    MPI_Count position = 0;
+    pack(buf, count, type, packed, position);
+    payload = packed;
+  }
   if (mode == SendMode::buffered && static_cast<MPI_Count>(payload.size()) > rank.attached_size) {
     fail(MPI_ERR_BUFFER, "MPI_Bsend: the attached buffer is too small for the message");
   }
-  return rank.start_send(c, c.context, dest, tag, std::move(payload), mode, describe(call, "dest", dest, tag, comm));
+  return rank.start_send(c, c.context, dest, tag, payload, mode, CallText::point_to_point(call, "dest", dest, tag, comm));
 }
 
 MPI_Request start_recv(Rank& rank, void* buf, int count, MPI_Datatype datatype, int source, int tag, MPI_Comm comm,
@@ -78,12 +49,12 @@ MPI_Request start_recv(Rank& rank, void* buf, int count, MPI_Datatype datatype, 
   const Datatype& type = datatype_arg(rank.registry(), datatype, true);
   check_message_buffer(buf, count, datatype);
   if (source == MPI_PROC_NULL) return done_request(rank, call);
-  return rank.start_recv(c, c.context, source, tag, buf, count, type, describe(call, "source", source, tag, comm));
+  return rank.start_recv(c, c.context, source, tag, buf, count, type, CallText::point_to_point(call, "source", source, tag, comm));
 }
 
-int wait_for(Rank& rank, MPI_Request& h, MPI_Status* status) {
-  const std::string& call = rank.operation(h).call;  // the operation stays until finish()
-  rank.wait_until([&] { return rank.test(h); }, call);
+int wait_for(Rank& rank, MPI_Request& h, MPI_Status* status, const char* name) {
+  const OperationsWait call(rank, "", h);
+  rank.wait_until([&] { return rank.test(h); }, name, call);
   return rank.finish(h, status);
 }
 
@@ -92,7 +63,7 @@ int blocking_send(const void* buf, int count, MPI_Datatype datatype, int dest, i
   int error = MPI_SUCCESS;
   const int code = runtime_call_as(call, [&](Rank& rank) {
     MPI_Request h = start_send(rank, buf, count, datatype, dest, tag, comm, mode, call);
-    error = wait_for(rank, h, MPI_STATUS_IGNORE);
+    error = wait_for(rank, h, MPI_STATUS_IGNORE, call);
     fail_with(error);
   });
   return code != MPI_SUCCESS ? code : error;
@@ -138,7 +109,7 @@ int MPI_Recv(void* buf, int count, MPI_Datatype datatype, int source, int tag, M
   int error = MPI_SUCCESS;
   const int code = runtime_call([&](Rank& rank) {
     MPI_Request h = start_recv(rank, buf, count, datatype, source, tag, comm, "MPI_Recv");
-    error = wait_for(rank, h, status);
+    error = wait_for(rank, h, status, "MPI_Recv");
     fail_with(error);
   });
   return code != MPI_SUCCESS ? code : error;
@@ -154,8 +125,8 @@ int MPI_Sendrecv(const void* sendbuf, int sendcount, MPI_Datatype sendtype, int 
   const int code = runtime_call([&](Rank& rank) {
     MPI_Request r = start_recv(rank, recvbuf, recvcount, recvtype, source, recvtag, comm, "MPI_Sendrecv");
     MPI_Request s = start_send(rank, sendbuf, sendcount, sendtype, dest, sendtag, comm, SendMode::standard, "MPI_Sendrecv");
-    const std::string& call = both_calls(rank, r, s);
-    rank.wait_until([&] { return rank.test(s) && rank.test(r); }, call);
+    const OperationsWait call(rank, "", r, s);
+    rank.wait_until([&] { return rank.test(s) && rank.test(r); }, "MPI_Sendrecv", call);
     rank.finish(s, MPI_STATUS_IGNORE);
     error = rank.finish(r, status);
     fail_with(error);
@@ -170,8 +141,8 @@ int MPI_Sendrecv_replace(void* buf, int count, MPI_Datatype datatype, int dest, 
     // The send packs buf before the receive may write it.
     MPI_Request s = start_send(rank, buf, count, datatype, dest, sendtag, comm, SendMode::standard, "MPI_Sendrecv_replace");
     MPI_Request r = start_recv(rank, buf, count, datatype, source, recvtag, comm, "MPI_Sendrecv_replace");
-    const std::string& call = both_calls(rank, r, s);
-    rank.wait_until([&] { return rank.test(s) && rank.test(r); }, call);
+    const OperationsWait call(rank, "", r, s);
+    rank.wait_until([&] { return rank.test(s) && rank.test(r); }, "MPI_Sendrecv_replace", call);
     rank.finish(s, MPI_STATUS_IGNORE);
     error = rank.finish(r, status);
     fail_with(error);

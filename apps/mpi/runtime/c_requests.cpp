@@ -28,8 +28,12 @@ int make_persistent(const char* call, Starter start, const void* buf, int count,
       if (const int code = start(buffer, count, datatype, peer, tag, comm, &started); code != MPI_SUCCESS) {
         fail(code, ("MPI_Start: starting " + name + " failed").c_str());
       }
-      std::string& described = r.operation(started).call;  // "MPI_Isend(dest=...)": name the init call
-      described = name + described.substr(std::min(described.find('('), described.size()));
+      CallText& described = r.operation(started).call;  // "MPI_Isend(dest=...)": name the init call
+      if (described.form == CallText::Form::point_to_point) {
+        described.name = call;  // a literal, as the entry point's own name
+      } else {
+        described.text = name + described.text.substr(std::min(described.text.find('('), described.text.size()));
+      }
       return started;
     };
     out = rank.add_persistent(name, std::move(restart));

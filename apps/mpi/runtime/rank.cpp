@@ -95,14 +95,14 @@ std::string Rank::comm_name(MPI_Comm handle) {
 }
 
 MPI_Request Rank::add_operation(Operation op) {
-  const MPI_Request h = next_request_++;
-  operations_.emplace(h, std::move(op));
+  auto [h, slot] = operations_.add();
+  slot = std::move(op);
   return h;
 }
 
 MPI_Request Rank::start_null(std::string call) {
   Operation op;
-  op.call = std::move(call);
+  op.call = CallText::of(std::move(call));
   op.done = true;
   op.charged = true;
   op.status.MPI_SOURCE = MPI_PROC_NULL;
@@ -111,10 +111,10 @@ MPI_Request Rank::start_null(std::string call) {
 }
 
 Operation& Rank::operation(MPI_Request handle) {
-  const auto it = operations_.find(handle);
-  if (it == operations_.end()) fail(MPI_ERR_REQUEST, "invalid or freed request");
-  registry_.call.name_target(it->second.comm);
-  return it->second;
+  Operation* op = operations_.find(handle);
+  if (!op) fail(MPI_ERR_REQUEST, "invalid or freed request");
+  registry_.call.name_target(op->comm);
+  return *op;
 }
 
 void Rank::leave_cpu() {
@@ -139,9 +139,9 @@ void Rank::charge_reduction(std::size_t bytes) {
   install();
 }
 
-MPI_Request Rank::start_send(const Communicator& c, std::int64_t context, int dest, int tag, parix::Bytes payload,
-                             SendMode mode, std::string call) {
-  Operation op;
+MPI_Request Rank::start_send(const Communicator& c, std::int64_t context, int dest, int tag,
+                             std::span<const std::byte> payload, SendMode mode, CallText call) {
+  auto [h, op] = operations_.add();
   op.is_send = true;
   op.call = std::move(call);
   op.comm = c.handle;
@@ -149,7 +149,7 @@ MPI_Request Rank::start_send(const Communicator& c, std::int64_t context, int de
   op.tag = tag;
   op.peer_world = c.world_rank_of(dest);
   const auto size = static_cast<std::int64_t>(payload.size());
-  call_span.describe(op.call);
+  call_span.describe(op.call.name_of_call());
   call_span.involve(op.peer_world, false);
   call_span.add_sent(size);
   charge(size);
@@ -157,17 +157,16 @@ MPI_Request Rank::start_send(const Communicator& c, std::int64_t context, int de
   if (!rendezvous) {
     mailbox_.post(op.peer_world, envelope(kEager, size, context, tag, 0), payload);
     op.done = true;
-    return add_operation(std::move(op));
+    return h;
   }
-  op.payload = std::move(payload);
-  const MPI_Request h = next_request_;  // the handle add_operation gives it
+  op.payload.assign(payload.begin(), payload.end());
   mailbox_.post(op.peer_world, envelope(kRequestToSend, size, context, tag, h), {});
-  return add_operation(std::move(op));
+  return h;
 }
 
 MPI_Request Rank::start_recv(const Communicator& c, std::int64_t context, int source, int tag, void* buffer,
-                             MPI_Count count, const Datatype& type, std::string call) {
-  Operation op;
+                             MPI_Count count, const Datatype& type, CallText call) {
+  auto [h, op] = operations_.add();
   op.call = std::move(call);
   op.comm = c.handle;
   op.members = c.members;
@@ -176,19 +175,23 @@ MPI_Request Rank::start_recv(const Communicator& c, std::int64_t context, int so
   op.peer_world = source == MPI_ANY_SOURCE ? -1 : c.world_rank_of(source);
   op.buffer = buffer;
   op.count = count;
-  op.type = type;
-  call_span.describe(op.call);
+  if (is_predefined(type)) {
+    op.type = &type;
+  } else {
+    op.owned_type = type;
+    op.type = &*op.owned_type;
+  }
+  call_span.describe(op.call.name_of_call());
   call_span.involve(op.peer_world, true);
   call_span.add_received(pack_size(count, type));
-  const MPI_Request h = add_operation(std::move(op));
   posted_.push_back(h);
   progress();  // an arrived message matches at once
   return h;
 }
 
 MPI_Request Rank::start_raw_recv(const Communicator& c, std::int64_t context, int source, int tag, std::span<std::byte> into) {
-  Operation op;
-  op.call = "a collective's receive from rank " + std::to_string(source);
+  auto [h, op] = operations_.add();
+  op.call = CallText::collective_receive(source);
   op.members = c.members;
   op.context = context;
   op.tag = tag;
@@ -197,7 +200,6 @@ MPI_Request Rank::start_raw_recv(const Communicator& c, std::int64_t context, in
   op.is_raw = true;
   call_span.involve(op.peer_world, true);
   call_span.add_received(static_cast<std::int64_t>(into.size()));
-  const MPI_Request h = add_operation(std::move(op));
   posted_.push_back(h);
   progress();
   return h;
@@ -224,7 +226,8 @@ void Rank::progress() {
   letters_.clear();
   mailbox_.collect(letters_);
   for (parix::Letter& l : letters_) on_letter(l);
-  for (auto& [h, op] : operations_) {
+  for (const OperationTable::Entry& e : operations_) {
+    Operation& op = *e.op;
     if (op.is_send && !op.done && op.wire.valid() && op.wire.test()) op.done = true;
   }
   drop_freed();

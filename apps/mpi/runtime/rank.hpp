@@ -16,6 +16,8 @@
 #include <memory>
 #include <optional>
 #include <source_location>
+#include <string_view>
+#include <type_traits>
 #include <span>
 #include <string>
 #include <vector>
@@ -29,6 +31,8 @@
 #include "apps/mpi/runtime/compute_meter.hpp"
 #include "apps/mpi/runtime/communicator.hpp"
 #include "apps/mpi/runtime/keyvals.hpp"
+#include "apps/mpi/runtime/operation.hpp"
+#include "apps/mpi/runtime/operation_table.hpp"
 #include "machine/machine_config.hpp"
 #include "parix/mailbox.hpp"
 #include "parix/processor.hpp"
@@ -41,41 +45,6 @@ class CollectiveLedger;
 struct AbortRequested {
   int rank;
   int code;
-};
-
-enum class SendMode { standard, synchronous, buffered, ready };
-
-class Rank;
-
-struct Operation {  // behind one MPI_Request
-  bool is_send = false;
-  bool done = false;
-  bool charged = false;  // a receive's CPU overhead was paid
-  MPI_Status status{};
-  std::string call;      // for deadlock reports: "MPI_Irecv(source=1, tag=0, comm=MPI_COMM_WORLD)"
-  std::shared_ptr<const std::vector<int>> members;  // of its communicator: status source ranks
-  std::int64_t context = 0;
-  int tag = 0;
-  int peer_world = -1;  // destination, or source (-1: MPI_ANY_SOURCE)
-  MPI_Comm comm = MPI_COMM_WORLD;  // whose error handler its errors go to
-  // send
-  parix::Bytes payload;   // rendezvous: kept until clear-to-send
-  parix::Request wire;    // rendezvous: the data letter, delivered = complete
-  // receive: into (buffer, count, type), or raw into exactly `raw` bytes (collectives)
-  void* buffer = nullptr;
-  MPI_Count count = 0;
-  std::optional<Datatype> type;
-  std::span<std::byte> raw;
-  bool is_raw = false;
-  // A non-blocking collective's request: done when its schedule (collective_progress.hpp) ends.
-  bool collective = false;
-  // MPI_Request_free of an active one: it runs on unseen and is dropped once done (rank_cancel.cpp).
-  bool freed = false;
-  bool cancel_asked = false;  // MPI_Cancel of a rendezvous send: the receiver's answer awaited
-  // A persistent request (MPI_Send_init ...): each MPI_Start calls `restart`, whose operation is
-  // `started` until finished; inactive (MPI_REQUEST_NULL) it completes at once, status empty.
-  std::function<MPI_Request(Rank&)> restart;
-  MPI_Request started = MPI_REQUEST_NULL;
 };
 
 class Rank {
@@ -113,10 +82,11 @@ class Rank {
   static std::string comm_name(MPI_Comm handle);
 
   // Point-to-point on comm's context (or its collective one). Return the request handle.
-  MPI_Request start_send(const Communicator& c, std::int64_t context, int dest, int tag, parix::Bytes payload,
-                         SendMode mode, std::string call);
+  // The payload is copied (posted, or kept until a rendezvous' clear-to-send).
+  MPI_Request start_send(const Communicator& c, std::int64_t context, int dest, int tag,
+                         std::span<const std::byte> payload, SendMode mode, CallText call);
   MPI_Request start_recv(const Communicator& c, std::int64_t context, int source, int tag, void* buffer, MPI_Count count,
-                         const Datatype& type, std::string call);
+                         const Datatype& type, CallText call);
   MPI_Request start_raw_recv(const Communicator& c, std::int64_t context, int source, int tag, std::span<std::byte> into);
   // A non-blocking collective on the collective context `context`: `run`, its blocking form,
   // starts now and progresses at the rank's later calls (rank_nonblocking_collectives.cpp).
@@ -126,6 +96,9 @@ class Rank {
   // A request complete at once, as a communication with MPI_PROC_NULL is.
   MPI_Request start_null(std::string call);
   Operation& operation(MPI_Request handle);  // MPI_ERR_REQUEST if it names none
+  const Operation* find_operation(MPI_Request handle) const { return operations_.find(handle); }
+  // A send's packed payload, reused from call to call (its bytes are copied by start_send).
+  parix::Bytes& send_scratch() { return send_scratch_; }
   // Persistent requests, MPI_Request_free and MPI_Cancel (rank_persistent.cpp, rank_cancel.cpp).
   MPI_Request add_persistent(std::string call, std::function<MPI_Request(Rank&)> restart);
   void start_persistent(MPI_Request handle);  // MPI_ERR_REQUEST if not persistent or still active
@@ -134,8 +107,20 @@ class Rank {
   void cancel(MPI_Request handle);
   // Finishes handle (done): its status, its error; the handle is freed.
   int finish(MPI_Request& handle, MPI_Status* status);
-  // Blocks until done(); describes the wait as call.
-  void wait_until(const std::function<bool()>& done, const std::string& call);
+  // Blocks until done(); `name` is the call the trace names ("MPI_Recv"), `call` describes the wait
+  // in a deadlock report. done is any callable returning bool, called in place (no std::function).
+  template <class Done>
+  void wait_until(Done&& done, std::string_view name, const parix::WaitDescription& call) {
+    wait_loop({[](void* f) { return static_cast<bool>((*static_cast<std::remove_reference_t<Done>*>(f))()); },
+               const_cast<void*>(static_cast<const void*>(&done))},
+              name, call);
+  }
+  // The same, with a fixed text naming the wait.
+  template <class Done>
+  void wait_until(Done&& done, const std::string& call) {
+    const FixedWait text(call);
+    wait_until(std::forward<Done>(done), call_name(call), text);
+  }
   // Takes what arrived and answers it; completes rendezvous sends whose data was delivered.
   void progress();
   bool test(MPI_Request handle);  // progress, then whether it is done (and its receive charged)
@@ -168,6 +153,16 @@ class Rank {
     std::int64_t sender_op = 0;
     parix::Bytes data;
   };
+  struct Predicate {
+    bool (*test)(void*);
+    void* object;
+  };
+  struct FixedWait final : parix::WaitDescription {
+    const std::string& call;
+    explicit FixedWait(const std::string& c) : call(c) {}
+    std::string text() const override { return call; }
+  };
+  void wait_loop(Predicate done, std::string_view name, const parix::WaitDescription& call);
   void advance_collectives();  // resumes every schedule whose awaited requests are complete
   void run_schedule(CollectiveProgress& schedule);
   void drop_finished_schedules();
@@ -190,8 +185,8 @@ class Rank {
   Registry registry_;
   std::map<MPI_Comm, Communicator> comms_;
   MPI_Comm next_comm_ = first_user_handle;
-  std::map<MPI_Request, Operation> operations_;
-  MPI_Request next_request_ = 1;
+  OperationTable operations_;
+  parix::Bytes send_scratch_;
   std::vector<MPI_Request> posted_;  // receives waiting for a message, in posting order
   std::vector<Arrived> unexpected_;  // messages waiting for a receive, in arrival order
   std::vector<parix::Letter> letters_;

@@ -27,7 +27,7 @@ void Rank::free_request(MPI_Request handle) {
 }
 
 void Rank::drop_freed() {
-  std::erase_if(operations_, [](const auto& entry) { return entry.second.freed && entry.second.done; });
+  operations_.erase_if([](const Operation& op) { return op.freed && op.done; });
 }
 
 void Rank::cancel(MPI_Request handle) {
@@ -66,9 +66,9 @@ void Rank::on_cancel_asked(const parix::Letter& l) {
 
 void Rank::on_cancel_answered(const parix::Letter& l) {
   const auto& w = l.envelope.words;
-  const auto it = operations_.find(w[3]);
-  if (w[2] == 0 || it == operations_.end()) return;  // matched first: the send completes as usual
-  Operation& s = it->second;
+  Operation* op = operations_.find(w[3]);
+  if (w[2] == 0 || !op) return;  // matched first: the send completes as usual
+  Operation& s = *op;
   s.done = true;
   s.payload = {};
   s.status.gcsim_cancelled = 1;

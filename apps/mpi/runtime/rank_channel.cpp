@@ -6,8 +6,7 @@ RankChannel::RankChannel(Rank& rank, MPI_Comm comm, std::string call)
     : rank_(rank), comm_(rank.comm(comm)), call_(std::move(call)) {}
 
 CollectiveChannel::Handle RankChannel::start_send(int peer, int tag, std::span<const std::byte> data) {
-  return rank_.start_send(comm_, comm_.collective_context(), peer, tag, parix::Bytes(data.begin(), data.end()),
-                          SendMode::buffered, call_);
+  return rank_.start_send(comm_, comm_.collective_context(), peer, tag, data, SendMode::buffered, CallText::of(call_));
 }
 
 CollectiveChannel::Handle RankChannel::start_recv(int peer, int tag, std::span<std::byte> into) {

@@ -20,29 +20,30 @@ bool Rank::test(MPI_Request handle) {
 }
 
 int Rank::finish(MPI_Request& handle, MPI_Status* status) {
-  const auto it = operations_.find(handle);
-  if (it == operations_.end()) fail(MPI_ERR_REQUEST, "invalid request");
-  if (it->second.restart) return finish_persistent(it->second, status);
-  const int error = it->second.status.MPI_ERROR;
-  if (status) *status = it->second.status;
-  operations_.erase(it);
+  Operation* op = operations_.find(handle);
+  if (!op) fail(MPI_ERR_REQUEST, "invalid request");
+  if (op->restart) return finish_persistent(*op, status);
+  const int error = op->status.MPI_ERROR;
+  if (status) *status = op->status;
+  operations_.erase(handle);
   handle = MPI_REQUEST_NULL;
   return error;
 }
 
-void Rank::wait_until(const std::function<bool()>& done, const std::string& call) {
+void Rank::wait_loop(Predicate done, std::string_view name, const parix::WaitDescription& call) {
   std::vector<parix::Request> wires;
-  call_span.describe(call);
+  call_span.describe(name);
   for (;;) {
     progress();
-    if (done()) return;
+    if (done.test(done.object)) return;
     wires.clear();
-    for (auto& [h, op] : operations_) {
+    for (const OperationTable::Entry& e : operations_) {
+      const Operation& op = *e.op;
       if (op.is_send && !op.done && op.wire.valid()) wires.push_back(op.wire);
     }
     leave_cpu();
     const machine::SimTime blocked_from = processor_.now();
-    mailbox_.await(wires, call.c_str(), -1);
+    mailbox_.await(wires, call, -1);
     mailbox_.trace_blocked(call_span.label("mpi_wait"), blocked_from, call_span.peer(), call_span.bytes());
     install();
   }
@@ -71,8 +72,11 @@ bool Rank::probe(const Communicator& c, int source, int tag, MPI_Status* status)
 void Rank::finalize_checks() {
   progress();
   program_ran_ = true;  // its warnings are this rank's output
-  for (const auto& [h, op] : operations_) {
-    if (!op.done) std::fprintf(stderr, "gcsim: warning: rank %d: MPI_Finalize with a request never completed: %s\n", world_rank(), op.call.c_str());
+  for (const OperationTable::Entry& e : operations_) {
+    if (!e.op->done) {
+      std::fprintf(stderr, "gcsim: warning: rank %d: MPI_Finalize with a request never completed: %s\n", world_rank(),
+                   e.op->call.str().c_str());
+    }
   }
   for (const Arrived& m : unexpected_) {
     if (m.context % 2 != 0) {  // a collective's: every rank's calls consume all of them unless they disagree

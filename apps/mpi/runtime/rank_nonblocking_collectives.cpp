@@ -16,7 +16,7 @@ namespace gcsim::mpi_layer {
 MPI_Request Rank::start_collective(std::string call, std::int64_t context, std::function<int()> run) {
   call_span.describe(call);  // the start's own overheads are the MPI_I... call's, in the trace
   Operation op;
-  op.call = std::move(call);
+  op.call = CallText::of(std::move(call));
   op.context = context;
   op.charged = true;  // the collective's messages pay their own overheads
   op.status.MPI_SOURCE = MPI_ANY_SOURCE;  // an empty status, as a collective's is

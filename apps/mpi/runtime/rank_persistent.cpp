@@ -8,7 +8,7 @@ namespace gcsim::mpi_layer {
 
 MPI_Request Rank::add_persistent(std::string call, std::function<MPI_Request(Rank&)> restart) {
   Operation op;
-  op.call = std::move(call);
+  op.call = CallText::of(std::move(call));
   op.restart = std::move(restart);
   op.done = true;  // inactive
   op.charged = true;
