@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <vector>
 
 #include "machine/kernel.hpp"
 #include "machine/node_memory.hpp"
@@ -27,9 +28,14 @@ class Node {
     Kernel::Action on_done;
   };
   void start(Job job);
+  void finish(std::uint32_t slot);
   Kernel* kernel_;
   int free_cpus_;
   std::deque<Job> waiting_;
+  // The running jobs' on_done, in reused slots: the kernel's event then holds a slot number, small
+  // enough for its inline storage (an action inside an action would take a heap allocation).
+  std::vector<Kernel::Action> running_;
+  std::vector<std::uint32_t> free_slots_;
   NodeMemory memory_;
 };
 

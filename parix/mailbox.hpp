@@ -50,6 +50,8 @@ class Mailbox {
   virtual Request post(int dest, const Envelope& envelope, std::span<const std::byte> data) = 0;
   // Appends every letter that arrived since the last call to into, in arrival order.
   virtual void collect(std::vector<Letter>& into) = 0;
+  // A collected letter's data, read: its storage goes back for later letters (or is freed).
+  virtual void recycle(Bytes&& storage) { Bytes().swap(storage); }
   // call must stay valid while blocked; peer: the processor waited for, -1 if none in particular.
   virtual void await(std::span<const Request> requests, const WaitDescription& call, int peer) = 0;
   // The same with a fixed text, which must stay valid while blocked.

@@ -28,6 +28,7 @@ Datatype Datatype::of_basic(Basic b) {
   t.data_ub_ = size;
   t.alignment_ = basic_alignment(b);
   t.committed_ = true;
+  t.dense_ = t.find_dense();
   return t;
 }
 
@@ -46,7 +47,7 @@ MPI_Aint Datatype::ub() const {
   return rest == 0 ? high : high + (align - rest);
 }
 
-bool Datatype::is_dense() const {
+bool Datatype::find_dense() const {
   if (runs_.size() != 1) return false;
   const Run& r = runs_.front();
   return r.offset == lb() && r.count * static_cast<MPI_Count>(basic_size(r.basic)) == extent();

@@ -35,14 +35,16 @@ class Datatype {
   MPI_Aint true_extent() const { return has_data() ? data_ub_ - data_lb_ : 0; }
   std::size_t alignment() const { return alignment_; }
   bool has_data() const { return !runs_.empty(); }
-  // One run covering [lb, ub) exactly: count elements are one block of bytes.
-  bool is_dense() const;
+  // One run covering [lb, ub) exactly: count elements are one block of bytes. Asked on every
+  // send and receive, so found once, as the type is made.
+  bool is_dense() const { return dense_; }
 
   bool committed() const { return committed_; }
   void commit() { committed_ = true; }
 
  private:
   friend class TypeBuilder;
+  bool find_dense() const;
   std::vector<Run> runs_;
   MPI_Count size_ = 0;
   MPI_Count elements_ = 0;
@@ -50,6 +52,7 @@ class Datatype {
   std::optional<MPI_Aint> lb_marker_, ub_marker_;
   std::size_t alignment_ = 1;
   bool committed_ = false;
+  bool dense_ = false;  // find_dense(), set where a type is finished
 };
 
 // Builds a type map from copies of other types, each displaced by some bytes.
@@ -60,7 +63,10 @@ class TypeBuilder {
   void add(const Datatype& t, MPI_Aint displacement) { add_copies(t, displacement, 1); }
   // Erases every marker and puts lb and ub ones (create_resized).
   void set_bounds(MPI_Aint lb, MPI_Aint ub);
-  Datatype finish() { return std::move(type_); }
+  Datatype finish() {
+    type_.dense_ = type_.find_dense();
+    return std::move(type_);
+  }
 
  private:
   void append_run(Run r);

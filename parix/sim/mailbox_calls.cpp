@@ -14,6 +14,8 @@ Request SimProcess::post(int dest, const Envelope& envelope, std::span<const std
 
 void SimProcess::collect(std::vector<Letter>& into) { sim_.post_office.collect(id_, into); }
 
+void SimProcess::recycle(Bytes&& storage) { sim_.post_office.recycle(std::move(storage)); }
+
 void SimProcess::await(std::span<const Request> requests, const WaitDescription& call, int peer) {
   auto over = [&] {
     if (sim_.post_office.has_mail(id_)) return true;

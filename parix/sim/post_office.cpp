@@ -23,12 +23,26 @@ machine::SimTime PostOffice::connection_up(int a, int b) {
 }
 
 Request PostOffice::post(int source, int dest, const Envelope& envelope, std::span<const std::byte> data) {
-  Request sent(new RequestState);
+  Request sent = parts_.requests.take();
   sent.state()->peer = dest;
   const std::int64_t id = next_id_++;
   Ordered& order = ordered_[{source, dest}];
-  InTransit t{Letter{source, envelope, Bytes(data.begin(), data.end())}, sent, parts_.kernel.now(), id};
-  in_flight_.emplace(id, std::pair{order.sent++, std::move(t)});
+  std::uint32_t slot = 0;
+  if (free_slots_.empty()) {
+    slot = static_cast<std::uint32_t>(flying_.size());
+    flying_.emplace_back();
+  } else {
+    slot = free_slots_.back();
+    free_slots_.pop_back();
+  }
+  Flying& f = flying_[slot];
+  f.seq = order.sent++;
+  f.transit.letter.source = source;
+  f.transit.letter.envelope = envelope;
+  parts_.payloads.copy_into(f.transit.letter.data, data);
+  f.transit.sent = sent;
+  f.transit.posted = parts_.kernel.now();
+  f.transit.id = id;
   const auto bytes = static_cast<std::int64_t>(data.size());
   parts_.stats[source].messages_sent += 1;
   parts_.stats[source].bytes_sent += bytes;
@@ -36,25 +50,28 @@ Request PostOffice::post(int source, int dest, const Envelope& envelope, std::sp
   const int to = parts_.node_of[dest];
   const machine::SimTime up = connection_up(source, dest);
   if (source == dest) {
-    parts_.kernel.at(parts_.kernel.now(), [this, id] { arrive(id, in_flight_.at(id).first); });
+    parts_.kernel.at(parts_.kernel.now(), [this, slot] { arrive(slot); });
   } else if (from == to) {  // another processor of the node: no network, the models' zero-hop time
-    parts_.kernel.at(parts_.kernel.now() + parts_.network.uncontended_time(0, bytes),
-                     [this, id] { arrive(id, in_flight_.at(id).first); });
+    parts_.kernel.at(parts_.kernel.now() + parts_.network.uncontended_time(0, bytes), [this, slot] { arrive(slot); });
   } else if (up > parts_.kernel.now()) {
-    parts_.kernel.at(up, [this, id, from, to, bytes] { leave(id, from, to, bytes); });
+    parts_.kernel.at(up, [this, slot, from, to, bytes] { leave(slot, from, to, bytes); });
   } else {
-    leave(id, from, to, bytes);
+    leave(slot, from, to, bytes);
   }
   return sent;
 }
 
-void PostOffice::leave(std::int64_t id, int from_node, int to_node, std::int64_t bytes) {
-  parts_.network.transfer(from_node, to_node, bytes, [this, id] { arrive(id, in_flight_.at(id).first); });
+void PostOffice::leave(std::uint32_t slot, int from_node, int to_node, std::int64_t bytes) {
+  parts_.network.transfer(from_node, to_node, bytes, [this, slot] { arrive(slot); });
 }
 
-void PostOffice::arrive(std::int64_t id, std::int64_t seq) {
-  auto node = in_flight_.extract(id);
-  InTransit t = std::move(node.mapped().second);
+void PostOffice::arrive(std::uint32_t slot) {
+  Flying& f = flying_[slot];
+  const std::int64_t seq = f.seq;
+  InTransit t = std::move(f.transit);
+  f.transit.letter.data = {};  // moved from: left empty for the next letter's copy
+  f.transit.sent = {};
+  free_slots_.push_back(slot);
   Ordered& order = ordered_[{t.letter.source, static_cast<int>(t.sent.state()->peer)}];
   order.delivery.arrive(seq, std::move(t), [this](InTransit&& m) { deliver(std::move(m)); });
 }

@@ -22,6 +22,8 @@
 #include "parix/run_result.hpp"
 #include "parix/activity.hpp"
 #include "parix/sim/in_order_delivery.hpp"
+#include "parix/sim/payload_pool.hpp"
+#include "parix/sim/request_pool.hpp"
 
 namespace gcsim::parix::detail {
 
@@ -34,11 +36,15 @@ class PostOffice {
     std::vector<ProcessorStats>& stats;
     const std::vector<int>& node_of;
     machine::TraceWriter& trace;  // each delivered letter is a message record, as a link's message is
+    RequestPool& requests;        // a letter's request state, recycled
+    PayloadPool& payloads;        // a letter's bytes, recycled when the receiver gives them back
   };
   explicit PostOffice(const Parts& parts);
 
   Request post(int source, int dest, const Envelope& envelope, std::span<const std::byte> data);
   void collect(int processor, std::vector<Letter>& into);
+  // A collected letter's storage, done with: kept for later letters.
+  void recycle(Bytes&& storage) { parts_.payloads.give(std::move(storage)); }
   bool has_mail(int processor) const { return !boxes_[static_cast<std::size_t>(processor)].empty(); }
   // Who to wake when a letter arrives for processor (null: nobody waits).
   void set_waiter(int processor, Waiter* w) { waiters_[static_cast<std::size_t>(processor)] = w; }
@@ -55,8 +61,13 @@ class PostOffice {
     InOrderDelivery<InTransit> delivery;
   };
   machine::SimTime connection_up(int a, int b);
-  void leave(std::int64_t id, int from_node, int to_node, std::int64_t bytes);
-  void arrive(std::int64_t id, std::int64_t seq);
+  // A letter in the network, in a slot of flying_ (slots are reused: no allocation per letter).
+  struct Flying {
+    std::int64_t seq = 0;
+    InTransit transit;
+  };
+  void leave(std::uint32_t slot, int from_node, int to_node, std::int64_t bytes);
+  void arrive(std::uint32_t slot);
   void deliver(InTransit&& t);
 
   Parts parts_;
@@ -64,7 +75,8 @@ class PostOffice {
   std::vector<Waiter*> waiters_;
   std::map<std::pair<int, int>, machine::SimTime> up_;  // unordered pair (low, high) -> link up
   std::map<std::pair<int, int>, Ordered> ordered_;
-  std::unordered_map<std::int64_t, std::pair<std::int64_t, InTransit>> in_flight_;  // id -> (seq, letter)
+  std::vector<Flying> flying_;
+  std::vector<std::uint32_t> free_slots_;
   std::int64_t next_id_ = 0;
 };
 

@@ -54,6 +54,7 @@ class SimProcess final : public Processor, public Mailbox, public Waiter {
   // Addressed messages (parix/mailbox.hpp), in mailbox_calls.cpp.
   Request post(int dest, const Envelope& envelope, std::span<const std::byte> data) override;
   void collect(std::vector<Letter>& into) override;
+  void recycle(Bytes&& storage) override;
   void await(std::span<const Request> requests, const WaitDescription& call, int peer) override;
   using Mailbox::await;
   void occupy(SimTime duration, std::string_view label, bool as_comm) override;

@@ -52,7 +52,7 @@ class Simulation {
         memory(nodes, node_of),
         processes(kernel, stats, static_cast<std::size_t>(config.fiber_stack_bytes)),
         transport({kernel, *network, trace, memory, payloads, links, processes}),
-        post_office({kernel, *network, connections, stats, node_of, trace}) {}
+        post_office({kernel, *network, connections, stats, node_of, trace, requests, payloads}) {}
 
   RunResult run(const std::function<void(Processor&)>& program);
   // The run's figures; an interrupted run's makespan is the kernel's clock when it stopped.

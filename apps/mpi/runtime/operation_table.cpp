@@ -29,7 +29,10 @@ bool OperationTable::erase(MPI_Request handle) {
 void OperationTable::erase_at(std::size_t index) {
   std::unique_ptr<Operation> op(live_[index].op);
   live_.erase(live_.begin() + static_cast<std::ptrdiff_t>(index));
-  *op = Operation{};  // what it held (a payload, a restart's closure) goes now, as an erased map entry's did
+  // What it held (a payload, a restart's closure) goes now, as an erased map entry's did; remade
+  // in place, which costs less than assigning a fresh one.
+  std::destroy_at(op.get());
+  std::construct_at(op.get());
   spare_.push_back(std::move(op));
 }
 

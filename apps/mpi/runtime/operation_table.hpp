@@ -40,10 +40,12 @@ class OperationTable {
   Operation& at(MPI_Request handle) const { return *find(handle); }  // handle must be live
   bool erase(MPI_Request handle);
   template <class Pred>
-  void erase_if(Pred pred) {
+  std::size_t erase_if(Pred pred) {
+    std::size_t erased = 0;
     for (std::size_t i = live_.size(); i-- > 0;) {
-      if (pred(*live_[i].op)) erase_at(i);
+      if (pred(*live_[i].op)) erase_at(i), ++erased;
     }
+    return erased;
   }
 
   // In handle order, as the map this replaces iterated.

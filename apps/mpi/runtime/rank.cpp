@@ -247,6 +247,7 @@ void Rank::on_letter(parix::Letter& l) {
   } else if (kind == kData) {
     Operation& r = operations_.at(w[2]);
     deliver(r, l.data);
+    mailbox_.recycle(std::move(l.data));
   } else if (kind == kCancelAsk) {
     on_cancel_asked(l);
   } else if (kind == kCancelAnswer) {
@@ -271,6 +272,7 @@ void Rank::match(Operation& r, MPI_Request handle, Arrived&& m) {
   r.status.gcsim_bytes = m.size;
   if (!m.rendezvous) {
     deliver(r, m.data);
+    mailbox_.recycle(std::move(m.data));
     return;
   }
   mailbox_.post(m.source, envelope(kClearToSend, 0, m.context, handle, m.sender_op), {});

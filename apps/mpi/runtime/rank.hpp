@@ -186,6 +186,7 @@ class Rank {
   std::map<MPI_Comm, Communicator> comms_;
   MPI_Comm next_comm_ = first_user_handle;
   OperationTable operations_;
+  std::size_t freed_live_ = 0;  // operations MPI_Request_free left running (dropped once done)
   parix::Bytes send_scratch_;
   std::vector<MPI_Request> posted_;  // receives waiting for a message, in posting order
   std::vector<Arrived> unexpected_;  // messages waiting for a receive, in arrival order

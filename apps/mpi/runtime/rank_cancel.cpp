@@ -22,12 +22,15 @@ void Rank::free_request(MPI_Request handle) {
     return;
   }
   progress();
-  operation(handle).freed = true;
+  Operation& op_now = operation(handle);
+  if (!op_now.freed) ++freed_live_;
+  op_now.freed = true;
   drop_freed();
 }
 
 void Rank::drop_freed() {
-  operations_.erase_if([](const Operation& op) { return op.freed && op.done; });
+  if (freed_live_ == 0) return;  // the usual case, on every progress
+  freed_live_ -= operations_.erase_if([](const Operation& op) { return op.freed && op.done; });
 }
 
 void Rank::cancel(MPI_Request handle) {
