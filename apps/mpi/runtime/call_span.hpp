@@ -24,6 +24,10 @@ class CallSpan {
   void set_depth(int depth) { depth_ = depth; }
   // A description of what the call does names it, unless an earlier one did.
   void describe(std::string_view description);
+  // The same with the call's name itself ("MPI_Recv"), not a description to take it from.
+  void name(std::string_view call_name) {
+    if (depth_ > 0 && name_.empty()) name_ = call_name;
+  }
   // An operation of the call with this peer (world rank; -1: any). The traced peer is the one the
   // call receives from (what it waits for), else the one it sends to; none when there are several.
   void involve(int peer, bool receives);

@@ -2,7 +2,6 @@
 #include <charconv>
 
 #include "apps/mpi/runtime/operation.hpp"
-#include "apps/mpi/runtime/call_span.hpp"
 #include "apps/mpi/runtime/rank.hpp"
 
 namespace gcsim::mpi_layer {
@@ -33,11 +32,6 @@ void CallText::append_to(std::string& out) const {
   if (tag == MPI_ANY_TAG) out.append("MPI_ANY_TAG");
   else append_number(out, tag);
   out.append(", comm=").append(Rank::comm_name(comm)).append(")");
-}
-
-std::string_view CallText::name_of_call() const {
-  if (form == Form::point_to_point) return name;
-  return call_name(text);  // a collective's receive names none: its call does
 }
 
 std::string CallText::str() const {

@@ -53,7 +53,6 @@ struct CallText {
     return c;
   }
   std::string str() const;  // call_text.cpp
-  std::string_view name_of_call() const;  // "MPI_Irecv": what a trace names the call
   void append_to(std::string& out) const;
 };
 

@@ -51,11 +51,13 @@ Rank::Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs
 Rank& Rank::current() {
   if (!running) fail(MPI_ERR_OTHER, "no MPI rank runs here: start the program with gcsim mpirun");
   running->program_ran_ = true;  // every MPI call of the program comes here first
+  running->progress_due_ = true;
   return *running;
 }
 
 void Rank::install() {
   running = this;
+  progress_due_ = true;  // the fiber resumes: time passed, letters may have arrived
   install_registry(&registry_);
   parix::describe_running_stack(name_.c_str(), "raise it with gcsim mpirun --stack-size (default 8M)");
 }
@@ -95,6 +97,7 @@ std::string Rank::comm_name(MPI_Comm handle) {
 }
 
 MPI_Request Rank::add_operation(Operation op) {
+  progress_due_ = true;
   auto [h, slot] = operations_.add();
   slot = std::move(op);
   return h;
@@ -141,6 +144,7 @@ void Rank::charge_reduction(std::size_t bytes) {
 
 MPI_Request Rank::start_send(const Communicator& c, std::int64_t context, int dest, int tag,
                              std::span<const std::byte> payload, SendMode mode, CallText call) {
+  progress_due_ = true;  // an operation done at once, or waiting for its clear-to-send
   auto [h, op] = operations_.add();
   op.is_send = true;
   op.call = std::move(call);
@@ -149,7 +153,7 @@ MPI_Request Rank::start_send(const Communicator& c, std::int64_t context, int de
   op.tag = tag;
   op.peer_world = c.world_rank_of(dest);
   const auto size = static_cast<std::int64_t>(payload.size());
-  call_span.describe(op.call.name_of_call());
+  name_call_span(op.call);
   call_span.involve(op.peer_world, false);
   call_span.add_sent(size);
   charge(size);
@@ -181,10 +185,11 @@ MPI_Request Rank::start_recv(const Communicator& c, std::int64_t context, int so
     op.owned_type = type;
     op.type = &*op.owned_type;
   }
-  call_span.describe(op.call.name_of_call());
+  name_call_span(op.call);
   call_span.involve(op.peer_world, true);
   call_span.add_received(pack_size(count, type));
   posted_.push_back(h);
+  progress_due_ = true;  // an arrived message may match it
   progress();  // an arrived message matches at once
   return h;
 }
@@ -201,8 +206,14 @@ MPI_Request Rank::start_raw_recv(const Communicator& c, std::int64_t context, in
   call_span.involve(op.peer_world, true);
   call_span.add_received(static_cast<std::int64_t>(into.size()));
   posted_.push_back(h);
+  progress_due_ = true;  // an arrived message may match it
   progress();
   return h;
+}
+
+void Rank::name_call_span(const CallText& call) {
+  if (call.form == CallText::Form::point_to_point) call_span.name(call.name);
+  else call_span.describe(call.text);
 }
 
 bool Rank::matches(const Operation& r, const Arrived& m) {
@@ -210,6 +221,8 @@ bool Rank::matches(const Operation& r, const Arrived& m) {
 }
 
 void Rank::progress() {
+  if (!progress_due_) return;
+  progress_due_ = false;
   // Unexpected messages first match receives posted since they arrived.
   for (auto it = unexpected_.begin(); it != unexpected_.end();) {
     const auto r = std::find_if(posted_.begin(), posted_.end(), [&](MPI_Request h) { return matches(operations_.at(h), *it); });

@@ -121,7 +121,9 @@ class Rank {
     const FixedWait text(call);
     wait_until(std::forward<Done>(done), call_name(call), text);
   }
-  // Takes what arrived and answers it; completes rendezvous sends whose data was delivered.
+  // Takes what arrived and answers it; completes rendezvous sends whose data was delivered. Does
+  // nothing when nothing can have changed since the last one: the rank has not resumed from a
+  // switch, entered a call, posted a receive or started an operation (tests call it often).
   void progress();
   bool test(MPI_Request handle);  // progress, then whether it is done (and its receive charged)
   // The first unexpected message matching (source, tag, context): status filled, nothing taken.
@@ -163,6 +165,7 @@ class Rank {
     std::string text() const override { return call; }
   };
   void wait_loop(Predicate done, std::string_view name, const parix::WaitDescription& call);
+  void name_call_span(const CallText& call);  // the trace's name of the call it is part of
   void advance_collectives();  // resumes every schedule whose awaited requests are complete
   void run_schedule(CollectiveProgress& schedule);
   void drop_finished_schedules();
@@ -194,6 +197,7 @@ class Rank {
   // Set as the program enters an MPI call (current()), cleared once its output is attributed: a
   // call's later switches have nothing new to attribute (the program has not run since).
   bool program_ran_ = true;
+  bool progress_due_ = true;  // see progress()
   // Outstanding non-blocking collectives in start order; last, so they unwind while the rest lives.
   std::vector<std::unique_ptr<CollectiveProgress>> schedules_;
   CollectiveProgress* running_schedule_ = nullptr;

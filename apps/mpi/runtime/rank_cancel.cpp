@@ -34,6 +34,7 @@ void Rank::drop_freed() {
 }
 
 void Rank::cancel(MPI_Request handle) {
+  progress_due_ = true;  // a request done now: a schedule waiting for it may go on
   Operation& op = operation(handle);
   if (op.restart) {
     if (op.started != MPI_REQUEST_NULL) cancel(op.started);

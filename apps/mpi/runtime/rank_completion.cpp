@@ -32,7 +32,7 @@ int Rank::finish(MPI_Request& handle, MPI_Status* status) {
 
 void Rank::wait_loop(Predicate done, std::string_view name, const parix::WaitDescription& call) {
   std::vector<parix::Request> wires;
-  call_span.describe(name);
+  call_span.name(name);
   for (;;) {
     progress();
     if (done.test(done.object)) return;
