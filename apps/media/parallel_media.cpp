@@ -24,11 +24,23 @@ std::vector<T> concatenate(const std::vector<std::vector<T>>& parts) {
   return all;
 }
 
+// The photon map of these gathered photons: the one another node built from the same photons, or a new one.
+std::shared_ptr<const PhotonMap> photon_map_of(std::vector<Photon> all, std::shared_ptr<const PhotonMap>* shared) {
+  if (shared && *shared) {
+    const std::vector<Photon>& theirs = (*shared)->photons();
+    if (theirs.size() == all.size() && std::memcmp(theirs.data(), all.data(), all.size() * sizeof(Photon)) == 0)
+      return *shared;
+  }
+  auto map = std::make_shared<const PhotonMap>(std::move(all));
+  if (shared) *shared = map;
+  return map;
+}
+
 // One region's photon map (replicated) and SH grid (each node builds a slice, then all-gather).
 RegionCache build_region_parallel(parix::Processor& p, const std::vector<Photon>& mine,
                                   const HomogeneousMedium& medium, std::size_t k, std::uint64_t& photon_bytes,
                                   std::uint64_t& grid_bytes, std::vector<parix::MemoryReservation>& held,
-                                  RenderCounters& counts, int jobs) {
+                                  RenderCounters& counts, int jobs, std::shared_ptr<const PhotonMap>* shared) {
   const auto parts = parix::allgather_vectors<Photon>(p, std::span<const Photon>(mine));
   std::size_t photons = 0;
   for (const auto& part : parts) photons += part.size();
@@ -38,7 +50,7 @@ RegionCache build_region_parallel(parix::Processor& p, const std::vector<Photon>
   RegionCache region;
   if (all.empty()) return region;
   const UniformGrid grid = grid_for_photons(all, k);
-  region.map = std::make_unique<PhotonMap>(std::move(all));
+  region.map = photon_map_of(std::move(all), shared);
   const std::size_t voxels = grid.voxel_count();
   const std::size_t first = share_begin(voxels, p.id(), p.count()), last = share_begin(voxels, p.id() + 1, p.count());
   const parix::MemoryReservation slice_held =
@@ -186,9 +198,11 @@ void media_program(parix::Processor& p, const MediaScene& scene, const MarchSett
   std::vector<parix::MemoryReservation> held;  // node memory of the photon maps and grids
   RenderCounters& built = per_node[static_cast<std::size_t>(p.id())];
   caches.outside =
-      build_region_parallel(p, photons.outside, scene.outside, scene.k_nearest, photon_bytes, grid_bytes, held, built, jobs);
+      build_region_parallel(p, photons.outside, scene.outside, scene.k_nearest, photon_bytes, grid_bytes, held, built,
+                            jobs, host ? &host->outside_map : nullptr);
   caches.inside =
-      build_region_parallel(p, photons.inside, scene.inside, scene.k_nearest, photon_bytes, grid_bytes, held, built, jobs);
+      build_region_parallel(p, photons.inside, scene.inside, scene.k_nearest, photon_bytes, grid_bytes, held, built,
+                            jobs, host ? &host->inside_map : nullptr);
   // Node 0 assembles the whole image; the others hold a tile at a time.
   const std::int64_t image_bytes = id == 0 ? std::int64_t(width) * height * std::int64_t(sizeof(glm::vec3)) : 0;
   const parix::MemoryReservation image_held = p.reserve_memory(image_bytes, "image");
@@ -211,7 +225,7 @@ ParallelMediaResult render_media_parallel(const MediaScene& scene, const MarchSe
   ParallelMediaResult result;
   result.image = apps::Image(scene.image.width, scene.image.height);
   std::vector<RenderCounters> per_node(static_cast<std::size_t>(sim.config.nodes));
-  MediaHostThreads host{host_threads - 1, nullptr, 0};
+  MediaHostThreads host{host_threads - 1, nullptr, 0, nullptr, nullptr};
   result.run = parix::run_simulated(
       sim, [&](parix::Processor& p) { media_program(p, scene, settings, seed, result, per_node, &host); });
   result.tiles_by_workers = host.tiles_by_workers;

@@ -45,6 +45,9 @@ struct MediaHostThreads {
   int workers = 0;
   std::unique_ptr<apps::WorkAhead<PixelTile>> ahead;  // while node 0 farms out the tiles
   std::int64_t tiles_by_workers = 0;                  // after the run
+  // Every node gathers the same photons, so the first to build a region's k-d tree lends it to the
+  // others (host time only: building it is not charged, so simulated times do not change).
+  std::shared_ptr<const PhotonMap> outside_map, inside_map;
 };
 
 // The SPMD program: every processor runs it; result.image (sized by the caller) and the byte and

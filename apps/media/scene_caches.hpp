@@ -11,7 +11,7 @@
 namespace gcsim::media {
 
 struct RegionCache {
-  std::unique_ptr<PhotonMap> map;      // null when no photon was stored in the region
+  std::shared_ptr<const PhotonMap> map;  // null when no photon was stored; read-only, so nodes may share one
   std::unique_ptr<RadianceGrid> grid;
 };
 
