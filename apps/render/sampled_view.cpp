@@ -16,6 +16,8 @@ int view_tile_count(const scene::SceneDescription& d) {
 
 int sample_tile_stride(int tiles, int nodes) { return std::clamp(tiles / (16 * std::max(nodes, 1)), 1, 4); }
 
+int march_tile_stride(int tiles, int nodes) { return std::clamp(tiles / (8 * std::max(nodes, 1)), 1, 4); }
+
 double SampledView::scaled() const {
   const double tile_scale = double(tiles) / double(std::max(rendered, 1));
   return seconds + (tile_scale - 1.0) * compute;

@@ -57,12 +57,17 @@ void measure_media(const PlanFlags& f, const scene::SceneDescription& d, const P
   const double photons_u = sampled_fraction_uncertainty(double(s.traced) / double(std::max<std::size_t>(f.photons, 1)));
   const double march_u = sampled_fraction_uncertainty(double(s.tiles_rendered) / std::max(s.tiles, 1));
   model.media_uncertainty = s.seconds() > 0 ? (photons_u * s.photon_seconds + march_u * (s.grid_seconds + s.march_seconds)) / s.seconds() : 0;
+  // One run of every photon when the sample is all of them (--sample-photons 1, or few photons a node).
+  const bool all_photons = s.traced >= f.photons;
+  const std::string photons_run = all_photons ? fmt::format("all {} photons traced once", f.photons)
+                                              : fmt::format("{} and {} of the {} photons traced", s.traced / 2, s.traced, f.photons);
+  const std::string photons_how = all_photons ? "as traced" : "linear in the photons through the two";
   model.media_measured = fmt::format(
-      "{} and {} of the {} photons traced, then one run of {} tiles in {} of the view ({} of\n"
-      "          {}) with and without the media, on the simulated machine: photons ~{:.3g} s (linear in the photons\n"
-      "          through the two), SH grid ~{:.3g} s (its counts scaled to every photon), marching ~{:.3g} s (the\n"
+      "{}, then one run of {} tiles in {} of the view ({} of\n"
+      "          {}) with and without the media, on the simulated machine: photons ~{:.3g} s ({}),\n"
+      "          SH grid ~{:.3g} s (its counts scaled to every photon), marching ~{:.3g} s (the\n"
       "          difference, the nodes' mean work scaled to every tile); the view with them ~{:.3g} s.",
-      s.traced / 2, s.traced, f.photons, raytrace::kRunTiles, s.tile_stride, s.tiles_rendered, s.tiles, s.photon_seconds,
+      photons_run, raytrace::kRunTiles, s.tile_stride, s.tiles_rendered, s.tiles, s.photon_seconds, photons_how,
       s.grid_seconds, s.march_seconds, s.view_seconds);
 }
 
