@@ -32,7 +32,7 @@ namespace gcsim::render {
 struct MediaSampleOptions {
   std::size_t photons = 50000;  // the render's (--photons); render_setup.hpp's kDefaultPhotons
   int photon_divisor = 8;       // the sample traces photons / this, and half of that; 1: every photon
-  int tile_stride = 0;          // one run of tiles in k; 0: chosen (sample_tile_stride); 1: every tile
+  int tile_stride = 0;          // one run of tiles in k; 0: chosen (march_tile_stride); 1: every tile
 };
 
 struct MediaSample {

@@ -188,6 +188,19 @@ double opacity(const SceneDescription& d, int m) {
   return sum;
 }
 
+// The largest fraction of the image a shape of material m covers.
+double largest_coverage(const SceneDescription& d, int m) {
+  double most = 0;
+  for (const scene::Shape& s : d.shapes) {
+    if (s.material != m) continue;
+    if (const auto* box = std::get_if<scene::Box>(&s.geometry))
+      most = std::max(most, coverage(d, 0.5 * (box->lo + box->hi), 0.5 * glm::length(box->hi - box->lo)));
+    else if (const auto* sphere = std::get_if<scene::Sphere>(&s.geometry))
+      most = std::max(most, coverage(d, sphere->center, sphere->radius));
+  }
+  return most;
+}
+
 PassPlan plan_media(const Analysis& a, SceneFacts& facts) {
   PassPlan p;
   p.id = PassId::media;
@@ -199,6 +212,7 @@ PassPlan plan_media(const Analysis& a, SceneFacts& facts) {
     if (scene::largest(md.sigma_s) > 0) {
       scattering.insert(mat.name);
       facts.media_opacity += opacity(a.d, m);
+      facts.media_coverage = std::max(facts.media_coverage, largest_coverage(a.d, m));
       const scene::Rgb sigma_t = md.sigma_s + md.sigma_a;
       for (int c = 0; c < 3; ++c)
         if (sigma_t[c] > 0) facts.largest_albedo = std::max(facts.largest_albedo, md.sigma_s[c] / sigma_t[c]);

@@ -45,6 +45,9 @@ struct SceneFacts {
   // 4 V / S), times the fraction of the image the bound covers: the fraction of a full march (32
   // samples per free path) a camera ray takes in each, on average.
   double media_opacity = 0.0;
+  // The largest fraction of the image a scattering medium's bound covers (its bounding ball's solid
+  // angle over the view's, at most 1): at 1 the marching is spread over every tile.
+  double media_coverage = 0.0;
 };
 
 struct Plan {

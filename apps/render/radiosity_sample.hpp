@@ -37,7 +37,7 @@ double extrapolate_loops(const std::vector<radiosity::StepRecord>& steps, double
 // the photon pass leaves on each element (media_sample.hpp), which the render's pass starts from and
 // which makes it longer (CORNELL-FOG: 190 loops instead of 171); null or empty: none.
 RadiositySample sample_radiosity_loops(const scene::SceneDescription& d, const std::string& file,
-                                       const parix::SimulationOptions& machine, int loops = 16,
+                                       const parix::SimulationOptions& machine, int loops = 8,
                                        const std::vector<radiosity::Rgb>* received = nullptr);
 
 }  // namespace gcsim::render

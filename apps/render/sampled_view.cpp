@@ -16,6 +16,11 @@ int view_tile_count(const scene::SceneDescription& d) {
 
 int sample_tile_stride(int tiles, int nodes) { return std::clamp(tiles / (16 * std::max(nodes, 1)), 1, 4); }
 
+int march_tile_stride(int tiles, int nodes, bool fills_view) {
+  const int n = std::max(nodes, 1), k = std::clamp(tiles / (8 * n), 1, 4);
+  return fills_view ? std::max(k, std::clamp(tiles / (16 * n), 1, 8)) : k;
+}
+
 double SampledView::scaled() const {
   const double tile_scale = double(tiles) / double(std::max(rendered, 1));
   return seconds + (tile_scale - 1.0) * compute;

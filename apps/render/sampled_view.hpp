@@ -21,6 +21,14 @@ int view_tile_count(const scene::SceneDescription& d);
 // rays 33 % low on 1 node (one in 4: 4 %).
 int sample_tile_stride(int tiles, int nodes);
 
+// The media sample's stride. Its marching is most of the plan's host time. At least 8 tiles a node
+// (at 16 the 256 x 256 views sampled every tile on 64 nodes: CORNELL-FOG 5.2 s of the plan's CPU
+// against the render's 11 s; at 8 one run in 2, the marching +4 % against every tile's, one in 4
+// +19 %), one run in at most 4; where a medium covers the whole image (fills_view) one in up to 8
+// with at least 16 tiles a node (CORNELL-FOG's marching +3 % on 8 nodes, -0.7 % on 1; MEDIA-EXP1's
+// -1 % on 8), while `example.toml`'s small smoke ball sits in a few tiles (one in 8: +14 and +26 %).
+int march_tile_stride(int tiles, int nodes, bool fills_view);
+
 // What the sampled view meets. media: the view's media, or null (the view without them). photons:
 // the media pass's photons per medium (its SH grids are built from them), or null: the render's
 // photon pass runs first (nothing charged for an absorbing medium: no photons). grid_scale: the SH

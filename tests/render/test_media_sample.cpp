@@ -13,6 +13,7 @@
 #include "apps/render/plan.hpp"
 #include "apps/render/plan_cost.hpp"
 #include "apps/render/render_setup.hpp"
+#include "apps/render/sampled_view.hpp"
 #include "apps/render/unified_render.hpp"
 #include "apps/render/view_sample.hpp"
 #include "machine/machine_config.hpp"
@@ -146,6 +147,26 @@ TEST(MediaSample, WallDepositsAreScaledToEveryPhoton) {
   for (std::size_t e = 0; e < all.wall_power.size(); ++e)
     sum_all += radiosity::channel_sum(all.wall_power[e]), sum_part += radiosity::channel_sum(part.wall_power[e]);
   EXPECT_NEAR(sum_part, sum_all, 0.2 * sum_all);
+}
+
+// The marching sample's stride: at least 8 tiles a node, at most 4, and up to 8 (with 16 a node)
+// only where a medium covers the image: CORNELL-FOG's fog box does, `example.toml`'s smoke ball
+// does not (one in 8 put its marching 26 % high on 8 nodes).
+TEST(MediaSample, TheMarchingStrideWidensOnlyWhereAMediumFillsTheImage) {
+  EXPECT_EQ(march_tile_stride(1024, 64, false), 2);  // 16 tiles a node: one run in 2, not every tile
+  EXPECT_EQ(march_tile_stride(1024, 64, true), 2);
+  EXPECT_EQ(march_tile_stride(1024, 8, false), 4);
+  EXPECT_EQ(march_tile_stride(1024, 8, true), 8);
+  EXPECT_EQ(march_tile_stride(48, 8, true), 1);  // fewer than 8 tiles a node: every tile
+  const auto coverage = [](const char* file) {
+    return make_plan(scene::load_scene_file((std::filesystem::path(GCSIM_SOURCE_DIR) / "scenes" / file).string()))
+        .facts.media_coverage;
+  };
+  EXPECT_EQ(coverage("cornell-fog.toml"), 1.0);
+  EXPECT_EQ(coverage("media-exp1.toml"), 1.0);
+  EXPECT_LT(coverage("example.toml"), 1.0);
+  EXPECT_GT(coverage("example.toml"), 0.0);
+  EXPECT_EQ(coverage("cornell.toml"), 0.0);  // no medium
 }
 
 }  // namespace
