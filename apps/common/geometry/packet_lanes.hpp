@@ -37,7 +37,12 @@ struct Lanes {
   };
   Axes axes[kPacketLanes];  // lanes grouped by the triangle test's axis permutation
   int axes_count = 0;
-  SphereRay spheres[kPacketLanes];
+  // Each lane's SphereRay, one array of eight per quantity (packet_sphere_lanes.hpp reads four).
+  struct Spheres {
+    alignas(32) double origin[3][8];
+    alignas(32) double direction[3][8];
+    alignas(32) double a[8];
+  } spheres;
   int sphere_count = 0;                // primitive ids below are spheres
   const Triangle* triangles = nullptr;  // primitive sphere_count + k is triangles[k]
 };
@@ -71,8 +76,12 @@ GCSIM_AVX2 inline void prepare_lanes(const PrimitiveArrays& prims, const Bounds3
     l.shear_x[i] = r.shear_x;
     l.shear_y[i] = r.shear_y;
     l.shear_z[i] = r.shear_z;
+    if (!prims.spheres.empty()) {  // idle lanes too: their doubles stay finite
+      const SphereRay sr(r);
+      for (int a = 0; a < 3; ++a) l.spheres.origin[a][i] = sr.origin[a], l.spheres.direction[a][i] = sr.direction[a];
+      l.spheres.a[i] = sr.a;
+    }
     if (!(lanes >> i & 1u)) continue;
-    if (!prims.spheres.empty()) l.spheres[i] = SphereRay(r);
     int g = 0;
     while (g < l.axes_count && !(l.axes[g].kx == r.kx && l.axes[g].ky == r.ky && l.axes[g].kz == r.kz)) ++g;
     if (g == l.axes_count) l.axes[l.axes_count++] = {r.kx, r.ky, r.kz, 0u};
