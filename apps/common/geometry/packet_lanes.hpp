@@ -120,7 +120,18 @@ GCSIM_AVX2 inline void prepare_lanes(const PrimitiveArrays& prims, const Bounds3
                                                           _mm256_mul_pd(d[2], d[2])));
     }
   }
-  for (unsigned m = lanes; m; m &= m - 1) {
+  // The lanes grouped by axis permutation: one group when every live lane has the first's (a
+  // packet of primary rays nearly always), else in the order the lanes first show each.
+  const __m256i key = _mm256_or_si256(_mm256_castps_si256(b[2]),
+                                      _mm256_or_si256(_mm256_slli_epi32(_mm256_castps_si256(b[3]), 2),
+                                                      _mm256_slli_epi32(_mm256_castps_si256(b[4]), 4)));
+  const __m256i first_key = _mm256_permutevar8x32_epi32(key, _mm256_set1_epi32(first));
+  const unsigned same = unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(key, first_key))));
+  if ((same & lanes) == lanes) {
+    l.axes[0] = {rays[first].kx, rays[first].ky, rays[first].kz, lanes};
+    l.axes_count = 1;
+  }
+  for (unsigned m = l.axes_count ? 0u : lanes; m; m &= m - 1) {
     const Ray& r = rays[std::countr_zero(m)];
     int g = 0;
     while (g < l.axes_count && !(l.axes[g].kx == r.kx && l.axes[g].ky == r.ky && l.axes[g].kz == r.kz)) ++g;
