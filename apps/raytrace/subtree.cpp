@@ -8,7 +8,7 @@ namespace {
 // Counts the tests of a box by the planes `inside` does not yet hold it in, from its bits of a
 // two-plane classification; false if it lies outside one. Plane 1 is not tested after plane 0
 // drops the box, as one scalar classify() after another would not.
-bool survives_planes(unsigned in, unsigned out_bits, std::uint8_t& inside, std::int64_t& tests) {
+constexpr bool survives_planes(unsigned in, unsigned out_bits, std::uint8_t& inside, std::int64_t& tests) {
   for (int i = 0; i < 2; ++i) {
     if (inside & (1u << i)) continue;
     ++tests;
@@ -17,6 +17,22 @@ bool survives_planes(unsigned in, unsigned out_bits, std::uint8_t& inside, std::
   }
   return true;
 }
+
+// survives_planes for every inside mask and two-plane classification of a child, looked up where
+// the subtree pass would branch on each plane: index inside | in << 2 | out << 4; the verdict holds
+// the child's new inside mask in bits 0-1, its count of tests in bits 2-3 and "survives" in bit 4.
+struct PlaneVerdicts {
+  std::uint8_t of[64] = {};
+  constexpr PlaneVerdicts() {
+    for (unsigned i = 0; i < 64; ++i) {
+      std::uint8_t inside = std::uint8_t(i & 3u);
+      std::int64_t tests = 0;
+      const bool survives = survives_planes(i >> 2 & 3u, i >> 4 & 3u, inside, tests);
+      of[i] = std::uint8_t(inside | tests << 2 | unsigned(survives) << 4);
+    }
+  }
+};
+constexpr PlaneVerdicts kVerdicts;
 
 struct FilterPass {
   using Entry = PlaneFilteredTree::Entry;
@@ -56,12 +72,17 @@ struct FilterPass {
     e.child[0] = c[0];
     e.child[1] = c[1];
     e.children = static_cast<int>(out.children.size());
-    out.children.push_back(lanes);  // a dropped child's lanes are classified, never read
+    PlaneFilteredTree::ChildPair pair{lanes, {box(node.child[0]), box(node.child[1])}, {node.child[0], node.child[1]},
+                                      {PlaneFilteredTree::kDropped, PlaneFilteredTree::kDropped}};
+    for (int k = 0; k < 2; ++k)
+      if (c[k] >= 0) pair.pair[k] = is_primitive(node.child[k]) ? PlaneFilteredTree::kPrimitive : out.entries[c[k]].children;
+    out.children.push_back(pair);  // a dropped child's lanes are classified, never read
     return at;
   }
 };
 
 struct SubtreePass {
+  using ChildPair = PlaneFilteredTree::ChildPair;
   const PlaneFilteredTree& row;
   const Plane* planes;  // two
   PackedTree& out;
@@ -69,40 +90,41 @@ struct SubtreePass {
   // Both planes classified in one pass (lanes 2 and 3 repeat them); counted as one at a time.
   FourPlanes both{{planes[0], planes[1], planes[0], planes[1]}};
 
-  // What survives of an entry: the root of its part of the subtree (a node of `out` or a
-  // primitive) and the entry whose box bounds that part; entry -1 when nothing does.
+  // What survives of a node: the root of its part of the subtree (a node of `out` or a
+  // primitive) and the box that bounds that part; box null when nothing does.
   struct Part {
     NodeRef ref;
-    int entry;
+    const Bounds3* box;
   };
 
-  const Bounds3& box_of(int e) const { return row.entries[e].bounds; }
-
-  // The part of entry e, which survives with flags `inside`. Both children are classified here
-  // at once, so that a child outside a plane, or a primitive, costs no call.
-  Part visit(int e, std::uint8_t inside) {
-    const auto& entry = row.entries[e];
-    if (is_primitive(entry.ref)) return {entry.ref, e};
+  // The part of the node whose children are pair p and whose box is `box`, the node surviving with
+  // flags `inside`. Both
+  // children are classified here at once, so that a child outside a plane, or a primitive, costs
+  // no call; what the pass needs of a child is in the pair, so it reads no entry.
+  Part visit(int p, std::uint8_t inside, const Bounds3* box) {
+    const ChildPair& pair = row.children[p];
     unsigned in = 0, out_bits = 0;  // not read when the node is inside both planes
-    if ((inside & 3u) != 3u) both.sides(row.children[entry.children], in, out_bits);
-    Part c[2] = {{0, -1}, {0, -1}};
+    if ((inside & 3u) != 3u) both.sides(pair.lanes, in, out_bits);
+    Part c[2] = {{0, nullptr}, {0, nullptr}};
     for (int k = 0; k < 2; ++k) {
-      const int child = entry.child[k];
-      std::uint8_t child_inside = inside;
-      if (child < 0 || !survives_planes(in >> (2 * k) & 3u, out_bits >> (2 * k) & 3u, child_inside, tests)) continue;
-      const NodeRef ref = row.entries[child].ref;
-      c[k] = is_primitive(ref) ? Part{ref, child} : visit(child, child_inside);
+      const std::int32_t below = pair.pair[k];
+      if (below == PlaneFilteredTree::kDropped) continue;
+      const unsigned verdict = kVerdicts.of[(inside & 3u) | (in >> (2 * k) & 3u) << 2 | (out_bits >> (2 * k) & 3u) << 4];
+      tests += verdict >> 2 & 3u;
+      if (!(verdict & 16u)) continue;
+      c[k] = below == PlaneFilteredTree::kPrimitive ? Part{pair.ref[k], &pair.box[k]}
+                                                    : visit(below, std::uint8_t(verdict & 3u), &pair.box[k]);
     }
     const Part& c0 = c[0];
     const Part& c1 = c[1];
     // Figure 2: a node left with one child is replaced by the child.
-    if (c0.entry < 0) return c1;
-    if (c1.entry < 0) return c0;
+    if (!c0.box) return c1;
+    if (!c1.box) return c0;
     PairNode& n = out.nodes.emplace_back();
-    set_child_boxes(n, box_of(c0.entry), box_of(c1.entry));
+    set_child_boxes(n, *c0.box, *c1.box);
     n.child[0] = c0.ref;
     n.child[1] = c1.ref;
-    return {static_cast<NodeRef>(out.nodes.size() - 1), e};
+    return {static_cast<NodeRef>(out.nodes.size() - 1), box};
   }
 };
 
@@ -132,12 +154,15 @@ void subtree_from_filtered(const PlaneFilteredTree& row, const Plane& c, const P
   std::uint8_t inside = 0;
   unsigned in, out_bits;
   pass.both.sides(row.root_box, in, out_bits);
-  const SubtreePass::Part root =
-      survives_planes(in, out_bits, inside, pass.tests) ? pass.visit(row.root, inside) : SubtreePass::Part{0, -1};
-  if (root.entry >= 0) {
+  SubtreePass::Part root{0, nullptr};
+  if (survives_planes(in, out_bits, inside, pass.tests)) {
+    const PlaneFilteredTree::Entry& top = row.entries[row.root];
+    root = is_primitive(top.ref) ? SubtreePass::Part{top.ref, &top.bounds} : pass.visit(top.children, inside, &top.bounds);
+  }
+  if (root.box) {
     out.root = out.packed.root = root.ref;
     out.empty = out.packed.empty = false;
-    out.packed.root_box = pass.box_of(root.entry);
+    out.packed.root_box = *root.box;
   }
   counters.plane_tests += pass.tests;
   counters.subtree_nodes += static_cast<std::int64_t>(out.packed.nodes.size());

@@ -38,12 +38,20 @@ class PlaneFilteredTree {
     NodeRef ref;            // BVH node or primitive
     std::uint8_t inside;    // bit i: entirely inside plane i
     std::int32_t child[2];  // entries; -1 where the child was dropped
-    std::int32_t children;  // a node's children's boxes in `children`; -1 for a primitive
+    std::int32_t children;  // a node's pair of children in `children`; -1 for a primitive
     Bounds3 bounds;         // its box: what a subtree's node holds of it
   };
+  // What the subtree pass reads of a node's two children, in one place, so that it reads no
+  // entry: their lanes for the two planes, boxes, references and own pairs.
+  struct ChildPair {
+    BoxLanes lanes;        // both children in the lanes a subregion's two planes are classified in
+    Bounds3 box[2];        // the children's boxes, as their entries hold them
+    NodeRef ref[2];        // the children's BVH nodes or primitives
+    std::int32_t pair[2];  // a child node's own pair; kPrimitive, or kDropped where the child was dropped
+  };
+  static constexpr std::int32_t kPrimitive = -1, kDropped = -2;
   std::vector<Entry> entries;
-  // Both children of a node in the lanes a subregion's two planes are classified in at once.
-  std::vector<BoxLanes> children;
+  std::vector<ChildPair> children;
   int root = -1;  // -1: nothing survives
   BoxCentre root_box;  // the root entry's box, prepared: every subregion of the row classifies it
 };

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "apps/common/geometry/packet_sphere_lanes.hpp"
 #include "apps/common/geometry/packet_triangle_lanes.hpp"
 #include "apps/common/geometry/traversal.hpp"
 
@@ -37,22 +38,13 @@ struct Counts {
 
 // counter[i] += 1 for every lane i of `lanes`.
 GCSIM_AVX2 inline void count(__m256i& counter, unsigned lanes) { counter = _mm256_sub_epi32(counter, lane_mask(lanes)); }
-// One sphere for the lanes of `lanes`, in double as intersect_sphere does, lane by lane.
-GCSIM_AVX2 void test_sphere_lanes(const Sphere& sphere, int prim, const Lanes& l, unsigned lanes, State& s) {
-  for (unsigned m = lanes; m; m &= m - 1) {
-    const int i = std::countr_zero(m);
-    float t;
-    if (intersect_sphere(sphere, l.spheres[i], s.t[i], &t)) offer(s, i, t, prim);
-  }
-}
-
 // One primitive for the lanes of `lanes`, counted per lane as test_quickly counts it. Inline in
 // the walk: most node visits test a triangle.
 GCSIM_AVX2_INLINE void test_lanes(const PrimitiveArrays& prims, int prim, const Ray rays[], const Lanes& l,
                                   unsigned lanes, State& s, Counts& k) {
   if (prim < l.sphere_count) {
     count(k.spheres, lanes);
-    test_sphere_lanes(prims.spheres[prim], prim, l, lanes, s);
+    sphere_lanes(prims.spheres[prim], prim, l, lanes, s);
     return;
   }
   count(k.triangles, lanes);
