@@ -18,7 +18,7 @@
 #include "apps/raytrace/geometry_names.hpp"
 
 namespace gcsim::raytrace {
-namespace {
+namespace sphere_lanes_cases {  // named: a unity build joins this file with the triangle lanes test
 
 using test_support::same_bits;
 
@@ -141,5 +141,5 @@ TEST(PacketSphereLanes, TinyAndHugeSpheresFarAway) {
 TEST(PacketSphereLanes, NotBuiltOnThisCompiler) { GTEST_SKIP() << "the AVX2 packet kernel needs x86-64 and GCC or Clang"; }
 #endif
 
-}  // namespace
+}  // namespace sphere_lanes_cases
 }  // namespace gcsim::raytrace
