@@ -37,6 +37,7 @@ PrimaryTracer::PrimaryTracer(const Scene& scene, const Bvh& bvh, const Camera& c
     : scene_(scene), bvh_(bvh), camera_(camera), algorithm_(algorithm) {
   if (algorithm == Algorithm::B1) classifier_ = std::make_unique<RayClassifier>(scene, bvh, camera);
   if (algorithm == Algorithm::A4) occlusion_ = std::make_unique<OcclusionCheck>(scene, bvh, camera);
+  if (uses_subtree(algorithm)) pairs_ = std::make_unique<PreparedChildPairs>(bvh);
 }
 
 void PrimaryTracer::trace_pixel(int x, int y, Hit& hit, TestTally& tally, TraceCounters& counters) {
@@ -121,7 +122,7 @@ void PrimaryTracer::trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>&
   if (uses_subtree(algorithm_)) {
     if (y0 != row_y0_ || y1 != row_y1_) {  // a new row of subregions: its two shared planes
       row_cost_ = TraceCounters{};
-      filter_by_two_planes(bvh_, camera_.row_plane(y0), flipped(camera_.row_plane(y1)), row_, row_cost_);
+      filter_by_two_planes(bvh_, camera_.row_plane(y0), flipped(camera_.row_plane(y1)), row_, row_cost_, pairs_.get());
       row_y0_ = y0;
       row_y1_ = y1;
       if (!row_counters) counters += row_cost_;

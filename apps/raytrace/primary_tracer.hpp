@@ -58,6 +58,7 @@ class PrimaryTracer {
   bool packets_ = true;
   int row_y0_ = -1, row_y1_ = -1;
   TraceCounters row_cost_;  // what filtering the current row by its two planes counted
+  std::unique_ptr<PreparedChildPairs> pairs_;  // what every row's filter copies of the BVH's nodes
   PlaneFilteredTree row_;
   Subtree subtree_;
   std::unique_ptr<RayClassifier> classifier_;

@@ -34,34 +34,49 @@ struct PlaneVerdicts {
 };
 constexpr PlaneVerdicts kVerdicts;
 
+PlaneFilteredTree::ChildPair child_pair_of(const Bvh& bvh, const BvhNode& node) {
+  const auto box = [&](NodeRef r) -> const Bounds3& {
+    return is_primitive(r) ? bvh.prim_bounds[primitive_of(r)] : bvh.nodes[r].box;
+  };
+  const Bounds3& a = box(node.child[0]);
+  const Bounds3& b = box(node.child[1]);
+  return {BoxLanes(BoxCentre(a), BoxCentre(b)), {a, b}, {node.child[0], node.child[1]},
+          {PlaneFilteredTree::kDropped, PlaneFilteredTree::kDropped}};
+}
+
 struct FilterPass {
   using Entry = PlaneFilteredTree::Entry;
   const Bvh& bvh;
   PlaneFilteredTree& out;
+  const PreparedChildPairs* prepared;  // null: each node's pair worked out here
   // Both children of a node classified in one pass (lanes 2 and 3 repeat the planes).
   FourPlanes both;
   std::int64_t tests = 0;
 
   const Bounds3& box(NodeRef r) const { return is_primitive(r) ? bvh.prim_bounds[primitive_of(r)] : bvh.nodes[r].box; }
 
-  // The entry of r, which survives with flags `inside`; -1 when nothing below it does. A node's
-  // children are classified here, both at once, in the lanes the row keeps for them.
-  int visit(NodeRef r, std::uint8_t inside) {
+  // The entry of r, which survives with flags `inside` and has box `bounds`; -1 when nothing
+  // below it does. A node's children are classified here, both at once, in the lanes the row
+  // keeps for them; a primitive child's entry is written here too, without a call.
+  int visit(NodeRef r, std::uint8_t inside, const Bounds3& bounds) {
     const int at = static_cast<int>(out.entries.size());
-    out.entries.push_back({r, inside, {-1, -1}, -1, box(r)});
+    out.entries.push_back({r, inside, {-1, -1}, -1, bounds});
     if (is_primitive(r)) return at;
-    const BvhNode& node = bvh.nodes[r];
-    const BoxCentre boxes[2] = {BoxCentre(box(node.child[0])), BoxCentre(box(node.child[1]))};
-    const BoxLanes lanes(boxes[0], boxes[1]);
+    PlaneFilteredTree::ChildPair pair = prepared ? prepared->of(r) : child_pair_of(bvh, bvh.nodes[r]);
     unsigned in = 0, out_bits = 0;  // not read when the node is inside both planes
-    if ((inside & 3u) != 3u) both.sides(lanes, in, out_bits);
+    if ((inside & 3u) != 3u) both.sides(pair.lanes, in, out_bits);
     const std::size_t lanes_before = out.children.size();
     int c[2];
     for (int k = 0; k < 2; ++k) {
       std::uint8_t child_inside = inside;
-      c[k] = survives_planes(in >> (2 * k) & 3u, out_bits >> (2 * k) & 3u, child_inside, tests)
-                 ? visit(node.child[k], child_inside)
-                 : -1;
+      c[k] = -1;
+      if (!survives_planes(in >> (2 * k) & 3u, out_bits >> (2 * k) & 3u, child_inside, tests)) continue;
+      if (is_primitive(pair.ref[k])) {
+        c[k] = static_cast<int>(out.entries.size());
+        out.entries.push_back({pair.ref[k], child_inside, {-1, -1}, -1, pair.box[k]});
+      } else {
+        c[k] = visit(pair.ref[k], child_inside, pair.box[k]);
+      }
     }
     if (c[0] < 0 && c[1] < 0) {
       out.entries.resize(at);  // nothing below survives: drop the node too
@@ -72,10 +87,8 @@ struct FilterPass {
     e.child[0] = c[0];
     e.child[1] = c[1];
     e.children = static_cast<int>(out.children.size());
-    PlaneFilteredTree::ChildPair pair{lanes, {box(node.child[0]), box(node.child[1])}, {node.child[0], node.child[1]},
-                                      {PlaneFilteredTree::kDropped, PlaneFilteredTree::kDropped}};
     for (int k = 0; k < 2; ++k)
-      if (c[k] >= 0) pair.pair[k] = is_primitive(node.child[k]) ? PlaneFilteredTree::kPrimitive : out.entries[c[k]].children;
+      if (c[k] >= 0) pair.pair[k] = is_primitive(pair.ref[k]) ? PlaneFilteredTree::kPrimitive : out.entries[c[k]].children;
     out.children.push_back(pair);  // a dropped child's lanes are classified, never read
     return at;
   }
@@ -130,15 +143,21 @@ struct SubtreePass {
 
 }  // namespace
 
-void filter_by_two_planes(const Bvh& bvh, const Plane& a, const Plane& b, PlaneFilteredTree& out, TraceCounters& counters) {
+PreparedChildPairs::PreparedChildPairs(const Bvh& bvh) {
+  pairs_.reserve(bvh.nodes.size());
+  for (const BvhNode& node : bvh.nodes) pairs_.push_back(child_pair_of(bvh, node));
+}
+
+void filter_by_two_planes(const Bvh& bvh, const Plane& a, const Plane& b, PlaneFilteredTree& out, TraceCounters& counters,
+                          const PreparedChildPairs* prepared) {
   out.entries.clear();
   out.children.clear();
-  FilterPass pass{bvh, out, FourPlanes({a, b, a, b})};
+  FilterPass pass{bvh, out, prepared, FourPlanes({a, b, a, b})};
   out.root_box = BoxCentre(pass.box(bvh.root));
   std::uint8_t inside = 0;
   unsigned in, out_bits;
   pass.both.sides(out.root_box, in, out_bits);
-  out.root = survives_planes(in, out_bits, inside, pass.tests) ? pass.visit(bvh.root, inside) : -1;
+  out.root = survives_planes(in, out_bits, inside, pass.tests) ? pass.visit(bvh.root, inside, pass.box(bvh.root)) : -1;
   counters.plane_tests += pass.tests;
   counters.subtree_nodes += static_cast<std::int64_t>(out.entries.size());
 }

@@ -56,8 +56,21 @@ class PlaneFilteredTree {
   BoxCentre root_box;  // the root entry's box, prepared: every subregion of the row classifies it
 };
 
-// Filters the whole BVH by planes a and b (bits 0 and 1).
-void filter_by_two_planes(const Bvh& bvh, const Plane& a, const Plane& b, PlaneFilteredTree& out, TraceCounters& counters);
+// What a row's filter copies of each BVH node's two children (lanes, boxes, references; pairs
+// kDropped), worked out once per tree: none of it depends on a plane, and each row met it again.
+class PreparedChildPairs {
+ public:
+  explicit PreparedChildPairs(const Bvh& bvh);
+  const PlaneFilteredTree::ChildPair& of(NodeRef node) const { return pairs_[std::size_t(node)]; }
+
+ private:
+  std::vector<PlaneFilteredTree::ChildPair> pairs_;
+};
+
+// Filters the whole BVH by planes a and b (bits 0 and 1); with `prepared`, the children's lanes
+// are copied from it instead of being worked out (the same entries either way).
+void filter_by_two_planes(const Bvh& bvh, const Plane& a, const Plane& b, PlaneFilteredTree& out, TraceCounters& counters,
+                          const PreparedChildPairs* prepared = nullptr);
 
 // The subtree of the entries of `row` also inside planes c and d.
 void subtree_from_filtered(const PlaneFilteredTree& row, const Plane& c, const Plane& d, Subtree& out,

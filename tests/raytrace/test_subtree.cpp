@@ -91,5 +91,50 @@ TEST(Subtree, SameAsTheRecursivePassAndItsPacking) {
   }
 }
 
+// A row filtered with the children's lanes prepared once per tree holds the same entries and
+// pairs, bit for bit, and counts the same, as one that works them out per node.
+TEST(Subtree, RowFilterWithPreparedPairsIsTheSame) {
+  for (const char* name : {"spheres-a", "spheres-b", "spheres-random", "teapot", "teapots"}) {
+    const Scene scene = make_builtin_scene(name);
+    const Bvh bvh = build_bvh_by_clustering(scene);
+    const PreparedChildPairs prepared(bvh);
+    const int size = 64, tile = 8;
+    const Camera camera(scene.camera, size, size);
+    std::size_t entries = 0;
+    for (int y0 = 0; y0 < size; y0 += tile) {
+      const Plane a = camera.row_plane(y0), b = flipped(camera.row_plane(y0 + tile));
+      PlaneFilteredTree plain, fast;
+      TraceCounters plain_counts, fast_counts;
+      filter_by_two_planes(bvh, a, b, plain, plain_counts);
+      filter_by_two_planes(bvh, a, b, fast, fast_counts, &prepared);
+      EXPECT_EQ(fast_counts.plane_tests, plain_counts.plane_tests) << name;
+      EXPECT_EQ(fast_counts.subtree_nodes, plain_counts.subtree_nodes) << name;
+      ASSERT_EQ(fast.root, plain.root) << name;
+      ASSERT_EQ(fast.entries.size(), plain.entries.size()) << name;
+      ASSERT_EQ(fast.children.size(), plain.children.size()) << name;
+      for (std::size_t i = 0; i < plain.entries.size(); ++i) {
+        const auto &f = fast.entries[i], &p = plain.entries[i];
+        ASSERT_EQ(f.ref, p.ref) << name << " entry " << i;
+        ASSERT_EQ(f.inside, p.inside) << name << " entry " << i;
+        ASSERT_EQ(f.child[0], p.child[0]) << name << " entry " << i;
+        ASSERT_EQ(f.child[1], p.child[1]) << name << " entry " << i;
+        ASSERT_EQ(f.children, p.children) << name << " entry " << i;
+        ASSERT_EQ(std::memcmp(&f.bounds, &p.bounds, sizeof(Bounds3)), 0) << name << " entry " << i;
+      }
+      for (std::size_t i = 0; i < plain.children.size(); ++i) {
+        const auto &f = fast.children[i], &p = plain.children[i];
+        ASSERT_EQ(std::memcmp(&f.lanes, &p.lanes, sizeof f.lanes), 0) << name << " pair " << i;
+        ASSERT_EQ(std::memcmp(f.box, p.box, sizeof f.box), 0) << name << " pair " << i;
+        ASSERT_EQ(f.ref[0], p.ref[0]) << name << " pair " << i;
+        ASSERT_EQ(f.ref[1], p.ref[1]) << name << " pair " << i;
+        ASSERT_EQ(f.pair[0], p.pair[0]) << name << " pair " << i;
+        ASSERT_EQ(f.pair[1], p.pair[1]) << name << " pair " << i;
+      }
+      entries += plain.entries.size();
+    }
+    EXPECT_GT(entries, 0u) << name;
+  }
+}
+
 }  // namespace
 }  // namespace gcsim::raytrace
