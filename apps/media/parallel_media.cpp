@@ -17,13 +17,6 @@ std::size_t share_begin(std::size_t total, int node, int nodes) {
   return total * static_cast<std::size_t>(node) / static_cast<std::size_t>(nodes);
 }
 
-template <class T>
-std::vector<T> concatenate(const std::vector<std::vector<T>>& parts) {
-  std::vector<T> all;
-  for (const auto& part : parts) all.insert(all.end(), part.begin(), part.end());
-  return all;
-}
-
 // The photon map of these gathered photons: the one another node built from the same photons, or a new one.
 std::shared_ptr<const PhotonMap> photon_map_of(std::vector<Photon> all, std::shared_ptr<const PhotonMap>* shared) {
   if (shared && *shared) {
@@ -41,11 +34,9 @@ RegionCache build_region_parallel(parix::Processor& p, const std::vector<Photon>
                                   const HomogeneousMedium& medium, std::size_t k, std::uint64_t& photon_bytes,
                                   std::uint64_t& grid_bytes, std::vector<parix::MemoryReservation>& held,
                                   RenderCounters& counts, int jobs, std::shared_ptr<const PhotonMap>* shared) {
-  const auto parts = parix::allgather_vectors<Photon>(p, std::span<const Photon>(mine));
-  std::size_t photons = 0;
-  for (const auto& part : parts) photons += part.size();
-  held.push_back(p.reserve_memory(std::int64_t(photons * sizeof(Photon)), "photon map"));
-  std::vector<Photon> all = concatenate(parts);
+  // Concatenated straight out of the packet: one copy on the simulation's thread, not two.
+  std::vector<Photon> all = parix::allgather_concatenated<Photon>(p, std::span<const Photon>(mine));
+  held.push_back(p.reserve_memory(std::int64_t(all.size() * sizeof(Photon)), "photon map"));
   photon_bytes += all.size() * sizeof(Photon);
   RegionCache region;
   if (all.empty()) return region;
@@ -69,7 +60,7 @@ RegionCache build_region_parallel(parix::Processor& p, const std::vector<Photon>
   }
   held.push_back(p.reserve_memory(std::int64_t(voxels * sizeof(ShCoefficients)), "radiance grid"));
   region.grid = std::make_unique<RadianceGrid>(grid);
-  region.grid->voxels() = concatenate(parix::allgather_vectors<ShCoefficients>(p, std::span<const ShCoefficients>(my_voxels)));
+  region.grid->voxels() = parix::allgather_concatenated<ShCoefficients>(p, std::span<const ShCoefficients>(my_voxels));
   grid_bytes += voxels * sizeof(ShCoefficients);
   return region;
 }

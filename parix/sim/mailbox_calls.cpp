@@ -39,7 +39,11 @@ void SimProcess::await(std::span<const Request> requests, const WaitDescription&
   } unregister{this, requests};
   blocked_description = &call;
   while (!over()) block("await", peer);
-  stats_.comm += sim_.kernel.now() - start;
+  const machine::SimTime end = sim_.kernel.now();
+  stats_.comm += end - start;
+  // Mail that ended the wait is there since the await began (it returns at once otherwise): the
+  // part before its sender posted it is waiting. A finished send is the network's doing: none.
+  if (sim_.post_office.has_mail(id_)) stats_.waiting += waited_for_sender(sim_.post_office.oldest_posted(id_), start, end);
 }
 
 void SimProcess::occupy(SimTime duration, std::string_view label, bool as_comm) {

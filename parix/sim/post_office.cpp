@@ -5,7 +5,7 @@
 namespace gcsim::parix::detail {
 
 PostOffice::PostOffice(const Parts& parts)
-    : parts_(parts), boxes_(parts.stats.size()), waiters_(parts.stats.size(), nullptr) {}
+    : parts_(parts), boxes_(parts.stats.size()), waiters_(parts.stats.size(), nullptr), oldest_posted_(parts.stats.size(), 0) {}
 
 machine::SimTime PostOffice::connection_up(int a, int b) {
   const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
@@ -82,6 +82,7 @@ void PostOffice::deliver(InTransit&& t) {
     parts_.trace.record({machine::TraceKind::message, t.letter.source, static_cast<int>(dest), t.posted, parts_.kernel.now(),
                          static_cast<std::int64_t>(t.letter.data.size()), t.id, "message"});
   }
+  if (boxes_[dest].empty()) oldest_posted_[dest] = t.posted;
   boxes_[dest].push_back(std::move(t.letter));
   t.sent.state()->complete();
   if (Waiter* w = waiters_[dest]) w->wake();

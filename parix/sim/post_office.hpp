@@ -46,6 +46,9 @@ class PostOffice {
   // A collected letter's storage, done with: kept for later letters.
   void recycle(Bytes&& storage) { parts_.payloads.give(std::move(storage)); }
   bool has_mail(int processor) const { return !boxes_[static_cast<std::size_t>(processor)].empty(); }
+  // When the oldest letter in processor's box was posted (meaningful while has_mail): the sender's
+  // act that ended a wait for mail, for the waiting counter.
+  machine::SimTime oldest_posted(int processor) const { return oldest_posted_[static_cast<std::size_t>(processor)]; }
   // Who to wake when a letter arrives for processor (null: nobody waits).
   void set_waiter(int processor, Waiter* w) { waiters_[static_cast<std::size_t>(processor)] = w; }
 
@@ -73,6 +76,7 @@ class PostOffice {
   Parts parts_;
   std::vector<std::vector<Letter>> boxes_;
   std::vector<Waiter*> waiters_;
+  std::vector<machine::SimTime> oldest_posted_;  // per box, of its first letter
   std::map<std::pair<int, int>, machine::SimTime> up_;  // unordered pair (low, high) -> link up
   std::map<std::pair<int, int>, Ordered> ordered_;
   std::vector<Flying> flying_;

@@ -4,6 +4,7 @@
 // exactly 1 ms, and the rest of its blocked time is the message's transfer.
 #include <gtest/gtest.h>
 
+#include "parix/mailbox.hpp"
 #include "parix/sim/simulated_runtime.hpp"
 #include "tests/support/published_machine.hpp"
 
@@ -61,6 +62,35 @@ TEST(WaitingCounter, AConnectWaitsForItsPartnerToAsk) {
   EXPECT_EQ(r.processors[0].waiting, kMillisecond);
   EXPECT_EQ(r.processors[0].comm - r.processors[0].waiting, kConnectNeighbour);
   EXPECT_EQ(r.processors[1].waiting, 0);
+}
+
+// Addressed mail (the MPI layer's): an await ended by a letter waited until its sender posted it.
+RunResult mail_after(std::int64_t sender_cycles, std::int64_t receiver_cycles) {
+  return run_simulated(on_nodes(2), [&](Processor& p) {
+    Mailbox& box = *mailbox_of(p);
+    if (p.id() == 0) {
+      p.compute("cycle", sender_cycles);
+      Request sent = box.post(1, Envelope{}, {});
+      while (sent.state()->running()) box.await(std::span(&sent, 1), "send", 1);
+      return;
+    }
+    p.compute("cycle", receiver_cycles);
+    std::vector<Letter> got;
+    for (box.collect(got); got.empty(); box.collect(got)) box.await({}, "recv", 0);
+  });
+}
+
+TEST(WaitingCounter, AnAwaitForMailWaitsUntilThePeerPosts) {
+  const RunResult r = mail_after(kOneMillisecondOfCycles, 0);
+  EXPECT_EQ(r.processors[1].waiting, kMillisecond);
+  EXPECT_GT(r.processors[1].comm, r.processors[1].waiting);  // then the set-up and the transfer
+  EXPECT_EQ(r.processors[0].waiting, 0);  // its letter's delivery is the network's doing
+}
+
+TEST(WaitingCounter, MailAlreadyOnItsWayIsNoWaiting) {
+  const RunResult r = mail_after(0, 1);
+  EXPECT_EQ(r.processors[1].waiting, 0);
+  EXPECT_GT(r.processors[1].comm, 0);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include <glm/common.hpp>
@@ -39,12 +40,12 @@ namespace {
 // photons it projected, so that a split range counts each photon once, as one range does.
 std::vector<ShCoefficients> build_voxel_chunk(const UniformGrid& grid, const PhotonMap& map,
                                               const HomogeneousMedium& medium, std::size_t k, std::size_t first,
-                                              std::size_t last, GridBuildCounts& counts, std::vector<bool>& used) {
+                                              std::size_t last, GridBuildCounts& counts, std::vector<std::uint8_t>& used) {
   std::vector<ShCoefficients> voxels(last > first ? last - first : 0);
   const std::vector<Photon>& photons = map.photons();
   // ΔΦ_p w'_l Y_lm(ω_p) / σt per photon, made on first use: a voxel then adds 16 products per photon.
   std::vector<ShCoefficients> projected(photons.size());
-  used.assign(photons.size(), false);
+  used.assign(photons.size(), 0);
   const double voxel_width = grid.cell_size().x;
   double previous_radius = -1.0;  // r_k of the voxel before along x, or < 0: none
   for (std::size_t i = first; i < last; ++i) {
@@ -69,7 +70,7 @@ std::vector<ShCoefficients> build_voxel_chunk(const UniformGrid& grid, const Pho
     for (std::uint32_t p : n.indices) {
       if (!used[p]) {
         projected[p] = sh_project_photon(medium.phase, medium.sigma_t, photons[p].power, glm::dvec3(photons[p].direction));
-        used[p] = true;
+        used[p] = 1;
       }
       for (int c = 0; c < kShCoefficients; ++c) f[c] += projected[p][c] * inverse_volume;
     }
@@ -104,7 +105,7 @@ std::vector<ShCoefficients> build_voxel_range(const UniformGrid& grid, const Pho
   struct Chunk {
     std::vector<ShCoefficients> voxels;
     GridBuildCounts counts;
-    std::vector<bool> used;
+    std::vector<std::uint8_t> used;  // bytes, not bits: the merge below runs on the simulation's thread
   };
   std::vector<Chunk> parts(static_cast<std::size_t>(chunks));
   apps::parallel_for(chunks, jobs, [&](int c) {
@@ -114,13 +115,13 @@ std::vector<ShCoefficients> build_voxel_range(const UniformGrid& grid, const Pho
   });
   std::vector<ShCoefficients> voxels;
   voxels.reserve(last - first);
-  std::vector<bool> used(map.photons().size(), false);
+  std::vector<std::uint8_t> used(map.photons().size(), 0);
   for (Chunk& part : parts) {  // in range order: the same voxels and counts as one thread's
     voxels.insert(voxels.end(), part.voxels.begin(), part.voxels.end());
     counts.add(part.counts);
-    for (std::size_t p = 0; p < used.size(); ++p) used[p] = used[p] || part.used[p];
+    for (std::size_t p = 0; p < used.size(); ++p) used[p] |= part.used[p];
   }
-  counts.projections += static_cast<std::uint64_t>(std::count(used.begin(), used.end(), true));
+  counts.projections += static_cast<std::uint64_t>(std::count(used.begin(), used.end(), std::uint8_t{1}));
   return voxels;
 }
 
