@@ -70,7 +70,8 @@ void measure_media(const PlanFlags& f, const scene::SceneDescription& d, const P
   const std::string rows = s.row_stride > 1 ? fmt::format(", one pixel row in {} of each", s.row_stride) : "";
   model.media_measured = fmt::format(
       "{}, then one run of {} tiles in {} of the view ({} of\n"
-      "          {}{}) with and without the media, on the simulated machine: photons ~{:.3g} s ({}),\n"
+      "          {}{}) with and without the media, on the simulated machine:\n"
+      "          photons ~{:.3g} s ({}),\n"
       "          SH grid ~{:.3g} s (its counts scaled to every photon), marching ~{:.3g} s (the\n"
       "          difference, the nodes' mean work scaled to every tile); the view with them ~{:.3g} s.",
       photons_run, raytrace::kRunTiles, s.tile_stride, s.tiles_rendered, s.tiles, rows, s.photon_seconds, photons_how,
