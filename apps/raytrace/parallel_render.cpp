@@ -59,12 +59,14 @@ struct NodeWork {
   TileRenderer& renderer;  // this processor's own (state: row planes, classifier)
   TilePrefetch* prefetch = nullptr;  // --host-threads: tiles rendered ahead on the host
   int row_y0 = -1, row_y1 = -1;      // with prefetch: the row this node's tracer last filtered
+  int pixel_row_stride = 1;          // the plan's sample: one pixel row in k traced, its counts scaled to the tile
 
   // The tile's pixels and counts, as this node's tracer gives them: rendered now, or taken from
   // the prefetch with its row's planes counted only if the row is new to this node (as the
   // tracer's own row state decides).
   void render_tile(const Tiling::Rect& rect, int tile, std::vector<glm::vec3>& colors, std::vector<std::int32_t>& prims,
                    TraceCounters& c) {
+    if (!prefetch && pixel_row_stride > 1) return render_rows(rect, colors, prims, c);
     if (!prefetch) {
       renderer.render_tile(rect.x0, rect.y0, rect.x1, rect.y1, colors, prims, c);
       return;
@@ -78,6 +80,25 @@ struct NodeWork {
     row_y1 = rect.y1;
   }
 
+  // One pixel row in pixel_row_stride, each traced as a one-row tile; the counts are the tile's
+  // estimate (scaled in charge), the other rows stay black.
+  void render_rows(const Tiling::Rect& rect, std::vector<glm::vec3>& colors, std::vector<std::int32_t>& prims,
+                   TraceCounters& c) {
+    const int w = rect.x1 - rect.x0;
+    for (int y = rect.y0; y < rect.y1; y += pixel_row_stride) {
+      const std::size_t at = std::size_t(y - rect.y0) * std::size_t(w);
+      renderer.render_tile(rect.x0, y, rect.x1, y + 1, std::span(colors).subspan(at, std::size_t(w)),
+                           std::span(prims).subspan(at, std::size_t(w)), c);
+    }
+  }
+
+  // The tile's counts scaled from its sampled rows to all of them.
+  double row_scale(const Tiling::Rect& rect) const {
+    if (pixel_row_stride <= 1 || prefetch) return 1.0;
+    const int h = rect.y1 - rect.y0, traced = (h + pixel_row_stride - 1) / pixel_row_stride;
+    return double(h) / double(traced);
+  }
+
   parix::Bytes render(parix::Processor& p, int tile) {
     const auto rect = tiling.rect(tile);
     const parix::MemoryReservation buffers = p.reserve_memory(tile_buffer_bytes(rect.pixels()), "image tile");
@@ -86,8 +107,9 @@ struct NodeWork {
     TraceCounters c;
     render_tile(rect, tile, colors, prims, c);
     std::vector<parix::OpCount> ops;
+    const double scale = row_scale(rect);
     for (const auto& [name, count] : c.ops())
-      if (count > 0) ops.push_back({name, count});
+      if (count > 0) ops.push_back({name, scale == 1.0 ? count : std::llround(double(count) * scale)});
     p.compute(ops);
     out.per_node[p.id()] += c;
     ++out.tiles_per_node[p.id()];
@@ -245,6 +267,7 @@ void ParallelRenderJob::program(parix::Processor& p, ParallelRender& out, TilePr
   // Built here, by the processor that uses it (on the heap: fiber stacks are small).
   const auto renderer = std::make_unique<TileRenderer>(scene_, bvh_, settings_);
   NodeWork work{scene_, bvh_, settings_, Tiling{settings_.width, settings_.height, settings_.tile}, out, *renderer, prefetch};
+  work.pixel_row_stride = pixel_row_stride_;
   if (distribution_ == Distribution::dynamic) run_dynamic(p, work, order_, schedule_scale_);
   else run_static(p, work, distribution_);
 }
@@ -255,6 +278,8 @@ void ParallelRenderJob::sample_tiles(int stride) {
   order_ = sampled_tiles(tiling, stride, kRunTiles);
   schedule_scale_ = order_.empty() ? 1.0 : double(tiling.count()) / double(order_.size());
 }
+
+void ParallelRenderJob::sample_pixel_rows(int stride) { pixel_row_stride_ = std::max(stride, 1); }
 
 int ParallelRenderJob::tiles_rendered_per_run() const {
   return int(order_.size());

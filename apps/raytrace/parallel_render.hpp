@@ -83,6 +83,9 @@ class ParallelRenderJob {
   // that point, so that a node's tiles share their row planes as often as in the whole image. A
   // sample of the view whose cost `gcsim plan` scales up; other tiles stay black.
   void sample_tiles(int stride);
+  // Traces one pixel row in `stride` of every tile it renders and charges the tile's counts scaled
+  // to all its rows: each tile's cost estimated, the schedule's imbalance kept.
+  void sample_pixel_rows(int stride);
   int tiles_rendered_per_run() const;          // the tiles one run renders (all, or the sample's)
 
   // Node memory, declared before the host allocates it: every node's scene and tree, the 8-bit
@@ -98,6 +101,7 @@ class ParallelRenderJob {
   Distribution distribution_;
   std::vector<int> order_;  // the tiles the dynamic distribution hands out, in this order (every tile, or a sample)
   double schedule_scale_ = 1.0;  // image tiles per tile of order_ when runs are sized as the whole image's
+  int pixel_row_stride_ = 1;     // sample_pixel_rows'
 };
 
 // Runs the job on the simulated machine (for tests and callers without a pipeline), with

@@ -39,6 +39,8 @@ PhotonRun run_photons(const MediaSetup& media, const parix::SimulationOptions& m
 
 }  // namespace
 
+int march_row_stride(int tile_stride) { return std::max(1, 4 / std::max(tile_stride, 1)); }
+
 MediaSample sample_media(const scene::SceneDescription& d, const Plan& plan, const std::string& file,
                          const parix::SimulationOptions& machine, const MediaSampleOptions& o) {
   const auto start = std::chrono::steady_clock::now();
@@ -74,6 +76,7 @@ MediaSample sample_media(const scene::SceneDescription& d, const Plan& plan, con
   // node got two of the sphere's (its view 3.87 s against the render's 2.41 s).
   if (!setup.radiosity) in.node_start = node_end;
   in.tile_stride = o.tile_stride > 0 ? o.tile_stride : march_tile_stride(view_tile_count(d), machine.config.nodes, plan.facts.media_coverage >= 1.0);
+  in.pixel_row_stride = o.row_stride > 0 ? o.row_stride : march_row_stride(in.tile_stride);
   const SampledView with = run_sampled_view(in, machine);
   in.view.exposure = with.exposure;
   in.media = nullptr, in.photons = nullptr;
@@ -86,7 +89,7 @@ MediaSample sample_media(const scene::SceneDescription& d, const Plan& plan, con
   m.wall_power = photons.wall_power;
   for (radiosity::Rgb& w : m.wall_power) w *= scale;
   m.traced = big < n ? big : n;
-  m.tile_stride = in.tile_stride, m.tiles = with.tiles, m.tiles_rendered = with.rendered;
+  m.tile_stride = in.tile_stride, m.row_stride = in.pixel_row_stride, m.tiles = with.tiles, m.tiles_rendered = with.rendered;
   m.rendered_tiles = with.rendered_tiles;
   m.host_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return m;

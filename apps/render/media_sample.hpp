@@ -11,7 +11,8 @@
 //   marching the view's sample as view_sample.hpp takes it (sampled_view.hpp: one run of 4 tiles in
 //            k, on diagonals, the nodes' mean CPU time scaled to every tile, the waiting kept),
 //            rendered with the media (from the sample's photons) and without: the difference (the
-//            set-up cancels). Single tiles, the whole time scaled, put example.toml's marching
+//            set-up cancels), one pixel row in 4 of each sampled tile, its counts scaled to the
+//            tile (march_row_stride). Single tiles, the whole time scaled, put example.toml's marching
 //            23 % high on 8 nodes (1.53 s against 1.25 s).
 //            Without a radiosity pass each node starts its view where its photon pass ends (each
 //            node's end through the two points), as in the render: which node asks for tiles first
@@ -33,7 +34,16 @@ struct MediaSampleOptions {
   std::size_t photons = 50000;  // the render's (--photons); render_setup.hpp's kDefaultPhotons
   int photon_divisor = 8;       // the sample traces photons / this, and half of that; 1: every photon
   int tile_stride = 0;          // one run of tiles in k; 0: chosen (march_tile_stride); 1: every tile
+  int row_stride = 0;           // one pixel row in k of each sampled tile marched; 0: chosen (march_row_stride); 1: every row
 };
+
+// The marching's pixel rows, chosen: one in max(1, 4 / K) of each tile of a sample that marches one
+// run of tiles in K, so that at least a quarter of the image's pixels are marched. Where the sample is
+// every tile (few tiles a node: MEDIA-SMALL on 8 and 64 nodes, CORNELL-FOG on 64), one row in 4 moved
+// the media row by -2.7 % and -0.2 % (MEDIA-SMALL, 8 and 64 nodes) and +0.8 % (CORNELL-FOG, 64) for a
+// quarter of the marching's host time; on top of one run of tiles in 4 (a sixteenth of the pixels) it
+// put a 96 x 64 MEDIA-SMALL's marching +15 % high (apps/render/README.md).
+int march_row_stride(int tile_stride);
 
 struct MediaSample {
   double photon_seconds = 0;  // the photon pass (last node's end), extrapolated to every photon
@@ -44,6 +54,7 @@ struct MediaSample {
   std::vector<radiosity::Rgb> wall_power;  // the deposits scaled to every photon (empty: none)
   std::size_t traced = 0;     // photons of the larger sample
   int tile_stride = 1, tiles_rendered = 0, tiles = 0;
+  int row_stride = 1;         // pixel rows: one in this many of each sampled tile
   std::vector<int> rendered_tiles;  // which (raytrace/tile_sample.hpp), in index order
   double host_seconds = 0;    // wall time the samples took
   double seconds() const { return photon_seconds + grid_seconds + march_seconds; }  // the plan's media pass

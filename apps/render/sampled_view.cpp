@@ -63,6 +63,7 @@ SampledView run_sampled_view(const SampledViewInput& in, const parix::Simulation
       v = make_view_pass(s.split.surfaces, s.mesh_or_null(), in.radiosity, in.view, p.count(), in.media,
                          in.photons ? *in.photons : std::move(g.per_region));
       v->job->sample_tiles(in.tile_stride);
+      v->job->sample_pixel_rows(in.pixel_row_stride);
     }
     if (!in.node_start.empty()) reach(p, machine, in.node_start[std::size_t(p.id())]);
     if (v->medium) charge_grid_share(p, scaled_counts(v->medium->grid_build(), in.grid_scale));

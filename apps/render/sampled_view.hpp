@@ -41,6 +41,7 @@ struct SampledViewInput {
   const std::vector<std::vector<media::Photon>>* photons = nullptr;
   double grid_scale = 1.0;
   int tile_stride = 1;
+  int pixel_row_stride = 1;  // one pixel row in k of each tile traced, its counts scaled (ParallelRenderJob::sample_pixel_rows)
   // When each node reaches its view (before its SH grid share), as the render's: there the view
   // starts where the node's photon pass ends, and who asks node 0 for tiles first decides which node
   // gets which tile. Empty: every node at 0.

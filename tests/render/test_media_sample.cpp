@@ -62,7 +62,7 @@ TEST(MediaSample, ASampleOfEveryPhotonAndTilePredictsThePassExactly) {
   // sample's nodes must start their view when the render's do (at their photon pass's end).
   for (int nodes : {1, 3, 32}) {
     SCOPED_TRACE(nodes);
-    const MediaSample s = sample_media(d, plan, kSmall, published_machine(nodes), {.photons = 3000, .photon_divisor = 1, .tile_stride = 1});
+    const MediaSample s = sample_media(d, plan, kSmall, published_machine(nodes), {.photons = 3000, .photon_divisor = 1, .tile_stride = 1, .row_stride = 1});
     ASSERT_EQ(s.tiles_rendered, s.tiles);
     const Sampled r = render_sampled(d, nodes, 3000);
     EXPECT_DOUBLE_EQ(s.photon_seconds, r.photons_end);
@@ -119,6 +119,38 @@ TEST(MediaSample, ThePlansMediaRowLandsNearTheRenders) {
   ASSERT_EQ(s.tiles_rendered * 4, s.tiles);
   EXPECT_NEAR(s.march_seconds, marching, 0.1 * marching);
   EXPECT_NEAR(s.seconds(), r.view_start + marching, 0.1 * (r.view_start + marching));
+}
+
+// One pixel row in 4 of every tile (the plan's choice where the sample is every tile) against every
+// row, on the same tiles and photons: the photons and the SH grid are untouched, the marching moves
+// by a few per cent (a tile's work is its pixels' radiance estimates, which its rows sample), and it
+// is a sample, not a rerun of every row.
+TEST(MediaSample, MarchingOneRowInFourLandsNearEveryRow) {
+  const scene::SceneDescription d = small_scene();
+  const Plan plan = make_plan(d);
+  for (int nodes : {1, 4}) {
+    SCOPED_TRACE(nodes);
+    const MediaSampleOptions every{.photons = 4000, .photon_divisor = 4, .tile_stride = 1, .row_stride = 1};
+    MediaSampleOptions chosen = every;
+    chosen.row_stride = 0;
+    const MediaSample a = sample_media(d, plan, kSmall, published_machine(nodes), every);
+    const MediaSample b = sample_media(d, plan, kSmall, published_machine(nodes), chosen);
+    EXPECT_EQ(b.row_stride, 4);
+    EXPECT_EQ(b.rendered_tiles, a.rendered_tiles);
+    EXPECT_EQ(b.photon_seconds, a.photon_seconds);
+    EXPECT_EQ(b.grid_seconds, a.grid_seconds);
+    EXPECT_NE(b.march_seconds, a.march_seconds);
+    EXPECT_NEAR(b.march_seconds, a.march_seconds, 0.08 * a.march_seconds);
+  }
+}
+
+// At least a quarter of the pixels marched: rows thin out only as far as the tiles do not.
+TEST(MediaSample, TheRowStrideKeepsAQuarterOfThePixels) {
+  EXPECT_EQ(march_row_stride(1), 4);
+  EXPECT_EQ(march_row_stride(2), 2);
+  EXPECT_EQ(march_row_stride(3), 1);
+  EXPECT_EQ(march_row_stride(4), 1);
+  EXPECT_EQ(march_row_stride(8), 1);
 }
 
 TEST(MediaSample, TheSameSampleTwiceGivesTheSameFigures) {

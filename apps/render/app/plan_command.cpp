@@ -31,6 +31,7 @@ struct PlanFlags {
   int sample_loops = 8;
   int sample_photons = 8;
   int sample_tiles = -1;  // -1: chosen (sample_tile_stride); 0: count operations
+  int sample_rows = 0;  // the marching's pixel rows: one in this many of each sampled tile; 0: chosen (march_row_stride)
   std::size_t photons = kDefaultPhotons;
 };
 
@@ -45,6 +46,7 @@ void measure_media(const PlanFlags& f, const scene::SceneDescription& d, const P
   const std::size_t per_node_floor = 256 * std::size_t(std::max(nodes, 1));
   o.photon_divisor = int(std::clamp<std::size_t>(f.photons / per_node_floor, 1, std::size_t(f.sample_photons)));
   o.tile_stride = std::max(f.sample_tiles, 0);  // the view's sample, when given
+  o.row_stride = f.sample_rows;
   try {
     s = sample_media(d, plan, f.scene, pipeline::simulation_options(f.machine, nodes), o);
   } catch (const std::invalid_argument& e) {
@@ -57,19 +59,22 @@ void measure_media(const PlanFlags& f, const scene::SceneDescription& d, const P
   model.media_march_seconds = s.march_seconds;
   // The photons' and the marching's sampled fractions, each part's share of the row.
   const double photons_u = sampled_fraction_uncertainty(double(s.traced) / double(std::max<std::size_t>(f.photons, 1)));
-  const double march_u = sampled_fraction_uncertainty(double(s.tiles_rendered) / std::max(s.tiles, 1));
+  const double march_u =
+      sampled_fraction_uncertainty(double(s.tiles_rendered) / std::max(s.tiles, 1) / double(std::max(s.row_stride, 1)));
   model.media_uncertainty = s.seconds() > 0 ? (photons_u * s.photon_seconds + march_u * (s.grid_seconds + s.march_seconds)) / s.seconds() : 0;
   // One run of every photon when the sample is all of them (--sample-photons 1, or few photons a node).
   const bool all_photons = s.traced >= f.photons;
   const std::string photons_run = all_photons ? fmt::format("all {} photons traced once", f.photons)
                                               : fmt::format("{} and {} of the {} photons traced", s.traced / 2, s.traced, f.photons);
   const std::string photons_how = all_photons ? "as traced" : "linear in the photons through the two";
+  const std::string rows = s.row_stride > 1 ? fmt::format(", one pixel row in {} of each", s.row_stride) : "";
   model.media_measured = fmt::format(
       "{}, then one run of {} tiles in {} of the view ({} of\n"
-      "          {}) with and without the media, on the simulated machine: photons ~{:.3g} s ({}),\n"
+      "          {}{}) with and without the media, on the simulated machine:\n"
+      "          photons ~{:.3g} s ({}),\n"
       "          SH grid ~{:.3g} s (its counts scaled to every photon), marching ~{:.3g} s (the\n"
       "          difference, the nodes' mean work scaled to every tile); the view with them ~{:.3g} s.",
-      photons_run, raytrace::kRunTiles, s.tile_stride, s.tiles_rendered, s.tiles, s.photon_seconds, photons_how,
+      photons_run, raytrace::kRunTiles, s.tile_stride, s.tiles_rendered, s.tiles, rows, s.photon_seconds, photons_how,
       s.grid_seconds, s.march_seconds, s.view_seconds);
 }
 
@@ -132,6 +137,11 @@ void add_plan_command(pipeline::CommandGroups& g) {
                   "default: K chosen (up to 4, at least 16 tiles a node); 1: every tile (exact); 0: count\n"
                   "operations instead. The media's marching is measured on the same tiles (K chosen when 0)")
       ->check(CLI::Range(0, 1000));
+  cmd->add_option("--sample-rows", f->sample_rows,
+                  "R: the media's marching on the sampled tiles traces one pixel row in R of each tile and\n"
+                  "scales its work to the tile (most of a plan's host time is that marching); default: R\n"
+                  "chosen (4 where every tile is sampled, 2 for one run in 2, else 1); 1: every row")
+      ->check(CLI::Range(1, 1000));
   cmd->add_option("--photons", f->photons, "photons the render will emit (gcsim render --photons)")
       ->capture_default_str()
       ->check(pipeline::positive_number())
