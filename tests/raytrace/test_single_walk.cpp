@@ -55,7 +55,8 @@ void reference_walk(const Scene& s, const PackedTree& tree, const Ray& ray, Hit&
   if (tree.empty) return;
   if (is_primitive(tree.root)) return test_primitive(s, primitive_of(tree.root), ray, hit, tally);
   struct Entry { NodeRef node; float entry; };
-  std::vector<Entry> stack;
+  std::vector<Entry> stack;  // reserved, and the children found in a fixed pair: no allocation per
+  stack.reserve(64);         // node, which made this test 40 times slower under ASan than in release
   float entry;
   ++tally.boxes;
   if (!intersect_box(tree.root_box, ray, hit.t, &entry)) return;
@@ -67,17 +68,18 @@ void reference_walk(const Scene& s, const PackedTree& tree, const Ray& ray, Hit&
     const PairNode& n = tree.nodes[e.node];
     for (int i = 0; i < 2; ++i)
       if (is_primitive(n.child[i])) test_primitive(s, primitive_of(n.child[i]), ray, hit, tally);
-    std::vector<Entry> found;
+    Entry found[2];
+    int count = 0;
     for (int i = 0; i < 2; ++i) {
       if (is_primitive(n.child[i])) continue;
       ++tally.boxes;
-      if (plain_box(n, i, ray, hit.t, &entry)) found.push_back({n.child[i], entry});
+      if (plain_box(n, i, ray, hit.t, &entry)) found[count++] = {n.child[i], entry};
     }
-    if (found.size() == 2) {
+    if (count == 2) {
       ++tally.sorts;
       if (found[0].entry < found[1].entry) std::swap(found[0], found[1]);  // the farther below
     }
-    for (const Entry& f : found) stack.push_back(f);
+    for (int i = 0; i < count; ++i) stack.push_back(found[i]);
   }
 }
 
