@@ -66,7 +66,6 @@ struct NodeWork {
   // tracer's own row state decides).
   void render_tile(const Tiling::Rect& rect, int tile, std::vector<glm::vec3>& colors, std::vector<std::int32_t>& prims,
                    TraceCounters& c) {
-    if (!prefetch && pixel_row_stride > 1) return render_rows(rect, colors, prims, c);
     if (!prefetch) {
       renderer.render_tile(rect.x0, rect.y0, rect.x1, rect.y1, colors, prims, c);
       return;
@@ -80,23 +79,18 @@ struct NodeWork {
     row_y1 = rect.y1;
   }
 
-  // One pixel row in pixel_row_stride, each traced as a one-row tile; the counts are the tile's
-  // estimate (scaled in charge), the other rows stay black.
-  void render_rows(const Tiling::Rect& rect, std::vector<glm::vec3>& colors, std::vector<std::int32_t>& prims,
-                   TraceCounters& c) {
+  // One pixel row in pixel_row_stride, each traced as a one-row tile, the other rows left black;
+  // returns the factor from the rows traced to the tile's (its counts are charged scaled by it).
+  double render_rows(const Tiling::Rect& rect, std::vector<glm::vec3>& colors, std::vector<std::int32_t>& prims,
+                     TraceCounters& c) {
     const int w = rect.x1 - rect.x0;
-    for (int y = rect.y0; y < rect.y1; y += pixel_row_stride) {
+    int traced = 0;
+    for (int y = rect.y0; y < rect.y1; y += pixel_row_stride, ++traced) {
       const std::size_t at = std::size_t(y - rect.y0) * std::size_t(w);
       renderer.render_tile(rect.x0, y, rect.x1, y + 1, std::span(colors).subspan(at, std::size_t(w)),
                            std::span(prims).subspan(at, std::size_t(w)), c);
     }
-  }
-
-  // The tile's counts scaled from its sampled rows to all of them.
-  double row_scale(const Tiling::Rect& rect) const {
-    if (pixel_row_stride <= 1 || prefetch) return 1.0;
-    const int h = rect.y1 - rect.y0, traced = (h + pixel_row_stride - 1) / pixel_row_stride;
-    return double(h) / double(traced);
+    return double(rect.y1 - rect.y0) / double(std::max(traced, 1));
   }
 
   parix::Bytes render(parix::Processor& p, int tile) {
@@ -105,9 +99,11 @@ struct NodeWork {
     std::vector<glm::vec3> colors(rect.pixels());
     std::vector<std::int32_t> prims(rect.pixels());
     TraceCounters c;
-    render_tile(rect, tile, colors, prims, c);
+    // The plan's row sample runs without host threads (a prefetched tile is whole).
+    double scale = 1.0;
+    if (pixel_row_stride > 1 && !prefetch) scale = render_rows(rect, colors, prims, c);
+    else render_tile(rect, tile, colors, prims, c);
     std::vector<parix::OpCount> ops;
-    const double scale = row_scale(rect);
     for (const auto& [name, count] : c.ops())
       if (count > 0) ops.push_back({name, scale == 1.0 ? count : std::llround(double(count) * scale)});
     p.compute(ops);
@@ -229,6 +225,7 @@ void run_dynamic(parix::Processor& p, NodeWork& work, const std::vector<int>& or
 ParallelRenderJob::ParallelRenderJob(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                                      Distribution distribution)
     : scene_(scene), bvh_(bvh), settings_(settings), distribution_(distribution) {
+  if (uses_subtree(settings_.algorithm)) pairs_ = std::make_shared<const PreparedChildPairs>(bvh_);
   for (int t = 0; t < Tiling{settings_.width, settings_.height, settings_.tile}.count(); ++t) order_.push_back(t);
 }
 
@@ -265,7 +262,7 @@ void ParallelRenderJob::program(parix::Processor& p, ParallelRender& out, TilePr
   const parix::MemoryReservation scene = p.reserve_memory(scene_bytes(), "scene");
   const parix::MemoryReservation image = p.reserve_memory(p.id() == 0 ? image_bytes() : 0, "image");
   // Built here, by the processor that uses it (on the heap: fiber stacks are small).
-  const auto renderer = std::make_unique<TileRenderer>(scene_, bvh_, settings_);
+  const auto renderer = std::make_unique<TileRenderer>(scene_, bvh_, settings_, pairs_.get());
   NodeWork work{scene_, bvh_, settings_, Tiling{settings_.width, settings_.height, settings_.tile}, out, *renderer, prefetch};
   work.pixel_row_stride = pixel_row_stride_;
   if (distribution_ == Distribution::dynamic) run_dynamic(p, work, order_, schedule_scale_);

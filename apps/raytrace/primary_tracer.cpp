@@ -33,11 +33,15 @@ struct PrimaryTracer::Region {
   char& done(int x, int y) { return traced[std::size_t(y - y0) * width + (x - x0)]; }
 };
 
-PrimaryTracer::PrimaryTracer(const Scene& scene, const Bvh& bvh, const Camera& camera, Algorithm algorithm)
-    : scene_(scene), bvh_(bvh), camera_(camera), algorithm_(algorithm) {
+PrimaryTracer::PrimaryTracer(const Scene& scene, const Bvh& bvh, const Camera& camera, Algorithm algorithm,
+                             const PreparedChildPairs* shared_pairs)
+    : scene_(scene), bvh_(bvh), camera_(camera), algorithm_(algorithm), pairs_(shared_pairs) {
   if (algorithm == Algorithm::B1) classifier_ = std::make_unique<RayClassifier>(scene, bvh, camera);
   if (algorithm == Algorithm::A4) occlusion_ = std::make_unique<OcclusionCheck>(scene, bvh, camera);
-  if (uses_subtree(algorithm)) pairs_ = std::make_unique<PreparedChildPairs>(bvh);
+  if (uses_subtree(algorithm) && !pairs_) {
+    own_pairs_ = std::make_unique<PreparedChildPairs>(bvh);
+    pairs_ = own_pairs_.get();
+  }
 }
 
 void PrimaryTracer::trace_pixel(int x, int y, Hit& hit, TestTally& tally, TraceCounters& counters) {
@@ -122,7 +126,7 @@ void PrimaryTracer::trace_tile(int x0, int y0, int x1, int y1, std::vector<Hit>&
   if (uses_subtree(algorithm_)) {
     if (y0 != row_y0_ || y1 != row_y1_) {  // a new row of subregions: its two shared planes
       row_cost_ = TraceCounters{};
-      filter_by_two_planes(bvh_, camera_.row_plane(y0), flipped(camera_.row_plane(y1)), row_, row_cost_, pairs_.get());
+      filter_by_two_planes(bvh_, camera_.row_plane(y0), flipped(camera_.row_plane(y1)), row_, row_cost_, pairs_);
       row_y0_ = y0;
       row_y1_ = y1;
       if (!row_counters) counters += row_cost_;

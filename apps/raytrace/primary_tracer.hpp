@@ -21,7 +21,10 @@ namespace gcsim::raytrace {
 
 class PrimaryTracer {
  public:
-  PrimaryTracer(const Scene& scene, const Bvh& bvh, const Camera& camera, Algorithm algorithm);
+  // shared_pairs: the tree's child pairs for the row filter, shared by every tracer of one render
+  // (null: this tracer prepares its own when its algorithm filters rows).
+  PrimaryTracer(const Scene& scene, const Bvh& bvh, const Camera& camera, Algorithm algorithm,
+                const PreparedChildPairs* shared_pairs = nullptr);
 
   // Hits of the pixels of [x0, x1) x [y0, y1), row-major in `hits`. The row's two planes are
   // counted in `counters` when the tile starts a new row; with `row_counters`, they are counted
@@ -58,7 +61,8 @@ class PrimaryTracer {
   bool packets_ = true;
   int row_y0_ = -1, row_y1_ = -1;
   TraceCounters row_cost_;  // what filtering the current row by its two planes counted
-  std::unique_ptr<PreparedChildPairs> pairs_;  // what every row's filter copies of the BVH's nodes
+  std::unique_ptr<PreparedChildPairs> own_pairs_;  // when none was shared
+  const PreparedChildPairs* pairs_ = nullptr;      // what every row's filter copies of the BVH's nodes
   PlaneFilteredTree row_;
   Subtree subtree_;
   std::unique_ptr<RayClassifier> classifier_;

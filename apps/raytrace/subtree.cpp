@@ -34,12 +34,14 @@ struct PlaneVerdicts {
 };
 constexpr PlaneVerdicts kVerdicts;
 
+// The box of a BVH node or of a primitive.
+const Bounds3& box_of(const Bvh& bvh, NodeRef r) {
+  return is_primitive(r) ? bvh.prim_bounds[primitive_of(r)] : bvh.nodes[r].box;
+}
+
 PlaneFilteredTree::ChildPair child_pair_of(const Bvh& bvh, const BvhNode& node) {
-  const auto box = [&](NodeRef r) -> const Bounds3& {
-    return is_primitive(r) ? bvh.prim_bounds[primitive_of(r)] : bvh.nodes[r].box;
-  };
-  const Bounds3& a = box(node.child[0]);
-  const Bounds3& b = box(node.child[1]);
+  const Bounds3& a = box_of(bvh, node.child[0]);
+  const Bounds3& b = box_of(bvh, node.child[1]);
   return {BoxLanes(BoxCentre(a), BoxCentre(b)), {a, b}, {node.child[0], node.child[1]},
           {PlaneFilteredTree::kDropped, PlaneFilteredTree::kDropped}};
 }
@@ -52,8 +54,6 @@ struct FilterPass {
   // Both children of a node classified in one pass (lanes 2 and 3 repeat the planes).
   FourPlanes both;
   std::int64_t tests = 0;
-
-  const Bounds3& box(NodeRef r) const { return is_primitive(r) ? bvh.prim_bounds[primitive_of(r)] : bvh.nodes[r].box; }
 
   // The entry of r, which survives with flags `inside` and has box `bounds`; -1 when nothing
   // below it does. A node's children are classified here, both at once, in the lanes the row
@@ -153,11 +153,11 @@ void filter_by_two_planes(const Bvh& bvh, const Plane& a, const Plane& b, PlaneF
   out.entries.clear();
   out.children.clear();
   FilterPass pass{bvh, out, prepared, FourPlanes({a, b, a, b})};
-  out.root_box = BoxCentre(pass.box(bvh.root));
+  out.root_box = BoxCentre(box_of(bvh, bvh.root));
   std::uint8_t inside = 0;
   unsigned in, out_bits;
   pass.both.sides(out.root_box, in, out_bits);
-  out.root = survives_planes(in, out_bits, inside, pass.tests) ? pass.visit(bvh.root, inside, pass.box(bvh.root)) : -1;
+  out.root = survives_planes(in, out_bits, inside, pass.tests) ? pass.visit(bvh.root, inside, box_of(bvh, bvh.root)) : -1;
   counters.plane_tests += pass.tests;
   counters.subtree_nodes += static_cast<std::int64_t>(out.entries.size());
 }

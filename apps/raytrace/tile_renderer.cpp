@@ -10,9 +10,10 @@
 
 namespace gcsim::raytrace {
 
-TileRenderer::TileRenderer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings)
+TileRenderer::TileRenderer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                           const PreparedChildPairs* shared_pairs)
     : scene_(scene), bvh_(bvh), settings_(settings), camera_(scene.camera, settings.width, settings.height),
-      primary_(scene, bvh, camera_, settings.algorithm) {}
+      primary_(scene, bvh, camera_, settings.algorithm, shared_pairs) {}
 
 void TileRenderer::render_tile(int x0, int y0, int x1, int y1, std::span<glm::vec3> colors, std::span<std::int32_t> prims,
                                TraceCounters& counters, TraceCounters* row_counters) {

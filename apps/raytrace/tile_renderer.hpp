@@ -22,7 +22,9 @@ namespace gcsim::raytrace {
 
 class TileRenderer {
  public:
-  TileRenderer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings);
+  // shared_pairs: see PrimaryTracer.
+  TileRenderer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+               const PreparedChildPairs* shared_pairs = nullptr);
 
   // Colours (linear RGB) and primary hit ids (-1: background) of [x0, x1) x [y0, y1), row-major.
   // row_counters: see PrimaryTracer::trace_tile.
