@@ -2,24 +2,23 @@
 
 namespace gcsim::machine {
 
-void Node::compute(SimTime duration, Kernel::Action on_done) {
-  Job job{duration, std::move(on_done)};
-  if (free_cpus_ > 0) start(std::move(job));
-  else waiting_.push_back(std::move(job));
+void Node::compute(SimTime duration, Kernel::Action&& on_done) {
+  if (free_cpus_ > 0) start(duration, std::move(on_done));  // moved once, into its running slot
+  else waiting_.push_back({duration, std::move(on_done)});
 }
 
-void Node::start(Job job) {
+void Node::start(SimTime duration, Kernel::Action&& on_done) {
   --free_cpus_;
   std::uint32_t slot = 0;
   if (free_slots_.empty()) {
     slot = static_cast<std::uint32_t>(running_.size());
-    running_.push_back(std::move(job.on_done));
+    running_.push_back(std::move(on_done));
   } else {
     slot = free_slots_.back();
     free_slots_.pop_back();
-    running_[slot] = std::move(job.on_done);
+    running_[slot].fill(std::move(on_done));  // emptied by finish()
   }
-  kernel_->after(job.duration, [this, slot] { finish(slot); });
+  kernel_->after(duration, [this, slot] { finish(slot); });
 }
 
 void Node::finish(std::uint32_t slot) {
@@ -29,7 +28,7 @@ void Node::finish(std::uint32_t slot) {
   if (!waiting_.empty()) {
     Job next = std::move(waiting_.front());
     waiting_.pop_front();
-    start(std::move(next));
+    start(next.duration, std::move(next.on_done));
   }
   done();
 }

@@ -17,7 +17,7 @@ class Node {
       : kernel_(&kernel), free_cpus_(cpus), memory_(memory_bytes, limit) {}
 
   // Runs `duration` of work on one of the node's CPUs; on_done runs when it is finished.
-  void compute(SimTime duration, Kernel::Action on_done);
+  void compute(SimTime duration, Kernel::Action&& on_done);
 
   NodeMemory& memory() { return memory_; }
   const NodeMemory& memory() const { return memory_; }
@@ -27,7 +27,7 @@ class Node {
     SimTime duration;
     Kernel::Action on_done;
   };
-  void start(Job job);
+  void start(SimTime duration, Kernel::Action&& on_done);  // on a free CPU
   void finish(std::uint32_t slot);
   Kernel* kernel_;
   int free_cpus_;
