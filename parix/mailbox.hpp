@@ -48,6 +48,8 @@ class WaitDescription {
 class Mailbox {
  public:
   virtual Request post(int dest, const Envelope& envelope, std::span<const std::byte> data) = 0;
+  // post() for a letter whose delivery nobody waits for (an eager message): no request to make.
+  virtual void send(int dest, const Envelope& envelope, std::span<const std::byte> data) { post(dest, envelope, data); }
   // Appends every letter that arrived since the last call to into, in arrival order.
   virtual void collect(std::vector<Letter>& into) = 0;
   // A collected letter's data, read: its storage goes back for later letters (or is freed).

@@ -9,7 +9,14 @@ Request SimProcess::post(int dest, const Envelope& envelope, std::span<const std
   if (dest < 0 || dest >= count()) {
     throw ParixError(fmt::format("processor {}: post to processor {}, which does not exist (0..{})", id_, dest, count() - 1));
   }
-  return sim_.post_office.post(id_, dest, envelope, data);
+  return sim_.post_office.post(id_, dest, envelope, data, true);
+}
+
+void SimProcess::send(int dest, const Envelope& envelope, std::span<const std::byte> data) {
+  if (dest < 0 || dest >= count()) {
+    throw ParixError(fmt::format("processor {}: post to processor {}, which does not exist (0..{})", id_, dest, count() - 1));
+  }
+  sim_.post_office.post(id_, dest, envelope, data, false);
 }
 
 void SimProcess::collect(std::vector<Letter>& into) { sim_.post_office.collect(id_, into); }

@@ -8,7 +8,7 @@ PostOffice::PostOffice(const Parts& parts)
     : parts_(parts), boxes_(parts.stats.size()), waiters_(parts.stats.size(), nullptr), oldest_posted_(parts.stats.size(), 0) {}
 
 machine::SimTime PostOffice::connection_up(int a, int b) {
-  const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
+  const std::uint64_t key = pair_key(std::min(a, b), std::max(a, b));
   const auto it = up_.find(key);
   if (it != up_.end()) return it->second;
   const machine::SimTime now = parts_.kernel.now();
@@ -22,11 +22,14 @@ machine::SimTime PostOffice::connection_up(int a, int b) {
   return up;
 }
 
-Request PostOffice::post(int source, int dest, const Envelope& envelope, std::span<const std::byte> data) {
-  Request sent = parts_.requests.take();
-  sent.state()->peer = dest;
+Request PostOffice::post(int source, int dest, const Envelope& envelope, std::span<const std::byte> data, bool watched) {
+  Request sent;
+  if (watched) {
+    sent = parts_.requests.take();
+    sent.state()->peer = dest;
+  }
   const std::int64_t id = next_id_++;
-  Ordered& order = ordered_[{source, dest}];
+  Ordered& order = ordered_[pair_key(source, dest)];
   std::uint32_t slot = 0;
   if (free_slots_.empty()) {
     slot = static_cast<std::uint32_t>(flying_.size());
@@ -37,7 +40,9 @@ Request PostOffice::post(int source, int dest, const Envelope& envelope, std::sp
   }
   Flying& f = flying_[slot];
   f.seq = order.sent++;
+  f.order = &order;
   f.transit.letter.source = source;
+  f.transit.dest = dest;
   f.transit.letter.envelope = envelope;
   parts_.payloads.copy_into(f.transit.letter.data, data);
   f.transit.sent = sent;
@@ -48,7 +53,8 @@ Request PostOffice::post(int source, int dest, const Envelope& envelope, std::sp
   parts_.stats[source].bytes_sent += bytes;
   const int from = parts_.node_of[source];
   const int to = parts_.node_of[dest];
-  const machine::SimTime up = connection_up(source, dest);
+  if (order.up < 0) order.up = connection_up(source, dest);  // fixed once asked: no look-up per letter
+  const machine::SimTime up = order.up;
   if (source == dest) {
     parts_.kernel.at(parts_.kernel.now(), [this, slot] { arrive(slot); });
   } else if (from == to) {  // another processor of the node: no network, the models' zero-hop time
@@ -68,23 +74,23 @@ void PostOffice::leave(std::uint32_t slot, int from_node, int to_node, std::int6
 void PostOffice::arrive(std::uint32_t slot) {
   Flying& f = flying_[slot];
   const std::int64_t seq = f.seq;
+  Ordered& order = *f.order;
   InTransit t = std::move(f.transit);
   f.transit.letter.data = {};  // moved from: left empty for the next letter's copy
   f.transit.sent = {};
   free_slots_.push_back(slot);
-  Ordered& order = ordered_[{t.letter.source, static_cast<int>(t.sent.state()->peer)}];
   order.delivery.arrive(seq, std::move(t), [this](InTransit&& m) { deliver(std::move(m)); });
 }
 
 void PostOffice::deliver(InTransit&& t) {
-  const auto dest = static_cast<std::size_t>(t.sent.state()->peer);
+  const auto dest = static_cast<std::size_t>(t.dest);
   if (parts_.trace.enabled()) {
     parts_.trace.record({machine::TraceKind::message, t.letter.source, static_cast<int>(dest), t.posted, parts_.kernel.now(),
                          static_cast<std::int64_t>(t.letter.data.size()), t.id, "message"});
   }
   if (boxes_[dest].empty()) oldest_posted_[dest] = t.posted;
   boxes_[dest].push_back(std::move(t.letter));
-  t.sent.state()->complete();
+  if (t.sent.valid()) t.sent.state()->complete();
   if (Waiter* w = waiters_[dest]) w->wake();
 }
 

@@ -8,7 +8,6 @@
 // connection and no network: it arrives after the network model's zero-hop time, its set-up
 // (NetworkModel::uncontended_time(0, n) = [network] message_setup).
 #include <cstdint>
-#include <map>
 #include <span>
 #include <unordered_map>
 #include <utility>
@@ -41,7 +40,8 @@ class PostOffice {
   };
   explicit PostOffice(const Parts& parts);
 
-  Request post(int source, int dest, const Envelope& envelope, std::span<const std::byte> data);
+  // watched: the returned request completes at delivery; else it is empty (no request is made).
+  Request post(int source, int dest, const Envelope& envelope, std::span<const std::byte> data, bool watched);
   void collect(int processor, std::vector<Letter>& into);
   // A collected letter's storage, done with: kept for later letters.
   void recycle(Bytes&& storage) { parts_.payloads.give(std::move(storage)); }
@@ -55,20 +55,27 @@ class PostOffice {
  private:
   struct InTransit {
     Letter letter;
-    Request sent;
+    int dest = -1;
+    Request sent;  // empty for an unwatched letter
     machine::SimTime posted = 0;
     std::int64_t id = 0;
   };
   struct Ordered {  // one sender to one receiver
     std::int64_t sent = 0;
+    machine::SimTime up = -1;  // when the pair's connection is up, once its first letter asked
     InOrderDelivery<InTransit> delivery;
   };
   machine::SimTime connection_up(int a, int b);
   // A letter in the network, in a slot of flying_ (slots are reused: no allocation per letter).
   struct Flying {
     std::int64_t seq = 0;
+    Ordered* order = nullptr;  // its pair's (the map's entries never move)
     InTransit transit;
   };
+  // An ordered pair as one hashed key: a letter's look-up is one hash, not a tree's descent.
+  static std::uint64_t pair_key(int a, int b) {
+    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32 | static_cast<std::uint32_t>(b);
+  }
   void leave(std::uint32_t slot, int from_node, int to_node, std::int64_t bytes);
   void arrive(std::uint32_t slot);
   void deliver(InTransit&& t);
@@ -77,8 +84,8 @@ class PostOffice {
   std::vector<std::vector<Letter>> boxes_;
   std::vector<Waiter*> waiters_;
   std::vector<machine::SimTime> oldest_posted_;  // per box, of its first letter
-  std::map<std::pair<int, int>, machine::SimTime> up_;  // unordered pair (low, high) -> link up
-  std::map<std::pair<int, int>, Ordered> ordered_;
+  std::unordered_map<std::uint64_t, machine::SimTime> up_;  // unordered pair (low, high) -> link up
+  std::unordered_map<std::uint64_t, Ordered> ordered_;     // (source, dest) -> its order
   std::vector<Flying> flying_;
   std::vector<std::uint32_t> free_slots_;
   std::int64_t next_id_ = 0;

@@ -53,6 +53,7 @@ class SimProcess final : public Processor, public Mailbox, public Waiter {
   Thread spawn(std::function<void(Processor&)> body) override;
   // Addressed messages (parix/mailbox.hpp), in mailbox_calls.cpp.
   Request post(int dest, const Envelope& envelope, std::span<const std::byte> data) override;
+  void send(int dest, const Envelope& envelope, std::span<const std::byte> data) override;
   void collect(std::vector<Letter>& into) override;
   void recycle(Bytes&& storage) override;
   void await(std::span<const Request> requests, const WaitDescription& call, int peer) override;

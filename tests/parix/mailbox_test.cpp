@@ -57,6 +57,37 @@ TEST(Mailbox, LettersFromOneSenderArriveInSendingOrderWhateverTheirSizes) {
   EXPECT_EQ(order, (std::vector<std::int64_t>{0, 1, 2, 3, 4, 5}));
 }
 
+// send() is post() without a request: the same letters, in the same order, at the same times,
+// mixed freely with posted ones on one pair.
+TEST(Mailbox, SentLettersArriveAsPostedOnesDo) {
+  auto arrivals = [](bool unwatched) {
+    std::vector<std::pair<std::int64_t, machine::SimTime>> seen;
+    run_simulated(machine_of(2), [&](Processor& p) {
+      Mailbox& box = *mailbox_of(p);
+      if (p.id() == 0) {
+        for (std::int64_t i = 0; i < 6; ++i) {
+          Envelope e;
+          e.words[0] = i;
+          const Bytes data(i % 2 == 0 ? 100000 : 1);
+          if (unwatched && i % 3 != 0) box.send(1, e, data);
+          else box.post(1, e, data);
+        }
+        return;
+      }
+      std::vector<Letter> got;
+      for (int i = 0; i < 6; ++i) {
+        const Letter l = next_letter(box, got);
+        seen.emplace_back(l.envelope.words[0], p.now());
+      }
+    });
+    return seen;
+  };
+  const auto posted = arrivals(false);
+  EXPECT_EQ(arrivals(true), posted);
+  ASSERT_EQ(posted.size(), 6u);
+  for (std::size_t i = 0; i < posted.size(); ++i) EXPECT_EQ(posted[i].first, static_cast<std::int64_t>(i));
+}
+
 TEST(Mailbox, FirstLetterOfAPairPaysTheConnectionSetUpOnce) {
   const SimulationOptions o = machine_of(2);
   std::vector<machine::SimTime> arrivals;
