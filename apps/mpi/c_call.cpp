@@ -4,13 +4,6 @@
 
 namespace gcsim::mpi_layer {
 
-const Datatype& datatype_arg(Registry& r, MPI_Datatype handle, bool must_be_committed) {
-  const Datatype* t = find_datatype(r, handle);
-  if (!t) fail(MPI_ERR_TYPE, "invalid datatype");
-  if (must_be_committed && !t->committed()) fail(MPI_ERR_TYPE, "datatype not committed");
-  return *t;
-}
-
 const Op& op_arg(Registry& r, MPI_Op handle) {
   const Op* op = find_op(r, handle);
   if (!op) fail(MPI_ERR_OP, "invalid operation");

@@ -30,7 +30,12 @@ int c_call(F&& body, std::source_location where = std::source_location::current(
 }
 
 // The datatype a handle names; MPI_ERR_TYPE if none, or if it must be committed and is not.
-const Datatype& datatype_arg(Registry& r, MPI_Datatype handle, bool must_be_committed);
+inline const Datatype& datatype_arg(Registry& r, MPI_Datatype handle, bool must_be_committed) {
+  const Datatype* t = find_datatype(r, handle);
+  if (!t) fail(MPI_ERR_TYPE, "invalid datatype");
+  if (must_be_committed && !t->committed()) fail(MPI_ERR_TYPE, "datatype not committed");
+  return *t;
+}
 const Op& op_arg(Registry& r, MPI_Op handle);
 const Group& group_arg(Registry& r, MPI_Group handle);
 template <class T>

@@ -47,16 +47,11 @@ void install_registry(Registry* r) { installed = r; }
 RegistryScope::RegistryScope(Registry& r) : previous_(installed) { installed = &r; }
 RegistryScope::~RegistryScope() { installed = previous_; }
 
-bool is_predefined_datatype(MPI_Datatype handle) { return handle >= MPI_CHAR && handle <= MPI_LONG_DOUBLE_INT; }
-
-const Datatype* find_datatype(Registry& r, MPI_Datatype handle) {
-  if (is_predefined_datatype(handle)) return &predefined_datatypes()[handle];
-  return r.datatypes.find(handle);
-}
+const Datatype* const predefined_datatype_table = predefined_datatypes().data();
 
 bool is_predefined(const Datatype& type) {
-  const std::vector<Datatype>& all = predefined_datatypes();
-  return std::less_equal<>()(all.data(), &type) && std::less<>()(&type, all.data() + all.size());
+  const Datatype* const all = predefined_datatype_table;
+  return std::less_equal<>()(all, &type) && std::less<>()(&type, all + MPI_LONG_DOUBLE_INT + 1);
 }
 
 Datatype* find_user_datatype(Registry& r, MPI_Datatype handle) { return r.datatypes.find(handle); }

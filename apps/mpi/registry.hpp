@@ -61,12 +61,19 @@ class RegistryScope {
   Registry* previous_;
 };
 
-// The object a handle names, predefined or the registry's; null for an invalid handle.
-const Datatype* find_datatype(Registry& r, MPI_Datatype handle);
+inline bool is_predefined_datatype(MPI_Datatype handle) { return handle >= MPI_CHAR && handle <= MPI_LONG_DOUBLE_INT; }
+// The predefined datatypes, indexed by handle (made as the program loads; they live for the process).
+extern const Datatype* const predefined_datatype_table;
+
+// The object a handle names, predefined or the registry's; null for an invalid handle. In line:
+// every send and receive asks for its type.
+inline const Datatype* find_datatype(Registry& r, MPI_Datatype handle) {
+  if (is_predefined_datatype(handle)) return predefined_datatype_table + handle;
+  return r.datatypes.find(handle);
+}
 Datatype* find_user_datatype(Registry& r, MPI_Datatype handle);
 const Op* find_op(Registry& r, MPI_Op handle);
 const Group* find_group(Registry& r, MPI_Group handle);
-bool is_predefined_datatype(MPI_Datatype handle);
 // Whether type is one of the predefined objects find_datatype returns (they live for the process).
 bool is_predefined(const Datatype& type);
 

@@ -113,6 +113,11 @@ void unpack(std::span<const std::byte> in, MPI_Count& position, void* buffer, MP
   if (position < 0 || position > static_cast<MPI_Count>(in.size()) ||
       bytes > static_cast<MPI_Count>(in.size()) - position)
     fail(MPI_ERR_TRUNCATE, "the packed buffer holds fewer bytes than the elements need");
+  if (bytes > 0 && type.is_dense()) {  // one block (every message of a predefined type): no cursor
+    std::memcpy(address_at(buffer, type.runs().front().offset), in.data() + position, static_cast<std::size_t>(bytes));
+    position += bytes;
+    return;
+  }
   for (BlockCursor c(type, count); !c.at_end(); c.advance(c.remaining())) {
     std::memcpy(address_at(buffer, c.offset()), in.data() + position, static_cast<std::size_t>(c.remaining()));
     position += c.remaining();

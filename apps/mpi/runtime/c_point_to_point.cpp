@@ -16,8 +16,9 @@ namespace {
 // MPI_PROC_NULL: complete at once, source MPI_PROC_NULL, tag MPI_ANY_TAG, no bytes.
 MPI_Request done_request(Rank& rank, const char* call) { return rank.start_null(call); }
 
+// request_if_done: see Rank::start_send (false: an eager send returns MPI_REQUEST_NULL).
 MPI_Request start_send(Rank& rank, const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm,
-                       SendMode mode, const char* call) {
+                       SendMode mode, const char* call, bool request_if_done = true) {
   const Communicator& c = rank.comm(comm);
   check_message_count(count);
   check_peer(c, dest, false);
@@ -37,7 +38,8 @@ MPI_Request start_send(Rank& rank, const void* buf, int count, MPI_Datatype data
   if (mode == SendMode::buffered && static_cast<MPI_Count>(payload.size()) > rank.attached_size) {
     fail(MPI_ERR_BUFFER, "MPI_Bsend: the attached buffer is too small for the message");
   }
-  return rank.start_send(c, c.context, dest, tag, payload, mode, CallText::point_to_point(call, "dest", dest, tag, comm));
+  return rank.start_send(c, c.context, dest, tag, payload, mode, CallText::point_to_point(call, "dest", dest, tag, comm),
+                         request_if_done);
 }
 
 MPI_Request start_recv(Rank& rank, void* buf, int count, MPI_Datatype datatype, int source, int tag, MPI_Comm comm,
@@ -62,7 +64,11 @@ int blocking_send(const void* buf, int count, MPI_Datatype datatype, int dest, i
                   const char* call) {
   int error = MPI_SUCCESS;
   const int code = runtime_call_as(call, [&](Rank& rank) {
-    MPI_Request h = start_send(rank, buf, count, datatype, dest, tag, comm, mode, call);
+    MPI_Request h = start_send(rank, buf, count, datatype, dest, tag, comm, mode, call, false);
+    if (h == MPI_REQUEST_NULL) {  // eager: complete; the wait's progress still answers what arrived
+      rank.progress();
+      return;
+    }
     error = wait_for(rank, h, MPI_STATUS_IGNORE, call);
     fail_with(error);
   });
@@ -124,10 +130,12 @@ int MPI_Sendrecv(const void* sendbuf, int sendcount, MPI_Datatype sendtype, int 
   int error = MPI_SUCCESS;
   const int code = runtime_call([&](Rank& rank) {
     MPI_Request r = start_recv(rank, recvbuf, recvcount, recvtype, source, recvtag, comm, "MPI_Sendrecv");
-    MPI_Request s = start_send(rank, sendbuf, sendcount, sendtype, dest, sendtag, comm, SendMode::standard, "MPI_Sendrecv");
-    const OperationsWait call(rank, "", r, s);
-    rank.wait_until([&] { return rank.test(s) && rank.test(r); }, "MPI_Sendrecv", call);
-    rank.finish(s, MPI_STATUS_IGNORE);
+    MPI_Request s = start_send(rank, sendbuf, sendcount, sendtype, dest, sendtag, comm, SendMode::standard, "MPI_Sendrecv", false);
+    // An eager send has no request (complete): a deadlock report still names it.
+    const CallText sent = CallText::point_to_point("MPI_Sendrecv", "dest", dest, sendtag, comm);
+    const OperationsWait call(rank, "", r, s, s == MPI_REQUEST_NULL ? &sent : nullptr);
+    rank.wait_until([&] { return (s == MPI_REQUEST_NULL || rank.test(s)) && rank.test(r); }, "MPI_Sendrecv", call);
+    if (s != MPI_REQUEST_NULL) rank.finish(s, MPI_STATUS_IGNORE);
     error = rank.finish(r, status);
     fail_with(error);
   });

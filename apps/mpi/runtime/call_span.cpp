@@ -16,17 +16,17 @@ std::string_view call_name(std::string_view description) {
 
 void CallSpan::enter() {
   if (depth_++ > 0) return;
-  name_.clear();
+  name_ = {};
   receives_ = sends_ = Peers{};
   sent_ = received_ = 0;
 }
 
 void CallSpan::leave() {
-  if (depth_ > 0 && --depth_ == 0) name_.clear();  // between calls, records are not a call's
+  if (depth_ > 0 && --depth_ == 0) name_ = {};  // between calls, records are not a call's
 }
 
 void CallSpan::describe(std::string_view description) {
-  if (depth_ > 0 && name_.empty()) name_ = call_name(description);
+  if (depth_ > 0 && name_.empty()) name_ = owned_.assign(call_name(description));
 }
 
 void CallSpan::Peers::add(int p) {

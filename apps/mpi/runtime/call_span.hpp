@@ -15,6 +15,9 @@ std::string_view call_name(std::string_view description);
 
 class CallSpan {
  public:
+  CallSpan() = default;
+  CallSpan(const CallSpan&) = delete;  // its name may point into its own storage
+  CallSpan& operator=(const CallSpan&) = delete;
   // A C entry point begins or ends; only the outermost one opens and closes the span.
   void enter();
   void leave();
@@ -26,6 +29,10 @@ class CallSpan {
   void describe(std::string_view description);
   // The same with the call's name itself ("MPI_Recv"), not a description to take it from.
   void name(std::string_view call_name) {
+    if (depth_ > 0 && name_.empty()) name_ = owned_.assign(call_name);
+  }
+  // The same with a name that lives for the run (a literal: kept as it is, not copied).
+  void name_literal(const char* call_name) {
     if (depth_ > 0 && name_.empty()) name_ = call_name;
   }
   // An operation of the call with this peer (world rank; -1: any). The traced peer is the one the
@@ -36,14 +43,15 @@ class CallSpan {
   void note_received(std::int64_t bytes) { received_ = received_ > 0 ? received_ : bytes; }  // one completed
 
   // The call's name, or `fallback` outside a named call.
-  std::string_view label(std::string_view fallback) const { return name_.empty() ? fallback : std::string_view(name_); }
+  std::string_view label(std::string_view fallback) const { return name_.empty() ? fallback : name_; }
   int peer() const { return receives_.any ? receives_.peer() : sends_.peer(); }
   // What the call sends, or (a receive) what it can receive, or received.
   std::int64_t bytes() const { return sent_ > 0 ? sent_ : received_; }
 
  private:
   int depth_ = 0;
-  std::string name_;
+  std::string_view name_;  // a literal, or owned_
+  std::string owned_;
   struct Peers {
     bool any = false;
     int first = -1;

@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -78,7 +77,7 @@ struct Operation {  // behind one MPI_Request
   void* buffer = nullptr;
   MPI_Count count = 0;
   const Datatype* type = nullptr;
-  std::optional<Datatype> owned_type;
+  std::unique_ptr<const Datatype> owned_type;  // behind a pointer: most receives have none
   std::span<std::byte> raw;
   bool is_raw = false;
   // A non-blocking collective's request: done when its schedule (collective_progress.hpp) ends.
@@ -88,8 +87,12 @@ struct Operation {  // behind one MPI_Request
   bool cancel_asked = false;  // MPI_Cancel of a rendezvous send: the receiver's answer awaited
   // A persistent request (MPI_Send_init ...): each MPI_Start calls `restart`, whose operation is
   // `started` until finished; inactive (MPI_REQUEST_NULL) it completes at once, status empty.
-  std::function<MPI_Request(Rank&)> restart;
-  MPI_Request started = MPI_REQUEST_NULL;
+  // Null for every other request; apart, so that a request is quick to make and to reset.
+  struct Persistent {
+    std::function<MPI_Request(Rank&)> restart;
+    MPI_Request started = MPI_REQUEST_NULL;
+  };
+  std::unique_ptr<Persistent> persistent;
 };
 
 }  // namespace gcsim::mpi_layer

@@ -10,15 +10,19 @@ namespace gcsim::mpi_layer {
 
 class OperationsWait final : public parix::WaitDescription {
  public:
-  OperationsWait(const Rank& rank, const char* prefix, MPI_Request first, MPI_Request second = MPI_REQUEST_NULL)
-      : rank_(rank), prefix_(prefix), first_(first), second_(second) {}
+  // done_second: the call of a second operation complete without a request (an eager send of
+  // MPI_Sendrecv), named in second's place.
+  OperationsWait(const Rank& rank, const char* prefix, MPI_Request first, MPI_Request second = MPI_REQUEST_NULL,
+                 const CallText* done_second = nullptr)
+      : rank_(rank), prefix_(prefix), first_(first), second_(second), done_second_(done_second) {}
 
   std::string text() const override {
     std::string out = prefix_;
     append(out, first_);
-    if (second_ != MPI_REQUEST_NULL) {
+    if (second_ != MPI_REQUEST_NULL || done_second_) {
       out.append(" and ");
-      append(out, second_);
+      if (done_second_) done_second_->append_to(out);
+      else append(out, second_);
     }
     return out;
   }
@@ -30,6 +34,7 @@ class OperationsWait final : public parix::WaitDescription {
   const Rank& rank_;
   const char* prefix_;
   MPI_Request first_, second_;
+  const CallText* done_second_;
 };
 
 }  // namespace gcsim::mpi_layer

@@ -45,6 +45,7 @@ Rank::Rank(parix::Processor& processor, const machine::MachineConfig::Mpi& costs
       Communicator{std::make_shared<const std::vector<int>>(std::vector<int>{processor.id()}), 0, 4, 0, nullptr};
   comms_[MPI_COMM_WORLD].handle = MPI_COMM_WORLD;
   comms_[MPI_COMM_SELF].handle = MPI_COMM_SELF;
+  world_ = &comms_[MPI_COMM_WORLD];
   registry_.errors = &runtime_error_router();
 }
 
@@ -63,6 +64,10 @@ void Rank::install() {
 }
 
 Communicator& Rank::comm(MPI_Comm handle) {
+  if (handle == MPI_COMM_WORLD) {  // most calls' (never freed): no look-up
+    registry_.call.name_target(handle);
+    return *world_;
+  }
   const auto it = comms_.find(handle);
   if (it == comms_.end()) {
     fail(MPI_ERR_COMM, handle == MPI_COMM_NULL ? "MPI_COMM_NULL is not a communicator" : "invalid or freed communicator");
@@ -143,28 +148,30 @@ void Rank::charge_reduction(std::size_t bytes) {
 }
 
 MPI_Request Rank::start_send(const Communicator& c, std::int64_t context, int dest, int tag,
-                             std::span<const std::byte> payload, SendMode mode, CallText call) {
+                             std::span<const std::byte> payload, SendMode mode, CallText call, bool request_if_done) {
   progress_due_ = true;  // an operation done at once, or waiting for its clear-to-send
+  const int peer = c.world_rank_of(dest);
+  const auto size = static_cast<std::int64_t>(payload.size());
+  name_call_span(call);
+  call_span.involve(peer, false);
+  call_span.add_sent(size);
+  charge(size);
+  const bool rendezvous = mode == SendMode::synchronous || (mode == SendMode::standard && size > costs_.eager_limit_bytes);
+  if (!rendezvous) mailbox_.send(peer, envelope(kEager, size, context, tag, 0), payload);
+  if (!rendezvous && !request_if_done) return MPI_REQUEST_NULL;  // complete, and nobody will ask
   auto [h, op] = operations_.add();
   op.is_send = true;
   op.call = std::move(call);
   op.comm = c.handle;
   op.context = context;
   op.tag = tag;
-  op.peer_world = c.world_rank_of(dest);
-  const auto size = static_cast<std::int64_t>(payload.size());
-  name_call_span(op.call);
-  call_span.involve(op.peer_world, false);
-  call_span.add_sent(size);
-  charge(size);
-  const bool rendezvous = mode == SendMode::synchronous || (mode == SendMode::standard && size > costs_.eager_limit_bytes);
+  op.peer_world = peer;
   if (!rendezvous) {
-    mailbox_.post(op.peer_world, envelope(kEager, size, context, tag, 0), payload);
     op.done = true;
     return h;
   }
   op.payload.assign(payload.begin(), payload.end());
-  mailbox_.post(op.peer_world, envelope(kRequestToSend, size, context, tag, h), {});
+  mailbox_.send(peer, envelope(kRequestToSend, size, context, tag, h), {});
   return h;
 }
 
@@ -182,8 +189,8 @@ MPI_Request Rank::start_recv(const Communicator& c, std::int64_t context, int so
   if (is_predefined(type)) {
     op.type = &type;
   } else {
-    op.owned_type = type;
-    op.type = &*op.owned_type;
+    op.owned_type = std::make_unique<const Datatype>(type);
+    op.type = op.owned_type.get();
   }
   name_call_span(op.call);
   call_span.involve(op.peer_world, true);
@@ -212,7 +219,7 @@ MPI_Request Rank::start_raw_recv(const Communicator& c, std::int64_t context, in
 }
 
 void Rank::name_call_span(const CallText& call) {
-  if (call.form == CallText::Form::point_to_point) call_span.name(call.name);
+  if (call.form == CallText::Form::point_to_point) call_span.name_literal(call.name);
   else call_span.describe(call.text);
 }
 
@@ -239,9 +246,14 @@ void Rank::progress() {
   letters_.clear();
   mailbox_.collect(letters_);
   for (parix::Letter& l : letters_) on_letter(l);
-  for (const OperationTable::Entry& e : operations_) {
-    Operation& op = *e.op;
-    if (op.is_send && !op.done && op.wire.valid() && op.wire.test()) op.done = true;
+  if (sends_on_wire_ > 0) {  // rendezvous sends whose data letter is on its way
+    sends_on_wire_ = 0;
+    for (const OperationTable::Entry& e : operations_) {
+      Operation& op = *e.op;
+      if (!op.is_send || op.done || !op.wire.valid()) continue;
+      if (op.wire.test()) op.done = true;
+      else ++sends_on_wire_;
+    }
   }
   drop_freed();
   advance_collectives();
@@ -256,6 +268,7 @@ void Rank::on_letter(parix::Letter& l) {
   } else if (kind == kClearToSend) {
     Operation& s = operations_.at(w[3]);
     s.wire = mailbox_.post(s.peer_world, envelope(kData, 0, s.context, w[2], w[3]), s.payload);
+    ++sends_on_wire_;
     s.payload = {};
   } else if (kind == kData) {
     Operation& r = operations_.at(w[2]);
@@ -288,7 +301,7 @@ void Rank::match(Operation& r, MPI_Request handle, Arrived&& m) {
     mailbox_.recycle(std::move(m.data));
     return;
   }
-  mailbox_.post(m.source, envelope(kClearToSend, 0, m.context, handle, m.sender_op), {});
+  mailbox_.send(m.source, envelope(kClearToSend, 0, m.context, handle, m.sender_op), {});
 }
 
 void Rank::deliver(Operation& r, std::span<const std::byte> data) {

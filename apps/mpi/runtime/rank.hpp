@@ -82,9 +82,11 @@ class Rank {
   static std::string comm_name(MPI_Comm handle);
 
   // Point-to-point on comm's context (or its collective one). Return the request handle.
-  // The payload is copied (posted, or kept until a rendezvous' clear-to-send).
+  // The payload is copied (posted, or kept until a rendezvous' clear-to-send). A send complete at
+  // once (eager) gets no request when request_if_done is false (MPI_Send, MPI_Sendrecv, which
+  // finish it in the same call): MPI_REQUEST_NULL, nothing to find, test or free.
   MPI_Request start_send(const Communicator& c, std::int64_t context, int dest, int tag,
-                         std::span<const std::byte> payload, SendMode mode, CallText call);
+                         std::span<const std::byte> payload, SendMode mode, CallText call, bool request_if_done = true);
   MPI_Request start_recv(const Communicator& c, std::int64_t context, int source, int tag, void* buffer, MPI_Count count,
                          const Datatype& type, CallText call);
   MPI_Request start_raw_recv(const Communicator& c, std::int64_t context, int source, int tag, std::span<std::byte> into);
@@ -187,6 +189,7 @@ class Rank {
   machine::MachineConfig::Mpi costs_;
   Registry registry_;
   std::map<MPI_Comm, Communicator> comms_;
+  Communicator* world_ = nullptr;  // comms_'s MPI_COMM_WORLD (a map's entries never move)
   MPI_Comm next_comm_ = first_user_handle;
   OperationTable operations_;
   std::size_t freed_live_ = 0;  // operations MPI_Request_free left running (dropped once done)
@@ -198,6 +201,7 @@ class Rank {
   // call's later switches have nothing new to attribute (the program has not run since).
   bool program_ran_ = true;
   bool progress_due_ = true;  // see progress()
+  std::size_t sends_on_wire_ = 0;  // at least the rendezvous sends whose data letter is not delivered
   // Outstanding non-blocking collectives in start order; last, so they unwind while the rest lives.
   std::vector<std::unique_ptr<CollectiveProgress>> schedules_;
   CollectiveProgress* running_schedule_ = nullptr;

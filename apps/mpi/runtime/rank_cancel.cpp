@@ -16,8 +16,8 @@ namespace gcsim::mpi_layer {
 
 void Rank::free_request(MPI_Request handle) {
   Operation& op = operation(handle);
-  if (op.restart) {
-    if (op.started != MPI_REQUEST_NULL) free_request(op.started);
+  if (op.persistent) {
+    if (op.persistent->started != MPI_REQUEST_NULL) free_request(op.persistent->started);
     operations_.erase(handle);
     return;
   }
@@ -36,8 +36,8 @@ void Rank::drop_freed() {
 void Rank::cancel(MPI_Request handle) {
   progress_due_ = true;  // a request done now: a schedule waiting for it may go on
   Operation& op = operation(handle);
-  if (op.restart) {
-    if (op.started != MPI_REQUEST_NULL) cancel(op.started);
+  if (op.persistent) {
+    if (op.persistent->started != MPI_REQUEST_NULL) cancel(op.persistent->started);
     return;
   }
   if (op.done || op.collective) return;
@@ -55,7 +55,7 @@ void Rank::cancel(MPI_Request handle) {
   }
   if (op.wire.valid() || op.cancel_asked) return;  // its data is on the way, or asked already
   op.cancel_asked = true;
-  mailbox_.post(op.peer_world, envelope(kCancelAsk, 0, op.context, 0, handle), {});
+  mailbox_.send(op.peer_world, envelope(kCancelAsk, 0, op.context, 0, handle), {});
 }
 
 void Rank::on_cancel_asked(const parix::Letter& l) {
@@ -65,7 +65,7 @@ void Rank::on_cancel_asked(const parix::Letter& l) {
   });
   const bool withdrawn = it != unexpected_.end();
   if (withdrawn) unexpected_.erase(it);
-  mailbox_.post(l.source, envelope(kCancelAnswer, 0, w[1], withdrawn ? 1 : 0, w[3]), {});
+  mailbox_.send(l.source, envelope(kCancelAnswer, 0, w[1], withdrawn ? 1 : 0, w[3]), {});
 }
 
 void Rank::on_cancel_answered(const parix::Letter& l) {

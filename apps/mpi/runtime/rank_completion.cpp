@@ -6,9 +6,11 @@
 namespace gcsim::mpi_layer {
 
 bool Rank::test(MPI_Request handle) {
-  if (const Operation& p = operation(handle); p.restart) return p.started == MPI_REQUEST_NULL || test(p.started);
-  progress();
   Operation& op = operation(handle);
+  if (op.persistent) return op.persistent->started == MPI_REQUEST_NULL || test(op.persistent->started);
+  // op stays where it is: operations live apart from the table's index, and progress drops only
+  // freed ones, which no handle names.
+  progress();
   if (!op.done) return false;
   call_span.involve(op.peer_world, !op.is_send);
   if (!op.is_send && !op.charged) {
@@ -22,7 +24,7 @@ bool Rank::test(MPI_Request handle) {
 int Rank::finish(MPI_Request& handle, MPI_Status* status) {
   Operation* op = operations_.find(handle);
   if (!op) fail(MPI_ERR_REQUEST, "invalid request");
-  if (op->restart) return finish_persistent(*op, status);
+  if (op->persistent) return finish_persistent(*op, status);
   const int error = op->status.MPI_ERROR;
   if (status) *status = op->status;
   operations_.erase(handle);
@@ -37,9 +39,11 @@ void Rank::wait_loop(Predicate done, std::string_view name, const parix::WaitDes
     progress();
     if (done.test(done.object)) return;
     wires.clear();
-    for (const OperationTable::Entry& e : operations_) {
-      const Operation& op = *e.op;
-      if (op.is_send && !op.done && op.wire.valid()) wires.push_back(op.wire);
+    if (sends_on_wire_ > 0) {
+      for (const OperationTable::Entry& e : operations_) {
+        const Operation& op = *e.op;
+        if (op.is_send && !op.done && op.wire.valid()) wires.push_back(op.wire);
+      }
     }
     leave_cpu();
     const machine::SimTime blocked_from = processor_.now();

@@ -9,7 +9,7 @@ namespace gcsim::mpi_layer {
 MPI_Request Rank::add_persistent(std::string call, std::function<MPI_Request(Rank&)> restart) {
   Operation op;
   op.call = CallText::of(std::move(call));
-  op.restart = std::move(restart);
+  op.persistent = std::make_unique<Operation::Persistent>(Operation::Persistent{std::move(restart)});
   op.done = true;  // inactive
   op.charged = true;
   return add_operation(std::move(op));
@@ -17,21 +17,21 @@ MPI_Request Rank::add_persistent(std::string call, std::function<MPI_Request(Ran
 
 void Rank::start_persistent(MPI_Request handle) {
   Operation& op = operation(handle);
-  if (!op.restart) fail(MPI_ERR_REQUEST, "MPI_Start: not a persistent request");
-  if (op.started != MPI_REQUEST_NULL) fail(MPI_ERR_REQUEST, "MPI_Start: the request is active already");
-  const MPI_Request started = op.restart(*this);
-  operation(handle).started = started;
+  if (!op.persistent) fail(MPI_ERR_REQUEST, "MPI_Start: not a persistent request");
+  if (op.persistent->started != MPI_REQUEST_NULL) fail(MPI_ERR_REQUEST, "MPI_Start: the request is active already");
+  const MPI_Request started = op.persistent->restart(*this);
+  operation(handle).persistent->started = started;
 }
 
 bool Rank::inactive(MPI_Request handle) {
   const Operation& op = operation(handle);
-  return op.restart && op.started == MPI_REQUEST_NULL;
+  return op.persistent && op.persistent->started == MPI_REQUEST_NULL;
 }
 
 // The started operation's status and error; an inactive request's status is empty. The request
 // stays, inactive.
 int Rank::finish_persistent(Operation& p, MPI_Status* status) {
-  if (p.started != MPI_REQUEST_NULL) return finish(p.started, status);
+  if (p.persistent->started != MPI_REQUEST_NULL) return finish(p.persistent->started, status);
   if (status) {
     *status = MPI_Status{};
     status->MPI_SOURCE = MPI_ANY_SOURCE;
