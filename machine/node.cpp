@@ -21,16 +21,29 @@ void Node::start(SimTime duration, Kernel::Action&& on_done) {
   kernel_->after(duration, [this, slot] { finish(slot); });
 }
 
+void Node::compute(SimTime duration, void (*done)(void*), void* context) {
+  if (free_cpus_ == 0) return compute(duration, [done, context] { done(context); });
+  --free_cpus_;
+  kernel_->after(duration, [this, done, context] {
+    release_cpu();
+    done(context);
+  });
+}
+
 void Node::finish(std::uint32_t slot) {
   Kernel::Action done = std::move(running_[slot]);
   free_slots_.push_back(slot);
+  release_cpu();
+  done();
+}
+
+void Node::release_cpu() {
   ++free_cpus_;
   if (!waiting_.empty()) {
     Job next = std::move(waiting_.front());
     waiting_.pop_front();
     start(next.duration, std::move(next.on_done));
   }
-  done();
 }
 
 }  // namespace gcsim::machine

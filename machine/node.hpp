@@ -18,6 +18,9 @@ class Node {
 
   // Runs `duration` of work on one of the node's CPUs; on_done runs when it is finished.
   void compute(SimTime duration, Kernel::Action&& on_done);
+  // The same with a completion that is a function and its argument (a process waiting for its
+  // CPU time): on a free CPU the kernel's event holds it, with no running slot to keep.
+  void compute(SimTime duration, void (*done)(void*), void* context);
 
   NodeMemory& memory() { return memory_; }
   const NodeMemory& memory() const { return memory_; }
@@ -29,6 +32,7 @@ class Node {
   };
   void start(SimTime duration, Kernel::Action&& on_done);  // on a free CPU
   void finish(std::uint32_t slot);
+  void release_cpu();  // a job ended: the next waiting one starts
   Kernel* kernel_;
   int free_cpus_;
   std::deque<Job> waiting_;

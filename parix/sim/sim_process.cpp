@@ -74,7 +74,7 @@ void SimProcess::charge_ops(std::span<const OpCount> ops, bool as_comm) {
 bool SimProcess::occupy_cpu(machine::SimTime duration, std::string_view label) {
   const machine::SimTime start = sim_.kernel.now();
   Activity work;
-  sim_.nodes[node_].compute(duration, [&work] { work.complete(); });
+  sim_.nodes[node_].compute(duration, [](void* a) { static_cast<Activity*>(a)->complete(); }, &work);
   if (!wait_for_activity(work, "compute", -1)) return false;
   if (sim_.trace.enabled()) sim_.trace.record({TraceKind::compute, id_, -1, start, sim_.kernel.now(), 0, -1, label, thread_});
   return true;
