@@ -31,17 +31,14 @@ void Kernel::at_slow(SimTime t, Action&& a) {
   }
   Action* const slot = take_slot();
   slot->fill(std::move(a));  // free slots are empty (reset by step)
-  // seq grows, so a key not earlier than the run's last is later than every key in the run. A
-  // key earlier than the last ones moves them to the heap instead of going there itself: the
-  // run keeps the common delay of a flow, the heap takes the few later ones it would block.
-  while (!in_order_.empty() && t < in_order_.back().time) {
-    const Key later = in_order_.back();
-    in_order_.pop_back();
-    heap_.push_back(later);
-    sift_up(heap_.size() - 1, later);
+  const Key key{t, seq_++, slot};
+  if (Run* const run = run_for(t)) {  // seq grows: a key not earlier than the run's end is later than all of it
+    run->keys.push_back(key);  // grows a full run
+    run->end = t;
+    return;
   }
-  in_order_.push_back({t, seq_++, slot});
-  run_end_ = t;
+  heap_.push_back(key);
+  sift_up(heap_.size() - 1, key);
 }
 
 Kernel::Key Kernel::pop_heap() {
