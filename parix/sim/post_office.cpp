@@ -5,7 +5,11 @@
 namespace gcsim::parix::detail {
 
 PostOffice::PostOffice(const Parts& parts)
-    : parts_(parts), boxes_(parts.stats.size()), waiters_(parts.stats.size(), nullptr), oldest_posted_(parts.stats.size(), 0) {}
+    : parts_(parts),
+      boxes_(parts.stats.size()),
+      waiters_(parts.stats.size(), nullptr),
+      oldest_posted_(parts.stats.size(), 0),
+      last_pair_(parts.stats.size()) {}
 
 machine::SimTime PostOffice::connection_up(int a, int b) {
   const std::uint64_t key = pair_key(std::min(a, b), std::max(a, b));
@@ -29,7 +33,9 @@ Request PostOffice::post(int source, int dest, const Envelope& envelope, std::sp
     sent.state()->peer = dest;
   }
   const std::int64_t id = next_id_++;
-  Ordered& order = ordered_[pair_key(source, dest)];
+  LastPair& last = last_pair_[static_cast<std::size_t>(source)];
+  if (last.dest != dest) last = {dest, &ordered_[pair_key(source, dest)]};  // a sender mostly writes to one
+  Ordered& order = *last.order;
   std::uint32_t slot = 0;
   if (free_slots_.empty()) {
     slot = static_cast<std::uint32_t>(flying_.size());
@@ -96,6 +102,10 @@ void PostOffice::deliver(InTransit&& t) {
 
 void PostOffice::collect(int processor, std::vector<Letter>& into) {
   auto& box = boxes_[static_cast<std::size_t>(processor)];
+  if (into.empty()) {  // the usual case: the two vectors trade storage, no letter moves
+    into.swap(box);
+    return;
+  }
   for (Letter& l : box) into.push_back(std::move(l));
   box.clear();
 }

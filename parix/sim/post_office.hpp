@@ -86,6 +86,11 @@ class PostOffice {
   std::vector<machine::SimTime> oldest_posted_;  // per box, of its first letter
   std::unordered_map<std::uint64_t, machine::SimTime> up_;  // unordered pair (low, high) -> link up
   std::unordered_map<std::uint64_t, Ordered> ordered_;     // (source, dest) -> its order
+  struct LastPair {  // per sender, the pair of its last letter (the map's entries never move)
+    int dest = -1;
+    Ordered* order = nullptr;
+  };
+  std::vector<LastPair> last_pair_;
   std::vector<Flying> flying_;
   std::vector<std::uint32_t> free_slots_;
   std::int64_t next_id_ = 0;

@@ -255,8 +255,8 @@ void Rank::progress() {
       else ++sends_on_wire_;
     }
   }
-  drop_freed();
-  advance_collectives();
+  if (freed_live_ > 0) drop_freed();
+  if (!schedules_.empty()) advance_collectives();
 }
 
 void Rank::on_letter(parix::Letter& l) {
