@@ -17,7 +17,7 @@ void append_number(std::string& text, int value) {
 
 void CallText::append_to(std::string& out) const {
   if (form == Form::text) {
-    out.append(text);
+    if (text) out.append(*text);
     return;
   }
   if (form == Form::collective_receive) {

@@ -28,9 +28,11 @@ struct CallText {
   int peer = 0;                      // a communicator rank, MPI_ANY_SOURCE
   int tag = 0;                       // MPI_ANY_TAG
   MPI_Comm comm = MPI_COMM_WORLD;
-  std::string text;                  // Form::text
+  // Form::text; shared, so that a call text is cheap to carry (a collective's sends name one call).
+  std::shared_ptr<const std::string> text;
 
-  static CallText of(std::string text) {
+  static CallText of(std::string text) { return shared(std::make_shared<const std::string>(std::move(text))); }
+  static CallText shared(std::shared_ptr<const std::string> text) {
     CallText c;
     c.text = std::move(text);
     return c;

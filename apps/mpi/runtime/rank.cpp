@@ -220,7 +220,7 @@ MPI_Request Rank::start_raw_recv(const Communicator& c, std::int64_t context, in
 
 void Rank::name_call_span(const CallText& call) {
   if (call.form == CallText::Form::point_to_point) call_span.name_literal(call.name);
-  else call_span.describe(call.text);
+  else if (call.text) call_span.describe(*call.text);
 }
 
 bool Rank::matches(const Operation& r, const Arrived& m) {

@@ -3,10 +3,10 @@
 namespace gcsim::mpi_layer {
 
 RankChannel::RankChannel(Rank& rank, MPI_Comm comm, std::string call)
-    : rank_(rank), comm_(rank.comm(comm)), call_(std::move(call)) {}
+    : rank_(rank), comm_(rank.comm(comm)), call_(std::move(call)), call_text_(std::make_shared<const std::string>(call_)) {}
 
 CollectiveChannel::Handle RankChannel::start_send(int peer, int tag, std::span<const std::byte> data) {
-  return rank_.start_send(comm_, comm_.collective_context(), peer, tag, data, SendMode::buffered, CallText::of(call_));
+  return rank_.start_send(comm_, comm_.collective_context(), peer, tag, data, SendMode::buffered, CallText::shared(call_text_));
 }
 
 CollectiveChannel::Handle RankChannel::start_recv(int peer, int tag, std::span<std::byte> into) {
