@@ -12,6 +12,14 @@
 namespace gcsim::machine {
 namespace {
 
+// The events ran (by id) in the order a plain sort of every (time, id) gives: time, then
+// scheduling order, as ids are given in scheduling order.
+void expect_ran_in_key_order(const std::vector<int>& ran, std::vector<std::pair<SimTime, int>> scheduled) {
+  std::sort(scheduled.begin(), scheduled.end());
+  ASSERT_EQ(ran.size(), scheduled.size());
+  for (std::size_t i = 0; i < ran.size(); ++i) ASSERT_EQ(ran[i], scheduled[i].second) << "at position " << i;
+}
+
 TEST(Kernel, RunsEventsInTimeOrder) {
   Kernel k;
   std::vector<int> order;
@@ -130,10 +138,7 @@ TEST(Kernel, MixedInOrderAndOutOfOrderEventsRunInTimeThenSchedulingOrder) {
     k.at(scheduled.back().first, [&event, i] { event(i); });
   }
   k.run();
-  std::vector<std::pair<SimTime, int>> expected = scheduled;
-  std::sort(expected.begin(), expected.end());
-  ASSERT_EQ(ran.size(), expected.size());
-  for (std::size_t i = 0; i < ran.size(); ++i) ASSERT_EQ(ran[i], expected[i].second) << "at position " << i;
+  expect_ran_in_key_order(ran, scheduled);
   EXPECT_TRUE(k.idle());
   EXPECT_EQ(k.pending(), 0u);
 }
@@ -163,11 +168,9 @@ TEST(Kernel, InterleavedFlowsOfSeveralDelaysRunInTimeThenSchedulingOrder) {
     k.at(scheduled.back().first, [&event, i] { event(i); });
   }
   k.run();
-  std::vector<std::pair<SimTime, int>> expected = scheduled;
-  std::sort(expected.begin(), expected.end());
-  ASSERT_EQ(ran.size(), expected.size());
-  for (std::size_t i = 0; i < ran.size(); ++i) ASSERT_EQ(ran[i], expected[i].second) << "at position " << i;
+  expect_ran_in_key_order(ran, scheduled);
   EXPECT_TRUE(k.idle());
+  EXPECT_EQ(k.pending(), 0u);
 }
 
 // The kernel compares a new key with the time of the last key its in-order run took, not with
