@@ -164,8 +164,9 @@ def simulated_of(a, program, ranks, args, config):
 def test_sweep(a):
     program = build(a)
     args, counts = ["0.5", "10"], [1, 2, 4]
-    run([a.gcsim, "sweep", "mpi", "--compute", "annotated", "--csv", "sweep.csv", "--json", "sweep.json", program] + args +
-        ["--nodes", ",".join(map(str, counts))], a.work)
+    # --compute after the program's arguments, as --nodes: both are the sweep's, not the program's
+    run([a.gcsim, "sweep", "mpi", "--csv", "sweep.csv", "--json", "sweep.json", program] + args +
+        ["--nodes", ",".join(map(str, counts)), "--compute", "annotated"], a.work)
     rows = records(os.path.join(a.work, "sweep.csv"))
     published = os.path.join(a.configs, "gc-powerplus.toml")
     for machine, config in (("calibrated", None), ("published", published)):

@@ -32,15 +32,27 @@ bool take_sweep_option(SweepMpiOptions& o, const std::vector<std::string>& words
   return true;
 }
 
-// The sweep's options ending the program's arguments (from the first --nodes, --config, --csv or
-// --json after which every word is such an option or its value); they are removed from args.
-void take_trailing_options(SweepMpiOptions& o, std::vector<std::string>& args, std::vector<std::string>& configs) {
+// The options that may end the program's arguments: the sweep's own and mpirun's that take a
+// value (those a sweep refuses are recognized too, to be refused rather than handed on).
+bool trailing_option(const std::string& w) {
+  return kSweepOptions.count(w) || kRunValueOptions.count(w) || kNotForSweeps.count(w);
+}
+
+// The options ending the program's arguments (from the first such option after which every word
+// is one with its value), removed from args: the sweep's go to o, mpirun's to run_words.
+void take_trailing_options(SweepMpiOptions& o, std::vector<std::string>& args, std::vector<std::string>& configs,
+                           std::vector<std::string>& run_words) {
   for (std::size_t k = 0; k < args.size(); ++k) {
-    if (!kSweepOptions.count(args[k])) continue;
+    if (!trailing_option(args[k])) continue;
     bool all = true;
-    for (std::size_t i = k; i < args.size() && all; i += 2) all = kSweepOptions.count(args[i]) && i + 1 < args.size();
+    for (std::size_t i = k; i < args.size() && all; i += 2) all = trailing_option(args[i]) && i + 1 < args.size();
     if (!all) continue;
-    for (std::size_t i = k; i < args.size(); ++i) take_sweep_option(o, args, i, configs);
+    for (std::size_t i = k; i < args.size(); ++i) {
+      if (kNotForSweeps.count(args[i])) refuse_sweep(args[i] + " is not an option of a sweep (trace one point with gcsim mpirun)");
+      if (take_sweep_option(o, args, i, configs)) continue;
+      run_words.push_back(args[i]);
+      run_words.push_back(args[++i]);
+    }
     args.resize(k);
     return;
   }
@@ -72,8 +84,8 @@ std::string sweep_mpi_usage() {
          "  --csv FILE           the table as CSV (`gcsim plot --sweep FILE` draws it), one row per machine and count\n"
          "  --json FILE          every run's summary as JSON\n"
          "  --compute, --host-speed, --coll, --stack-size   as for gcsim mpirun\n"
-         "gcsim's options go before PROGRAM; after it, the program's arguments, which the sweep's own options\n"
-         "above may follow. Words after `--` (before the arguments) are all the program's.\n"
+         "gcsim's options go before PROGRAM; after it, the program's arguments, which the options above may\n"
+         "follow. Words after `--` (before the arguments) are all the program's.\n"
          "Each point is one `gcsim mpirun -np N` of the program, its output kept back (a rank exiting non-zero\n"
          "ends the sweep with its stderr); the speedup is each machine's first count's time over this one's.\n";
 }
@@ -100,7 +112,7 @@ SweepMpiOptions parse_sweep_mpi_options(const std::vector<std::string>& words) {
   if (i >= words.size()) refuse_sweep("no program given: gcsim sweep mpi [options] PROGRAM [ARGS...]");
   std::vector<std::string> args(words.begin() + static_cast<std::ptrdiff_t>(i) + 1, words.end());
   if (!args.empty() && args.front() == "--") args.erase(args.begin());
-  else take_trailing_options(o, args, configs);
+  else take_trailing_options(o, args, configs, run_words);
   run_words.push_back(words[i]);
   o.run = parse_mpirun_options(run_words);
   o.run.args = args;
