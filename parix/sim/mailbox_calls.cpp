@@ -5,17 +5,24 @@
 
 namespace gcsim::parix::detail {
 
-Request SimProcess::post(int dest, const Envelope& envelope, std::span<const std::byte> data) {
-  if (dest < 0 || dest >= count()) {
-    throw ParixError(fmt::format("processor {}: post to processor {}, which does not exist (0..{})", id_, dest, count() - 1));
+namespace {
+
+// A letter's addressee must be one of the run's processors (post and send alike).
+void check_addressee(int self, int dest, int count) {
+  if (dest < 0 || dest >= count) {
+    throw ParixError(fmt::format("processor {}: post to processor {}, which does not exist (0..{})", self, dest, count - 1));
   }
+}
+
+}  // namespace
+
+Request SimProcess::post(int dest, const Envelope& envelope, std::span<const std::byte> data) {
+  check_addressee(id_, dest, count());
   return sim_.post_office.post(id_, dest, envelope, data, true);
 }
 
 void SimProcess::send(int dest, const Envelope& envelope, std::span<const std::byte> data) {
-  if (dest < 0 || dest >= count()) {
-    throw ParixError(fmt::format("processor {}: post to processor {}, which does not exist (0..{})", id_, dest, count() - 1));
-  }
+  check_addressee(id_, dest, count());
   sim_.post_office.post(id_, dest, envelope, data, false);
 }
 

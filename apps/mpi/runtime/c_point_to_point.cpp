@@ -16,6 +16,11 @@ namespace {
 // MPI_PROC_NULL: complete at once, source MPI_PROC_NULL, tag MPI_ANY_TAG, no bytes.
 MPI_Request done_request(Rank& rank, const char* call) { return rank.start_null(call); }
 
+// What a send's request, or a deadlock report in its place, names: "MPI_Send(dest=1, tag=0, ...)".
+CallText send_call(const char* call, int dest, int tag, MPI_Comm comm) {
+  return CallText::point_to_point(call, "dest", dest, tag, comm);
+}
+
 // request_if_done: see Rank::start_send (false: an eager send returns MPI_REQUEST_NULL).
 MPI_Request start_send(Rank& rank, const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm,
                        SendMode mode, const char* call, bool request_if_done = true) {
@@ -38,8 +43,7 @@ MPI_Request start_send(Rank& rank, const void* buf, int count, MPI_Datatype data
   if (mode == SendMode::buffered && static_cast<MPI_Count>(payload.size()) > rank.attached_size) {
     fail(MPI_ERR_BUFFER, "MPI_Bsend: the attached buffer is too small for the message");
   }
-  return rank.start_send(c, c.context, dest, tag, payload, mode, CallText::point_to_point(call, "dest", dest, tag, comm),
-                         request_if_done);
+  return rank.start_send(c, c.context, dest, tag, payload, mode, send_call(call, dest, tag, comm), request_if_done);
 }
 
 MPI_Request start_recv(Rank& rank, void* buf, int count, MPI_Datatype datatype, int source, int tag, MPI_Comm comm,
@@ -132,7 +136,7 @@ int MPI_Sendrecv(const void* sendbuf, int sendcount, MPI_Datatype sendtype, int 
     MPI_Request r = start_recv(rank, recvbuf, recvcount, recvtype, source, recvtag, comm, "MPI_Sendrecv");
     MPI_Request s = start_send(rank, sendbuf, sendcount, sendtype, dest, sendtag, comm, SendMode::standard, "MPI_Sendrecv", false);
     // An eager send has no request (complete): a deadlock report still names it.
-    const CallText sent = CallText::point_to_point("MPI_Sendrecv", "dest", dest, sendtag, comm);
+    const CallText sent = send_call("MPI_Sendrecv", dest, sendtag, comm);
     const OperationsWait call(rank, "", r, s, s == MPI_REQUEST_NULL ? &sent : nullptr);
     rank.wait_until([&] { return (s == MPI_REQUEST_NULL || rank.test(s)) && rank.test(r); }, "MPI_Sendrecv", call);
     if (s != MPI_REQUEST_NULL) rank.finish(s, MPI_STATUS_IGNORE);

@@ -157,19 +157,19 @@ MPI_Request Rank::start_send(const Communicator& c, std::int64_t context, int de
   call_span.add_sent(size);
   charge(size);
   const bool rendezvous = mode == SendMode::synchronous || (mode == SendMode::standard && size > costs_.eager_limit_bytes);
-  if (!rendezvous) mailbox_.send(peer, envelope(kEager, size, context, tag, 0), payload);
-  if (!rendezvous && !request_if_done) return MPI_REQUEST_NULL;  // complete, and nobody will ask
+  if (!rendezvous) {
+    mailbox_.send(peer, envelope(kEager, size, context, tag, 0), payload);
+    if (!request_if_done) return MPI_REQUEST_NULL;  // complete, and nobody will ask
+  }
   auto [h, op] = operations_.add();
   op.is_send = true;
+  op.done = !rendezvous;
   op.call = std::move(call);
   op.comm = c.handle;
   op.context = context;
   op.tag = tag;
   op.peer_world = peer;
-  if (!rendezvous) {
-    op.done = true;
-    return h;
-  }
+  if (!rendezvous) return h;
   op.payload.assign(payload.begin(), payload.end());
   mailbox_.send(peer, envelope(kRequestToSend, size, context, tag, h), {});
   return h;

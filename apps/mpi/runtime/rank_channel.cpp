@@ -3,10 +3,10 @@
 namespace gcsim::mpi_layer {
 
 RankChannel::RankChannel(Rank& rank, MPI_Comm comm, std::string call)
-    : rank_(rank), comm_(rank.comm(comm)), call_(std::move(call)), call_text_(std::make_shared<const std::string>(call_)) {}
+    : rank_(rank), comm_(rank.comm(comm)), call_(std::make_shared<const std::string>(std::move(call))) {}
 
 CollectiveChannel::Handle RankChannel::start_send(int peer, int tag, std::span<const std::byte> data) {
-  return rank_.start_send(comm_, comm_.collective_context(), peer, tag, data, SendMode::buffered, CallText::shared(call_text_));
+  return rank_.start_send(comm_, comm_.collective_context(), peer, tag, data, SendMode::buffered, CallText::shared(call_));
 }
 
 CollectiveChannel::Handle RankChannel::start_recv(int peer, int tag, std::span<std::byte> into) {
@@ -24,7 +24,7 @@ void RankChannel::wait_all(std::span<const Handle> handles) {
     const std::vector<MPI_Request> waiting(handles.begin(), handles.end());
     while (!all_done()) schedule->yield(waiting);
   } else {
-    rank_.wait_until(all_done, call_);
+    rank_.wait_until(all_done, *call_);
   }
   std::string mismatch;
   int error = MPI_SUCCESS;
@@ -35,7 +35,7 @@ void RankChannel::wait_all(std::span<const Handle> handles) {
     const int code = rank_.finish(r, &status);
     if (code == MPI_SUCCESS || error != MPI_SUCCESS) continue;
     error = code;
-    mismatch = call_ + ": a block of " + std::to_string(status.gcsim_bytes) + " bytes from rank " +
+    mismatch = *call_ + ": a block of " + std::to_string(status.gcsim_bytes) + " bytes from rank " +
                std::to_string(status.MPI_SOURCE) + " where this rank expects " + std::to_string(expected) +
                " (the ranks' counts or datatypes disagree)";
   }

@@ -23,8 +23,7 @@ class RankChannel final : public CollectiveChannel {
  private:
   Rank& rank_;
   const Communicator& comm_;
-  std::string call_;
-  std::shared_ptr<const std::string> call_text_;  // call_, as every send of the collective names it
+  std::shared_ptr<const std::string> call_;  // shared: every send of the collective names it
 };
 
 }  // namespace gcsim::mpi_layer
