@@ -97,7 +97,7 @@ SimTime SimProcess::occupy_send_await(SimTime duration, std::string_view label, 
     return -1;
   }
   OccupySendAwait k{this, &sim_, id_, sim_.kernel.now(), duration, label, as_comm, dest, &envelope, data, &call, peer, {}};
-  sim_.nodes[node_].compute(duration, [](void* p) { static_cast<OccupySendAwait*>(p)->self->end_occupy_then_send(p); }, &k);
+  cpu_.compute(duration, [](void* p) { static_cast<OccupySendAwait*>(p)->self->end_occupy_then_send(p); }, &k);
   struct Unregister {  // also when block() throws to unwind an abandoned run
     OccupySendAwait& k;
     ~Unregister() {

@@ -13,7 +13,7 @@ using machine::TraceKind;
 // ---- SimProcess ------------------------------------------------------------------------------
 
 SimProcess::SimProcess(Simulation& sim, int id, int thread)
-    : sim_(sim), id_(id), thread_(thread), stats_(sim.stats.at(id)), node_(sim.node_of.at(id)) {}
+    : sim_(sim), id_(id), thread_(thread), stats_(sim.stats.at(id)), node_(sim.node_of.at(id)), cpu_(sim.nodes[static_cast<std::size_t>(node_)]) {}
 
 int SimProcess::id() const { return id_; }
 int SimProcess::count() const { return sim_.processors; }
@@ -74,7 +74,7 @@ void SimProcess::charge_ops(std::span<const OpCount> ops, bool as_comm) {
 bool SimProcess::occupy_cpu(machine::SimTime duration, std::string_view label) {
   const machine::SimTime start = sim_.kernel.now();
   Activity work;
-  sim_.nodes[node_].compute(duration, [](void* a) { static_cast<Activity*>(a)->complete(); }, &work);
+  cpu_.compute(duration, [](void* a) { static_cast<Activity*>(a)->complete(); }, &work);
   if (!wait_for_activity(work, "compute", -1)) return false;
   trace_compute(start, label);
   return true;

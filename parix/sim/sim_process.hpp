@@ -18,6 +18,10 @@
 #include "parix/sim/fiber_processes.hpp"
 #include "parix/sim/link_end.hpp"
 
+namespace gcsim::machine {
+class Node;
+}
+
 namespace gcsim::parix::detail {
 
 // Of a receive or wait blocked from start to end, the part before the sender of the message that
@@ -142,6 +146,7 @@ class SimProcess final : public Processor, public Mailbox, public Waiter {
   // before any process exists and never resizes them.
   ProcessorStats& stats_;
   int node_;
+  machine::Node& cpu_;  // its node's (sim_.nodes is a deque: no index on every charge)
   Request blocking_receive_;  // empty until the first blocking receive; see blocking_receive()
   Request send_request_;      // empty until the first send; see send_request()
   bool received_ = false;     // receive_into's message has arrived
