@@ -67,20 +67,6 @@ class Mailbox {
   }
   // Holds one of the node's CPUs for `duration`, counted as communication (as_comm) or compute.
   virtual void occupy(SimTime duration, std::string_view label, bool as_comm) = 0;
-  // occupy(), then send(), then, unless a letter is there by then, await() one (no requests) with
-  // `call` and `peer`: the three in a row, as a send-and-receive whose send needs nothing after it
-  // does them, where the simulated backend switches to the processor once instead of twice (a
-  // kernel event ends the CPU time, sends and starts the wait). Returns when the wait began, for
-  // the caller's trace_blocked(), or -1 if there was no wait (a letter was there: the caller's own
-  // loop goes on as after occupy() and send()).
-  virtual SimTime occupy_send_await(SimTime duration, std::string_view label, bool as_comm, int dest,
-                                    const Envelope& envelope, std::span<const std::byte> data,
-                                    const WaitDescription& call, int peer) {
-    (void)call, (void)peer;
-    occupy(duration, label, as_comm);
-    send(dest, envelope, data);
-    return -1;
-  }
   // Puts [start, now) on this processor's track of the trace, when one is written, as a wait the
   // layer above names: `label` its call, `peer` the processor waited for (-1: none in particular),
   // `bytes` what the call moves. Only for time spent in await(), so no two intervals overlap.

@@ -76,12 +76,8 @@ bool SimProcess::occupy_cpu(machine::SimTime duration, std::string_view label) {
   Activity work;
   cpu_.compute(duration, [](void* a) { static_cast<Activity*>(a)->complete(); }, &work);
   if (!wait_for_activity(work, "compute", -1)) return false;
-  trace_compute(start, label);
-  return true;
-}
-
-void SimProcess::trace_compute(machine::SimTime start, std::string_view label) {
   if (sim_.trace.enabled()) sim_.trace.record({TraceKind::compute, id_, -1, start, sim_.kernel.now(), 0, -1, label, thread_});
+  return true;
 }
 
 bool SimProcess::charge_comm_cpu(machine::SimTime fixed, std::int64_t bytes, std::string_view label) {

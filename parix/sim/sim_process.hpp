@@ -63,8 +63,6 @@ class SimProcess final : public Processor, public Mailbox, public Waiter {
   void await(std::span<const Request> requests, const WaitDescription& call, int peer) override;
   using Mailbox::await;
   void occupy(SimTime duration, std::string_view label, bool as_comm) override;
-  SimTime occupy_send_await(SimTime duration, std::string_view label, bool as_comm, int dest, const Envelope& envelope,
-                            std::span<const std::byte> data, const WaitDescription& call, int peer) override;
   void trace_blocked(std::string_view label, SimTime start, int peer, std::int64_t bytes) override;
   int node_of(int processor) const override;
 
@@ -130,8 +128,6 @@ class SimProcess final : public Processor, public Mailbox, public Waiter {
   // Holds one of the node's CPUs for `duration` (compute and the CPU side of communication share
   // them); false when the run was abandoned meanwhile.
   bool occupy_cpu(machine::SimTime duration, std::string_view label);
-  void trace_compute(machine::SimTime start, std::string_view label);  // [start, now) as compute, if traced
-  void end_occupy_then_send(void* state);  // occupy_send_await's kernel event
   // compute() and compute_in_comm(): the same charge, counted as compute or as communication.
   void charge_ops(std::span<const OpCount> ops, bool as_comm);
   // The machine's [comm_cpu] cost of one operation: `fixed` plus the copy of `bytes`, as

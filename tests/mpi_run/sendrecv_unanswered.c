@@ -1,6 +1,6 @@
 /* Rank 0's MPI_Sendrecv waits for a letter rank 1 never sends (rank 1 waits in MPI_Recv for a tag
- * rank 0 never sends): no letter is there when rank 0's send has paid its overhead, so the wait
- * starts in the same step as the send, and the deadlock report still names both halves. */
+ * rank 0 never sends): the deadlock report names both halves of rank 0's call, the eager send
+ * complete and without a request, and rank 1's receive. */
 #include <mpi.h>
 
 int main(int argc, char** argv) {

@@ -5,10 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <cstring>
 #include <string>
-#include <tuple>
-#include <vector>
 
 #include "machine/machine_config.hpp"
 #include "parix/mailbox.hpp"
@@ -53,71 +50,6 @@ TEST(MailboxTrace, TheBlockedIntervalIsAWaitNamedByTheLayerWithItsPeerAndBytes) 
   });
   EXPECT_GT(arrived, machine::kMillisecond);
   EXPECT_EQ(wait_rows((dir / "t.csv").string()), "wait,1,0,0," + std::to_string(arrived) + ",64,-1,MPI_Recv,0\n");
-  std::filesystem::remove_all(dir);
-}
-
-// occupy_send_await is occupy(), send() and, with no letter there, await(): the same times, stats
-// and trace as the three calls, whether the peer's letter came during the CPU time (no wait) or
-// after it (the event that ends the CPU time starts the wait), and the peer sees the same letters.
-TEST(MailboxTrace, OccupySendAwaitIsOccupyThenSendThenAwait) {
-  const auto dir = test_support::scratch_path("gcsim_mailbox_occupy_send_await_test");
-  std::filesystem::create_directories(dir);
-  auto exchange = [&](bool compound, const char* name) {
-    SimulationOptions o;
-    o.config = machine::with_nodes(machine::published_machine_config(), 2);
-    o.trace.path = (dir / name).string();
-    std::vector<SimTime> replies;
-    RunResult r = run_simulated(o, [&](Processor& p) {
-      Mailbox& box = *mailbox_of(p);
-      std::vector<Letter> got;
-      const SimTime work = 300 * machine::kMicrosecond;
-      for (int i = 0; i < 6; ++i) {
-        if (p.id() == 1) {  // answers each letter after 0, 1 or 2 times processor 0's CPU time
-          while (got.empty()) {
-            box.collect(got);
-            if (got.empty()) box.await({}, "peer", 0);
-          }
-          got.clear();
-          if (i % 3 != 0) box.occupy((i % 3) * work, "answer", false);
-          box.send(0, Envelope{}, Bytes(16));
-          continue;
-        }
-        const Bytes data(16);
-        const struct : WaitDescription {
-          std::string text() const override { return "exchange"; }
-        } call;
-        SimTime from = -1;
-        if (compound) {
-          from = box.occupy_send_await(work, "overhead", true, 1, Envelope{}, data, call, 1);
-        } else {
-          box.occupy(work, "overhead", true);
-          box.send(1, Envelope{}, data);
-          box.collect(got);
-          if (got.empty()) from = p.now(), box.await({}, call, 1);
-        }
-        if (from >= 0) box.trace_blocked("exchange", from, 1, 16);
-        while (got.empty()) {
-          box.collect(got);
-          if (got.empty()) box.await({}, call, 1);
-        }
-        got.clear();
-        replies.push_back(p.now());
-      }
-    });
-    std::ifstream in(dir / (std::string(name, std::strlen(name) - 5) + ".csv"));
-    std::stringstream csv;
-    csv << in.rdbuf();
-    return std::tuple{replies, r.makespan, r.processors[0].comm, r.processors[0].waiting, csv.str()};
-  };
-  const auto three = exchange(false, "three.json");
-  const auto one = exchange(true, "one.json");
-  EXPECT_EQ(std::get<0>(one), std::get<0>(three));
-  EXPECT_EQ(std::get<1>(one), std::get<1>(three));
-  EXPECT_EQ(std::get<2>(one), std::get<2>(three));
-  EXPECT_EQ(std::get<3>(one), std::get<3>(three));
-  EXPECT_GT(std::get<3>(three), 0);  // some exchanges waited for the peer
-  EXPECT_EQ(std::get<4>(one), std::get<4>(three));
-  EXPECT_NE(std::get<4>(three).find("wait,0,1,"), std::string::npos);
   std::filesystem::remove_all(dir);
 }
 

@@ -23,8 +23,7 @@ CallText send_call(const char* call, int dest, int tag, MPI_Comm comm) {
 
 // request_if_done: see Rank::start_send (false: an eager send returns MPI_REQUEST_NULL).
 MPI_Request start_send(Rank& rank, const void* buf, int count, MPI_Datatype datatype, int dest, int tag, MPI_Comm comm,
-                       SendMode mode, const char* call, bool request_if_done = true,
-                       const parix::WaitDescription* then_await = nullptr) {
+                       SendMode mode, const char* call, bool request_if_done = true) {
   const Communicator& c = rank.comm(comm);
   check_message_count(count);
   check_peer(c, dest, false);
@@ -44,8 +43,7 @@ MPI_Request start_send(Rank& rank, const void* buf, int count, MPI_Datatype data
   if (mode == SendMode::buffered && static_cast<MPI_Count>(payload.size()) > rank.attached_size) {
     fail(MPI_ERR_BUFFER, "MPI_Bsend: the attached buffer is too small for the message");
   }
-  return rank.start_send(c, c.context, dest, tag, payload, mode, send_call(call, dest, tag, comm), request_if_done,
-                         then_await);
+  return rank.start_send(c, c.context, dest, tag, payload, mode, send_call(call, dest, tag, comm), request_if_done);
 }
 
 MPI_Request start_recv(Rank& rank, void* buf, int count, MPI_Datatype datatype, int source, int tag, MPI_Comm comm,
@@ -136,15 +134,10 @@ int MPI_Sendrecv(const void* sendbuf, int sendcount, MPI_Datatype sendtype, int 
   int error = MPI_SUCCESS;
   const int code = runtime_call([&](Rank& rank) {
     MPI_Request r = start_recv(rank, recvbuf, recvcount, recvtype, source, recvtag, comm, "MPI_Sendrecv");
+    MPI_Request s = start_send(rank, sendbuf, sendcount, sendtype, dest, sendtag, comm, SendMode::standard, "MPI_Sendrecv", false);
     // An eager send has no request (complete): a deadlock report still names it.
     const CallText sent = send_call("MPI_Sendrecv", dest, sendtag, comm);
-    const OperationsWait eager_wait(rank, "", r, MPI_REQUEST_NULL, &sent);
-    const Operation* receive = rank.find_operation(r);
-    const bool receive_waits = receive && !receive->done;  // else the call waits for nothing but the send
-    MPI_Request s = start_send(rank, sendbuf, sendcount, sendtype, dest, sendtag, comm, SendMode::standard, "MPI_Sendrecv",
-                               false, receive_waits ? &eager_wait : nullptr);
-    const OperationsWait rendezvous_wait(rank, "", r, s);
-    const OperationsWait& call = s == MPI_REQUEST_NULL ? eager_wait : rendezvous_wait;
+    const OperationsWait call(rank, "", r, s, s == MPI_REQUEST_NULL ? &sent : nullptr);
     rank.wait_until([&] { return (s == MPI_REQUEST_NULL || rank.test(s)) && rank.test(r); }, "MPI_Sendrecv", call);
     if (s != MPI_REQUEST_NULL) rank.finish(s, MPI_STATUS_IGNORE);
     error = rank.finish(r, status);

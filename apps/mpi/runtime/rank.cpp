@@ -131,12 +131,8 @@ void Rank::leave_cpu() {
   before_switch();
 }
 
-machine::SimTime Rank::charge_time(std::int64_t bytes) const {
-  return costs_.call_overhead + machine::from_seconds(costs_.seconds_per_byte * static_cast<double>(bytes));
-}
-
 void Rank::charge(std::int64_t bytes) {
-  const machine::SimTime d = charge_time(bytes);
+  const machine::SimTime d = costs_.call_overhead + machine::from_seconds(costs_.seconds_per_byte * static_cast<double>(bytes));
   if (d <= 0) return;
   leave_cpu();
   mailbox_.occupy(d, call_span.label("mpi_overhead"), true);
@@ -152,24 +148,15 @@ void Rank::charge_reduction(std::size_t bytes) {
 }
 
 MPI_Request Rank::start_send(const Communicator& c, std::int64_t context, int dest, int tag,
-                             std::span<const std::byte> payload, SendMode mode, CallText call, bool request_if_done,
-                             const parix::WaitDescription* then_await) {
+                             std::span<const std::byte> payload, SendMode mode, CallText call, bool request_if_done) {
   progress_due_ = true;  // an operation done at once, or waiting for its clear-to-send
   const int peer = c.world_rank_of(dest);
   const auto size = static_cast<std::int64_t>(payload.size());
   name_call_span(call);
   call_span.involve(peer, false);
   call_span.add_sent(size);
-  const bool rendezvous = mode == SendMode::synchronous || (mode == SendMode::standard && size > costs_.eager_limit_bytes);
-  // The wait's first pass would find nothing but letters to take: nothing in flight, freed or scheduled.
-  if (then_await && !rendezvous && sends_on_wire_ == 0 && freed_live_ == 0 && schedules_.empty()) {
-    leave_cpu();
-    awaited_from_ = mailbox_.occupy_send_await(charge_time(size), call_span.label("mpi_overhead"), true, peer,
-                                               envelope(kEager, size, context, tag, 0), payload, *then_await, -1);
-    install();
-    return MPI_REQUEST_NULL;
-  }
   charge(size);
+  const bool rendezvous = mode == SendMode::synchronous || (mode == SendMode::standard && size > costs_.eager_limit_bytes);
   if (!rendezvous) {
     mailbox_.send(peer, envelope(kEager, size, context, tag, 0), payload);
     if (!request_if_done) return MPI_REQUEST_NULL;  // complete, and nobody will ask

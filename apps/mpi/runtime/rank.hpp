@@ -85,12 +85,8 @@ class Rank {
   // The payload is copied (posted, or kept until a rendezvous' clear-to-send). A send complete at
   // once (eager) gets no request when request_if_done is false (MPI_Send, MPI_Sendrecv, which
   // finish it in the same call): MPI_REQUEST_NULL, nothing to find, test or free.
-  // then_await (with request_if_done false): the call waits next for a receive not yet done, as
-  // `then_await` describes, with nothing else to do first (MPI_Sendrecv): an eager send then starts
-  // the wait itself (Mailbox::occupy_send_await), and the call's wait_until() goes on from there.
   MPI_Request start_send(const Communicator& c, std::int64_t context, int dest, int tag,
-                         std::span<const std::byte> payload, SendMode mode, CallText call, bool request_if_done = true,
-                         const parix::WaitDescription* then_await = nullptr);
+                         std::span<const std::byte> payload, SendMode mode, CallText call, bool request_if_done = true);
   MPI_Request start_recv(const Communicator& c, std::int64_t context, int source, int tag, void* buffer, MPI_Count count,
                          const Datatype& type, CallText call);
   MPI_Request start_raw_recv(const Communicator& c, std::int64_t context, int source, int tag, std::span<std::byte> into);
@@ -136,7 +132,6 @@ class Rank {
   bool probe(const Communicator& c, int source, int tag, MPI_Status* status);
 
   void charge(std::int64_t bytes);  // o + G * bytes, as communication
-  machine::SimTime charge_time(std::int64_t bytes) const;  // o + G * bytes
   void charge_reduction(std::size_t bytes);
   // Computation (rank_compute.cpp): annotated seconds or flops (nothing under --compute none), node
   // seconds charged as they are, and the marks of a call's entry and exit that --compute measured uses.
@@ -207,8 +202,6 @@ class Rank {
   bool program_ran_ = true;
   bool progress_due_ = true;  // see progress()
   std::size_t sends_on_wire_ = 0;  // at least the rendezvous sends whose data letter is not delivered
-  // When start_send's then_await began the wait, for the wait's trace (-1: it did not).
-  machine::SimTime awaited_from_ = -1;
   // Outstanding non-blocking collectives in start order; last, so they unwind while the rest lives.
   std::vector<std::unique_ptr<CollectiveProgress>> schedules_;
   CollectiveProgress* running_schedule_ = nullptr;

@@ -35,10 +35,6 @@ int Rank::finish(MPI_Request& handle, MPI_Status* status) {
 void Rank::wait_loop(Predicate done, std::string_view name, const parix::WaitDescription& call) {
   std::vector<parix::Request> wires;
   call_span.name(name);
-  if (awaited_from_ >= 0) {  // the call's send began the wait (start_send's then_await), which is over
-    mailbox_.trace_blocked(call_span.label("mpi_wait"), awaited_from_, call_span.peer(), call_span.bytes());
-    awaited_from_ = -1;
-  }
   for (;;) {
     progress();
     if (done.test(done.object)) return;
