@@ -17,31 +17,68 @@ std::size_t share_begin(std::size_t total, int node, int nodes) {
   return total * static_cast<std::size_t>(node) / static_cast<std::size_t>(nodes);
 }
 
-// The photon map of these gathered photons: the one another node built from the same photons, or a new one.
-std::shared_ptr<const PhotonMap> photon_map_of(std::vector<Photon> all, std::shared_ptr<const PhotonMap>* shared) {
-  if (shared && *shared) {
-    const std::vector<Photon>& theirs = (*shared)->photons();
-    if (theirs.size() == all.size() && std::memcmp(theirs.data(), all.data(), all.size() * sizeof(Photon)) == 0)
-      return *shared;
+// Whether the pieces an all-gather brought, one after the other, are `whole`: compared in place.
+bool same_as_pieces(std::span<const std::byte> whole, const parix::GatheredBytes& gathered) {
+  std::size_t at = 0;
+  for (const auto& piece : gathered.parts) {
+    if (piece.size() > whole.size() - at || std::memcmp(whole.data() + at, piece.data(), piece.size()) != 0) return false;
+    at += piece.size();
   }
-  auto map = std::make_shared<const PhotonMap>(std::move(all));
+  return at == whole.size();
+}
+
+// The pieces of an all-gather of T, concatenated in processor order.
+template <class T>
+std::vector<T> concatenated(const parix::GatheredBytes& gathered) {
+  std::size_t bytes = 0;
+  for (const auto& piece : gathered.parts) bytes += piece.size();
+  std::vector<T> out(bytes / sizeof(T));
+  std::size_t at = 0;
+  for (const auto& piece : gathered.parts) {
+    if (!piece.empty()) std::memcpy(reinterpret_cast<std::byte*>(out.data()) + at, piece.data(), piece.size());
+    at += piece.size();
+  }
+  return out;
+}
+
+// The photon map of the gathered photons: the one another node built from the same photons, or a new one.
+std::shared_ptr<const PhotonMap> photon_map_of(const parix::GatheredBytes& photons, std::shared_ptr<const PhotonMap>* shared) {
+  if (shared && *shared && same_as_pieces(std::as_bytes(std::span((*shared)->photons())), photons)) return *shared;
+  auto map = std::make_shared<const PhotonMap>(concatenated<Photon>(photons));
   if (shared) *shared = map;
   return map;
+}
+
+// The same for the grid's gathered voxels over the region's photon map.
+std::shared_ptr<const RadianceGrid> radiance_grid_of(const UniformGrid& grid, const parix::GatheredBytes& voxels,
+                                                     const PhotonMap* map, MediaHostThreads::SharedRegion* shared) {
+  if (shared && shared->grid && shared->map.get() == map &&
+      same_as_pieces(std::as_bytes(std::span(shared->grid->voxels())), voxels))
+    return shared->grid;
+  auto built = std::make_shared<const RadianceGrid>(grid, concatenated<ShCoefficients>(voxels));
+  if (shared) shared->grid = built;
+  return built;
+}
+
+std::size_t total_bytes(const parix::GatheredBytes& gathered) {
+  std::size_t bytes = 0;
+  for (const auto& piece : gathered.parts) bytes += piece.size();
+  return bytes;
 }
 
 // One region's photon map (replicated) and SH grid (each node builds a slice, then all-gather).
 RegionCache build_region_parallel(parix::Processor& p, const std::vector<Photon>& mine,
                                   const HomogeneousMedium& medium, std::size_t k, std::uint64_t& photon_bytes,
                                   std::uint64_t& grid_bytes, std::vector<parix::MemoryReservation>& held,
-                                  RenderCounters& counts, int jobs, std::shared_ptr<const PhotonMap>* shared) {
-  // Concatenated straight out of the packet: one copy on the simulation's thread, not two.
-  std::vector<Photon> all = parix::allgather_concatenated<Photon>(p, std::span<const Photon>(mine));
-  held.push_back(p.reserve_memory(std::int64_t(all.size() * sizeof(Photon)), "photon map"));
-  photon_bytes += all.size() * sizeof(Photon);
+                                  RenderCounters& counts, int jobs, MediaHostThreads::SharedRegion* shared) {
+  const parix::GatheredBytes photons = parix::allgather_views(p, std::as_bytes(std::span(mine)));
+  const std::size_t gathered_bytes = total_bytes(photons);
+  held.push_back(p.reserve_memory(std::int64_t(gathered_bytes), "photon map"));
+  photon_bytes += gathered_bytes;
   RegionCache region;
-  if (all.empty()) return region;
-  const UniformGrid grid = grid_for_photons(all, k);
-  region.map = photon_map_of(std::move(all), shared);
+  if (gathered_bytes == 0) return region;
+  region.map = photon_map_of(photons, shared ? &shared->map : nullptr);
+  const UniformGrid grid = grid_for_photons(region.map->photons(), k);
   const std::size_t voxels = grid.voxel_count();
   const std::size_t first = share_begin(voxels, p.id(), p.count()), last = share_begin(voxels, p.id() + 1, p.count());
   const parix::MemoryReservation slice_held =
@@ -59,8 +96,8 @@ RegionCache build_region_parallel(parix::Processor& p, const std::vector<Photon>
     counts.grid_build.add(mine_built);
   }
   held.push_back(p.reserve_memory(std::int64_t(voxels * sizeof(ShCoefficients)), "radiance grid"));
-  region.grid = std::make_unique<RadianceGrid>(grid);
-  region.grid->voxels() = parix::allgather_concatenated<ShCoefficients>(p, std::span<const ShCoefficients>(my_voxels));
+  const parix::GatheredBytes pieces = parix::allgather_views(p, std::as_bytes(std::span(my_voxels)));
+  region.grid = radiance_grid_of(grid, pieces, region.map.get(), shared);
   grid_bytes += voxels * sizeof(ShCoefficients);
   return region;
 }
@@ -190,10 +227,10 @@ void media_program(parix::Processor& p, const MediaScene& scene, const MarchSett
   RenderCounters& built = per_node[static_cast<std::size_t>(p.id())];
   caches.outside =
       build_region_parallel(p, photons.outside, scene.outside, scene.k_nearest, photon_bytes, grid_bytes, held, built,
-                            jobs, host ? &host->outside_map : nullptr);
+                            jobs, host ? &host->outside : nullptr);
   caches.inside =
       build_region_parallel(p, photons.inside, scene.inside, scene.k_nearest, photon_bytes, grid_bytes, held, built,
-                            jobs, host ? &host->inside_map : nullptr);
+                            jobs, host ? &host->inside : nullptr);
   // Node 0 assembles the whole image; the others hold a tile at a time.
   const std::int64_t image_bytes = id == 0 ? std::int64_t(width) * height * std::int64_t(sizeof(glm::vec3)) : 0;
   const parix::MemoryReservation image_held = p.reserve_memory(image_bytes, "image");
@@ -216,7 +253,7 @@ ParallelMediaResult render_media_parallel(const MediaScene& scene, const MarchSe
   ParallelMediaResult result;
   result.image = apps::Image(scene.image.width, scene.image.height);
   std::vector<RenderCounters> per_node(static_cast<std::size_t>(sim.config.nodes));
-  MediaHostThreads host{host_threads - 1, nullptr, 0, nullptr, nullptr};
+  MediaHostThreads host{host_threads - 1, nullptr, 0, {}, {}};
   result.run = parix::run_simulated(
       sim, [&](parix::Processor& p) { media_program(p, scene, settings, seed, result, per_node, &host); });
   result.tiles_by_workers = host.tiles_by_workers;

@@ -45,9 +45,15 @@ struct MediaHostThreads {
   int workers = 0;
   std::unique_ptr<apps::WorkAhead<PixelTile>> ahead;  // while node 0 farms out the tiles
   std::int64_t tiles_by_workers = 0;                  // after the run
-  // Every node gathers the same photons, so the first to build a region's k-d tree lends it to the
-  // others (host time only: building it is not charged, so simulated times do not change).
-  std::shared_ptr<const PhotonMap> outside_map, inside_map;
+  // Every node gathers the same photons and grid voxels, so the first to build a region's photon
+  // map (with its k-d tree) and grid lends them to the others, which compare what they gathered
+  // with them piece by piece instead of copying it (host time only: building the tree and copying
+  // the packets are not charged, so simulated times do not change).
+  struct SharedRegion {
+    std::shared_ptr<const PhotonMap> map;
+    std::shared_ptr<const RadianceGrid> grid;
+  };
+  SharedRegion outside, inside;
 };
 
 // The SPMD program: every processor runs it; result.image (sized by the caller) and the byte and

@@ -12,7 +12,7 @@ namespace gcsim::media {
 
 struct RegionCache {
   std::shared_ptr<const PhotonMap> map;  // null when no photon was stored; read-only, so nodes may share one
-  std::unique_ptr<RadianceGrid> grid;
+  std::shared_ptr<const RadianceGrid> grid;  // read-only too
 };
 
 struct SceneCaches {

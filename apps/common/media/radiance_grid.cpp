@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 
 #include <glm/common.hpp>
@@ -44,7 +45,9 @@ std::vector<ShCoefficients> build_voxel_chunk(const UniformGrid& grid, const Pho
   std::vector<ShCoefficients> voxels(last > first ? last - first : 0);
   const std::vector<Photon>& photons = map.photons();
   // ΔΦ_p w'_l Y_lm(ω_p) / σt per photon, made on first use: a voxel then adds 16 products per photon.
-  std::vector<ShCoefficients> projected(photons.size());
+  // Left uninitialized (`used` says which are made): a chunk touches only its voxels' photons, and
+  // zeroing a projection per photon of the map for every chunk cost more than the chunk's own work.
+  const std::unique_ptr<ShCoefficients[]> projected(new ShCoefficients[photons.size()]);
   used.assign(photons.size(), 0);
   const double voxel_width = grid.cell_size().x;
   double previous_radius = -1.0;  // r_k of the voxel before along x, or < 0: none

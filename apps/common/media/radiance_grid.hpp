@@ -58,10 +58,13 @@ class RadianceGrid {
   RadianceGrid(const UniformGrid& grid, const PhotonMap& map, const HomogeneousMedium& medium, std::size_t k,
                int jobs = 1);
   explicit RadianceGrid(const UniformGrid& grid) : grid_(grid), voxels_(grid.voxel_count()) {}
+  // Built elsewhere (the voxels of a parallel build, gathered): grid.voxel_count() of them.
+  RadianceGrid(const UniformGrid& grid, std::vector<ShCoefficients> voxels) : grid_(grid), voxels_(std::move(voxels)) {}
 
   const UniformGrid& grid() const { return grid_; }
   const ShCoefficients& voxel(std::size_t i) const { return voxels_[i]; }
   std::vector<ShCoefficients>& voxels() { return voxels_; }
+  const std::vector<ShCoefficients>& voxels() const { return voxels_; }
   const GridBuildCounts& build_counts() const { return counts_; }
 
   // Li(x, ω_o) from the voxel holding x (no interpolation, as in the paper).
