@@ -1,6 +1,7 @@
 #include "parix/collectives.hpp"
 
 #include <cstdint>
+#include <cstring>
 
 namespace gcsim::parix {
 namespace {
@@ -151,6 +152,22 @@ std::vector<Bytes> allgather(Processor& p, std::span<const std::byte> mine, cons
   std::vector<Bytes> all(p.count());
   unpack(packed, all);
   return all;
+}
+
+std::size_t GatheredBytes::size() const {
+  std::size_t bytes = 0;
+  for (const auto& part : parts) bytes += part.size();
+  return bytes;
+}
+
+bool GatheredBytes::same_as(std::span<const std::byte> whole) const {
+  std::size_t at = 0;
+  for (const auto& part : parts) {
+    if (part.size() > whole.size() - at || (!part.empty() && std::memcmp(whole.data() + at, part.data(), part.size()) != 0))
+      return false;
+    at += part.size();
+  }
+  return at == whole.size();
 }
 
 GatheredBytes allgather_views(Processor& p, std::span<const std::byte> mine, const CollectiveOptions& o) {

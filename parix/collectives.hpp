@@ -36,6 +36,10 @@ std::vector<Bytes> allgather(Processor& p, std::span<const std::byte> mine, cons
 struct GatheredBytes {
   Bytes packed;
   std::vector<std::span<const std::byte>> parts;  // by processor id, views into packed
+  std::size_t size() const;  // the parts' bytes together
+  // Whether the parts, one after the other, are `whole`: compared in place, nothing copied (a
+  // processor that holds what another already concatenated need not make a copy of its own).
+  bool same_as(std::span<const std::byte> whole) const;
 };
 GatheredBytes allgather_views(Processor& p, std::span<const std::byte> mine, const CollectiveOptions& o = {});
 // Combines contributions with op (acc op= in) towards the root; the root returns the result,
@@ -58,11 +62,11 @@ std::vector<std::vector<T>> allgather_vectors(Processor& p, std::span<const T> m
   }
   return out;
 }
-// Every processor's elements, concatenated in processor order.
+// The gathered elements, concatenated in processor order (a part's bytes past its last whole T
+// are left out).
 template <class T>
-std::vector<T> allgather_concatenated(Processor& p, std::span<const T> mine, const CollectiveOptions& o = {}) {
+std::vector<T> concatenated(const GatheredBytes& all) {
   static_assert(std::is_trivially_copyable_v<T>);
-  const GatheredBytes all = allgather_views(p, std::as_bytes(mine), o);
   std::size_t bytes = 0;
   for (const auto& part : all.parts) bytes += part.size() / sizeof(T) * sizeof(T);
   std::vector<T> out(bytes / sizeof(T));
@@ -73,6 +77,11 @@ std::vector<T> allgather_concatenated(Processor& p, std::span<const T> mine, con
     at += whole;
   }
   return out;
+}
+// Every processor's elements, concatenated in processor order.
+template <class T>
+std::vector<T> allgather_concatenated(Processor& p, std::span<const T> mine, const CollectiveOptions& o = {}) {
+  return concatenated<T>(allgather_views(p, std::as_bytes(mine), o));
 }
 template <class T>
 T allreduce_sum(Processor& p, T value, const CollectiveOptions& o = {}) {

@@ -17,34 +17,10 @@ std::size_t share_begin(std::size_t total, int node, int nodes) {
   return total * static_cast<std::size_t>(node) / static_cast<std::size_t>(nodes);
 }
 
-// Whether the pieces an all-gather brought, one after the other, are `whole`: compared in place.
-bool same_as_pieces(std::span<const std::byte> whole, const parix::GatheredBytes& gathered) {
-  std::size_t at = 0;
-  for (const auto& piece : gathered.parts) {
-    if (piece.size() > whole.size() - at || std::memcmp(whole.data() + at, piece.data(), piece.size()) != 0) return false;
-    at += piece.size();
-  }
-  return at == whole.size();
-}
-
-// The pieces of an all-gather of T, concatenated in processor order.
-template <class T>
-std::vector<T> concatenated(const parix::GatheredBytes& gathered) {
-  std::size_t bytes = 0;
-  for (const auto& piece : gathered.parts) bytes += piece.size();
-  std::vector<T> out(bytes / sizeof(T));
-  std::size_t at = 0;
-  for (const auto& piece : gathered.parts) {
-    if (!piece.empty()) std::memcpy(reinterpret_cast<std::byte*>(out.data()) + at, piece.data(), piece.size());
-    at += piece.size();
-  }
-  return out;
-}
-
 // The photon map of the gathered photons: the one another node built from the same photons, or a new one.
 std::shared_ptr<const PhotonMap> photon_map_of(const parix::GatheredBytes& photons, std::shared_ptr<const PhotonMap>* shared) {
-  if (shared && *shared && same_as_pieces(std::as_bytes(std::span((*shared)->photons())), photons)) return *shared;
-  auto map = std::make_shared<const PhotonMap>(concatenated<Photon>(photons));
+  if (shared && *shared && photons.same_as(std::as_bytes(std::span((*shared)->photons())))) return *shared;
+  auto map = std::make_shared<const PhotonMap>(parix::concatenated<Photon>(photons));
   if (shared) *shared = map;
   return map;
 }
@@ -52,18 +28,11 @@ std::shared_ptr<const PhotonMap> photon_map_of(const parix::GatheredBytes& photo
 // The same for the grid's gathered voxels over the region's photon map.
 std::shared_ptr<const RadianceGrid> radiance_grid_of(const UniformGrid& grid, const parix::GatheredBytes& voxels,
                                                      const PhotonMap* map, MediaHostThreads::SharedRegion* shared) {
-  if (shared && shared->grid && shared->map.get() == map &&
-      same_as_pieces(std::as_bytes(std::span(shared->grid->voxels())), voxels))
+  if (shared && shared->grid && shared->map.get() == map && voxels.same_as(std::as_bytes(std::span(shared->grid->voxels()))))
     return shared->grid;
-  auto built = std::make_shared<const RadianceGrid>(grid, concatenated<ShCoefficients>(voxels));
+  auto built = std::make_shared<const RadianceGrid>(grid, parix::concatenated<ShCoefficients>(voxels));
   if (shared) shared->grid = built;
   return built;
-}
-
-std::size_t total_bytes(const parix::GatheredBytes& gathered) {
-  std::size_t bytes = 0;
-  for (const auto& piece : gathered.parts) bytes += piece.size();
-  return bytes;
 }
 
 // One region's photon map (replicated) and SH grid (each node builds a slice, then all-gather).
@@ -72,7 +41,7 @@ RegionCache build_region_parallel(parix::Processor& p, const std::vector<Photon>
                                   std::uint64_t& grid_bytes, std::vector<parix::MemoryReservation>& held,
                                   RenderCounters& counts, int jobs, MediaHostThreads::SharedRegion* shared) {
   const parix::GatheredBytes photons = parix::allgather_views(p, std::as_bytes(std::span(mine)));
-  const std::size_t gathered_bytes = total_bytes(photons);
+  const std::size_t gathered_bytes = photons.size();
   held.push_back(p.reserve_memory(std::int64_t(gathered_bytes), "photon map"));
   photon_bytes += gathered_bytes;
   RegionCache region;

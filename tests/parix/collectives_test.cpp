@@ -139,6 +139,29 @@ TEST(Collectives, ConcatenatedAllgatherIsThePartsInProcessorOrder) {
   });
 }
 
+// same_as compares the parts, in order, with a whole without concatenating them: equal only for the
+// same bytes in the same places, whatever the parts' sizes (empty ones included).
+TEST(Collectives, GatheredPartsAreTheSameAsTheirConcatenationAndNothingElse) {
+  run_simulated(on_nodes(5), [](Processor& p) {
+    const GatheredBytes g = allgather_views(p, tagged(p.id(), 3 * (p.id() % 3)));  // parts of 0, 3, 6, 0, 3 bytes
+    const std::vector<std::byte> whole = concatenated<std::byte>(g);
+    ASSERT_EQ(g.size(), 12u);
+    ASSERT_EQ(whole.size(), 12u);
+    EXPECT_TRUE(g.same_as(whole));
+    std::vector<std::byte> changed = whole;
+    changed[7] ^= std::byte{1};  // inside the third part
+    EXPECT_FALSE(g.same_as(changed));
+    EXPECT_FALSE(g.same_as(std::span(whole).first(11)));  // shorter
+    std::vector<std::byte> longer = whole;
+    longer.push_back(std::byte{0});
+    EXPECT_FALSE(g.same_as(longer));
+    EXPECT_FALSE(g.same_as({}));
+    std::vector<std::byte> swapped(whole.begin() + 3, whole.end());  // parts 2 and 3 moved before part 1
+    swapped.insert(swapped.end(), whole.begin(), whole.begin() + 3);
+    EXPECT_FALSE(g.same_as(swapped));
+  });
+}
+
 TEST(Collectives, BarrierWaitsForTheSlowest) {
   for (const Case& c : all_cases()) {
     std::vector<SimTime> after(c.nodes);
