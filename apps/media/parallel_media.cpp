@@ -40,13 +40,15 @@ RegionCache build_region_parallel(parix::Processor& p, const std::vector<Photon>
                                   const HomogeneousMedium& medium, std::size_t k, std::uint64_t& photon_bytes,
                                   std::uint64_t& grid_bytes, std::vector<parix::MemoryReservation>& held,
                                   RenderCounters& counts, int jobs, MediaHostThreads::SharedRegion* shared) {
-  const parix::GatheredBytes photons = parix::allgather_views(p, std::as_bytes(std::span(mine)));
-  const std::size_t gathered_bytes = photons.size();
-  held.push_back(p.reserve_memory(std::int64_t(gathered_bytes), "photon map"));
-  photon_bytes += gathered_bytes;
   RegionCache region;
-  if (gathered_bytes == 0) return region;
-  region.map = photon_map_of(photons, shared ? &shared->map : nullptr);
+  {  // the gathered packet goes before the grid's all-gather, where every node waits holding its own
+    const parix::GatheredBytes photons = parix::allgather_views(p, std::as_bytes(std::span(mine)));
+    const std::size_t gathered_bytes = photons.size();
+    held.push_back(p.reserve_memory(std::int64_t(gathered_bytes), "photon map"));
+    photon_bytes += gathered_bytes;
+    if (gathered_bytes == 0) return region;
+    region.map = photon_map_of(photons, shared ? &shared->map : nullptr);
+  }
   const UniformGrid grid = grid_for_photons(region.map->photons(), k);
   const std::size_t voxels = grid.voxel_count();
   const std::size_t first = share_begin(voxels, p.id(), p.count()), last = share_begin(voxels, p.id() + 1, p.count());

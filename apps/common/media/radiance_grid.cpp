@@ -45,8 +45,8 @@ std::vector<ShCoefficients> build_voxel_chunk(const UniformGrid& grid, const Pho
   std::vector<ShCoefficients> voxels(last > first ? last - first : 0);
   const std::vector<Photon>& photons = map.photons();
   // ΔΦ_p w'_l Y_lm(ω_p) / σt per photon, made on first use: a voxel then adds 16 products per photon.
-  // Left uninitialized (`used` says which are made): a chunk touches only its voxels' photons, and
-  // zeroing a projection per photon of the map for every chunk cost more than the chunk's own work.
+  // Left uninitialized (`used` says which are made): a chunk touches only its voxels' photons, so
+  // zeroing one projection per photon of the map for every chunk was mostly wasted.
   const std::unique_ptr<ShCoefficients[]> projected(new ShCoefficients[photons.size()]);
   used.assign(photons.size(), 0);
   const double voxel_width = grid.cell_size().x;

@@ -57,7 +57,6 @@ class RadianceGrid {
   // Builds every voxel from the photon map (the k nearest photons of each voxel centre); counts the work.
   RadianceGrid(const UniformGrid& grid, const PhotonMap& map, const HomogeneousMedium& medium, std::size_t k,
                int jobs = 1);
-  explicit RadianceGrid(const UniformGrid& grid) : grid_(grid), voxels_(grid.voxel_count()) {}
   // Built elsewhere (the voxels of a parallel build, gathered): grid.voxel_count() of them.
   RadianceGrid(const UniformGrid& grid, std::vector<ShCoefficients> voxels) : grid_(grid), voxels_(std::move(voxels)) {}
 

@@ -32,9 +32,8 @@ int make_persistent(const char* call, Starter start, const void* buf, int count,
       if (described.form == CallText::Form::point_to_point) {
         described.name = call;  // a literal, as the entry point's own name
       } else {
-        static const std::string none;
-        const std::string& was = described.text ? *described.text : none;
-        described.text = std::make_shared<const std::string>(name + was.substr(std::min(was.find('('), was.size())));
+        const std::string was = described.str();
+        described = CallText::of(name + was.substr(std::min(was.find('('), was.size())));
       }
       return started;
     };
