@@ -54,7 +54,8 @@ void add_machine_options(CLI::App* cmd, MachineOptions& o, std::string_view node
   cmd->add_option("--host-threads", o.host_threads,
                   "Host threads for one simulated run: the simulation keeps one, the others compute ahead the work an "
                   "application can (radiosity and render's radiosity pass: each loop's hemicube cells; raytrace and "
-                  "render's view: the tiles, except with --algo B1; media: the image tiles). Results, simulated times and "
+                  "render's view: the tiles, except with --algo B1; media: each node's photons, the SH "
+                  "grids and the image tiles; render's media pass: the photons and SH grids). Results, simulated times and "
                   "traces are the same for any count; only the wall time changes")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
