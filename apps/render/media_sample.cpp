@@ -39,7 +39,11 @@ PhotonRun run_photons(const MediaSetup& media, const parix::SimulationOptions& m
 
 }  // namespace
 
-int march_row_stride(int tile_stride) { return std::max(1, 4 / std::max(tile_stride, 1)); }
+int march_row_stride(int tile_stride, int tiles, int nodes, long pixels) {
+  const int k = std::max(tile_stride, 1);
+  const bool thin = tiles >= 4 * std::max(nodes, 1) && pixels / (8L * k) >= kMinPixelsMarchedThin;
+  return std::max(1, (thin ? 8 : 4) / k);
+}
 
 MediaSample sample_media(const scene::SceneDescription& d, const Plan& plan, const std::string& file,
                          const parix::SimulationOptions& machine, const MediaSampleOptions& o) {
@@ -76,7 +80,8 @@ MediaSample sample_media(const scene::SceneDescription& d, const Plan& plan, con
   // node got two of the sphere's (its view 3.87 s against the render's 2.41 s).
   if (!setup.radiosity) in.node_start = node_end;
   in.tile_stride = o.tile_stride > 0 ? o.tile_stride : march_tile_stride(view_tile_count(d), machine.config.nodes, plan.facts.media_coverage >= 1.0);
-  in.pixel_row_stride = o.row_stride > 0 ? o.row_stride : march_row_stride(in.tile_stride);
+  in.pixel_row_stride = o.row_stride > 0 ? o.row_stride : march_row_stride(in.tile_stride, view_tile_count(d), machine.config.nodes,
+                                                                          long(d.image.width) * d.image.height);
   const SampledView with = run_sampled_view(in, machine);
   in.view.exposure = with.exposure;
   in.media = nullptr, in.photons = nullptr;

@@ -11,8 +11,8 @@
 //   marching the view's sample as view_sample.hpp takes it (sampled_view.hpp: one run of 4 tiles in
 //            k, on diagonals, the nodes' mean CPU time scaled to every tile, the waiting kept),
 //            rendered with the media (from the sample's photons) and without: the difference (the
-//            set-up cancels), one pixel row in 4 of each sampled tile, its counts scaled to the
-//            tile (march_row_stride). Single tiles, the whole time scaled, put example.toml's marching
+//            set-up cancels), one pixel row in 8 (or 4) of each sampled tile, its counts scaled to
+//            the tile (march_row_stride). Single tiles, the whole time scaled, put example.toml's marching
 //            23 % high on 8 nodes (1.53 s against 1.25 s).
 //            Without a radiosity pass each node starts its view where its photon pass ends (each
 //            node's end through the two points), as in the render: which node asks for tiles first
@@ -38,12 +38,16 @@ struct MediaSampleOptions {
 };
 
 // The marching's pixel rows, chosen: one in max(1, 4 / K) of each tile of a sample that marches one
-// run of tiles in K, so that at least a quarter of the image's pixels are marched. Where the sample is
-// every tile (few tiles a node: MEDIA-SMALL on 8 and 64 nodes, CORNELL-FOG on 64), one row in 4 moved
-// the media row by -2.7 % and -0.2 % (MEDIA-SMALL, 8 and 64 nodes) and +0.8 % (CORNELL-FOG, 64) for a
-// quarter of the marching's host time; on top of one run of tiles in 4 (a sixteenth of the pixels) it
-// put a 96 x 64 MEDIA-SMALL's marching +15 % high (apps/render/README.md).
-int march_row_stride(int tile_stride);
+// run of tiles in K, at least a quarter of the image's pixels; one in max(1, 8 / K), an eighth, where
+// that still marches kMinPixelsMarchedThin pixels and a node has 4 tiles or more. One row in 8 put
+// MEDIA-SMALL (64 x 48: 384 pixels marched) -13 % low on 1 node and its view on 64 nodes (48 tiles)
+// +10.5 % high (+6.1 % at one in 4). Moving the first row from tile to tile made it -5 % on 1 node
+// but put a 48 x 32 MEDIA-SMALL's marching -11.5 % low at one row in 4 (-39 % at one in 8): on few
+// pixels the rows' choice decides, so the sample keeps the tile's top row and enough pixels. On top
+// of one run of tiles in 4, one row in 4 from the top put a 96 x 64 MEDIA-SMALL's marching +15 % high
+// (apps/render/README.md).
+inline constexpr long kMinPixelsMarchedThin = 4096;
+int march_row_stride(int tile_stride, int tiles, int nodes, long pixels);
 
 struct MediaSample {
   double photon_seconds = 0;  // the photon pass (last node's end), extrapolated to every photon

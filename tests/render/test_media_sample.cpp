@@ -121,10 +121,10 @@ TEST(MediaSample, ThePlansMediaRowLandsNearTheRenders) {
   EXPECT_NEAR(s.seconds(), r.view_start + marching, 0.1 * (r.view_start + marching));
 }
 
-// One pixel row in 4 of every tile (the plan's choice where the sample is every tile) against every
-// row, on the same tiles and photons: the photons and the SH grid are untouched, the marching moves
-// by a few per cent (a tile's work is its pixels' radiance estimates, which its rows sample), and it
-// is a sample, not a rerun of every row.
+// One pixel row in 4 of every tile (the plan's choice where the sample is every tile of a small
+// image) against every row, on the same tiles and photons: the photons and the SH grid are
+// untouched, the marching moves by a few per cent (a tile's work is its pixels' radiance estimates,
+// which its rows sample), and it is a sample, not a rerun of every row.
 TEST(MediaSample, MarchingOneRowInFourLandsNearEveryRow) {
   const scene::SceneDescription d = small_scene();
   const Plan plan = make_plan(d);
@@ -144,13 +144,23 @@ TEST(MediaSample, MarchingOneRowInFourLandsNearEveryRow) {
   }
 }
 
-// At least a quarter of the pixels marched: rows thin out only as far as the tiles do not.
-TEST(MediaSample, TheRowStrideKeepsAQuarterOfThePixels) {
-  EXPECT_EQ(march_row_stride(1), 4);
-  EXPECT_EQ(march_row_stride(2), 2);
-  EXPECT_EQ(march_row_stride(3), 1);
-  EXPECT_EQ(march_row_stride(4), 1);
-  EXPECT_EQ(march_row_stride(8), 1);
+// A quarter of the pixels marched, an eighth where that is still kMinPixelsMarchedThin pixels and a
+// node has 4 tiles or more: rows thin out only as far as the tiles do not.
+TEST(MediaSample, TheRowStrideKeepsAnEighthOrAQuarterOfThePixels) {
+  const long vga = 640L * 480;
+  EXPECT_EQ(march_row_stride(1, 4800, 8, vga), 8);
+  EXPECT_EQ(march_row_stride(2, 4800, 8, vga), 4);
+  EXPECT_EQ(march_row_stride(3, 4800, 8, vga), 2);
+  EXPECT_EQ(march_row_stride(4, 4800, 8, vga), 2);
+  EXPECT_EQ(march_row_stride(8, 4800, 8, vga), 1);
+  EXPECT_EQ(march_row_stride(16, 4800, 8, vga), 1);
+  EXPECT_EQ(march_row_stride(1, 4800, 1201, vga), 4);  // fewer than 4 tiles a node
+  EXPECT_EQ(march_row_stride(1, 4800, 1200, vga), 8);
+  EXPECT_EQ(march_row_stride(1, 4800, 0, vga), 8);  // no nodes counts as one
+  EXPECT_EQ(march_row_stride(1, 48, 1, 64 * 48), 4);  // an eighth would be 384 pixels
+  EXPECT_EQ(march_row_stride(1, 512, 1, 8 * kMinPixelsMarchedThin), 8);
+  EXPECT_EQ(march_row_stride(1, 512, 1, 8 * kMinPixelsMarchedThin - 1), 4);
+  EXPECT_EQ(march_row_stride(2, 512, 1, 16 * kMinPixelsMarchedThin - 1), 2);
 }
 
 TEST(MediaSample, TheSameSampleTwiceGivesTheSameFigures) {
