@@ -1,5 +1,6 @@
 #include "apps/mpi/app/mpirun_options.hpp"
 
+#include <limits>
 #include <stdexcept>
 
 #include <CLI/CLI.hpp>
@@ -85,13 +86,18 @@ std::string mpirun_usage() {
 MpirunOptions parse_mpirun_options(const std::vector<std::string>& words) {
   MpirunOptions o;
   std::size_t i = 0;
+  bool np_given = false;
   auto value = [&](const std::string& option) -> std::string {
     if (i + 1 >= words.size()) bad(option + " expects a value");
     return words[++i];
   };
   for (; i < words.size() && o.program.empty(); ++i) {
     const std::string& w = words[i];
-    if (w == "-np" || w == "-n" || w == "--np") o.np = static_cast<int>(integer_of(w, value(w)));
+    if (w == "-np" || w == "-n" || w == "--np") {
+      const long long n = integer_of(w, value(w));
+      if (n < 1 || n > std::numeric_limits<int>::max()) bad(w + " expects the number of ranks, 1 or more, got " + std::to_string(n));
+      o.np = static_cast<int>(n), np_given = true;
+    }
     else if (w == "--ranks-per-node") o.ranks_per_node = static_cast<int>(integer_of(w, value(w)));
     else if (w == "--config") o.machine.config = value(w);
     else if (w == "--model") o.machine.model = value(w);
@@ -111,7 +117,7 @@ MpirunOptions parse_mpirun_options(const std::vector<std::string>& words) {
   if (o.help) return o;
   if (o.compute != "none" && o.compute != "annotated" && o.compute != "measured")
     bad("--compute expects measured, annotated or none, got '" + o.compute + "'");
-  if (o.np < 1) bad("-np N is required: the number of ranks, 1 or more");
+  if (!np_given) bad("-np N is required: the number of ranks, 1 or more");
   if (o.program.empty()) bad("no program given: gcsim mpirun -np N PROGRAM [ARGS...]");
   if (o.ranks_per_node < 1 || o.ranks_per_node > o.np) bad("--ranks-per-node expects 1..N (the ranks, -np)");
   o.machine.nodes = (o.np + o.ranks_per_node - 1) / o.ranks_per_node;
