@@ -173,7 +173,7 @@ def plot_mesh_heatmap(plt, trace, window, title, path):
     lw = max(0.8, min(5.0, 32.0 / max(w, h)))
     import matplotlib
     bytes_cmap = matplotlib.colormaps["viridis"]
-    busy_cmap = matplotlib.colormaps["inferno_r"]
+    busy_cmap = matplotlib.colormaps["plasma"]  # low to high as the bytes panel (and the message matrix): dark to bright
     bytes_norm = Normalize(0, max(1.0, total.max()))
     # Scaled to the busiest channel (a nice round share), so that light load still shows contrast.
     busy_top = next((v for v in (0.01, 0.02, 0.05, 0.1, 0.2, 0.25, 0.5, 0.75, 1.0) if busy.max() <= v), max(1.0, busy.max()))
