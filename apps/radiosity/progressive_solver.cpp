@@ -4,6 +4,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 #include "apps/radiosity/convergence.hpp"
 
@@ -142,12 +143,43 @@ std::vector<Rgb> ProgressiveState::patch_radiosity() const {
   return b;
 }
 
+namespace {
+
+// SolverOptions::row_memo_bytes: rows kept by shooter, each with the counts computing it added.
+class RowMemo {
+ public:
+  RowMemo(std::int64_t bytes, std::size_t elements)
+      : rows_left_(elements > 0 ? bytes / std::int64_t(elements * sizeof(double) + sizeof(OpCounts)) : 0) {}
+  std::vector<double> row(HemicubeRenderer& hemicube, int shooter, OpCounts& ops) {
+    if (const auto kept = kept_.find(shooter); kept != kept_.end()) {
+      ops += kept->second.cost;
+      return kept->second.row;
+    }
+    OpCounts cost;
+    std::vector<double> row = hemicube.form_factor_row(shooter, cost);
+    ops += cost;
+    if (rows_left_ > 0) --rows_left_, kept_.emplace(shooter, Kept{row, cost});
+    return row;
+  }
+
+ private:
+  struct Kept {
+    std::vector<double> row;
+    OpCounts cost;
+  };
+  std::int64_t rows_left_;
+  std::unordered_map<int, Kept> kept_;
+};
+
+}  // namespace
+
 SolveResult solve_progressive(const Scene& scene, const SolverOptions& o, OpCounts* ops_out,
                               const std::function<void(const StepRecord&, const ProgressiveState&)>& on_step) {
   if (o.shooters < 1) throw std::invalid_argument("shooters per step must be at least 1");
   check_energy_can_be_absorbed(scene, o.hemicube);
   SolveResult r{ProgressiveState(scene, o.media, o.received), {}, false};
   HemicubeRenderer hemicube(scene, o.hemicube);
+  RowMemo memo(o.row_memo_bytes, scene.elements.size());
   OpCounts local;
   OpCounts& ops = ops_out ? *ops_out : local;
   while (r.state.shot_fraction() < o.energy && r.state.steps() < o.max_steps) {
@@ -156,7 +188,7 @@ SolveResult solve_progressive(const Scene& scene, const SolverOptions& o, OpCoun
                                     : r.state.select_in_index_order(o.shooters, ops);
     if (shooters.empty()) break;
     std::vector<std::vector<double>> rows;
-    for (int s : shooters) rows.push_back(hemicube.form_factor_row(s, ops));
+    for (int s : shooters) rows.push_back(memo.row(hemicube, s, ops));
     r.state.shoot(shooters, rows, ops);
     StepRecord rec{r.state.steps(), r.state.shot_fraction(), shooters};
     if (on_step) on_step(rec, r.state);

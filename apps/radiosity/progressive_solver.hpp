@@ -5,6 +5,7 @@
 //     delta Rad_e = rho_e * delta B_i * F_ie * A_i / A_e,
 // and the element's patch gains delta Rad_e * A_e / A_p of unshot radiosity.
 // The state is plain data so that every node of a parallel run can hold a replica of it.
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <span>
@@ -93,6 +94,12 @@ struct SolverOptions {
   // carries on what they reflect; the parallel solve charges an element_update per element for
   // taking it. Null: none. Not owned.
   const std::vector<Rgb>* received = nullptr;
+  // The host solve (solve_progressive) keeps each shooter's form-factor row, with what computing it
+  // counted, up to this many bytes, and shoots a patch again from its kept row: the row depends on
+  // the shooter alone, so the solution and the counts are the same bit for bit. Progressive
+  // radiosity shoots the same patches again and again (CORNELL at a 16-cell hemicube: 515 shots of
+  // 111 patches). 0: every row computed. The parallel solve does not read it.
+  std::int64_t row_memo_bytes = 64 << 20;
 };
 
 // Whether this step sorts by energy (true) or takes the index order.

@@ -6,7 +6,8 @@
 
 namespace gcsim::render {
 
-std::vector<int> hemicubes_per_patch(const radiosity::Scene& mesh, const radiosity::HemicubeOptions& o) {
+std::vector<int> hemicubes_per_patch(const radiosity::Scene& mesh, const radiosity::HemicubeOptions& o,
+                                     radiosity::SamplesPerSideMemo* memo) {
   // The largest samples per side the hemicube renderer gives its grids at o.resolution (each sample's
   // hemicube o.resolution / n across, at least 16 and a whole number of cells: hemicube.cpp).
   int max_per_side = 1;
@@ -15,7 +16,8 @@ std::vector<int> hemicubes_per_patch(const radiosity::Scene& mesh, const radiosi
     if (!(r >= 16 && r % (2 * scale) == 0 && r / scale >= o.cells_per_side)) break;
     max_per_side = n;
   }
-  std::vector<int> out = radiosity::shooter_samples_per_side(mesh, o.near_field_ratio, max_per_side);
+  std::vector<int> out = memo ? *memo->get(mesh, o.near_field_ratio, max_per_side)
+                              : radiosity::shooter_samples_per_side(mesh, o.near_field_ratio, max_per_side);
   for (int& n : out) n *= n;
   return out;
 }
@@ -24,6 +26,7 @@ LoopForecast forecast_loops(const radiosity::Scene& mesh, radiosity::SolverOptio
                             const std::vector<int>& hemicubes_per_patch, int resolution) {
   const auto start = std::chrono::steady_clock::now();
   solver.hemicube.resolution = resolution;
+  solver.hemicube.cells_per_side = kForecastCellsPerSide;
   solver.max_steps = radiosity::SolverOptions{}.max_steps;
   const radiosity::SolveResult solved = radiosity::solve_progressive(mesh, solver);
   LoopForecast f;

@@ -23,6 +23,9 @@ struct LoopForecast {
 
 // The hemicube resolution of the coarse solve: 16 cells across (8 gives CORNELL 264 loops, 24 260).
 inline constexpr int kForecastResolution = 16;
+// The coarse hemicube is one cell of 8 x 8 pixels a face quarter: the render's parallel partition
+// (8 cells per side) would cut 16 pixels into cells of 2 x 2, each walking every polygon of its face.
+inline constexpr int kForecastCellsPerSide = 2;
 inline constexpr double kForecastLoopSpread = 0.02;  // relative, of the loops between those resolutions
 
 // Solves `mesh` on the host as `solver` would, with a coarse hemicube `resolution` across.
@@ -31,7 +34,9 @@ LoopForecast forecast_loops(const radiosity::Scene& mesh, radiosity::SolverOptio
                             const std::vector<int>& hemicubes_per_patch, int resolution = kForecastResolution);
 
 // The hemicubes each patch projects when it shoots at `o`'s resolution (near-field samples squared).
-std::vector<int> hemicubes_per_patch(const radiosity::Scene& mesh, const radiosity::HemicubeOptions& o);
+// memo: the run's (its replicas worked the samples out already), or null.
+std::vector<int> hemicubes_per_patch(const radiosity::Scene& mesh, const radiosity::HemicubeOptions& o,
+                                     radiosity::SamplesPerSideMemo* memo = nullptr);
 
 // A forecast priced by a sample of the pass's loops: loop i of the sample took loop_seconds[i]
 // simulated and projected sample_hemicubes[i] hemicubes.

@@ -53,7 +53,8 @@ RadiositySample sample_radiosity_loops(const scene::SceneDescription& d, const s
   if (converged || s.loops == 0) {  // the sample is the pass
     s.expected_loops = s.loops, s.seconds = run.simulated_seconds();
   } else {
-    const std::vector<int> per_patch = hemicubes_per_patch(mesh, radiosity::hemicube_of(options));
+    const std::vector<int> per_patch = hemicubes_per_patch(
+        mesh, radiosity::hemicube_of(options), options.shared_projections ? &options.shared_projections->samples_per_side() : nullptr);
     const LoopForecast forecast = forecast_loops(mesh, options.solver, per_patch);
     std::vector<double> loop_seconds;
     std::vector<int> loop_hemicubes;

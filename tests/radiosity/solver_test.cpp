@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 #include "apps/radiosity/gauss_seidel.hpp"
 #include "apps/radiosity/progressive_solver.hpp"
@@ -132,6 +133,37 @@ TEST(ProgressiveRefinement, IndexOrderNeedsMoreLoopsThanSortingByEnergy) {
 }
 
 // Hard cases.
+// Rows kept for shooters that shoot again (SolverOptions::row_memo_bytes) against every row
+// computed, and against a memo too small for one row: the same solution and counts bit for bit,
+// on a room where patches do shoot again (so the kept rows are used).
+TEST(ProgressiveRefinement, KeptRowsChangeNeitherTheSolutionNorTheCounts) {
+  const Scene room = testing::lit_room(1.0, 0.05, 0.8);
+  SolverOptions o = options(32, 0.999);
+  auto solve = [&](std::int64_t memo_bytes, OpCounts& ops) {
+    o.row_memo_bytes = memo_bytes;
+    return solve_progressive(room, o, &ops);
+  };
+  OpCounts computed, kept, too_small;
+  const SolveResult a = solve(0, computed), b = solve(64 << 20, kept), c = solve(8, too_small);
+  std::set<int> distinct;
+  int shots = 0;
+  for (const StepRecord& step : a.steps)
+    for (int s : step.shooters) distinct.insert(s), ++shots;
+  ASSERT_GT(shots, int(distinct.size()) + 10);
+  for (const SolveResult* r : {&b, &c}) {
+    ASSERT_EQ(r->steps.size(), a.steps.size());
+    for (std::size_t i = 0; i < a.steps.size(); ++i) EXPECT_EQ(r->steps[i].shooters, a.steps[i].shooters);
+    const auto& x = a.state.element_radiosity();
+    const auto& y = r->state.element_radiosity();
+    ASSERT_EQ(x.size(), y.size());
+    for (std::size_t e = 0; e < x.size(); ++e)
+      for (int k = 0; k < 3; ++k) ASSERT_EQ(x[e][k], y[e][k]) << "element " << e;
+  }
+  for (const OpCounts* n : {&kept, &too_small})
+    for (std::size_t k = 0; k < computed.named().size(); ++k)
+      EXPECT_EQ(n->named()[k].count, computed.named()[k].count) << computed.named()[k].op;
+}
+
 TEST(HardCases, ReflectanceNearOneStaysFiniteAndConverges) {
   const double rho = 0.99;
   Scene box = testing::closed_box(1.0, 1, 1, rho, 1.0);
