@@ -41,8 +41,11 @@ PhotonRun run_photons(const MediaSetup& media, const parix::SimulationOptions& m
 
 int march_row_stride(int tile_stride, int tiles, int nodes, long pixels) {
   const int k = std::max(tile_stride, 1);
-  const bool thin = tiles >= 4 * std::max(nodes, 1) && pixels / (8L * k) >= kMinPixelsMarchedThin;
-  return std::max(1, (thin ? 8 : 4) / k);
+  const bool many_tiles = tiles >= 4 * std::max(nodes, 1);
+  int share = 4;  // one pixel in `share` of the image marched
+  if (many_tiles && pixels / (8L * k) >= kMinPixelsMarchedThin) share = 8;
+  if (many_tiles && pixels / 16 >= kMinPixelsMarchedSixteenth) share = 16;
+  return std::max(1, share / k);
 }
 
 MediaSample sample_media(const scene::SceneDescription& d, const Plan& plan, const std::string& file,

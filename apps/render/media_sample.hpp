@@ -11,7 +11,7 @@
 //   marching the view's sample as view_sample.hpp takes it (sampled_view.hpp: one run of 4 tiles in
 //            k, on diagonals, the nodes' mean CPU time scaled to every tile, the waiting kept),
 //            rendered with the media (from the sample's photons) and without: the difference (the
-//            set-up cancels), one pixel row in 8 (or 4) of each sampled tile, its counts scaled to
+//            set-up cancels), one pixel row in 16, 8 or 4 of each sampled tile, its counts scaled to
 //            the tile (march_row_stride). Single tiles, the whole time scaled, put example.toml's marching
 //            23 % high on 8 nodes (1.53 s against 1.25 s).
 //            Without a radiosity pass each node starts its view where its photon pass ends (each
@@ -37,16 +37,20 @@ struct MediaSampleOptions {
   int row_stride = 0;           // one pixel row in k of each sampled tile marched; 0: chosen (march_row_stride); 1: every row
 };
 
-// The marching's pixel rows, chosen: one in max(1, 4 / K) of each tile of a sample that marches one
-// run of tiles in K, at least a quarter of the image's pixels; one in max(1, 8 / K), an eighth, where
-// that still marches kMinPixelsMarchedThin pixels and a node has 4 tiles or more. One row in 8 put
-// MEDIA-SMALL (64 x 48: 384 pixels marched) -13 % low on 1 node and its view on 64 nodes (48 tiles)
-// +10.5 % high (+6.1 % at one in 4). Moving the first row from tile to tile made it -5 % on 1 node
-// but put a 48 x 32 MEDIA-SMALL's marching -11.5 % low at one row in 4 (-39 % at one in 8): on few
-// pixels the rows' choice decides, so the sample keeps the tile's top row and enough pixels. On top
-// of one run of tiles in 4, one row in 4 from the top put a 96 x 64 MEDIA-SMALL's marching +15 % high
-// (apps/render/README.md).
+// The marching's pixel rows, chosen for a sample that marches one run of tiles in K: one in
+// max(1, 4 / K) of each sampled tile, a quarter of the image's pixels; where a node has 4 tiles or
+// more, one in max(1, 8 / K), an eighth, where one row in 8 of the sampled tiles is still
+// kMinPixelsMarchedThin pixels, and one in max(1, 16 / K), a sixteenth, where that is still
+// kMinPixelsMarchedSixteenth pixels. One row in 8 put MEDIA-SMALL (64 x 48: 384 pixels marched)
+// -13 % low on 1 node and its view on 64 nodes (48 tiles) +10.5 % high (+6.1 % at one in 4). A
+// sixteenth of MEDIA-EXP1 (640 x 480: 19200 pixels) moved its view by +0.2, -0.1 and -0.2 points
+// on 1, 8 and 64 nodes against an eighth, for half the plan's host time. Moving the first row from
+// tile to tile made MEDIA-SMALL -5 % on 1 node but put a 48 x 32 MEDIA-SMALL's marching -11.5 % low
+// at one row in 4 (-39 % at one in 8): on few pixels the rows' choice decides, so the sample keeps
+// the tile's top row and enough pixels. On top of one run of tiles in 4, one row in 4 from the top
+// put a 96 x 64 MEDIA-SMALL's marching +15 % high (apps/render/README.md).
 inline constexpr long kMinPixelsMarchedThin = 4096;
+inline constexpr long kMinPixelsMarchedSixteenth = 16384;
 int march_row_stride(int tile_stride, int tiles, int nodes, long pixels);
 
 struct MediaSample {

@@ -144,19 +144,24 @@ TEST(MediaSample, MarchingOneRowInFourLandsNearEveryRow) {
   }
 }
 
-// A quarter of the pixels marched, an eighth where that is still kMinPixelsMarchedThin pixels and a
-// node has 4 tiles or more: rows thin out only as far as the tiles do not.
-TEST(MediaSample, TheRowStrideKeepsAnEighthOrAQuarterOfThePixels) {
-  const long vga = 640L * 480;
-  EXPECT_EQ(march_row_stride(1, 4800, 8, vga), 8);
-  EXPECT_EQ(march_row_stride(2, 4800, 8, vga), 4);
-  EXPECT_EQ(march_row_stride(3, 4800, 8, vga), 2);
-  EXPECT_EQ(march_row_stride(4, 4800, 8, vga), 2);
-  EXPECT_EQ(march_row_stride(8, 4800, 8, vga), 1);
+// A quarter of the pixels marched; where a node has 4 tiles or more, an eighth where one row in 8 of
+// the sampled tiles is still kMinPixelsMarchedThin pixels, a sixteenth where that is still
+// kMinPixelsMarchedSixteenth: rows thin out only as far as the tiles do not.
+TEST(MediaSample, TheRowStrideKeepsASixteenthAnEighthOrAQuarterOfThePixels) {
+  const long vga = 640L * 480, quarter_vga = 320L * 240;
+  EXPECT_EQ(march_row_stride(1, 4800, 8, vga), 16);
+  EXPECT_EQ(march_row_stride(2, 4800, 8, vga), 8);
+  EXPECT_EQ(march_row_stride(3, 4800, 8, vga), 5);
+  EXPECT_EQ(march_row_stride(4, 4800, 8, vga), 4);
+  EXPECT_EQ(march_row_stride(8, 4800, 8, vga), 2);
   EXPECT_EQ(march_row_stride(16, 4800, 8, vga), 1);
   EXPECT_EQ(march_row_stride(1, 4800, 1201, vga), 4);  // fewer than 4 tiles a node
-  EXPECT_EQ(march_row_stride(1, 4800, 1200, vga), 8);
-  EXPECT_EQ(march_row_stride(1, 4800, 0, vga), 8);  // no nodes counts as one
+  EXPECT_EQ(march_row_stride(1, 4800, 1200, vga), 16);
+  EXPECT_EQ(march_row_stride(1, 4800, 0, vga), 16);  // no nodes counts as one
+  EXPECT_EQ(march_row_stride(1, 1200, 1, quarter_vga), 8);  // a sixteenth would be 4800 pixels
+  EXPECT_EQ(march_row_stride(4, 1200, 1, quarter_vga), 1);  // one row in 8 of its tiles: 2400
+  EXPECT_EQ(march_row_stride(1, 4096, 1, 16 * kMinPixelsMarchedSixteenth), 16);
+  EXPECT_EQ(march_row_stride(1, 4096, 1, 16 * kMinPixelsMarchedSixteenth - 1), 8);
   EXPECT_EQ(march_row_stride(1, 48, 1, 64 * 48), 4);  // an eighth would be 384 pixels
   EXPECT_EQ(march_row_stride(1, 512, 1, 8 * kMinPixelsMarchedThin), 8);
   EXPECT_EQ(march_row_stride(1, 512, 1, 8 * kMinPixelsMarchedThin - 1), 4);
