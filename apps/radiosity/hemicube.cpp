@@ -43,13 +43,17 @@ Vec3 to_face(int face, const Vec3& l) {
   }
 }
 
+// The vertex after i of a polygon of n, without the integer division of (i + 1) % n: the Z-buffer
+// asks it for every edge of every pixel.
+constexpr int next_vertex(int i, int n) { return i + 1 < n ? i + 1 : 0; }
+
 // Sutherland-Hodgman against the plane f(q) >= 0.
 template <class F>
 int clip(const Vec3* in, int n, Vec3* out, F f) {
   int m = 0;
   for (int i = 0; i < n; ++i) {
     const Vec3& a = in[i];
-    const Vec3& b = in[i + 1 < n ? i + 1 : 0];
+    const Vec3& b = in[next_vertex(i, n)];
     double fa = f(a), fb = f(b);
     if (fa >= 0) out[m++] = a;
     if ((fa >= 0) != (fb >= 0)) out[m++] = a + (b - a) * (fa / (fa - fb));
@@ -168,7 +172,7 @@ void HemicubeRenderer::project_from(const Vec3& origin, Faces& faces, OpCounts& 
       double area2 = 0, x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
       for (int i = 0; i < m; ++i) {
         const auto& a = p.p[i];
-        const auto& b = p.p[i + 1 < m ? i + 1 : 0];
+        const auto& b = p.p[next_vertex(i, m)];
         area2 += a[0] * b[1] - a[1] * b[0];
         x0 = std::min(x0, a[0]), x1 = std::max(x1, a[0]), y0 = std::min(y0, a[1]), y1 = std::max(y1, a[1]);
       }
@@ -191,7 +195,7 @@ bool HemicubeRenderer::inside(const Projected& poly, double px, double py) const
   const double x = px * kSubpixel, y = py * kSubpixel;
   for (int i = 0; i < poly.count; ++i) {
     const auto& a = poly.p[i];
-    const auto& b = poly.p[i + 1 < poly.count ? i + 1 : 0];
+    const auto& b = poly.p[next_vertex(i, poly.count)];
     const double dx = (b[0] - a[0]) * poly.edge_sign, dy = (b[1] - a[1]) * poly.edge_sign;
     const double e = dx * (y - a[1]) - dy * (x - a[0]);
     if (e < 0) return false;

@@ -82,9 +82,10 @@ MediaSample sample_media(const scene::SceneDescription& d, const Plan& plan, con
   // render: started together, MEDIA-SMALL's 48 tiles on 64 nodes went out paired otherwise and one
   // node got two of the sphere's (its view 3.87 s against the render's 2.41 s).
   if (!setup.radiosity) in.node_start = node_end;
-  in.tile_stride = o.tile_stride > 0 ? o.tile_stride : march_tile_stride(view_tile_count(d), machine.config.nodes, plan.facts.media_coverage >= 1.0);
-  in.pixel_row_stride = o.row_stride > 0 ? o.row_stride : march_row_stride(in.tile_stride, view_tile_count(d), machine.config.nodes,
-                                                                          long(d.image.width) * d.image.height);
+  const int tiles = view_tile_count(d);
+  in.tile_stride = o.tile_stride > 0 ? o.tile_stride : march_tile_stride(tiles, machine.config.nodes, plan.facts.media_coverage >= 1.0);
+  in.pixel_row_stride = o.row_stride > 0 ? o.row_stride
+                                         : march_row_stride(in.tile_stride, tiles, machine.config.nodes, long(d.image.width) * d.image.height);
   const SampledView with = run_sampled_view(in, machine);
   in.view.exposure = with.exposure;
   in.media = nullptr, in.photons = nullptr;

@@ -132,7 +132,6 @@ TEST(ProgressiveRefinement, IndexOrderNeedsMoreLoopsThanSortingByEnergy) {
     EXPECT_NEAR(unsorted.state.element_radiosity()[e].r, sorted.state.element_radiosity()[e].r, 0.01 * mean);
 }
 
-// Hard cases.
 // Rows kept for shooters that shoot again (SolverOptions::row_memo_bytes) against every row
 // computed, and against a memo too small for one row: the same solution and counts bit for bit,
 // on a room where patches do shoot again (so the kept rows are used).
@@ -164,6 +163,7 @@ TEST(ProgressiveRefinement, KeptRowsChangeNeitherTheSolutionNorTheCounts) {
       EXPECT_EQ(n->named()[k].count, computed.named()[k].count) << computed.named()[k].op;
 }
 
+// Hard cases.
 TEST(HardCases, ReflectanceNearOneStaysFiniteAndConverges) {
   const double rho = 0.99;
   Scene box = testing::closed_box(1.0, 1, 1, rho, 1.0);

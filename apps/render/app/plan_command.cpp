@@ -140,8 +140,9 @@ void add_plan_command(pipeline::CommandGroups& g) {
   cmd->add_option("--sample-rows", f->sample_rows,
                   "R: the media's marching on the sampled tiles traces one pixel row in R of each tile and\n"
                   "scales its work to the tile (most of a plan's host time is that marching); default: R\n"
-                  "chosen for one run of tiles in K: 4 / K rows, a quarter of the pixels; 8 / K, an eighth,\n"
-                  "where that is 4096 pixels or more and a node has 4 tiles or more; at least 1 (every row)")
+                  "chosen for one run of tiles in K: 4 / K rows, a quarter of the pixels; where a node has 4\n"
+                  "tiles or more, 8 / K, an eighth, where one row in 8 of the sampled tiles is 4096 pixels or\n"
+                  "more, and 16 / K, a sixteenth, where that is 16384 pixels or more; at least 1 (every row)")
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--photons", f->photons, "photons the render will emit (gcsim render --photons)")
       ->capture_default_str()
