@@ -54,6 +54,7 @@ MediaSample sample_media(const scene::SceneDescription& d, const Plan& plan, con
   RenderSetup setup = prepare_render(d, plan, file, {}, o.photons);
   if (!setup.media || !setup.media->photon_pass) throw std::invalid_argument(file + ": the plan has no photon pass");
   MediaSetup& media = *setup.media;
+  media.view.look_up_li = false;  // the samples are timed, not shown: their counts need no Li
   const std::size_t n = o.photons, big = std::max<std::size_t>(1, n / std::size_t(std::max(o.photon_divisor, 1)));
   const double scale = double(n) / double(big);
 

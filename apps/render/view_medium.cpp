@@ -68,7 +68,9 @@ glm::vec3 ViewMedium::along(const geometry::Ray& ray, float t_end, glm::vec3 beh
       march.defensive_alpha = settings_.defensive_alpha;
       march.b = settings_.samples_per_free_path * r.lum.sigma_t;  // M = b S = samples (1 - T)
       const media::SegmentQuery q{o + part.t0 * u, u, length, &r.lum, r.grid.get(), std::nullopt};
-      auto li = [&](const glm::dvec3& p) { return r.map->in_scattered(p, -u, r.lum, settings_.k_nearest); };
+      auto li = [&](const glm::dvec3& p) {
+        return settings_.look_up_li ? r.map->in_scattered(p, -u, r.lum, settings_.k_nearest) : 0.0;
+      };
       media::MarchCounters mc;
       const double in = media::march_segment_in_scatter(q, march, li, rng, mc);
       radiance += through * r.in_scatter_colour * in;

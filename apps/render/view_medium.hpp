@@ -31,6 +31,10 @@ struct ViewMediumSettings {
   double display_scale = 3.14159265358979323846;
   glm::dvec3 light_chroma{1.0};  // PhotonLights::chroma
   int grid_jobs = 1;             // host threads that build the SH grids (the same grids on any number)
+  // false: the march counts its samples' photon look-ups without making them (Li taken as 0). The
+  // plan's samples want only the counts, and nothing the march or the tile decides reads Li, so the
+  // counts are the render's; on MEDIA-SMALL the look-ups are over half of a plan's host time.
+  bool look_up_li = true;
 };
 
 class ViewMedium : public raytrace::RayMedia {

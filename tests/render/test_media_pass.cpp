@@ -61,9 +61,10 @@ struct Rendered {
 };
 
 Rendered render(const scene::SceneDescription& d, int nodes, bool force_media = false, std::size_t photons = 4000,
-                std::uint64_t seed = 1) {
+                std::uint64_t seed = 1, bool look_up_li = true) {
   const Plan plan = make_plan(d);
-  const RenderSetup setup = prepare_render(d, plan, "test.toml", {.media = force_media}, photons, true, seed);
+  RenderSetup setup = prepare_render(d, plan, "test.toml", {.media = force_media}, photons, true, seed);
+  if (setup.media) setup.media->view.look_up_li = look_up_li;
   radiosity::ParallelOptions o;
   o.solver.hemicube.resolution = 32;
   o.solver.energy = 0.9;
@@ -314,6 +315,24 @@ TEST(MediaPass, FogImageIsTheSameOnAnyNodeCount) {
   double change = 0;
   for (std::size_t i = 0; i < clear.pixels().size(); ++i) change += std::abs(one.image.pixels()[i].g - clear.pixels()[i].g);
   EXPECT_GT(change / double(clear.pixels().size()), 0.01);
+}
+
+// The plan's samples march without looking Li up: every count and simulated time is the render's
+// (nothing the march or the tile decides reads Li), only the fog's light is missing.
+TEST(MediaPass, MarchingWithoutLiLookUpsCountsTheSame) {
+  const scene::SceneDescription d = small_image(scene_file("cornell-fog.toml"));
+  const Rendered full = render(d, 3), counted = render(d, 3, false, 4000, 1, false);
+  EXPECT_EQ(full.simulated_s, counted.simulated_s);
+  const raytrace::TraceCounters &a = full.out->view->result.counters, &b = counted.out->view->result.counters;
+  EXPECT_GT(a.media_samples, 1000);
+  EXPECT_EQ(a.media_samples, b.media_samples);
+  EXPECT_EQ(a.media_knn_photons, b.media_knn_photons);
+  EXPECT_EQ(a.media_sh_evals, b.media_sh_evals);
+  EXPECT_EQ(a.media_segments, b.media_segments);
+  EXPECT_EQ(a.ops(), b.ops());
+  double lit = 0, dark = 0;
+  for (std::size_t i = 0; i < full.image.pixels().size(); ++i) lit += full.image.pixels()[i].g, dark += counted.image.pixels()[i].g;
+  EXPECT_GT(lit, dark * 1.01);  // the in-scattered light is what is left out
 }
 
 // `gcsim render --seed`: another seed redraws the photons and the distance samples, and is itself
