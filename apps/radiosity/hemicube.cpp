@@ -8,11 +8,11 @@
 
 #include <fmt/format.h>
 
+#include "apps/radiosity/pixel_span.hpp"
+
 namespace gcsim::radiosity {
 
 namespace {
-
-constexpr double kSubpixel = 256;  // projected vertices live on a grid of 1/256 pixel
 
 std::vector<HemicubeCell> make_cells(const HemicubeOptions& o, int resolution) {
   if (o.hierarchical_levels < 0 || o.hierarchical_levels > 8)
@@ -42,10 +42,6 @@ Vec3 to_face(int face, const Vec3& l) {
     default: return {l.x, l.z, -l.y};
   }
 }
-
-// The vertex after i of a polygon of n, without the integer division of (i + 1) % n: the Z-buffer
-// asks it for every edge of every pixel.
-constexpr int next_vertex(int i, int n) { return i + 1 < n ? i + 1 : 0; }
 
 // Sutherland-Hodgman against the plane f(q) >= 0.
 template <class F>
@@ -191,20 +187,6 @@ void HemicubeRenderer::project_from(const Vec3& origin, Faces& faces, OpCounts& 
   }
 }
 
-bool HemicubeRenderer::inside(const Projected& poly, double px, double py) const {
-  const double x = px * kSubpixel, y = py * kSubpixel;
-  for (int i = 0; i < poly.count; ++i) {
-    const auto& a = poly.p[i];
-    const auto& b = poly.p[next_vertex(i, poly.count)];
-    const double dx = (b[0] - a[0]) * poly.edge_sign, dy = (b[1] - a[1]) * poly.edge_sign;
-    const double e = dx * (y - a[1]) - dy * (x - a[0]);
-    if (e < 0) return false;
-    // On the edge: of two polygons sharing it (opposite directions), exactly one takes the pixel.
-    if (e == 0 && !(dy < 0 || (dy == 0 && dx > 0))) return false;
-  }
-  return true;
-}
-
 double HemicubeRenderer::depth(int face, const Projected& poly, double px, double py) const {
   const double r = grid_->resolution;
   Vec3 ray{px * 2 / r - 1, face == kTopFace ? py * 2 / r - 1 : py * 2 / r, 1.0};
@@ -251,10 +233,10 @@ void HemicubeRenderer::fixed_cell(const Faces& faces, const HemicubeCell& c, dou
     int y0 = std::max(p.by0, c.j0), y1 = std::min(p.by1, c.j1);
     if (x0 >= x1 || y0 >= y1) continue;
     ops.hemicube_pixel += std::int64_t(x1 - x0) * (y1 - y0);
-    for (int j = y0; j < y1; ++j)
-      for (int i = x0; i < x1; ++i) {
+    for (int j = y0; j < y1; ++j) {
+      const PixelSpan span = covered_span(p, j, x0, x1);
+      for (int i = span.begin; i < span.end; ++i) {
         double px = i + 0.5, py = j + 0.5;
-        if (!inside(p, px, py)) continue;
         double z = depth(c.face, p, px, py);
         std::size_t k = std::size_t(j - c.j0) * w + (i - c.i0);
         if (z < zbuf_[k]) {
@@ -262,6 +244,7 @@ void HemicubeRenderer::fixed_cell(const Faces& faces, const HemicubeCell& c, dou
           item_[k] = p.front ? p.element : -2;  // -2: hidden by the back of an element
         }
       }
+    }
   }
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
@@ -280,7 +263,7 @@ int HemicubeRenderer::sample(const Faces& faces, int face, const std::vector<int
   ops.hemicube_sample += std::int64_t(candidates.size());
   for (int ci : candidates) {
     const Projected& p = polys[ci];
-    if (!inside(p, px, py)) continue;
+    if (!covers_point(p, px, py)) continue;
     double z = depth(face, p, px, py);
     if (z < best) {
       best = z;

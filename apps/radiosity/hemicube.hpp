@@ -120,7 +120,6 @@ class HemicubeRenderer {
   using Faces = HemicubeFaces;
   using Projected = ProjectedElement;
   void project_from(const Vec3& origin, Faces& faces, OpCounts& ops);
-  bool inside(const Projected& poly, double px, double py) const;
   double depth(int face, const Projected& poly, double px, double py) const;
   void fixed_cell(const Faces& faces, const HemicubeCell& c, double weight, OpCounts& ops);
   void hierarchical_cell(const Faces& faces, const HemicubeCell& c, double weight, OpCounts& ops);
