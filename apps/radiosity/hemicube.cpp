@@ -187,9 +187,12 @@ void HemicubeRenderer::project_from(const Vec3& origin, Faces& faces, OpCounts& 
   }
 }
 
-double HemicubeRenderer::depth(int face, const Projected& poly, double px, double py) const {
+Vec3 HemicubeRenderer::pixel_ray(int face, double px, double py) const {
   const double r = grid_->resolution;
-  Vec3 ray{px * 2 / r - 1, face == kTopFace ? py * 2 / r - 1 : py * 2 / r, 1.0};
+  return {px * 2 / r - 1, face == kTopFace ? py * 2 / r - 1 : py * 2 / r, 1.0};
+}
+
+double HemicubeRenderer::depth(const Projected& poly, const Vec3& ray) {
   double den = glm::dot(poly.plane_n, ray);
   if (den == 0) return std::numeric_limits<double>::infinity();
   double t = poly.plane_k / den;
@@ -228,31 +231,55 @@ void HemicubeRenderer::fixed_cell(const Faces& faces, const HemicubeCell& c, dou
   const int w = c.i1 - c.i0, h = c.j1 - c.j0;
   zbuf_.assign(std::size_t(w) * h, std::numeric_limits<double>::infinity());
   item_.assign(std::size_t(w) * h, -1);
+  // The rays through the cell's pixel centres, one division per column and per row rather than two
+  // per pixel and element (the same numbers pixel_ray makes).
+  column_x_.resize(std::size_t(w)), row_y_.resize(std::size_t(h));
+  for (int i = 0; i < w; ++i) column_x_[std::size_t(i)] = pixel_ray(c.face, c.i0 + i + 0.5, 0.0).x;
+  for (int j = 0; j < h; ++j) row_y_[std::size_t(j)] = pixel_ray(c.face, 0.0, c.j0 + j + 0.5).y;
   for (const Projected& p : faces[c.face]) {
     int x0 = std::max(p.bx0, c.i0), x1 = std::min(p.bx1, c.i1);
     int y0 = std::max(p.by0, c.j0), y1 = std::min(p.by1, c.j1);
     if (x0 >= x1 || y0 >= y1) continue;
     ops.hemicube_pixel += std::int64_t(x1 - x0) * (y1 - y0);
+    const int item = p.front ? p.element : -2;  // -2: hidden by the back of an element
     for (int j = y0; j < y1; ++j) {
       const PixelSpan span = covered_span(p, j, x0, x1);
+      const double y = row_y_[std::size_t(j - c.j0)];
       for (int i = span.begin; i < span.end; ++i) {
-        double px = i + 0.5, py = j + 0.5;
-        double z = depth(c.face, p, px, py);
+        const double z = depth(p, Vec3{column_x_[std::size_t(i - c.i0)], y, 1.0});
         std::size_t k = std::size_t(j - c.j0) * w + (i - c.i0);
         if (z < zbuf_[k]) {
           zbuf_[k] = z;
-          item_[k] = p.front ? p.element : -2;  // -2: hidden by the back of an element
+          item_[k] = item;
         }
       }
     }
   }
-  for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) {
-      int e = item_[std::size_t(j) * w + i];
-      if (e < 0) continue;
-      const double f = grid_->dff->at(c.face, c.i0 + i, c.j0 + j);
-      add(e, weight == 1.0 ? f : weight * f);
+  gather_cell(c, weight);
+}
+
+// Each seen element's delta form factors into acc_, in pixel order as add() would: a run of one
+// element's pixels is summed in a register (the same additions in the same order), not through
+// acc_ in memory, whose store each next pixel's add had to wait for.
+void HemicubeRenderer::gather_cell(const HemicubeCell& c, double weight) {
+  const int w = c.i1 - c.i0, h = c.j1 - c.j0;
+  for (int j = 0; j < h; ++j) {
+    const int* items = item_.data() + std::size_t(j) * w;
+    const double* dff = &grid_->dff->face(c.face)[std::size_t(c.j0 + j) * grid_->dff->resolution() + c.i0];
+    for (int i = 0; i < w;) {
+      const int e = items[i];
+      if (e < 0) {
+        ++i;
+        continue;
+      }
+      double sum = acc_[e];
+      for (; i < w && items[i] == e; ++i) {
+        if (sum == 0) touched_.push_back(e);
+        sum += weight == 1.0 ? dff[i] : weight * dff[i];
+      }
+      acc_[e] = sum;
     }
+  }
 }
 
 int HemicubeRenderer::sample(const Faces& faces, int face, const std::vector<int>& candidates, double px, double py,
@@ -264,7 +291,7 @@ int HemicubeRenderer::sample(const Faces& faces, int face, const std::vector<int
   for (int ci : candidates) {
     const Projected& p = polys[ci];
     if (!covers_point(p, px, py)) continue;
-    double z = depth(face, p, px, py);
+    double z = depth(p, pixel_ray(face, px, py));
     if (z < best) {
       best = z;
       item = p.front ? p.element : -2;

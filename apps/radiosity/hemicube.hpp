@@ -120,8 +120,12 @@ class HemicubeRenderer {
   using Faces = HemicubeFaces;
   using Projected = ProjectedElement;
   void project_from(const Vec3& origin, Faces& faces, OpCounts& ops);
-  double depth(int face, const Projected& poly, double px, double py) const;
+  // The ray through (px, py) on `face`, in face coordinates (z = 1), and where it meets `poly`'s
+  // plane (infinity behind or parallel).
+  Vec3 pixel_ray(int face, double px, double py) const;
+  static double depth(const Projected& poly, const Vec3& ray);
   void fixed_cell(const Faces& faces, const HemicubeCell& c, double weight, OpCounts& ops);
+  void gather_cell(const HemicubeCell& c, double weight);
   void hierarchical_cell(const Faces& faces, const HemicubeCell& c, double weight, OpCounts& ops);
   int sample(const Faces& faces, int face, const std::vector<int>& candidates, double px, double py, OpCounts& ops) const;
   void subdivide(const Faces& faces, int face, const std::vector<int>& candidates, int i0, int j0, int size,
@@ -142,6 +146,7 @@ class HemicubeRenderer {
   std::vector<int> touched_;
   std::vector<double> zbuf_;
   std::vector<int> item_;
+  std::vector<double> column_x_, row_y_;  // fixed_cell's rays through the cell's pixel centres
 };
 
 }  // namespace gcsim::radiosity
