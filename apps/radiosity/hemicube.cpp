@@ -242,8 +242,9 @@ void HemicubeRenderer::fixed_cell(const Faces& faces, const HemicubeCell& c, dou
     if (x0 >= x1 || y0 >= y1) continue;
     ops.hemicube_pixel += std::int64_t(x1 - x0) * (y1 - y0);
     const int item = p.front ? p.element : -2;  // -2: hidden by the back of an element
+    const RowSpans spans(p);
     for (int j = y0; j < y1; ++j) {
-      const PixelSpan span = covered_span(p, j, x0, x1);
+      const PixelSpan span = spans.at(j, x0, x1);
       const double y = row_y_[std::size_t(j - c.j0)];
       for (int i = span.begin; i < span.end; ++i) {
         const double z = depth(p, Vec3{column_x_[std::size_t(i - c.i0)], y, 1.0});

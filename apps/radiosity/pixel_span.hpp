@@ -4,6 +4,9 @@
 // along a row it is linear in the pixel: each edge keeps a half-line of pixels, and the pixels of
 // the row the element takes are one interval, found with one integer division per edge instead of
 // every edge tested at every pixel. covers_pixel is the per-pixel test both answer as.
+#include <array>
+#include <cstdint>
+
 #include "apps/radiosity/hemicube.hpp"
 
 namespace gcsim::radiosity {
@@ -22,6 +25,22 @@ inline bool covers_pixel(const ProjectedElement& poly, int i, int j) { return co
 struct PixelSpan {
   int begin = 0, end = 0;  // pixels begin .. end - 1 (empty when end <= begin)
 };
+
+// One element's edges made ready for its rows: at(j, i0, i1) is covered_span(poly, j, i0, i1).
+class RowSpans {
+ public:
+  explicit RowSpans(const ProjectedElement& poly);
+  PixelSpan at(int j, int i0, int i1) const;
+
+ private:
+  struct Edge {
+    std::int64_t slope_j, offset, step_i;  // the edge function at pixel (i, j): slope_j j + offset - step_i i
+    bool takes_ties;                       // whether a pixel centre on the edge is inside
+  };
+  int count_;
+  std::array<Edge, 12> edges_;
+};
+
 // The pixels i in [i0, i1) of row j with covers_pixel(poly, i, j), exactly.
 PixelSpan covered_span(const ProjectedElement& poly, int j, int i0, int i1);
 
